@@ -1,0 +1,90 @@
+# lac -- Local Average Contact: a teaching and reference code.
+#
+#   make demo        set up (Debian packages), build, run a small example
+#   make test        set up, build, run the whole test suite
+#   make             build build/liblac.a and build/lac
+#   make test-asan   the test suite under -fsanitize=address,undefined
+#   make bench       benchmarks (not in CI): sizes, times, memory
+#   make help        all targets
+#
+# Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
+# and gmsh 4.8 ship no pkg-config file on Debian 12).
+
+CC       ?= cc
+CFLAGS   ?= -std=c11 -O2 -g -Wall -Wextra
+CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse
+LDFLAGS  += -Wl,--as-needed
+SS_LIBS  ?= -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig
+GSL_LIBS ?= -lgsl -lgslcblas
+LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lpng16 -lm
+
+# Debian 12 packages needed to build, test and draw.
+DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
+            libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
+            libinih-dev gnuplot-nox
+
+B        ?= build
+LIBSRC   := $(filter-out src/main.c,$(wildcard src/*.c))
+LIBOBJ   := $(LIBSRC:src/%.c=$(B)/src/%.o)
+LIB      := $(B)/liblac.a
+UNITSRC  := $(sort $(wildcard tests/unit/t*.c))
+UNIT     := $(UNITSRC:tests/unit/%.c=$(B)/tests/%)
+BENCHSRC := $(wildcard bench/*.c)
+BENCH    := $(BENCHSRC:bench/%.c=$(B)/bench/%)
+
+all: deps $(LIB) $(B)/lac
+
+# ---- set-up: install missing Debian packages (root) or say how ----------
+deps: $(B)/.deps-ok
+$(B)/.deps-ok:
+	@sh tests/deps.sh $(DEB_PKGS)
+	@mkdir -p $(B) && touch $@
+
+# ---- build ---------------------------------------------------------------
+$(LIB): $(LIBOBJ)
+	$(AR) rcs $@ $^
+$(B)/src/%.o: src/%.c | $(B)/.deps-ok
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -c $< -o $@
+$(B)/lac: src/main.c $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+$(B)/tests/check.o: tests/check.c tests/check.h | $(B)/.deps-ok
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) -c $< -o $@
+$(B)/tests/%: tests/unit/%.c $(B)/tests/check.o $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(B)/tests/check.o $(LIB) $(LDLIBS) -o $@
+$(B)/tests/numcmp: tests/numcmp.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
+$(B)/bench/%: bench/%.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+-include $(LIBOBJ:.o=.d)
+
+# ---- tests ---------------------------------------------------------------
+test: all $(UNIT) $(B)/tests/numcmp
+	@B=$(B) sh tests/run.sh $(UNIT)
+
+# The same suite under AddressSanitizer and UBSan (library suppressions only).
+test-asan:
+	$(MAKE) B=build/asan CFLAGS="-std=c11 -O1 -g -Wall -Wextra -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+	  LDFLAGS="-fsanitize=address,undefined" test \
+	  ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
+
+demo: all
+	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo
+
+bench: all $(BENCH)
+	@for b in $(BENCH); do echo "== $$b"; ./$$b || exit 1; done
+
+clean:
+	rm -rf build
+
+help:
+	@sed -n '3,9p' Makefile
+
+.PHONY: all deps test test-asan demo bench clean help
+.DELETE_ON_ERROR:

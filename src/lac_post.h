@@ -1,0 +1,34 @@
+/* lac_post.h -- post-processing: stresses and errors
+ *
+ * Stresses sigma = A eps(u_h) at the quadrature points, averaged at the
+ * nodes (unweighted mean over the cells sharing a node), von Mises;
+ * L2 and H1-seminorm errors of u_h against an exact solution; the
+ * displacement at a point.  Components as in lac_material.h.
+ */
+#ifndef LAC_POST_H
+#define LAC_POST_H
+
+#include "lac_assembly.h"
+
+/* Stress at reference point xi of cell c: s[ns]. */
+int lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
+                        const double *u, size_t c, const double *xi,
+                        double *s);
+
+/* Nodal averages: sigma[nnodes*ns], vm[nnodes] (vm may be NULL).  Nodes
+ * in no cell get zeros.  If cells != NULL only cells with cells[c] != 0
+ * contribute (per-body averages keep interface jumps). */
+int lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
+                           const double *u, const char *cells,
+                           double *sigma, double *vm);
+
+/* Errors over all cells: l2 = ||u - u_h||_0, h1 = |u - u_h|_1 (seminorm),
+ * also the norms of the exact solution (for relative errors; any output
+ * pointer may be NULL).  Quadrature exact to degree 2*order + 2 of the
+ * reference element (curved cells: an approximation). */
+int lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
+                     lac_field *exact, lac_field_grad *grad, void *ctx,
+                     double *l2, double *h1, double *l2_exact,
+                     double *h1_exact);
+
+#endif /* LAC_POST_H */

@@ -1,0 +1,35 @@
+/* lac_quadrature.h -- quadrature rules on the reference elements
+ *
+ * Lines, quadrangles and hexahedra: tensor products of Gauss-Legendre rules
+ * (GSL's tables).  Triangles and tetrahedra: fully symmetric rules with
+ * positive weights where known, collapsed (Stroud conical-product) rules
+ * above.  Pyramids: collapsed Gauss rule, exact for the rational pyramid
+ * basis products used in the stiffness.  Every rule states the total degree
+ * it integrates exactly; the weights sum to the reference measure.
+ *
+ * Reference domains as in lac_spaces.h.
+ */
+#ifndef LAC_QUADRATURE_H
+#define LAC_QUADRATURE_H
+
+#include "lac_spaces.h"
+
+typedef struct lac_quad
+{
+  lac_shape shape;
+  int dim;
+  int degree;   /* exact for all polynomials of total degree <= degree */
+  int n;        /* number of points                                     */
+  double *xi;   /* owned, n*dim                                          */
+  double *w;    /* owned, n                                              */
+} lac_quad;
+
+/* A rule on `shape` exact to at least `degree` (the cheapest one known).
+ * Returns NULL with a message if degree is negative or out of range. */
+lac_quad *lac_quad_alloc (lac_shape shape, int degree);
+void lac_quad_free (lac_quad *q);   /* NULL allowed */
+
+/* Measure of the reference domain (2, 4, 8, 1/2, 1/6, 4/3). */
+double lac_quad_ref_measure (lac_shape shape);
+
+#endif /* LAC_QUADRATURE_H */

@@ -1,0 +1,99 @@
+/* check.c -- see check.h */
+#include "check.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "lac_status.h"
+
+static int nfail, npass;
+
+static void
+report (int ok, const char *fmt, va_list ap, const char *fmt2, ...)
+{
+  va_list ap2;
+  if (ok)
+    npass++;
+  else
+    nfail++;
+  if (ok && !getenv ("LAC_TEST_VERBOSE"))
+    return;
+  printf ("%s: ", ok ? "PASS" : "FAIL");
+  vprintf (fmt, ap);
+  va_start (ap2, fmt2);
+  vprintf (fmt2, ap2);
+  va_end (ap2);
+  printf ("\n");
+}
+
+void
+check_rel (double got, double want, double reltol, const char *fmt, ...)
+{
+  va_list ap;
+  double err = want != 0 ? fabs (got - want) / fabs (want) : fabs (got);
+  int ok = isfinite (got) && err <= reltol;
+  va_start (ap, fmt);
+  report (ok, fmt, ap, " (got %.17g, want %.17g, rel err %.3g > %.3g)",
+          got, want, err, reltol);
+  va_end (ap);
+}
+
+void
+check_abs (double got, double want, double abstol, const char *fmt, ...)
+{
+  va_list ap;
+  double err = fabs (got - want);
+  int ok = isfinite (got) && err <= abstol;
+  va_start (ap, fmt);
+  report (ok, fmt, ap, " (got %.17g, want %.17g, abs err %.3g > %.3g)",
+          got, want, err, abstol);
+  va_end (ap);
+}
+
+void
+check_int (long got, long want, const char *fmt, ...)
+{
+  va_list ap;
+  va_start (ap, fmt);
+  report (got == want, fmt, ap, " (got %ld, want %ld)", got, want);
+  va_end (ap);
+}
+
+void
+check_true (int cond, const char *fmt, ...)
+{
+  va_list ap;
+  va_start (ap, fmt);
+  report (cond, fmt, ap, "%s", "");
+  va_end (ap);
+}
+
+void
+check_status (int got, int want, const char *fmt, ...)
+{
+  va_list ap;
+  va_start (ap, fmt);
+  report (got == want, fmt, ap, " (status %d, want %d; message: %s)", got,
+          want, lac_error_message ());
+  va_end (ap);
+}
+
+void
+check_message (const char *needle, const char *fmt, ...)
+{
+  va_list ap;
+  va_start (ap, fmt);
+  report (strstr (lac_error_message (), needle) != NULL, fmt, ap,
+          " (message \"%s\" lacks \"%s\")", lac_error_message (), needle);
+  va_end (ap);
+}
+
+int
+check_summary (void)
+{
+  if (getenv ("LAC_TEST_VERBOSE"))
+    printf ("%d passed, %d failed\n", npass, nfail);
+  return nfail != 0;
+}

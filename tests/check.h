@@ -1,0 +1,28 @@
+/* check.h -- tiny assertion helpers for the unit tests (gsl_test-like).
+ *
+ * Each check prints a line only on failure (or always with
+ * LAC_TEST_VERBOSE=1); a test ends with `return check_summary ();`, which
+ * returns non-zero if any check failed.
+ */
+#ifndef LAC_CHECK_H
+#define LAC_CHECK_H
+
+#include <stddef.h>
+
+void check_rel (double got, double want, double reltol, const char *fmt, ...)
+  __attribute__ ((format (printf, 4, 5)));
+void check_abs (double got, double want, double abstol, const char *fmt, ...)
+  __attribute__ ((format (printf, 4, 5)));
+void check_int (long got, long want, const char *fmt, ...)
+  __attribute__ ((format (printf, 3, 4)));
+void check_true (int cond, const char *fmt, ...)
+  __attribute__ ((format (printf, 2, 3)));
+/* Compare statuses; on mismatch also print lac_error_message(). */
+void check_status (int got, int want, const char *fmt, ...)
+  __attribute__ ((format (printf, 3, 4)));
+/* The stored error message contains `needle`. */
+void check_message (const char *needle, const char *fmt, ...)
+  __attribute__ ((format (printf, 2, 3)));
+int check_summary (void);
+
+#endif
