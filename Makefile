@@ -29,10 +29,12 @@ LIBOBJ   := $(LIBSRC:src/%.c=$(B)/src/%.o)
 LIB      := $(B)/liblac.a
 UNITSRC  := $(sort $(wildcard tests/unit/t*.c))
 UNIT     := $(UNITSRC:tests/unit/%.c=$(B)/tests/%)
+EXSRC    := $(wildcard chapters/[0-9][0-9]-*/example.c)
+EX       := $(EXSRC:chapters/%/example.c=$(B)/chapters/%)
 BENCHSRC := $(wildcard bench/*.c)
 BENCH    := $(BENCHSRC:bench/%.c=$(B)/bench/%)
 
-all: deps $(LIB) $(B)/lac
+all: deps $(LIB) $(B)/lac $(EX)
 
 # ---- set-up: install missing Debian packages (root) or say how ----------
 deps: $(B)/.deps-ok
@@ -57,6 +59,9 @@ $(B)/tests/%: tests/unit/%.c $(B)/tests/check.o $(LIB)
 $(B)/tests/numcmp: tests/numcmp.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
+$(B)/chapters/%: chapters/%/example.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 $(B)/bench/%: bench/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
@@ -69,10 +74,11 @@ test: all $(UNIT) $(B)/tests/numcmp
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).
 test-asan:
-	$(MAKE) B=build/asan CFLAGS="-std=c11 -O1 -g -Wall -Wextra -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  LDFLAGS="-fsanitize=address,undefined" test \
-	  ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1 \
-	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
+	ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1 \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	UBSAN_OPTIONS=print_stacktrace=1 \
+	$(MAKE) B=build/asan LDFLAGS="-fsanitize=address,undefined" \
+	  CFLAGS="-std=c11 -O1 -g -Wall -Wextra -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" test
 
 demo: all
 	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo

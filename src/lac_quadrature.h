@@ -32,4 +32,7 @@ void lac_quad_free (lac_quad *q);   /* NULL allowed */
 /* Measure of the reference domain (2, 4, 8, 1/2, 1/6, 4/3). */
 double lac_quad_ref_measure (lac_shape shape);
 
+/* Highest degree lac_quad_alloc accepts for `shape` (-1 if unknown). */
+int lac_quad_max_degree (lac_shape shape);
+
 #endif /* LAC_QUADRATURE_H */

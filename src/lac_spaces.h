@@ -84,7 +84,7 @@ typedef struct lac_map
 {
   double x[3];                     /* the point x(xi)                      */
   double N[LAC_MAX_NODES];         /* shape functions                      */
-  double dNdx[LAC_MAX_NODES * 3];  /* dN_a/dx_k (cells: sdim == dim only)  */
+  double dNdx[LAC_MAX_NODES * 3];  /* [a*dim + k] = dN_a/dx_k (cells only) */
   double J[9];                     /* J[i*dim + k] = dx_i/dxi_k            */
   double detJ;                     /* cells: det J; faces: |normal|        */
   double normal[3];                /* faces only: unit normal               */
