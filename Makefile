@@ -69,7 +69,8 @@ $(B)/bench/%: bench/%.c $(LIB)
 -include $(LIBOBJ:.o=.d)
 
 # ---- tests ---------------------------------------------------------------
-test: all $(UNIT) $(B)/tests/numcmp
+NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
+test: all $(UNIT) $(NUMCMP)
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).
