@@ -74,4 +74,47 @@ int lac_solver_solve (lac_solver *s, const double *b, double *x);
 int lac_solver_solve_many (lac_solver *s, size_t nrhs, const double *B,
                            double *X);
 
+/* Singularity tests, the same for the three back ends.  A factorization
+ * is refused (LAC_ESING) if
+ * (1) a pivot is tiny: the smallest pivot is below LAC_PIVOT_RTOL times the
+ *     largest (names the column):
+ *       dense    min_k |U_kk| <= LAC_PIVOT_RTOL * max_ij |A_ij|
+ *       umfpack  zero pivot, or Info[UMFPACK_RCOND] = min |U_kk| / max |U_kk|
+ *                < LAC_PIVOT_RTOL (U of the row-scaled matrix)
+ *       cholmod  d_k <= 0 (L->minor, CHOLMOD_NOT_POSDEF), or min d_k / max d_k
+ *                < LAC_PIVOT_RTOL, d_k = L_kk^2 (LL') or D_kk (LDL');
+ * (2) or the condition number is too large: rcond = 1 / (||A||_inf *
+ *     est ||A^-1||_inf) < LAC_RCOND_MIN, the norm of the inverse estimated
+ *     from two steps of inverse iteration with a pseudo-random start (two
+ *     extra solves).  The message names the dof where the near-null vector
+ *     is largest.
+ * Test (1) alone is not enough: for a body without enough Dirichlet
+ * conditions the rigid-mode pivots are rounding noise of size about
+ * n * eps * max pivot, which exceeds 1e-14 from a few thousand unknowns on,
+ * whereas its condition number stays near 1/eps (rounding perturbs a zero
+ * eigenvalue by about eps ||A||, whatever n).  Stiffness matrices of fixed
+ * bodies have rcond ~ h^2 (1e-4 .. 1e-9 in practice).  A Dirichlet row
+ * scaled by 1 while the stiffness is ~1e12 lowers rcond too: scale such rows
+ * like the diagonal of K. */
+#define LAC_PIVOT_RTOL 1e-14
+#define LAC_RCOND_MIN 1e-13
+/* The dense back end refuses larger orders (n^2 doubles: 3.2 GB). */
+#define LAC_DENSE_NMAX 20000
+
+/* What the last factorization cost and found (for benchmarks and reports). */
+typedef struct lac_solver_info
+{
+  size_t n;              /* order of the factored matrix                  */
+  double nnz_factor;     /* entries of the factors: n^2, nnz(L)+nnz(U), nnz(L) */
+  double pivot_ratio;    /* the quantity tested against LAC_PIVOT_RTOL    */
+  double rcond;          /* the estimate tested against LAC_RCOND_MIN      */
+  double peak_bytes;     /* peak memory of the factorization as reported
+                            by the back end (dense: the n^2 copy)          */
+  const char *method;    /* e.g. "supernodal LL'" (static string)         */
+  const char *ordering;  /* fill-reducing ordering, "" for dense          */
+} lac_solver_info;
+
+/* Fill *info from the last successful factorization (LAC_EINVAL if none). */
+int lac_solver_get_info (const lac_solver *s, lac_solver_info *info);
+
 #endif /* LAC_LINALG_H */

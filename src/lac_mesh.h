@@ -89,7 +89,8 @@ int lac_mesh_box (lac_elem_type type, const size_t *n, const double *L,
 /* query */
 const lac_group *lac_mesh_group (const lac_mesh *m, const char *name);
 int lac_mesh_facet_nodes (const lac_mesh *m, size_t cell, int face,
-                          int *nodes, lac_elem_type *ftype); /* returns count */
+                          int *nodes, lac_elem_type *ftype);
+                          /* returns count, -LAC_EINVAL for a bad cell/face */
 void lac_mesh_cell_coords (const lac_mesh *m, size_t c, double *xe);
 size_t lac_mesh_nconn_max (const lac_mesh *m);
 
@@ -100,6 +101,10 @@ int lac_mesh_check_orientation (lac_mesh *m, int flip, size_t *nflipped);
 /* Add a group (copies name, cell, face; computes node list). */
 int lac_mesh_add_group (lac_mesh *m, const char *name, int dim, int tag,
                         size_t n, const size_t *cell, const int *face);
+/* Add a group that keeps only nodes (dim < mesh dim - 1: points, or curves
+ * of a 3D mesh); copies, sorts and uniques the node list. */
+int lac_mesh_add_node_group (lac_mesh *m, const char *name, int dim, int tag,
+                             size_t nnodes, const size_t *node);
 /* Rebuild the node list of group g from its entities. */
 int lac_mesh_group_nodes (lac_mesh *m, size_t g);
 /* Sum of the cell measures (area or volume; 2D measures are areas). */

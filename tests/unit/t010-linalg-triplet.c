@@ -1,0 +1,167 @@
+/* t010: triplets -> CSC: duplicates summed, rows sorted, transpose, matvec
+ * against a dense reference, growth and argument errors. */
+#include <stdlib.h>
+#include "check.h"
+#include "lac_linalg.h"
+#include "lac_mem.h"
+#include "lac_status.h"
+
+enum { NR = 7, NC = 5, NADD = 400 };
+
+/* Columns have strictly increasing rows and p is consistent. */
+static int
+csc_is_sorted (const lac_csc *A)
+{
+  if (A->p[0] != 0)
+    return 0;
+  for (size_t j = 0; j < A->ncol; j++)
+    {
+      if (A->p[j] > A->p[j + 1])
+        return 0;
+      for (int q = A->p[j]; q < A->p[j + 1]; q++)
+        if (A->i[q] < 0 || (size_t) A->i[q] >= A->nrow
+            || (q > A->p[j] && A->i[q] <= A->i[q - 1]))
+          return 0;
+    }
+  return 1;
+}
+
+/* Dense value A(i,j) looked up in the CSC. */
+static double
+csc_get (const lac_csc *A, size_t i, size_t j)
+{
+  for (int q = A->p[j]; q < A->p[j + 1]; q++)
+    if ((size_t) A->i[q] == i)
+      return A->x[q];
+  return 0;
+}
+
+static void
+test_random (void)
+{
+  double D[NR][NC] = { { 0 } }, x[NC], y[NR], yt[NC], yd[NR], z[NR];
+  lac_triplet *T = lac_triplet_alloc (NR, NC, 0);     /* grows from 16 */
+  lac_csc *A, *At;
+  srand (12345);
+  for (int k = 0; k < NADD; k++)          /* many duplicates, random order */
+    {
+      size_t i = (size_t) rand () % NR, j = (size_t) rand () % NC;
+      double v = rand () / (double) RAND_MAX - 0.5;
+      if (i == 3)
+        continue;                                     /* an empty row */
+      if (j == 2)
+        continue;                                     /* an empty column */
+      D[i][j] += v;
+      check_status (lac_triplet_add (T, i, j, v), LAC_SUCCESS, "add");
+    }
+  check_true (T->cap >= T->nz && T->nz > 16, "triplets grew: nz %zu", T->nz);
+  A = lac_csc_from_triplet (T);
+  check_true (A != NULL, "compress");
+  if (!A)
+    return;
+  check_true (csc_is_sorted (A), "rows sorted, unique");
+  check_int (A->p[2 + 1] - A->p[2], 0, "empty column stays empty");
+  for (size_t i = 0; i < NR; i++)
+    for (size_t j = 0; j < NC; j++)
+      check_rel (csc_get (A, i, j), D[i][j], 1e-14, "A(%zu,%zu)", i, j);
+  check_true (A->p[NC] <= NR * NC, "nnz %d <= %d", A->p[NC], NR * NC);
+
+  for (size_t j = 0; j < NC; j++)
+    x[j] = 1.0 + 0.25 * (double) j;
+  for (size_t i = 0; i < NR; i++)
+    z[i] = 2.0 - 0.5 * (double) i;
+  lac_csc_matvec (A, x, y);
+  for (size_t i = 0; i < NR; i++)
+    {
+      yd[i] = 0;
+      for (size_t j = 0; j < NC; j++)
+        yd[i] += D[i][j] * x[j];
+      check_abs (y[i], yd[i], 1e-13, "y = A x, row %zu", i);
+    }
+
+  At = lac_csc_transpose (A);
+  check_true (At && At->nrow == NC && At->ncol == NR, "transpose sizes");
+  if (At)
+    {
+      check_true (csc_is_sorted (At), "transpose rows sorted");
+      lac_csc_matvec (At, z, yt);
+      for (size_t j = 0; j < NC; j++)
+        {
+          double w = 0;
+          for (size_t i = 0; i < NR; i++)
+            w += D[i][j] * z[i];
+          check_abs (yt[j], w, 1e-13, "A^T z, row %zu", j);
+        }
+    }
+  lac_csc_free (At);
+  lac_csc_free (A);
+  lac_triplet_free (T);
+}
+
+/* add_block: a 1D bar of 4 two-node elements, K = k [1 -1; -1 1]. */
+static void
+test_block (void)
+{
+  const double Ke[4] = { 1, -1, -1, 1 };
+  const double want[5][5] = { { 1, -1, 0, 0, 0 }, { -1, 2, -1, 0, 0 },
+                              { 0, -1, 2, -1, 0 }, { 0, 0, -1, 2, -1 },
+                              { 0, 0, 0, -1, 1 } };
+  lac_triplet *T = lac_triplet_alloc (5, 5, 4);
+  lac_csc *K;
+  for (size_t e = 0; e < 4; e++)
+    {
+      size_t idx[2] = { e, e + 1 };
+      check_status (lac_triplet_add_block (T, 2, idx, 2, idx, Ke),
+                    LAC_SUCCESS, "block %zu", e);
+    }
+  check_int ((long) T->nz, 16, "16 triplets");
+  K = lac_csc_from_triplet (T);
+  check_true (K != NULL, "compress bar");
+  if (K)
+    {
+      check_int (K->p[5], 13, "tridiagonal 5x5: 13 entries");
+      for (size_t i = 0; i < 5; i++)
+        for (size_t j = 0; j < 5; j++)
+          check_abs (csc_get (K, i, j), want[i][j], 0, "K(%zu,%zu)", i, j);
+    }
+  lac_csc_free (K);
+  lac_triplet_free (T);
+}
+
+static void
+test_errors (void)
+{
+  lac_triplet *T = lac_triplet_alloc (3, 2, 4);
+  size_t rows[2] = { 0, 3 }, cols[2] = { 0, 1 };
+  double B[4] = { 1, 2, 3, 4 };
+  check_status (lac_triplet_add (T, 3, 0, 1.0), LAC_EINVAL, "row 3 of 3");
+  check_message ("outside", "message names the problem");
+  check_status (lac_triplet_add (T, 0, 2, 1.0), LAC_EINVAL, "column 2 of 2");
+  check_status (lac_triplet_add_block (T, 2, rows, 2, cols, B), LAC_EINVAL,
+                "block with row 3");
+  check_int ((long) T->nz, 0, "nothing added on error");
+  lac_triplet_free (T);
+  lac_triplet_free (NULL);
+  lac_csc_free (NULL);
+
+  /* Allocation failure while growing: message, triplets intact. */
+  T = lac_triplet_alloc (4, 4, 16);
+  for (size_t k = 0; k < 16; k++)
+    lac_triplet_add (T, k % 4, k / 4, 1.0);
+  lac_mem_fail_after (0);
+  check_status (lac_triplet_add (T, 0, 0, 1.0), LAC_ENOMEM, "grow fails");
+  lac_mem_fail_after (-1);
+  check_int ((long) T->nz, 16, "entries kept after failed growth");
+  check_status (lac_triplet_add (T, 0, 0, 1.0), LAC_SUCCESS, "grow again");
+  lac_triplet_free (T);
+}
+
+int
+main (void)
+{
+  lac_init ();
+  test_random ();
+  test_block ();
+  test_errors ();
+  return check_summary ();
+}

@@ -1,0 +1,263 @@
+/* t012: dense, UMFPACK and CHOLMOD agree (1e-10 relative) with small
+ * residuals (< 1e-12) on an SPD 2D Laplacian-like matrix and, for dense and
+ * UMFPACK, on a random nonsymmetric well-conditioned matrix; several
+ * right-hand sides, refactoring, names, info and argument errors. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "lac_linalg.h"
+#include "lac_mem.h"
+#include "lac_status.h"
+
+/* 5-point Laplacian on an m x m grid (Dirichlet outside) plus 0.1 I,
+ * with the unknowns in a scrambled order so that the pattern is not banded. */
+static lac_csc *
+laplacian_2d (size_t m)
+{
+  size_t n = m * m;
+  size_t *map = malloc (n * sizeof *map);
+  lac_triplet *T = lac_triplet_alloc (n, n, 5 * n);
+  lac_csc *A;
+  for (size_t k = 0; k < n; k++)
+    map[k] = (k * 37) % n;                 /* 37 is prime to n (m = 20) */
+  for (size_t a = 0; a < m; a++)
+    for (size_t b = 0; b < m; b++)
+      {
+        size_t k = map[a * m + b];
+        lac_triplet_add (T, k, k, 4.1);
+        if (a > 0)
+          lac_triplet_add (T, k, map[(a - 1) * m + b], -1);
+        if (a + 1 < m)
+          lac_triplet_add (T, k, map[(a + 1) * m + b], -1);
+        if (b > 0)
+          lac_triplet_add (T, k, map[a * m + b - 1], -1);
+        if (b + 1 < m)
+          lac_triplet_add (T, k, map[a * m + b + 1], -1);
+      }
+  A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  free (map);
+  return A;
+}
+
+/* Random sparse nonsymmetric matrix, 6 entries per row in [-1,1], with a
+ * diagonal 8 (diagonally dominant, so well conditioned). */
+static lac_csc *
+random_nonsym (size_t n)
+{
+  lac_triplet *T = lac_triplet_alloc (n, n, 7 * n);
+  lac_csc *A;
+  srand (2024);
+  for (size_t i = 0; i < n; i++)
+    {
+      lac_triplet_add (T, i, i, 8.0);
+      for (int k = 0; k < 6; k++)
+        lac_triplet_add (T, i, (size_t) rand () % n,
+                         2.0 * rand () / RAND_MAX - 1.0);
+    }
+  A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  return A;
+}
+
+/* ||b - A x||_inf / ||b||_inf */
+static double
+relres (const lac_csc *A, const double *x, const double *b)
+{
+  size_t n = A->nrow;
+  double *r = malloc (n * sizeof *r), num = 0, den = 0;
+  lac_csc_matvec (A, x, r);
+  for (size_t i = 0; i < n; i++)
+    {
+      num = fmax (num, fabs (b[i] - r[i]));
+      den = fmax (den, fabs (b[i]));
+    }
+  free (r);
+  return num / den;
+}
+
+static double
+reldiff (size_t n, const double *x, const double *y)
+{
+  double num = 0, den = 0;
+  for (size_t i = 0; i < n; i++)
+    {
+      num = fmax (num, fabs (x[i] - y[i]));
+      den = fmax (den, fabs (y[i]));
+    }
+  return num / den;
+}
+
+/* Solve A X = B (nrhs columns) with each back end in kinds[0..nk-1]; compare
+ * with the first. */
+static void
+compare (const char *what, const lac_csc *A, const int *kinds, int nk)
+{
+  enum { NRHS = 3 };
+  size_t n = A->ncol;
+  double *B = malloc (NRHS * n * sizeof *B);
+  double *X[3];
+  for (size_t k = 0; k < NRHS * n; k++)
+    B[k] = sin (0.37 * (double) k) + (k % 7 == 0);
+  for (int s = 0; s < nk; s++)
+    {
+      lac_solver *S = lac_solver_alloc ((lac_solver_kind) kinds[s]);
+      const char *name = lac_solver_kind_name ((lac_solver_kind) kinds[s]);
+      lac_solver_info info;
+      X[s] = calloc (NRHS * n, sizeof *X[s]);
+      check_status (lac_solver_factor (S, A), LAC_SUCCESS, "%s: %s factor",
+                    what, name);
+      check_status (lac_solver_solve_many (S, NRHS, B, X[s]), LAC_SUCCESS,
+                    "%s: %s solve_many", what, name);
+      for (int r = 0; r < NRHS; r++)
+        check_true (relres (A, X[s] + r * n, B + r * n) < 1e-12,
+                    "%s: %s residual %.3g, rhs %d", what, name,
+                    relres (A, X[s] + r * n, B + r * n), r);
+      check_status (lac_solver_get_info (S, &info), LAC_SUCCESS, "info");
+      check_int ((long) info.n, (long) n, "%s: info.n", name);
+      check_true (info.nnz_factor >= (double) n && info.peak_bytes > 0
+                  && info.pivot_ratio >= LAC_PIVOT_RTOL && info.method,
+                  "%s: info filled (%s, %s)", name, info.method,
+                  info.ordering);
+      if (s > 0)
+        check_true (reldiff (NRHS * n, X[s], X[0]) < 1e-10,
+                    "%s: %s vs %s differ by %.3g", what, name,
+                    lac_solver_kind_name ((lac_solver_kind) kinds[0]),
+                    reldiff (NRHS * n, X[s], X[0]));
+      lac_solver_free (S);
+    }
+  for (int s = 0; s < nk; s++)
+    free (X[s]);
+  free (B);
+}
+
+/* One solver object factors twice; single solve equals solve_many. */
+static void
+test_refactor (const lac_csc *A1, const lac_csc *A2)
+{
+  size_t n = A1->ncol;
+  double *b = malloc (n * sizeof *b), *x = malloc (n * sizeof *x);
+  for (int kind = 0; kind < 3; kind++)
+    {
+      lac_solver *S = lac_solver_alloc ((lac_solver_kind) kind);
+      const lac_csc *As[2] = { A1, A2 };
+      check_status (lac_solver_solve (S, b, x), LAC_EINVAL,
+                    "%d: solve before factor", kind);
+      for (int t = 0; t < 2; t++)
+        {
+          if (kind == LAC_SOLVER_CHOLMOD && t == 1)
+            break;                                   /* A2 nonsymmetric */
+          for (size_t i = 0; i < n; i++)
+            b[i] = 1.0 + (double) (i % 3);
+          check_status (lac_solver_factor (S, As[t]), LAC_SUCCESS,
+                        "%d: factor %d", kind, t);
+          check_status (lac_solver_solve (S, b, x), LAC_SUCCESS,
+                        "%d: solve %d", kind, t);
+          check_true (relres (As[t], x, b) < 1e-12, "%d: refactor %d", kind,
+                      t);
+        }
+      lac_solver_free (S);
+    }
+  free (b);
+  free (x);
+}
+
+static void
+test_errors (const lac_csc *Ansym)
+{
+  lac_solver *S = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+  lac_csc *R = lac_csc_alloc (3, 2, 0);
+  lac_csc *big = lac_csc_alloc (LAC_DENSE_NMAX + 1, LAC_DENSE_NMAX + 1, 0);
+  check_status (lac_solver_factor (S, Ansym), LAC_EINVAL, "cholmod, nonsym");
+  check_message ("symmetric", "message says symmetric");
+  check_status (lac_solver_factor (S, R), LAC_EBADLEN, "3 x 2");
+  lac_solver_free (S);
+  S = lac_solver_alloc (LAC_SOLVER_DENSE);
+  check_status (lac_solver_factor (S, big), LAC_EINVAL, "dense too large");
+  check_message ("umfpack or cholmod", "message suggests sparse");
+  lac_solver_free (S);
+  lac_solver_free (NULL);
+  check_true (lac_solver_alloc ((lac_solver_kind) 7) == NULL, "bad kind");
+  check_int (lac_solver_kind_from_name ("cholmod"), LAC_SOLVER_CHOLMOD,
+             "name cholmod");
+  check_int (lac_solver_kind_from_name ("umfpack"), LAC_SOLVER_UMFPACK,
+             "name umfpack");
+  check_int (lac_solver_kind_from_name ("dense"), LAC_SOLVER_DENSE, "dense");
+  check_int (lac_solver_kind_from_name ("mumps"), -1, "unknown name");
+  check_true (!strcmp (lac_solver_kind_name (LAC_SOLVER_UMFPACK), "umfpack"),
+              "kind name");
+  lac_csc_free (R);
+  lac_csc_free (big);
+}
+
+/* Make the k-th allocation fail, k = 0, 1, ...: every step either works or
+ * returns LAC_ENOMEM with a message; nothing leaks (checked under ASan). */
+static void
+test_alloc_failures (void)
+{
+  for (int kind = 0; kind < 3; kind++)
+    {
+      int done = 0;
+      for (long k = 0; !done && k < 100; k++)
+        {
+          lac_triplet *T;
+          lac_csc *A = NULL;
+          lac_solver *S = NULL;
+          double b[30], x[30];
+          int st = LAC_ENOMEM;
+          for (int i = 0; i < 30; i++)
+            b[i] = 1;
+          lac_error_clear ();
+          lac_mem_fail_after (k);
+          T = lac_triplet_alloc (30, 30, 0);
+          for (size_t i = 0; T && i < 30; i++)
+            {
+              st = lac_triplet_add (T, i, i, 3.0);
+              if (!st && i > 0)
+                st = lac_triplet_add (T, i, i - 1, -1.0);
+              if (!st && i > 0)
+                st = lac_triplet_add (T, i - 1, i, -1.0);
+              if (st)
+                break;
+            }
+          if (T && !st)
+            A = lac_csc_from_triplet (T);
+          if (A)
+            S = lac_solver_alloc ((lac_solver_kind) kind);
+          st = S ? lac_solver_factor (S, A) : LAC_ENOMEM;
+          if (!st)
+            st = lac_solver_solve (S, b, x);
+          lac_mem_fail_after (-1);
+          check_true (st == LAC_SUCCESS || st == LAC_ENOMEM, "kind %d, fail "
+                      "at %ld: status %d", kind, k, st);
+          if (st == LAC_ENOMEM)
+            check_true (lac_error_message ()[0] != 0, "kind %d, fail at %ld:"
+                        " message", kind, k);
+          done = st == LAC_SUCCESS;
+          lac_solver_free (S);
+          lac_csc_free (A);
+          lac_triplet_free (T);
+        }
+      check_true (done, "kind %d: succeeds once allocations work", kind);
+    }
+}
+
+int
+main (void)
+{
+  const int all[3] = { LAC_SOLVER_DENSE, LAC_SOLVER_UMFPACK,
+                       LAC_SOLVER_CHOLMOD };
+  lac_csc *L, *N;
+  lac_init ();
+  L = laplacian_2d (20);
+  N = random_nonsym (300);
+  compare ("laplacian", L, all, 3);
+  compare ("nonsymmetric", N, all, 2);
+  test_refactor (L, L);
+  test_errors (N);
+  test_alloc_failures ();
+  lac_csc_free (L);
+  lac_csc_free (N);
+  return check_summary ();
+}
