@@ -71,9 +71,11 @@ int lac_dirichlet_add_group (lac_dirichlet *d, const lac_mesh *m,
 int lac_dirichlet_add_field (lac_dirichlet *d, const lac_mesh *m,
                              const lac_group *g, lac_field *u, void *ctx);
 /* Symmetric elimination: for each fixed dof k with value g_k,
- * F -= K(:,k) g_k, then row and column k of K are zeroed, K(k,k) = 1 and
- * F(k) = g_k.  K stays symmetric (positive definite if the body is fixed
- * against rigid motions).  Works on the CSC in place. */
+ * F -= K(:,k) g_k, then row and column k of K are zeroed except the
+ * diagonal, which keeps its value d_k (1 if it was <= 0; a unit diagonal
+ * next to stiffnesses of size E h would spoil the pivot tests), and
+ * F(k) = d_k g_k.  K stays symmetric (positive definite if the body is
+ * fixed against rigid motions).  Works on the CSC in place. */
 int lac_dirichlet_apply (const lac_dirichlet *d, lac_csc *K, double *F);
 
 #endif /* LAC_ASSEMBLY_H */

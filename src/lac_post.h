@@ -16,7 +16,7 @@ int lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
                         double *s);
 
 /* Nodal averages: sigma[nnodes*ns], vm[nnodes] (vm may be NULL).  Nodes
- * in no cell get zeros.  If cells != NULL only cells with cells[c] != 0
+ * in no cell get zeros; cells with E <= 0 are skipped.  If cells != NULL only cells with cells[c] != 0
  * contribute (per-body averages keep interface jumps). */
 int lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                            const double *u, const char *cells,
@@ -25,7 +25,9 @@ int lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
 /* Errors over all cells: l2 = ||u - u_h||_0, h1 = |u - u_h|_1 (seminorm),
  * also the norms of the exact solution (for relative errors; any output
  * pointer may be NULL).  Quadrature exact to degree 2*order + 2 of the
- * reference element (curved cells: an approximation). */
+ * reference element (curved cells: an approximation).  Axisymmetric: the
+ * weight 2 pi r, the H1 seminorm includes the hoop term (u_r/r)^2, and the
+ * quadrature degree is one higher. */
 int lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
                      lac_field *exact, lac_field_grad *grad, void *ctx,
                      double *l2, double *h1, double *l2_exact,
