@@ -699,3 +699,89 @@ lac_mesh_check_orientation (lac_mesh *m, int flip, size_t *nflipped)
   return status;
 }
 
+
+/* ---------------------------------------------------------------------- */
+/* two bodies in one mesh                                                  */
+/* ---------------------------------------------------------------------- */
+
+/* Copy the groups of src into out with cell indices shifted by c0, node
+ * indices by n0, names prefixed; body indices of the copied cells follow. */
+static int
+merge_groups (lac_mesh *out, const lac_mesh *src, size_t c0, size_t n0,
+              const char *prefix)
+{
+  int status = LAC_SUCCESS;
+  size_t g0 = out->ngroups;
+  for (size_t g = 0; !status && g < src->ngroups; g++)
+    {
+      const lac_group *G = &src->group[g];
+      size_t len = strlen (prefix) + strlen (G->name) + 1;
+      char *name = lac_malloc (len);
+      size_t *cell = lac_malloc ((G->n + 1) * sizeof *cell);
+      size_t *node = lac_malloc ((G->nnodes + 1) * sizeof *node);
+      if (!name || !cell || !node)
+        status = LAC_ERRMSG (LAC_ENOMEM, "merging group '%s'", G->name);
+      if (!status)
+        {
+          snprintf (name, len, "%s%s", prefix, G->name);
+          for (size_t e = 0; e < G->n; e++)
+            cell[e] = G->cell[e] + c0;
+          for (size_t e = 0; e < G->nnodes; e++)
+            node[e] = G->node[e] + n0;
+          status = G->dim >= out->dim - 1
+            ? lac_mesh_add_group (out, name, G->dim, G->tag, G->n, cell, G->face)
+            : lac_mesh_add_node_group (out, name, G->dim, G->tag, G->nnodes, node);
+        }
+      lac_free (name);
+      lac_free (cell);
+      lac_free (node);
+    }
+  for (size_t c = 0; !status && c < src->ncells; c++)
+    out->body[c0 + c] = src->body[c] < 0 ? -1 : (int) g0 + src->body[c];
+  return status;
+}
+
+/* lac_mesh_merge: the disjoint union of two meshes of the same dimension
+ * (e.g. two bodies meshed separately: nothing is glued, nodes are not
+ * merged).  Nodes, cells and groups of b follow those of a; group names
+ * get the prefixes pa and pb (which must make them distinct). */
+int
+lac_mesh_merge (const lac_mesh *a, const char *pa, const lac_mesh *b,
+                const char *pb, lac_mesh **out)
+{
+  *out = NULL;
+  if (a->dim != b->dim)
+    LAC_ERROR (LAC_EINVAL, "cannot merge a %dD and a %dD mesh", a->dim, b->dim);
+  size_t na = a->nnodes, ca = a->ncells, ka = a->ptr[ca];
+  lac_mesh *m = lac_mesh_alloc (a->dim, na + b->nnodes, ca + b->ncells,
+                                ka + b->ptr[b->ncells]);
+  if (!m)
+    return LAC_ENOMEM;
+  memcpy (m->x, a->x, na * a->dim * sizeof *m->x);
+  memcpy (m->x + na * a->dim, b->x, b->nnodes * b->dim * sizeof *m->x);
+  for (size_t i = 0; i < na; i++)
+    m->node_tag[i] = a->node_tag[i];
+  for (size_t i = 0; i < b->nnodes; i++)
+    m->node_tag[na + i] = b->node_tag[i] + na;
+  for (size_t c = 0; c < ca + b->ncells; c++)
+    {
+      const lac_mesh *s = c < ca ? a : b;
+      size_t cs = c < ca ? c : c - ca;
+      size_t off = c < ca ? 0 : na;
+      m->type[c] = s->type[cs];
+      m->cell_tag[c] = s->cell_tag[cs] + (c < ca ? 0 : ca);
+      m->ptr[c + 1] = m->ptr[c] + (s->ptr[cs + 1] - s->ptr[cs]);
+      for (size_t p = s->ptr[cs]; p < s->ptr[cs + 1]; p++)
+        m->conn[m->ptr[c] + (p - s->ptr[cs])] = s->conn[p] + (int) off;
+    }
+  int status = merge_groups (m, a, 0, 0, pa);
+  if (!status)
+    status = merge_groups (m, b, ca, na, pb);
+  if (status)
+    {
+      lac_mesh_free (m);
+      return status;
+    }
+  *out = m;
+  return LAC_SUCCESS;
+}

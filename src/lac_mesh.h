@@ -86,6 +86,12 @@ int lac_mesh_read (const char *path, const lac_mesh_opts *opts,
 int lac_mesh_box (lac_elem_type type, const size_t *n, const double *L,
                   double distort, lac_mesh **out);
 
+/* The disjoint union of two meshes (two bodies meshed separately; nothing
+ * glued): b's nodes, cells and groups follow a's, group names get the
+ * prefixes pa and pb. */
+int lac_mesh_merge (const lac_mesh *a, const char *pa, const lac_mesh *b,
+                    const char *pb, lac_mesh **out);
+
 /* query */
 const lac_group *lac_mesh_group (const lac_mesh *m, const char *name);
 int lac_mesh_facet_nodes (const lac_mesh *m, size_t cell, int face,
