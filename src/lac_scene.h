@@ -55,6 +55,7 @@
  *     traction             tx ty [tz]: traction per unit area
  *     force                fx fy [fz]: force per unit volume
  *   [exact]                analytic solution for errors and `exact` data
+ *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b
  *                          under inner pressure p) | thick_cylinder (plane
  *                          strain, 3d with uz = 0: cylinder a < r < b)
@@ -80,6 +81,7 @@
 #define LAC_SCENE_H
 
 #include <stddef.h>
+#include "lac_exact.h"
 #include "lac_material.h"
 #include "lac_spaces.h"
 
@@ -162,15 +164,10 @@ typedef struct lac_scene_load            /* [load NAME] */
   int ntraction, nforce;
 } lac_scene_load;
 
-typedef enum
-{
-  LAC_EXACT_NONE = -1, LAC_EXACT_THICK_SPHERE = 0, LAC_EXACT_THICK_CYLINDER
-} lac_exact_kind;
-
 typedef struct lac_scene_exact           /* [exact] */
 {
   lac_scene_section sec;
-  int solution;         /* lac_exact_kind */
+  int solution;         /* lac_exact_kind: index in lac_exact_table */
   double a, b, p, E, nu;
 } lac_scene_exact;
 

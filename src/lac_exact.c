@@ -1,0 +1,189 @@
+/* lac_exact.c -- the analytic solutions (see lac_exact.h)          [LAC §5]
+ *
+ * Solutions known to the code (the [exact] section of a scene):
+ *   thick_sphere    hollow sphere a <= R <= b under inner pressure p, outer
+ *                   surface free (Lame; Timoshenko & Goodier, Theory of
+ *                   Elasticity, 3rd ed., §137):
+ *                     u_R = p a^3 / (E (b^3 - a^3))
+ *                           ((1 - 2 nu) R + (1 + nu) b^3 / (2 R^2))
+ *   thick_cylinder  hollow cylinder a <= r <= b in plane strain (ibid.,
+ *                   §28):
+ *                     u_r = (1 + nu) p a^2 / (E (b^2 - a^2))
+ *                           ((1 - 2 nu) r + b^2 / r)
+ * Both are u = g(R) x with g = C1 + C2 / R^k (k = 3, 2), so their
+ * gradient is g I + g'(R) x x^T / R.
+ *
+ * Adding a solution: a setup (coefficients from the parameters), u and
+ * grad u (or reuse the radial ones), and one line in lac_exact_table.
+ */
+#include "lac_exact.h"
+
+#include <math.h>
+#include <string.h>
+
+/* ---- radial solutions u = g(R) x -------------------------------------- */
+
+double
+lac_exact_radius (const lac_exact *e, const double *x)
+{
+  double R2 = 0;
+  for (int i = 0; i < e->nr; i++)
+    R2 += x[i] * x[i];
+  return sqrt (R2);
+}
+
+static void
+radial_u (const lac_exact *e, const double *x, double *out)
+{
+  double R = lac_exact_radius (e, x), g = e->C1 + e->C2 / pow (R, e->k);
+  for (int i = 0; i < e->dim; i++)
+    out[i] = i < e->nr ? g * x[i] : 0.0;              /* u = g(R) x */
+}
+
+static void
+radial_grad (const lac_exact *e, const double *x, double *out)
+{
+  double R = lac_exact_radius (e, x), g = e->C1 + e->C2 / pow (R, e->k);
+  double gp = -e->k * e->C2 / pow (R, e->k + 1);      /* g'(R) */
+  for (int i = 0; i < e->dim; i++)
+    for (int j = 0; j < e->dim; j++)
+      out[i * e->dim + j] = (i < e->nr && j < e->nr)
+        ? (i == j ? g : 0.0) + gp * x[i] * x[j] / R : 0.0;
+}
+
+static void
+sphere_setup (lac_exact *e)
+{
+  double a = e->par.a, b = e->par.b, p = e->par.p, E = e->par.E;
+  double nu = e->par.nu, c = p * a * a * a / (E * (b * b * b - a * a * a));
+  e->nr = e->dim;
+  e->k = 3;
+  e->C1 = c * (1 - 2 * nu);
+  e->C2 = c * (1 + nu) * b * b * b / 2;
+}
+
+static void
+cylinder_setup (lac_exact *e)
+{
+  double a = e->par.a, b = e->par.b, p = e->par.p, E = e->par.E;
+  double nu = e->par.nu, c = (1 + nu) * p * a * a / (E * (b * b - a * a));
+  e->nr = 2;
+  e->k = 2;
+  e->C1 = c * (1 - 2 * nu);
+  e->C2 = c * b * b;
+}
+
+/* ---- the table -------------------------------------------------------- */
+
+#define M_PS (1u << LAC_PLANE_STRAIN)
+#define M_AXI (1u << LAC_AXISYMMETRIC)
+#define M_3D (1u << LAC_SOLID3D)
+
+const lac_exact_solution lac_exact_table[] = {    /* lac_exact_kind order */
+  { "thick_sphere", M_AXI | M_3D, sphere_setup, radial_u, radial_grad },
+  { "thick_cylinder", M_PS | M_3D, cylinder_setup, radial_u, radial_grad },
+  { NULL, 0, NULL, NULL, NULL }
+};
+
+int
+lac_exact_count (void)
+{
+  int n = 0;
+  while (lac_exact_table[n].name)
+    n++;
+  return n;
+}
+
+int
+lac_exact_find (const char *name)
+{
+  for (int k = 0; lac_exact_table[k].name; k++)
+    if (strcmp (lac_exact_table[k].name, name) == 0)
+      return k;
+  return LAC_EXACT_NONE;
+}
+
+const char *
+lac_exact_name (int kind)
+{
+  return kind >= 0 && kind < lac_exact_count () ? lac_exact_table[kind].name
+                                                : "none";
+}
+
+int
+lac_exact_applies (int kind, lac_model model)
+{
+  return kind >= 0 && kind < lac_exact_count ()
+         && (lac_exact_table[kind].models & (1u << model)) != 0;
+}
+
+void
+lac_exact_init (lac_exact *e, int kind, lac_model model,
+                const lac_exact_params *p)
+{
+  memset (e, 0, sizeof *e);
+  e->kind = kind >= 0 && kind < lac_exact_count () ? kind : LAC_EXACT_NONE;
+  e->model = model;
+  e->dim = lac_model_dim (model);
+  if (p)
+    e->par = *p;
+  if (e->kind != LAC_EXACT_NONE)
+    lac_exact_table[e->kind].setup (e);
+}
+
+/* ---- evaluation ------------------------------------------------------- */
+
+void
+lac_exact_u (const double *x, void *ctx, double *u)
+{
+  const lac_exact *e = ctx;
+  if (e->kind == LAC_EXACT_NONE)
+    memset (u, 0, (size_t) e->dim * sizeof *u);
+  else
+    lac_exact_table[e->kind].u (e, x, u);
+}
+
+void
+lac_exact_grad (const double *x, void *ctx, double *g)
+{
+  const lac_exact *e = ctx;
+  if (e->kind == LAC_EXACT_NONE)
+    memset (g, 0, (size_t) (e->dim * e->dim) * sizeof *g);
+  else
+    lac_exact_table[e->kind].grad (e, x, g);
+}
+
+/* sigma = D eps(u) with the Voigt strains of lac_material.h (engineering
+ * shears; axisymmetric hoop strain u_r / r, its limit d u_r / d r on the
+ * axis).  Zero if E, nu are not a valid material. */
+void
+lac_exact_sigma (const double *x, void *ctx, double *s)
+{
+  const lac_exact *e = ctx;
+  double u[3], g[9], eps[6] = { 0 }, D[36];
+  int d = e->dim, ns = lac_model_nstress (e->model);
+  lac_exact_u (x, ctx, u);
+  lac_exact_grad (x, ctx, g);
+  eps[0] = g[0];
+  eps[1] = g[d + 1];
+  if (e->model == LAC_SOLID3D)
+    {
+      eps[2] = g[8];
+      eps[3] = g[1] + g[3];
+      eps[4] = g[5] + g[7];
+      eps[5] = g[6] + g[2];
+    }
+  else
+    {
+      if (e->model == LAC_AXISYMMETRIC)     /* on the axis: d u_r / d r */
+        eps[2] = x[0] > 0 ? u[0] / x[0] : g[0];
+      eps[3] = g[1] + g[2];
+    }
+  for (int i = 0; i < ns; i++)
+    s[i] = 0;
+  if (lac_material_D (e->model, e->par.E, e->par.nu, D))
+    return;
+  for (int i = 0; i < ns; i++)
+    for (int j = 0; j < ns; j++)
+      s[i] += D[i * ns + j] * eps[j];
+}

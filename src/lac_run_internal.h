@@ -1,0 +1,30 @@
+/* lac_run_internal.h -- internal: shared by the lac_run*.c files
+ *
+ * Not part of the public interface: only lac_run.c (the run, stages mesh
+ * to solve), lac_run_rigid.c (the rigid-motion check of the assemble
+ * stage) and lac_run_post.c (stages post and output) include it.
+ */
+#ifndef LAC_RUN_INTERNAL_H
+#define LAC_RUN_INTERNAL_H
+
+#include "lac_exact.h"
+#include "lac_run.h"
+
+/* Append "key = value" to the summary (value from printf format). */
+int lac_run_summary_add (lac_run *r, const char *key, const char *fmt, ...)
+  __attribute__ ((format (printf, 3, 4)));
+
+/* The [exact] solution of the scene, set up for the run's model (kind
+ * LAC_EXACT_NONE without [exact]). */
+void lac_run_exact (const lac_run *r, lac_exact *e);
+
+/* Every connected body must be fixed against rigid motions by the fixed
+ * dofs of d; otherwise LAC_ESING with a message naming the body and the
+ * free motion (lac_run_rigid.c). */
+int lac_run_check_rigid (lac_run *r, const lac_dirichlet *d);
+
+/* Stages 5 and 6 (lac_run_post.c). */
+int lac_run_stage_post (lac_run *r);
+int lac_run_stage_output (lac_run *r);
+
+#endif /* LAC_RUN_INTERNAL_H */
