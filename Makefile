@@ -53,7 +53,7 @@ $(B)/lac: src/main.c $(LIB)
 $(B)/tests/check.o: tests/check.c tests/check.h | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) -c $< -o $@
-$(B)/tests/%: tests/unit/%.c $(B)/tests/check.o $(LIB)
+$(B)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(B)/tests/check.o $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(B)/tests/check.o $(LIB) $(LDLIBS) -o $@
 $(B)/tests/numcmp: tests/numcmp.c

@@ -12,6 +12,12 @@
  *                           ((1 - 2 nu) r + b^2 / r)
  * Both are u = g(R) x with g = C1 + C2 / R^k (k = 3, 2), so their
  * gradient is g I + g'(R) x x^T / R.
+ *   taylor          the Taylor patch test [LAC §5.1]: a uniform stress,
+ *                   sigma = -p on the vertical axis (y in 2D, z in 3D),
+ *                   every other component zero but the plane-strain
+ *                   sigma_zz = -nu p; u_i = c_i x_i vanishes on the
+ *                   symmetry planes x_i = 0.  The contact pressure is
+ *                   lambda = -p on every horizontal interface.
  *
  * Adding a solution: a setup (coefficients from the parameters), u and
  * grad u (or reuse the radial ones), and one line in lac_exact_table.
@@ -73,6 +79,42 @@ cylinder_setup (lac_exact *e)
   e->C2 = c * b * b;
 }
 
+/* ---- linear solutions u_i = c_i x_i ----------------------------------- */
+
+static void
+linear_u (const lac_exact *e, const double *x, double *out)
+{
+  for (int i = 0; i < e->dim; i++)
+    out[i] = e->c[i] * x[i];                          /* u = diag(c) x */
+}
+
+static void
+linear_grad (const lac_exact *e, const double *x, double *out)
+{
+  (void) x;
+  for (int i = 0; i < e->dim; i++)
+    for (int j = 0; j < e->dim; j++)
+      out[i * e->dim + j] = i == j ? e->c[i] : 0.0;
+}
+
+/* Strains of sigma = -p e_v e_v^T (v the last axis), Hooke's law. */
+static void
+taylor_setup (lac_exact *e)
+{
+  double p = e->par.p, E = e->par.E, nu = e->par.nu;
+  if (e->model == LAC_PLANE_STRAIN)           /* eps_zz = 0 */
+    {
+      e->c[0] = nu * (1 + nu) * p / E;
+      e->c[1] = -(1 - nu * nu) * p / E;
+    }
+  else                                        /* axisymmetric: (r, z); 3D */
+    {
+      for (int i = 0; i < e->dim - 1; i++)
+        e->c[i] = nu * p / E;
+      e->c[e->dim - 1] = -p / E;
+    }
+}
+
 /* ---- the table -------------------------------------------------------- */
 
 #define M_PS (1u << LAC_PLANE_STRAIN)
@@ -80,9 +122,13 @@ cylinder_setup (lac_exact *e)
 #define M_3D (1u << LAC_SOLID3D)
 
 const lac_exact_solution lac_exact_table[] = {    /* lac_exact_kind order */
-  { "thick_sphere", M_AXI | M_3D, sphere_setup, radial_u, radial_grad },
-  { "thick_cylinder", M_PS | M_3D, cylinder_setup, radial_u, radial_grad },
-  { NULL, 0, NULL, NULL, NULL }
+  { "thick_sphere", M_AXI | M_3D, "a b p E nu", sphere_setup, radial_u,
+    radial_grad },
+  { "thick_cylinder", M_PS | M_3D, "a b p E nu", cylinder_setup, radial_u,
+    radial_grad },
+  { "taylor", M_PS | M_AXI | M_3D, "p E nu", taylor_setup, linear_u,
+    linear_grad },
+  { NULL, 0, NULL, NULL, NULL, NULL }
 };
 
 int

@@ -22,7 +22,8 @@
 
 typedef enum
 {
-  LAC_EXACT_NONE = -1, LAC_EXACT_THICK_SPHERE = 0, LAC_EXACT_THICK_CYLINDER
+  LAC_EXACT_NONE = -1, LAC_EXACT_THICK_SPHERE = 0, LAC_EXACT_THICK_CYLINDER,
+  LAC_EXACT_TAYLOR
 } lac_exact_kind;
 
 typedef struct lac_exact_params       /* the keys of [exact] */
@@ -41,6 +42,7 @@ typedef struct lac_exact              /* a solution ready to evaluate */
                            (u = g(R) x over them); 0 if not radial  */
   int k;                /* radial: g = C1 + C2 / R^k                */
   double C1, C2;
+  double c[3];          /* linear solutions: u_i = c_i x_i              */
 } lac_exact;
 
 /* An entry of the table; `models` has bit (1 << model) for each model the
@@ -49,6 +51,7 @@ typedef struct lac_exact_solution
 {
   const char *name;
   unsigned models;
+  const char *params;   /* the [exact] keys it needs: "a b p E nu"     */
   void (*setup) (lac_exact *e);
   void (*u) (const lac_exact *e, const double *x, double *u);
   void (*grad) (const lac_exact *e, const double *x, double *g);

@@ -110,11 +110,20 @@ typedef struct lac_solver_info
   double rcond;          /* the estimate tested against LAC_RCOND_MIN      */
   double peak_bytes;     /* peak memory of the factorization as reported
                             by the back end (dense: the n^2 copy)          */
+  double flops;          /* floating-point operations of the factorization */
   const char *method;    /* e.g. "supernodal LL'" (static string)         */
   const char *ordering;  /* fill-reducing ordering, "" for dense          */
 } lac_solver_info;
 
 /* Fill *info from the last successful factorization (LAC_EINVAL if none). */
 int lac_solver_get_info (const lac_solver *s, lac_solver_info *info);
+/* Symbolic analysis only (no numbers are factored): the predicted
+ * nnz_factor, flops and peak_bytes of factoring A with back end `kind`, to
+ * decide whether it fits in memory.  CHOLMOD: exact counts from
+ * cholmod_analyze (peak_bytes = 8 (xsize + ssize) of the supernodal
+ * factor); UMFPACK: the upper-bound estimates of umfpack_symbolic; dense:
+ * n^2.  pivot_ratio and rcond are 0. */
+int lac_solver_estimate (lac_solver_kind kind, const lac_csc *A,
+                         lac_solver_info *info);
 
 #endif /* LAC_LINALG_H */

@@ -379,10 +379,8 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
   /* Initial status [LAC Alg. 1, lines 2-8]: closed or penetrating -> active */
   for (size_t i = 0; i < s->k; i++)
     {
-      double G = sys->G[i];
-      double tiny = 1e-12 * gap_scale (s, i);
-      s->active[i] = G <= tiny;
-      s->d[i] = G;
+      s->active[i] = sys->G[i] <= 0;     /* G is rounded by its producer */
+      s->d[i] = sys->G[i];
     }
   if (s->kind != LAC_SOLVER_CHOLMOD)
     return LAC_SUCCESS;

@@ -60,7 +60,8 @@ typedef struct lac_contact_system
   const lac_csc *K;    /* borrowed, n x n, Dirichlet applied (SPD)        */
   const double *F;     /* borrowed, n                                     */
   const lac_csc *C;    /* borrowed, n x k, rows of fixed dofs are zero     */
-  const double *G;     /* borrowed, k, mean gaps (fixed dofs moved in)     */
+  const double *G;     /* borrowed, k, mean gaps (fixed dofs moved in);
+                          values that are zero up to roundoff must be 0   */
   const double *rho;   /* borrowed, k, scaling of the status test; NULL: 1 */
 } lac_contact_system;
 

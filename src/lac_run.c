@@ -22,7 +22,7 @@
 #include "lac_status.h"
 
 static const char *const stage_names[LAC_NSTAGES] =
-  { "mesh", "material", "assemble", "solve", "post", "output" };
+  { "mesh", "contact", "material", "assemble", "solve", "post", "output" };
 
 const char *
 lac_run_stage_name (int stage)
@@ -59,8 +59,8 @@ lac_run_exact (const lac_run *r, lac_exact *e)
 
 /* ---- helpers ---------------------------------------------------------- */
 
-static double
-now (void)
+double
+lac_run_now (void)
 {
   struct timespec ts;
   clock_gettime (CLOCK_MONOTONIC, &ts);
@@ -438,7 +438,8 @@ stage_assemble (lac_run *r)
   if ((status = lac_assembly_stiffness (m, &r->mat, T))   /* K = sum K_e */
       || (status = add_loads (r))                           /* F = l(v)    */
       || (status = add_dirichlet (r, d))
-      || (status = lac_run_check_rigid (r, d)))
+      || (status = lac_run_check_rigid (r, d))
+      || (status = lac_run_contact_assemble (r, d)))      /* C, G */
     goto done;
   if (!(r->K = lac_csc_from_triplet (T)))
     {
@@ -479,6 +480,11 @@ stage_solve (lac_run *r)
   lac_solver *s = lac_solver_alloc ((lac_solver_kind) r->scene->scene.solver);
   lac_solver_info info;
   int status;
+  if (r->contact)
+    {
+      lac_solver_free (s);
+      return lac_run_contact_solve (r);              /* [LAC Alg. 1] */
+    }
   if (!s)
     return LAC_ENOMEM;
   if (!(r->u = lac_malloc (r->ndof * sizeof *r->u)))
@@ -541,6 +547,8 @@ lac_run_alloc (const lac_scene *sc, const lac_run_opts *opts)
   r->opts.out_dir = r->out_dir;
   r->effects[r->neffects++] = r->model == LAC_PLANE_STRAIN ? "plane strain"
     : r->model == LAC_AXISYMMETRIC ? "axisymmetric" : "3D solid";
+  if (sc->ncontact)
+    r->effects[r->neffects++] = "frictionless contact (LAC)";
   r->effects[r->neffects++] = "small strain";
   r->effects[r->neffects++] = "linear elastic material";
   return r;
@@ -556,6 +564,13 @@ lac_run_free (lac_run *r)
   lac_free (r->key);
   lac_free (r->val);
   lac_free (r->u_exact);
+  lac_free (r->lam_x);
+  lac_free (r->lam_exact);
+  lac_free (r->on_contact);
+  lac_newton_free (r->newton);
+  lac_contact_free (r->contact);
+  lac_pairing_free (r->pairing);
+  lac_macromesh_free (r->macro);
   lac_free (r->vm);
   lac_free (r->sigma);
   lac_free (r->u);
@@ -574,15 +589,15 @@ int
 lac_run_iterate (lac_run *r)
 {
   static int (*const stage[LAC_NSTAGES]) (lac_run *) = {
-    stage_mesh, stage_material, stage_assemble, stage_solve,
+    stage_mesh, lac_run_stage_contact, stage_material, stage_assemble, stage_solve,
     lac_run_stage_post, lac_run_stage_output };
-  double t0 = now ();
+  double t0 = lac_run_now ();
   int status;
   if (r->stage >= LAC_NSTAGES)
     return LAC_SUCCESS;
   r->progress[0] = '\0';
   status = stage[r->stage] (r);
-  r->time[r->stage] = now () - t0;
+  r->time[r->stage] = lac_run_now () - t0;
   if (status)
     return status;
   r->stage++;

@@ -10,7 +10,8 @@
  *     fprintf (stderr, "%s\n", r->progress);
  *
  * Stages: mesh (read/mesh through gmsh, check groups against the scene),
- * material (E, nu per cell), assemble (K, F, Dirichlet, rigid-motion
+ * contact (macro-mesh and pairing, lac_run_contact.c; skipped without a
+ * [contact] section), material (E, nu per cell), assemble (K, F, Dirichlet, rigid-motion
  * check), solve (dense | umfpack | cholmod), post (nodal stresses, von
  * Mises, errors against the exact solution, the summary), output (VTU, CSV,
  * Matrix Market, summary.txt, all renamed into place at the end).
@@ -27,12 +28,14 @@
 
 #include <stddef.h>
 #include "lac_assembly.h"
+#include "lac_contact.h"
 #include "lac_linalg.h"
+#include "lac_newton.h"
 #include "lac_scene.h"
 
 typedef enum
 {
-  LAC_STAGE_MESH, LAC_STAGE_MATERIAL, LAC_STAGE_ASSEMBLE, LAC_STAGE_SOLVE,
+  LAC_STAGE_MESH, LAC_STAGE_CONTACT, LAC_STAGE_MATERIAL, LAC_STAGE_ASSEMBLE, LAC_STAGE_SOLVE,
   LAC_STAGE_POST, LAC_STAGE_OUTPUT, LAC_NSTAGES
 } lac_stage;
 
@@ -69,6 +72,18 @@ typedef struct lac_run
   double *b;                /* owned, ndof: right-hand side after Dirichlet */
   double *u;                /* owned, ndof: the displacement, dim*node+i  */
   double rcond;             /* solver's condition estimate (0 if none)   */
+
+  /* contact (all NULL without a [contact] section) */
+  lac_macro *macro;         /* owned: the macro-mesh of the slave group  */
+  lac_pairing *pairing;     /* owned: its sub-facets against the master */
+  lac_pairing_facets master; /* points into the mesh's master group      */
+  lac_contact *contact;     /* owned: admissibility, C, G                */
+  lac_newton *newton;       /* owned: U, lambda, statuses, history       */
+  char *on_contact;         /* owned, nnodes: node on a contact surface  */
+  const char *fallback;     /* static: why the solver was changed, or NULL */
+  double *lam_x;            /* owned, 3k: centroid of T^m cap Gamma_C    */
+  double *lam_exact;        /* owned, k: mean exact n.sigma.n there      */
+  double time_refine, time_pairing;  /* seconds, parts of stage contact  */
 
   /* post-processing */
   double *sigma;            /* owned, nnodes*ns: nodal stresses          */

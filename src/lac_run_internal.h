@@ -23,6 +23,16 @@ void lac_run_exact (const lac_run *r, lac_exact *e);
  * free motion (lac_run_rigid.c). */
 int lac_run_check_rigid (lac_run *r, const lac_dirichlet *d);
 
+/* Seconds on a monotonic clock. */
+double lac_run_now (void);
+
+/* The contact part (lac_run_contact.c). */
+int lac_run_stage_contact (lac_run *r);
+int lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d);
+int lac_run_contact_solve (lac_run *r);
+int lac_run_contact_post (lac_run *r, const lac_exact *e);
+int lac_run_contact_csv (const lac_run *r, const char *path);
+
 /* Stages 5 and 6 (lac_run_post.c). */
 int lac_run_stage_post (lac_run *r);
 int lac_run_stage_output (lac_run *r);

@@ -169,6 +169,8 @@ lac_run_stage_post (lac_run *r)
     }
   if ((status = make_summary (r, &e)))
     return status;
+  if (r->contact && (status = lac_run_contact_post (r, &e)))
+    return status;
   if (r->u_exact)
     snprintf (r->progress, sizeof r->progress, "stresses, errors vs %s: "
               "L2 %.3e, H1 %.3e", lac_scene_exact_name
@@ -209,6 +211,10 @@ lac_run_stage_output (lac_run *r)
   if (o->csv && (!(path = lac_output_batch_add (b, "nodes.csv"))
                  || (status = lac_output_csv (path, &f))))
     goto done;
+  if (o->csv && r->contact
+      && (!(path = lac_output_batch_add (b, "contact.csv"))
+          || (status = lac_run_contact_csv (r, path))))
+    goto done;
   if (o->matrix && (!(path = lac_output_batch_add (b, "K.mtx"))
                     || (status = lac_csc_write_mm (r->K0, path))))
     goto done;
@@ -218,9 +224,11 @@ lac_run_stage_output (lac_run *r)
                                        (const char *const *) r->val)))
     goto done;
   status = lac_output_commit (b);
-  snprintf (r->progress, sizeof r->progress, "%s/: %s%s%ssummary.txt",
+  snprintf (r->progress, sizeof r->progress, "%s/: %s%s%s%ssummary.txt",
             r->out_dir, o->vtu ? "solution.vtu, " : "",
-            o->csv ? "nodes.csv, " : "", o->matrix ? "K.mtx, " : "");
+            o->csv ? "nodes.csv, " : "",
+            o->csv && r->contact ? "contact.csv, " : "",
+            o->matrix ? "K.mtx, " : "");
 done:
   if (!status && !path)
     status = LAC_ENOMEM;

@@ -216,6 +216,19 @@ mode_gram (const lac_run *r, const char *fixed, const size_t *comp,
  * free motion, which a solver's pivot message cannot:  the rigid modes
  * restricted to the fixed dofs of a body must be linearly independent,
  * i.e. their Gram matrix G_b must be non-singular. */
+/* Does body b touch a contact surface?  Such a body may be held by the
+ * contact constraints alone (the upper block of a patch test). */
+static int
+body_on_contact (const lac_run *r, const size_t *comp, size_t b)
+{
+  if (!r->on_contact)
+    return 0;
+  for (size_t a = 0; a < r->mesh->nnodes; a++)
+    if (comp[a] == b && r->on_contact[a])
+      return 1;
+  return 0;
+}
+
 int
 lac_run_check_rigid (lac_run *r, const lac_dirichlet *d)
 {
@@ -247,6 +260,8 @@ lac_run_check_rigid (lac_run *r, const lac_dirichlet *d)
   mode_gram (r, fixed, comp, ctr, nm, G);
   for (size_t b = 0; b < nb && !status; b++)
     {
+      if (body_on_contact (r, comp, b))
+        continue;         /* held by the contact constraints (if at all) */
       int nfree = free_modes (r->model, nm, G + 36 * b, ctr + 4 * b,
                               ctr[4 * b + 3], desc, sizeof desc);
       size_t c = cell0[b];

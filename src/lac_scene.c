@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lac_contact.h"
 #include "lac_exact.h"
 #include "lac_linalg.h"
 #include "lac_mem.h"
@@ -105,6 +106,11 @@ static const key_spec exact_keys[] = {
   NUM (lac_scene_exact, E, 0, HUGE_VAL, 1, "a number > 0"),
   NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
 };
+static const key_spec contact_keys[] = {
+  STR (lac_scene_contact, slave),
+  STR (lac_scene_contact, master),
+  NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
+};
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),
   BOOL (lac_scene_output, csv),
@@ -120,6 +126,7 @@ const section_spec lac_scene_sections[NSEC] = {
   { "load", 1, load_keys, NK (load_keys) },
   { "exact", 0, exact_keys, NK (exact_keys) },
   { "output", 0, output_keys, NK (output_keys) },
+  { "contact", 1, contact_keys, NK (contact_keys) },
 };
 
 /* ---- sections: lookup and creation ------------------------------------ */
@@ -178,6 +185,9 @@ set_defaults (int kind, lac_scene_section *s)
     case SEC_OUTPUT:
       ((lac_scene_output *) s)->vtu = ((lac_scene_output *) s)->csv = 1;
       break;
+    case SEC_CONTACT:
+      ((lac_scene_contact *) s)->epsilon = LAC_EPSILON_DEFAULT;
+      break;
     default:
       break;
     }
@@ -202,14 +212,16 @@ static size_t
 named_count (const lac_scene *sc, int kind)
 {
   return kind == SEC_MATERIAL ? sc->nmaterial
-         : kind == SEC_DIRICHLET ? sc->ndirichlet : sc->nload;
+         : kind == SEC_DIRICHLET ? sc->ndirichlet
+         : kind == SEC_CONTACT ? sc->ncontact : sc->nload;
 }
 
 static lac_scene_section *
 named_at (lac_scene *sc, int kind, size_t k)
 {
   return kind == SEC_MATERIAL ? &sc->material[k].sec
-         : kind == SEC_DIRICHLET ? &sc->dirichlet[k].sec : &sc->load[k].sec;
+         : kind == SEC_DIRICHLET ? &sc->dirichlet[k].sec
+         : kind == SEC_CONTACT ? &sc->contact[k].sec : &sc->load[k].sec;
 }
 
 #define GROW(arr, n)                                                    \
@@ -230,6 +242,8 @@ named_grow (lac_scene *sc, int kind)
     GROW (sc->material, sc->nmaterial);
   else if (kind == SEC_DIRICHLET)
     GROW (sc->dirichlet, sc->ndirichlet);
+  else if (kind == SEC_CONTACT)
+    GROW (sc->contact, sc->ncontact);
   else
     GROW (sc->load, sc->nload);
   return s;
@@ -432,9 +446,12 @@ lac_scene_free (lac_scene *sc)
     section_free (&sc->dirichlet[k].sec);
   for (size_t k = 0; k < sc->nload; k++)
     section_free (&sc->load[k].sec);
+  for (size_t k = 0; k < sc->ncontact; k++)
+    section_free (&sc->contact[k].sec);
   lac_free (sc->material);
   lac_free (sc->dirichlet);
   lac_free (sc->load);
+  lac_free (sc->contact);
   lac_free (sc->path);
   lac_free (sc->dir);
   lac_free (sc->basename);

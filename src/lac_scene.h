@@ -54,6 +54,14 @@
  *     pressure             p: traction -p n on the group (p > 0 pushes)
  *     traction             tx ty [tz]: traction per unit area
  *     force                fx fy [fz]: force per unit volume
+ *   [contact NAME]         frictionless unilateral contact by the LAC
+ *                          method (at most one section in this version)
+ *     slave                facet group carrying the multipliers (its cells
+ *                          are refined where Hypothesis 1 needs it)
+ *                                                     (required)
+ *     master               facet group of the other body  (required)
+ *     epsilon              admissibility threshold in (0, 1] [LAC Def. 1]
+ *                                                     0.01
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b
@@ -171,6 +179,14 @@ typedef struct lac_scene_exact           /* [exact] */
   double a, b, p, E, nu;
 } lac_scene_exact;
 
+typedef struct lac_scene_contact         /* [contact NAME] */
+{
+  lac_scene_section sec;
+  char *slave;          /* owned: facet group carrying the multipliers    */
+  char *master;         /* owned: facet group of the other body           */
+  double epsilon;       /* admissibility threshold [LAC Def. 1]            */
+} lac_scene_contact;
+
 typedef struct lac_scene_output          /* [output] */
 {
   lac_scene_section sec;
@@ -186,10 +202,11 @@ typedef struct lac_scene
   lac_scene_mesh mesh;
   lac_scene_exact exact;        /* exact.sec.line == 0: no [exact]       */
   lac_scene_output output;
-  size_t nmaterial, ndirichlet, nload;
+  size_t nmaterial, ndirichlet, nload, ncontact;
   lac_scene_material *material;     /* owned, nmaterial  */
   lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */
   lac_scene_load *load;             /* owned, nload      */
+  lac_scene_contact *contact;       /* owned, ncontact (0 or 1) */
 } lac_scene;
 
 /* construct / destroy */

@@ -279,6 +279,17 @@ or_list (char *buf, size_t size, int which, unsigned models)
                               name[k]);
 }
 
+/* Is `key` one of the blank-separated words of `need`? */
+static int
+exact_needs (const char *need, const char *key)
+{
+  size_t n = strlen (key);
+  for (const char *p = need; (p = strstr (p, key)); p += n)
+    if ((p == need || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
+      return 1;
+  return 0;
+}
+
 static int
 finish_exact (lac_scene *sc)
 {
@@ -292,10 +303,12 @@ finish_exact (lac_scene *sc)
   or_list (list, sizeof list, 0, 0);
   if ((status = require (sc, &x->sec, "solution", list)))
     return status;
+  const char *need = lac_exact_table[x->solution].params;
   for (int k = 0; k < 5; k++)
-    if ((status = require (sc, &x->sec, keys[k], "a number")))
+    if (exact_needs (need, keys[k])
+        && (status = require (sc, &x->sec, keys[k], "a number")))
       return status;
-  if (x->a >= x->b)
+  if (exact_needs (need, "a") && x->a >= x->b)
     return lac_scene_error (sc, &x->sec, "b", LAC_EINVAL, "expected b > a "
                             "= %g", x->a);
   if (!lac_exact_applies (x->solution, model))
@@ -304,6 +317,23 @@ finish_exact (lac_scene *sc)
       return lac_scene_error (sc, &x->sec, "solution", LAC_EINVAL, "needs "
                               "model = %s", list);
     }
+  return LAC_SUCCESS;
+}
+
+static int
+finish_contact (lac_scene *sc, lac_scene_contact *c)
+{
+  int status;
+  if ((status = require (sc, &c->sec, "slave", "facet physical group"))
+      || (status = require (sc, &c->sec, "master", "facet physical group")))
+    return status;
+  if (c != sc->contact)
+    return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "only one "
+                            "[contact] section is supported (the first is "
+                            "[contact %s])", sc->contact[0].sec.name);
+  if (strcmp (c->slave, c->master) == 0)
+    return lac_scene_error (sc, &c->sec, "master", LAC_EINVAL, "the master "
+                            "group must differ from the slave group");
   return LAC_SUCCESS;
 }
 
@@ -319,6 +349,9 @@ lac_scene_finish (lac_scene *sc)
       return status;
   for (size_t k = 0; k < sc->nload; k++)
     if ((status = finish_load (sc, &sc->load[k])))
+      return status;
+  for (size_t k = 0; k < sc->ncontact; k++)
+    if ((status = finish_contact (sc, &sc->contact[k])))
       return status;
   return LAC_SUCCESS;
 }

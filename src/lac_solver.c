@@ -10,9 +10,10 @@
  *
  * The 64-bit (SuiteSparse_long) versions of UMFPACK and CHOLMOD are used so
  * that large factors (nnz(L) > 2^31 for 3D problems of ~1M unknowns) do not
- * overflow.  Singularity is decided by one relative pivot test for all back
- * ends (LAC_PIVOT_RTOL, documented in lac_linalg.h): a floating body must be
- * reported, not solved into garbage.
+ * overflow.  Singularity is decided the same way for all back ends, by a
+ * relative pivot test (LAC_PIVOT_RTOL) and a condition estimate from two
+ * extra solves (LAC_RCOND_MIN), both documented in lac_linalg.h: a floating
+ * body must be reported, not solved into garbage.
  *
  * SuiteSparse allocates with its own malloc; its objects are freed with its
  * own free calls in this file.  CHOLMOD's printing is switched off
@@ -187,6 +188,7 @@ dense_factor (lac_solver *s, const lac_csc *A)
                LAC_PIVOT_RTOL * amax);
   s->info.nnz_factor = (double) n * (double) n;
   s->info.peak_bytes = 8.0 * (double) n * (double) n;
+  s->info.flops = 2.0 / 3.0 * (double) n * (double) n * (double) n;
   s->info.method = "LU, partial pivoting (GSL)";
   s->info.ordering = "";
   return LAC_SUCCESS;
@@ -212,7 +214,7 @@ dense_solve (lac_solver *s, const double *b, double *x)
 static int
 umf_singular (lac_solver *s, const char *why)
 {
-  ss_long n = (ss_long) s->n, kmin = 0, lnz, unz, nr, nc, nzud;
+  ss_long n = (ss_long) s->n, kmin = 0;
   ss_long *Q = lac_malloc ((size_t) n * sizeof *Q);
   double *D = lac_malloc ((size_t) n * sizeof *D);
   double umin = HUGE_VAL;
@@ -223,9 +225,7 @@ umf_singular (lac_solver *s, const char *why)
       lac_free (D);
       LAC_ERROR (LAC_ESING, "singular matrix (%s)", why);
     }
-  st = umfpack_dl_get_lunz (&lnz, &unz, &nr, &nc, &nzud, s->numeric);
-  if (st == UMFPACK_OK)
-    st = umfpack_dl_get_numeric (NULL, NULL, NULL, NULL, NULL, NULL, NULL, Q,
+  st = umfpack_dl_get_numeric (NULL, NULL, NULL, NULL, NULL, NULL, NULL, Q,
                                  D, NULL, NULL, s->numeric);
   for (ss_long k = 0; st == UMFPACK_OK && k < n; k++)
     if (fabs (D[k]) < umin)
@@ -282,6 +282,7 @@ umf_factor (lac_solver *s, const lac_csc *A)
   if (!(info[UMFPACK_RCOND] >= LAC_PIVOT_RTOL))   /* also catches NaN */
     return umf_singular (s, "rcond below LAC_PIVOT_RTOL");
   s->info.nnz_factor = info[UMFPACK_LNZ] + info[UMFPACK_UNZ] - (double) n;
+  s->info.flops = info[UMFPACK_FLOPS];
   s->info.peak_bytes = info[UMFPACK_PEAK_MEMORY] * info[UMFPACK_SIZE_OF_UNIT];
   s->info.method = "LU (UMFPACK)";
   s->info.ordering = info[UMFPACK_ORDERING_USED] == UMFPACK_ORDERING_METIS
@@ -344,7 +345,7 @@ check_symmetric (const lac_csc *A)
 
 /* Upper triangle of A as a CHOLMOD matrix with stype = 1. */
 static cholmod_sparse *
-upper_copy (const lac_csc *A, cholmod_common *cc)
+upper_copy (const lac_csc *A, int xtype, cholmod_common *cc)
 {
   size_t n = A->ncol, nz = 0;
   cholmod_sparse *C;
@@ -353,7 +354,7 @@ upper_copy (const lac_csc *A, cholmod_common *cc)
   for (size_t j = 0; j < n; j++)
     for (int q = A->p[j]; q < A->p[j + 1]; q++)
       nz += (size_t) A->i[q] <= j;
-  C = cholmod_l_allocate_sparse (n, n, nz, 1, 1, 1, CHOLMOD_REAL, cc);
+  C = cholmod_l_allocate_sparse (n, n, nz, 1, 1, 1, xtype, cc);
   if (!C)
     LAC_ERROR_NULL (LAC_ENOMEM, "upper triangle for CHOLMOD (%zu entries)",
                     nz);
@@ -366,8 +367,9 @@ upper_copy (const lac_csc *A, cholmod_common *cc)
       Cp[j] = (ss_long) nz;
       for (int q = A->p[j]; q < A->p[j + 1] && (size_t) A->i[q] <= j; q++)
         {
-          Ci[nz] = A->i[q];
-          Cx[nz++] = A->x[q];
+          if (Cx)
+            Cx[nz] = A->x[q];
+          Ci[nz++] = A->i[q];
         }
     }
   Cp[n] = (ss_long) nz;
@@ -461,7 +463,7 @@ chol_factor (lac_solver *s, const lac_csc *A)
   if (status)
     return status;
   cc->memory_usage = 0;
-  if (!(C = upper_copy (A, cc)))
+  if (!(C = upper_copy (A, CHOLMOD_REAL, cc)))
     return LAC_ENOMEM;
   s->L = cholmod_l_analyze (C, cc);
   if (s->L)
@@ -480,6 +482,7 @@ chol_factor (lac_solver *s, const lac_csc *A)
   if ((status = chol_check_pivots (s)))
     return status;
   s->info.nnz_factor = cc->lnz;
+  s->info.flops = cc->fl;
   s->info.peak_bytes = (double) cc->memory_usage;
   s->info.method = s->L->is_super ? "supernodal LL' (CHOLMOD)"
     : s->L->is_ll ? "simplicial LL' (CHOLMOD)" : "simplicial LDL' (CHOLMOD)";
@@ -635,6 +638,108 @@ int
 lac_solver_solve (lac_solver *s, const double *b, double *x)
 {
   return lac_solver_solve_many (s, 1, b, x);
+}
+
+/* Symbolic analyses for lac_solver_estimate. */
+static int
+umf_estimate (const lac_csc *A, lac_solver_info *e)
+{
+  size_t n = A->ncol, nnz = (size_t) A->p[n];
+  ss_long *Ap = lac_malloc ((n + 1) * sizeof *Ap);
+  ss_long *Ai = lac_malloc (nnz * sizeof *Ai);
+  double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+  void *symbolic = NULL;
+  int st = UMFPACK_ERROR_out_of_memory;
+  if (Ap && Ai)
+    {
+      for (size_t j = 0; j <= n; j++)
+        Ap[j] = A->p[j];
+      for (size_t q = 0; q < nnz; q++)
+        Ai[q] = A->i[q];
+      umfpack_dl_defaults (control);
+      st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, Ap, Ai, NULL,
+                                &symbolic, control, info);
+      umfpack_dl_free_symbolic (&symbolic);
+    }
+  lac_free (Ap);
+  lac_free (Ai);
+  if (st != UMFPACK_OK)
+    LAC_ERROR (st == UMFPACK_ERROR_out_of_memory ? LAC_ENOMEM : LAC_EDEP,
+               "UMFPACK symbolic analysis failed with status %d", st);
+  e->nnz_factor = info[UMFPACK_LNZ_ESTIMATE] + info[UMFPACK_UNZ_ESTIMATE]
+                  - (double) n;
+  e->flops = info[UMFPACK_FLOPS_ESTIMATE];
+  e->peak_bytes = info[UMFPACK_PEAK_MEMORY_ESTIMATE]
+                  * info[UMFPACK_SIZE_OF_UNIT];
+  e->method = "LU (UMFPACK), estimate";
+  e->ordering = "";
+  return LAC_SUCCESS;
+}
+
+static int
+chol_estimate (const lac_csc *A, lac_solver_info *e)
+{
+  cholmod_common cc;
+  cholmod_sparse *C;
+  cholmod_factor *L = NULL;
+  int status = LAC_SUCCESS;
+  if (!cholmod_l_start (&cc))
+    LAC_ERROR (LAC_EDEP, "cholmod_l_start failed");
+  cc.print = 0;
+  C = upper_copy (A, CHOLMOD_PATTERN, &cc);
+  if (C)
+    L = cholmod_l_analyze (C, &cc);
+  if (!C)
+    status = LAC_ENOMEM;
+  else if (!L)
+    status = LAC_ERRMSG (cc.status == CHOLMOD_OUT_OF_MEMORY ? LAC_ENOMEM
+                         : LAC_EDEP, "CHOLMOD analyze failed with status %d",
+                         cc.status);
+  else
+    {
+      double xs = L->is_super ? (double) L->xsize : cc.lnz;
+      e->nnz_factor = cc.lnz;
+      e->flops = cc.fl;
+      e->peak_bytes = 8.0 * (xs + (double) (L->is_super ? L->ssize : 0));
+      e->method = L->is_super ? "supernodal LL' (CHOLMOD), estimate"
+                              : "simplicial (CHOLMOD), estimate";
+      e->ordering = chol_ordering (L->ordering);
+    }
+  cholmod_l_free_factor (&L, &cc);
+  cholmod_l_free_sparse (&C, &cc);
+  cholmod_l_finish (&cc);
+  return status;
+}
+
+int
+lac_solver_estimate (lac_solver_kind kind, const lac_csc *A,
+                     lac_solver_info *info)
+{
+  double n;
+  if (!A || !info)
+    LAC_ERROR (LAC_EINVAL, "no matrix or no info");
+  if (A->nrow != A->ncol || A->ncol == 0)
+    LAC_ERROR (LAC_EBADLEN, "matrix is %zu x %zu, not square and non-empty",
+               A->nrow, A->ncol);
+  memset (info, 0, sizeof *info);
+  info->n = A->ncol;
+  n = (double) A->ncol;
+  switch (kind)
+    {
+    case LAC_SOLVER_DENSE:
+      info->nnz_factor = n * n;
+      info->peak_bytes = 8 * n * n;
+      info->flops = 2.0 / 3.0 * n * n * n;
+      info->method = "LU, partial pivoting (GSL), estimate";
+      info->ordering = "";
+      return LAC_SUCCESS;
+    case LAC_SOLVER_UMFPACK:
+      return umf_estimate (A, info);
+    case LAC_SOLVER_CHOLMOD:
+      return chol_estimate (A, info);
+    default:
+      LAC_ERROR (LAC_EINVAL, "unknown solver kind %d", (int) kind);
+    }
 }
 
 int

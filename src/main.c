@@ -31,8 +31,9 @@ static const char *help_text =
   "lac run reads the scene file SCENE (INI format; every section and key is\n"
   "described in chapters/01-problem/scene-format.md and src/lac_scene.h),\n"
   "meshes or reads the mesh with gmsh, assembles and solves the linear\n"
-  "elastic problem, computes nodal stresses and, when the scene has an\n"
-  "[exact] section, the errors against the exact solution.\n"
+  "elastic problem (with frictionless contact by the LAC method when the\n"
+  "scene has a [contact] section), computes nodal stresses and, when the\n"
+  "scene has an [exact] section, the errors against the exact solution.\n"
   "\n"
   "scene sections and keys (defaults in parentheses):\n"
   "  [scene]          title, model = plane_strain|axisymmetric|3d,\n"
@@ -47,7 +48,10 @@ static const char *help_text =
   "                   clamp = yes, or symmetry = x|y|z|r, or exact = yes\n"
   "  [load NAME]      group, and pressure = P, or traction = TX TY [TZ], or\n"
   "                   force = FX FY [FZ] (per unit volume; group optional)\n"
-  "  [exact]          solution = thick_sphere|thick_cylinder, a, b, p, E, nu\n"
+  "  [contact NAME]   slave = FACET_GROUP, master = FACET_GROUP,\n"
+  "                   epsilon (0.01): admissibility threshold in (0, 1]\n"
+  "  [exact]          solution = thick_sphere|thick_cylinder (a, b, p, E, nu)\n"
+  "                   | taylor (p, E, nu: uniform pressure, patch test)\n"
   "  [output]         vtu = yes|no (yes), csv = yes|no (yes),\n"
   "                   matrix = yes|no (no)\n"
   "\n"
@@ -70,11 +74,14 @@ static const char *help_text =
   "leaves the files of an earlier run untouched; summary.txt comes last):\n"
   "  solution.vtu      mesh, displacement, stresses, von Mises (ParaView)\n"
   "  nodes.csv         one row per node: coordinates, displacement, stress\n"
+  "  contact.csv       one row per macro-element: centroid, measure,\n"
+  "                    admissibility, lambda, mean gap, status ([contact])\n"
   "  K.mtx             the stiffness matrix, Matrix Market ([output] matrix)\n"
   "  summary.txt       the summary lines printed on stdout\n"
   "\n"
   "stderr: the active effects and one progress line per stage (mesh,\n"
-  "material, assemble, solve, post, output).  stdout: the summary, one\n"
+  "contact, material, assemble, solve, post, output), with the active-set\n"
+  "history (iteration, residual, active multipliers, changed statuses).  stdout: the summary, one\n"
   "'name = value' per line.  Exit status: 0 success, 1 the run failed\n"
   "(message 'lac: ...' on stderr), 2 bad command line.\n"
   "\n"
@@ -168,6 +175,22 @@ parse_run_args (int argc, char **argv, cmdline *c)
   return 0;
 }
 
+/* The active-set history [LAC Alg. 1]: one line per iteration. */
+static void
+print_newton (const lac_run *r)
+{
+  if (r->fallback)
+    fprintf (stderr, "lac:       note: %s\n", r->fallback);
+  fprintf (stderr, "lac:       iter  residual    ncp         active  "
+           "changed\n");
+  for (size_t k = 0; k < r->newton->nhist; k++)
+    {
+      const lac_newton_record *h = &r->newton->hist[k];
+      fprintf (stderr, "lac:       %4d  %.3e   %.3e   %6zu  %7zu\n",
+               h->iter, h->residual, h->ncp, h->nactive, h->nchanged);
+    }
+}
+
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
  * summary. */
 static int
@@ -206,9 +229,13 @@ cmd_run (const cmdline *c)
       int stage = r->stage;
       status = lac_run_iterate (r);
       if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
-        fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
-                 LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
-                 r->time[stage]);
+        {
+          fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
+                   LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
+                   r->time[stage]);
+          if (stage == LAC_STAGE_SOLVE && r->newton)
+            print_newton (r);
+        }
     }
   while (status == LAC_CONTINUE);
 

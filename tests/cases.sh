@@ -44,8 +44,8 @@ if "$LAC" run chapters/01-problem/sphere-axi.scene --out "$C/demo" > "$C/demo.ou
     case_fail demo "stdout differs from summary.txt"
   elif ! grep -q '^lac: effects: axisymmetric, small strain, linear elastic material$' "$C/demo.err"; then
     case_fail demo "no effects line on stderr"
-  elif [ "$(grep -c '^lac: \[[1-6]/6\]' "$C/demo.err")" -ne 6 ]; then
-    case_fail demo "expected 6 progress lines on stderr"
+  elif [ "$(grep -c '^lac: \[[1-7]/7\]' "$C/demo.err")" -ne 7 ]; then
+    case_fail demo "expected 7 progress lines on stderr"
   elif [ -z "$(summary_value "$C/demo.out" err_l2)" ] || [ -z "$(summary_value "$C/demo.out" rel_err_u_r_inner)" ]; then
     case_fail demo "no error lines in the summary"
   else

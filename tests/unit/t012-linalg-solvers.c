@@ -120,6 +120,18 @@ compare (const char *what, const lac_csc *A, const int *kinds, int nk)
                   && info.pivot_ratio >= LAC_PIVOT_RTOL && info.method,
                   "%s: info filled (%s, %s)", name, info.method,
                   info.ordering);
+      {
+        lac_solver_info est;
+        check_status (lac_solver_estimate ((lac_solver_kind) kinds[s], A,
+                                           &est), LAC_SUCCESS, "estimate");
+        /* exact for dense and CHOLMOD, an upper bound for UMFPACK */
+        double hi = kinds[s] == LAC_SOLVER_UMFPACK ? 4 : 1;
+        check_true (est.nnz_factor >= info.nnz_factor
+                    && est.nnz_factor <= hi * info.nnz_factor
+                    && est.flops > 0 && est.peak_bytes > 0,
+                    "%s: %s estimate nnz %.6g vs factor %.6g", what, name,
+                    est.nnz_factor, info.nnz_factor);
+      }
       if (s > 0)
         check_true (reldiff (NRHS * n, X[s], X[0]) < 1e-10,
                     "%s: %s vs %s differ by %.3g", what, name,

@@ -1,0 +1,57 @@
+# tests/cases-contact.sh -- contact scenes (sourced by tests/run.sh)
+#
+# The Taylor patch test [LAC §5.1, Tables 1-2] through `lac run`, for the
+# nine element types of the paper in 2D and 3D, with the slave and master
+# surfaces as in the scene and swapped: the maximum relative errors of
+# lambda and of the stresses must be <= 1e-12 and the active set must settle
+# in <= 3 iterations.  Same conventions as tests/cases.sh ($B, pass, fail).
+
+B=${B:-build}
+C="$B/cases-contact"
+LAC="$B/lac"
+rm -rf "$C"
+mkdir -p "$C"
+
+contact_ok () { pass=$((pass+1)); [ -n "$LAC_TEST_VERBOSE" ] && echo "ok   case $1"; return 0; }
+contact_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
+value_of () { sed -n "s/^$2 = //p" "$1"; }
+
+# taylor SCENE ELEMENT SWAP: run and check the three acceptance numbers.
+taylor () {
+  name="taylor-$2-swap$3"
+  swap=""
+  [ "$3" = 1 ] && swap="--set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom"
+  # shellcheck disable=SC2086
+  if ! "$LAC" run "chapters/08-experiments/$1.scene" --set element="$2" $swap \
+       --quiet --no-output > "$C/$name.out" 2> "$C/$name.err"; then
+    contact_fail "$name" "lac run failed: $(tail -1 "$C/$name.err")"
+    return
+  fi
+  el=$(value_of "$C/$name.out" max_rel_err_lambda)
+  es=$(value_of "$C/$name.out" max_rel_err_sigma)
+  it=$(value_of "$C/$name.out" newton_iterations)
+  if awk -v a="$el" -v b="$es" -v n="$it" 'BEGIN { exit !(a != "" && a <= 1e-12 && b != "" && b <= 1e-12 && n >= 1 && n <= 3) }'; then
+    contact_ok "$name"
+  else
+    contact_fail "$name" "max_rel_err_lambda = $el, max_rel_err_sigma = $es (want <= 1e-12), newton_iterations = $it (want <= 3)"
+  fi
+}
+
+for e in tri3 quad4 tri6 quad8; do
+  taylor taylor2d "$e" 0
+  taylor taylor2d "$e" 1
+done
+for e in tet4 hex8 tet10 hex20 hex27; do
+  taylor taylor3d "$e" 0
+  taylor taylor3d "$e" 1
+done
+
+# The mesh-size ratio at the interface is >= 1.3 and the meshes do not
+# match: the lower body has 4 cells per side, the upper 3 (level 0).
+if "$LAC" run chapters/08-experiments/taylor3d.scene --set element=hex8 --set level=1 \
+     --quiet --no-output > "$C/level1.out" 2> "$C/level1.err" \
+   && [ "$(value_of "$C/level1.out" macro_elements)" = 25 ]; then
+  contact_ok taylor-level1
+else
+  contact_fail taylor-level1 "level 1 (7 and 5 cells per edge): $(tail -1 "$C/level1.err"), macro_elements = $(value_of "$C/level1.out" macro_elements) (want 25)"
+fi
