@@ -11,7 +11,8 @@
  *   area_i          += w                            (M^LAC_ii [LAC (16)])
  *
  * so that (C^T U)_i = int [u_N] with [u_N] = (u^S - u^M).n^S (lac_newton.h).
- * Axisymmetric: w carries 2 pi r.  The tangent ignores the variation of
+ * Against a rigid obstacle (lac_obstacle.h) the points have no master
+ * facet and C^M = 0.  Axisymmetric: w carries 2 pi r.  The tangent ignores the variation of
  * n^S and of the pairing with U (a "frozen geometry", what makes the method
  * a generalized Newton [LAC §4.5]).
  */
@@ -48,8 +49,9 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
   int sn[LAC_MAX_FACE_NODES], mn[LAC_MAX_FACE_NODES];
   lac_map ms, mm;
   int dim = mesh->dim, st = LAC_SUCCESS;
-  int ns = lac_contact_facet_eval (mesh, scell, sface, xs, sn, &ms);
-  int nm = ns < 0 ? ns : lac_contact_facet_eval (mesh, mcell, mface, xm, mn, &mm);
+  int ns = lac_contact_facet_eval (mesh, scell, sface, xs, sn, &ms), nm = 0;
+  if (mcell != (size_t) -1 && ns >= 0)          /* (size_t) -1: rigid obstacle */
+    nm = lac_contact_facet_eval (mesh, mcell, mface, xm, mn, &mm);
   if (ns < 0 || nm < 0)
     return ns < 0 ? -ns : -nm;
   if (model == LAC_AXISYMMETRIC)
@@ -58,7 +60,7 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
     for (int c = 0; !st && c < dim; c++)                  /* C^S */
       st = lac_triplet_add (T, (size_t) sn[a] * dim + c, i,
                             w * ms.N[a] * ms.normal[c]);
-  for (int b = 0; !st && b < nm; b++)
+  for (int b = 0; !st && mcell != (size_t) -1 && b < nm; b++)
     for (int c = 0; !st && c < dim; c++)                  /* -C^M */
       st = lac_triplet_add (T, (size_t) mn[b] * dim + c, i,
                             -w * mm.N[b] * ms.normal[c]);
@@ -74,7 +76,7 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
 {
   size_t ndof = (size_t) mesh->dim * mesh->nnodes;
   int dimf = P->dim - 1, st = LAC_SUCCESS;
-  if (master->mesh != mesh)
+  if (master && master->n > 0 && master->mesh != mesh)
     LAC_ERROR (LAC_EINVAL, "slave and master facets must belong to one mesh");
   lac_triplet *T = lac_triplet_alloc (ndof, c->k, 64 * (c->k + 1));
   if (!T)
@@ -87,10 +89,12 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
         for (size_t p = P->ptr[j]; !st && p < P->ptr[j + 1]; p++)
           {
             size_t f = P->master[p];
+            int rigid = !master || f >= master->n;     /* rigid obstacle */
             st = add_point (T, mesh, model, M->cell[j], M->face[j],
-                            P->xs + p * dimf, master->cell[f],
-                            master->face[f], P->xm + p * dimf, P->w[p],
-                            P->gap[p], i, &c->G[i], &c->area[i]);
+                            P->xs + p * dimf,
+                            rigid ? (size_t) -1 : master->cell[f],
+                            rigid ? -1 : master->face[f], P->xm + p * dimf,
+                            P->w[p], P->gap[p], i, &c->G[i], &c->area[i]);
           }
     }
   /* A mean gap that is zero up to the roundoff of the projections (a

@@ -58,7 +58,8 @@ typedef struct lac_contact
 
 /* Items 1 and 2 above.  The pairing's slave list must be the sub-facets of
  * M in order (cell = M->cell, face = M->face); master facets are given by
- * `master` (their mesh may be the same as `mesh`).  epsilon in (0, 1].
+ * `master` (of the same mesh), or master is NULL for a rigid obstacle
+ * (lac_obstacle.h: no master part in C).  epsilon in (0, 1].
  * Errors: LAC_EINVAL (epsilon out of range, list mismatch), LAC_EADMISS
  * (no admissible macro-element at all: the message gives the largest
  * criterion found), LAC_ENOMEM. */

@@ -370,6 +370,7 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
                sys->K->nrow, sys->K->ncol, sys->C->nrow, sys->C->ncol, s->n, s->k);
   s->sys = sys;
   s->nhist = 0;
+  s->restarted = 0;
   memset (s->U, 0, s->n * sizeof *s->U);
   memset (s->lambda, 0, s->k * sizeof *s->lambda);
   lac_csc_free (s->Ct);
@@ -399,6 +400,17 @@ lac_newton_iterate (lac_newton *s)
   /* Step 21: solve the saddle system for the current active set */
   status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
                                          : saddle_iterate (s);
+  if (status == LAC_ESING && s->nhist == 0 && r.nactive < s->k)
+    {
+      /* A body held by contact alone cannot start with open gaps: its
+       * stiffness alone is singular.  Start again from every multiplier
+       * active; the status update releases those in tension. */
+      memset (s->active, 1, s->k);
+      s->restarted = 1;
+      r.nactive = s->k;
+      status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
+                                             : saddle_iterate (s);
+    }
   if (status)
     return status;
   mean_gaps (s);                                          /* d = G - C^T U */

@@ -91,6 +91,8 @@ typedef struct lac_newton
   lac_csc *Ct;         /* owned: C^T (rows of C^T = multipliers)            */
   double *work;        /* owned, scratch                                   */
   size_t changed;      /* statuses changed by the last update               */
+  int restarted;       /* 1: the first solve was singular with the initial
+                          statuses and was redone with all active          */
   int factored_K;
 } lac_newton;
 
@@ -101,7 +103,10 @@ void lac_newton_free (lac_newton *s);
  * G_i <= 0 (closed or penetrating at the start), factorize K (cholmod). */
 int lac_newton_set (lac_newton *s, const lac_contact_system *sys);
 /* One iteration: solve the saddle system for the current active set,
- * update U, lambda, d and the statuses; append a history record. */
+ * update U, lambda, d and the statuses; append a history record.  If the
+ * very first system is singular with some multipliers inactive (a body
+ * held by contact alone, starting with open gaps), it is solved again with
+ * every multiplier active (s->restarted = 1). */
 int lac_newton_iterate (lac_newton *s);
 /* LAC_SUCCESS when the last iteration changed no status and the
  * residuals are below tol; LAC_CONTINUE otherwise. */

@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "lac_mem.h"
+#include "lac_obstacle.h"
 #include "lac_status.h"
 
 #define NEWTON_MAXIT 50
@@ -34,7 +35,7 @@ mark_contact_nodes (lac_run *r, const lac_group *s, const lac_group *m)
     LAC_ERROR (LAC_ENOMEM, "contact node marks");
   for (size_t k = 0; k < s->nnodes; k++)
     r->on_contact[s->node[k]] = 1;
-  for (size_t k = 0; k < m->nnodes; k++)
+  for (size_t k = 0; m && k < m->nnodes; k++)
     r->on_contact[m->node[k]] = 1;
   return LAC_SUCCESS;
 }
@@ -79,7 +80,7 @@ lac_run_stage_contact (lac_run *r)
     }
   c = &sc->contact[0];
   if (!contact_group (r, "slave", c->slave)
-      || !contact_group (r, "master", c->master))
+      || (c->master && !contact_group (r, "master", c->master)))
     return LAC_EINVAL;
   t0 = lac_run_now ();
   status = lac_macromesh_build (&r->mesh, c->slave, NULL, &r->macro);
@@ -88,14 +89,24 @@ lac_run_stage_contact (lac_run *r)
                             lac_error_message ());
   r->time_refine = lac_run_now () - t0;
   r->ndof = (size_t) r->dim * r->mesh->nnodes;
-  const lac_group *gm = lac_mesh_group (r->mesh, c->master);
+  const lac_group *gm = c->master ? lac_mesh_group (r->mesh, c->master) : NULL;
   const lac_group *gs = lac_mesh_group (r->mesh, c->slave);
-  r->master = lac_pairing_facets_of (r->mesh, gm);
   lac_pairing_facets S = { r->mesh, r->macro->ptr[r->macro->n],
                            r->macro->cell, r->macro->face };
   lac_pairing_opts_init (&po);
   t0 = lac_run_now ();
-  status = lac_pairing_build (&S, &r->master, &po, &r->pairing);
+  if (gm)
+    {
+      r->master = lac_pairing_facets_of (r->mesh, gm);
+      status = lac_pairing_build (&S, &r->master, &po, &r->pairing);
+    }
+  else
+    {
+      lac_obstacle ob = { r->dim, c->height, { c->curvature[0],
+                          c->curvature[1] }, { c->center[0], c->center[1] } };
+      memset (&r->master, 0, sizeof r->master);          /* no master mesh */
+      status = lac_obstacle_pairing (&S, &ob, 0, &r->pairing);
+    }
   r->time_pairing = lac_run_now () - t0;
   if (status)
     return lac_scene_error (sc, &c->sec, NULL, status, "%s",
@@ -103,9 +114,10 @@ lac_run_stage_contact (lac_run *r)
   if ((status = mark_contact_nodes (r, gs, gm)))
     return status;
   snprintf (r->progress, sizeof r->progress, "%zu macro-elements on '%s' "
-            "(%zu cells cut, %zu nodes added), %zu pairs with '%s'",
+            "(%zu cells cut, %zu nodes added), %zu pairs with %s%s%s",
             r->macro->n, c->slave, r->macro->ncut, r->macro->nnew,
-            r->pairing->npairs, c->master);
+            r->pairing->npairs, gm ? "'" : "the rigid obstacle",
+            gm ? c->master : "", gm ? "'" : "");
   return LAC_SUCCESS;
 }
 
@@ -119,7 +131,8 @@ lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d)
     return LAC_SUCCESS;
   c = &r->scene->contact[0];
   status = lac_contact_build (r->mesh, r->model, r->macro, r->pairing,
-                              &r->master, c->epsilon, &r->contact);
+                              r->master.n ? &r->master : NULL, c->epsilon,
+                              &r->contact);
   if (status)
     return lac_scene_error (r->scene, &c->sec, status == LAC_EADMISS
                             ? "epsilon" : NULL, status, "%s",
@@ -231,6 +244,40 @@ sigma_error (const lac_run *r, const lac_exact *e)
   return smax > 0 ? emax / smax : emax;
 }
 
+/* Radial solutions: max over the nodes of body `b` of |sigma_rr^h -
+ * sigma_rr| / max |sigma_rr| there, sigma_rr = n.sigma.n, n = x/|x| over
+ * the radial coordinates (the normalization avoids dividing by the zero
+ * of a free surface). */
+static double
+sigma_rr_error (const lac_run *r, const lac_exact *e, int b)
+{
+  const lac_mesh *m = r->mesh;
+  double emax = 0, smax = 0, s[6], n[3];
+  char *in = lac_calloc (m->nnodes, 1);
+  if (!in)
+    return NAN;
+  for (size_t c = 0; c < m->ncells; c++)
+    if (m->body[c] == b)
+      for (size_t p = m->ptr[c]; p < m->ptr[c + 1]; p++)
+        in[m->conn[p]] = 1;
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      const double *x = m->x + a * (size_t) r->dim;
+      double R = lac_exact_radius (e, x);
+      if (!in[a] || R <= 0)
+        continue;
+      for (int k = 0; k < r->dim; k++)
+        n[k] = k < e->nr ? x[k] / R : 0.0;
+      lac_exact_sigma (x, (void *) e, s);
+      double se = normal_stress (r->dim, s, n);
+      double sh = normal_stress (r->dim, r->sigma + a * (size_t) r->ns, n);
+      emax = fmax (emax, fabs (sh - se));
+      smax = fmax (smax, fabs (se));
+    }
+  lac_free (in);
+  return smax > 0 ? emax / smax : emax;
+}
+
 /* Post stage: multipliers, their errors, the summary lines. */
 int
 lac_run_contact_post (lac_run *r, const lac_exact *e)
@@ -266,8 +313,19 @@ lac_run_contact_post (lac_run *r, const lac_exact *e)
   if ((status = lac_run_summary_add (r, "max_rel_err_lambda", "%.3e",
                                      lref > 0 ? elam / lref : elam)))
     return status;
-  return lac_run_summary_add (r, "max_rel_err_sigma", "%.3e",
-                              sigma_error (r, e));
+  if ((status = lac_run_summary_add (r, "max_rel_err_sigma", "%.3e",
+                                     sigma_error (r, e))))
+    return status;
+  if (e->nr == 0)
+    return LAC_SUCCESS;
+  int bs = r->mesh->body[r->macro->cell[0]];           /* slave body  */
+  if ((status = lac_run_summary_add (r, "max_rel_err_sigma_rr_slave", "%.3e",
+                                     sigma_rr_error (r, e, bs)))
+      || r->master.n == 0)                             /* rigid master */
+    return status;
+  int bm = r->mesh->body[r->master.cell[0]];           /* master body */
+  return lac_run_summary_add (r, "max_rel_err_sigma_rr_master", "%.3e",
+                              sigma_rr_error (r, e, bm));
 }
 
 /* Output stage: contact.csv, one line per macro-element. */

@@ -60,6 +60,8 @@ const lac_scene_element_spec lac_scene_elements[LAC_SCENE_NELEMENTS] = {
   { #f, K_ENUM, F (T, f), 0, names, sizeof names[0], 0, 0, 0, NULL }
 #define VEC(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
                        "2 or 3 numbers" }
+#define VEC12(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
+                         "1 or 2 numbers" }
 
 static const key_spec scene_keys[] = {
   STR (lac_scene_main, title),
@@ -106,9 +108,14 @@ static const key_spec exact_keys[] = {
   NUM (lac_scene_exact, E, 0, HUGE_VAL, 1, "a number > 0"),
   NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
 };
+static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),
+  ENUM (lac_scene_contact, obstacle, obstacle_names),
+  NUM (lac_scene_contact, height, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  VEC12 (lac_scene_contact, curvature, ncurvature),
+  VEC12 (lac_scene_contact, center, ncenter),
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
 };
 static const key_spec output_keys[] = {

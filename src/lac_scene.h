@@ -59,7 +59,12 @@
  *     slave                facet group carrying the multipliers (its cells
  *                          are refined where Hypothesis 1 needs it)
  *                                                     (required)
- *     master               facet group of the other body  (required)
+ *     master               facet group of the other body, or
+ *     obstacle             graph: a rigid foundation v <= h(w) below the
+ *                          graph h(w) = height + sum_k curvature_k
+ *                          (w_k - center_k)^2 (v = y in 2D, z in 3D; w the
+ *                          other coordinates)          (one of the two)
+ *     height curvature center   the graph (0; 0 [0]; 0 [0])
  *     epsilon              admissibility threshold in (0, 1] [LAC Def. 1]
  *                                                     0.01
  *   [exact]                analytic solution for errors and `exact` data
@@ -183,7 +188,11 @@ typedef struct lac_scene_contact         /* [contact NAME] */
 {
   lac_scene_section sec;
   char *slave;          /* owned: facet group carrying the multipliers    */
-  char *master;         /* owned: facet group of the other body           */
+  char *master;         /* owned: facet group of the other body, or NULL  */
+  int obstacle;         /* 1: a rigid obstacle below a graph (no master)  */
+  double height;        /* obstacle: v <= height + sum curv_k (w_k - c_k)^2 */
+  double curvature[3], center[3];    /* (room for 3: the parser's limit) */
+  int ncurvature, ncenter;
   double epsilon;       /* admissibility threshold [LAC Def. 1]            */
 } lac_scene_contact;
 

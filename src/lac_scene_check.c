@@ -324,14 +324,27 @@ static int
 finish_contact (lac_scene *sc, lac_scene_contact *c)
 {
   int status;
-  if ((status = require (sc, &c->sec, "slave", "facet physical group"))
-      || (status = require (sc, &c->sec, "master", "facet physical group")))
+  int dim = lac_model_dim ((lac_model) sc->scene.model);
+  if ((status = require (sc, &c->sec, "slave", "facet physical group")))
     return status;
+  if ((c->master != NULL) == (c->obstacle != 0))
+    return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "give exactly "
+                            "one of master = GROUP and obstacle = graph");
+  if (c->obstacle && c->ncurvature && c->ncurvature != dim - 1)
+    return lac_scene_error (sc, &c->sec, "curvature", LAC_EINVAL, "expected "
+                            "%d number%s for model = %s", dim - 1,
+                            dim == 3 ? "s" : "",
+                            lac_scene_model_names[sc->scene.model]);
+  if (c->obstacle && c->ncenter && c->ncenter != dim - 1)
+    return lac_scene_error (sc, &c->sec, "center", LAC_EINVAL, "expected "
+                            "%d number%s for model = %s", dim - 1,
+                            dim == 3 ? "s" : "",
+                            lac_scene_model_names[sc->scene.model]);
   if (c != sc->contact)
     return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "only one "
                             "[contact] section is supported (the first is "
                             "[contact %s])", sc->contact[0].sec.name);
-  if (strcmp (c->slave, c->master) == 0)
+  if (c->master && strcmp (c->slave, c->master) == 0)
     return lac_scene_error (sc, &c->sec, "master", LAC_EINVAL, "the master "
                             "group must differ from the slave group");
   return LAC_SUCCESS;

@@ -435,7 +435,7 @@ store_vec (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
     if (*n == 3 || !parse_number (tok, &v[(*n)++]))
       return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                               ks->expect);
-  if (*n < 2)
+  if (*n < 1)             /* the count is checked against the model later */
     return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                             ks->expect);
   return LAC_SUCCESS;

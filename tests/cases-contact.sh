@@ -55,3 +55,39 @@ if "$LAC" run chapters/08-experiments/taylor3d.scene --set element=hex8 --set le
 else
   contact_fail taylor-level1 "level 1 (7 and 5 cells per edge): $(tail -1 "$C/level1.err"), macro_elements = $(value_of "$C/level1.out" macro_elements) (want 25)"
 fi
+
+# ---- bad contact input: exit status 1, one line "lac: ..." naming the
+# scene line and key, no crash ------------------------------------------
+# contact_bad NAME "WORD|WORD..." ARGS...: every word must be in the message
+contact_bad () {
+  name=$1 words=$2
+  shift 2
+  "$LAC" run "$@" --quiet --no-output > "$C/$name.out" 2> "$C/$name.err"
+  rc=$?
+  msg=$(cat "$C/$name.err")
+  ok=1
+  [ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] || ok=0
+  [ "$(wc -l < "$C/$name.err")" -eq 1 ] || ok=0
+  old_ifs=$IFS; IFS='|'
+  for w in $words; do
+    case "$msg" in *"$w"*) ;; *) ok=0 ;; esac
+  done
+  IFS=$old_ifs
+  if [ $ok = 1 ]; then contact_ok "bad-$name"; else contact_fail "bad-$name" "exit $rc, stderr: $msg (want: $words)"; fi
+}
+
+T2=chapters/08-experiments/taylor2d.scene
+contact_bad missing-slave "--set|[contact interface] slave = 'nosuch'|no physical group" \
+  $T2 --set contact.interface.slave=nosuch
+contact_bad missing-master "[contact interface] master = 'nosuch'|no physical group" \
+  $T2 --set contact.interface.master=nosuch
+contact_bad volume-slave "slave = 'upper'|not a group of boundary facets" \
+  $T2 --set contact.interface.slave=upper
+contact_bad no-overlap "taylor2d.scene:|[contact interface]|no slave facet overlaps a master facet" \
+  $T2 --set contact.interface.master=lower_bottom
+contact_bad epsilon-zero "--set|epsilon = '0'|(0, 1]" $T2 --set contact.interface.epsilon=0
+contact_bad epsilon-big "--set|epsilon = '1.5'|(0, 1]" $T2 --set contact.interface.epsilon=1.5
+contact_bad master-and-obstacle "[contact interface]|exactly one of master" \
+  $T2 --set contact.interface.obstacle=graph
+contact_bad same-groups "master = 'upper_bottom'|must differ" \
+  $T2 --set contact.interface.master=upper_bottom
