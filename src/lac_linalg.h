@@ -105,7 +105,8 @@ int lac_solver_solve_many (lac_solver *s, size_t nrhs, const double *B,
 typedef struct lac_solver_info
 {
   size_t n;              /* order of the factored matrix                  */
-  double nnz_factor;     /* entries of the factors: n^2, nnz(L)+nnz(U), nnz(L) */
+  double nnz_factor;     /* entries of the factors: dense n^2, umfpack
+                            nnz(L)+nnz(U)-n, cholmod nnz(L)              */
   double pivot_ratio;    /* the quantity tested against LAC_PIVOT_RTOL    */
   double rcond;          /* the estimate tested against LAC_RCOND_MIN      */
   double peak_bytes;     /* peak memory of the factorization as reported

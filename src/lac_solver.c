@@ -322,7 +322,7 @@ check_symmetric (const lac_csc *A)
         int lo = A->p[i], hi = A->p[i + 1] - 1;
         if (i >= j)
           continue;
-        while (lo <= hi)                     /* binary search of row j in col i */
+        while (lo <= hi)                 /* binary search: row j in col i */
           {
             int mid = lo + (hi - lo) / 2;
             if (A->i[mid] == (int) j)
@@ -512,7 +512,7 @@ chol_solve (lac_solver *s, size_t nrhs, const double *b, double *x)
   return LAC_SUCCESS;
 }
 
-/* ---- condition estimate (all back ends) ---------------------------------- */
+/* ---- condition estimate (all back ends) -------------------------------- */
 
 static int solve_columns (lac_solver *s, size_t nrhs, const double *B,
                           double *X);
@@ -607,7 +607,7 @@ lac_solver_factor (lac_solver *s, const lac_csc *A)
   if (!status)
     status = rcond_check (s, A);
   if (status)
-    release (s);                   /* keep nothing half-made; the message stays */
+    release (s);             /* keep nothing half-made; the message stays */
   return status;
 }
 

@@ -21,7 +21,7 @@
 #include "lac_mem.h"
 #include "lac_status.h"
 
-/* ---- triplets ------------------------------------------------------------ */
+/* ---- triplets --------------------------------------------------------- */
 
 lac_triplet *
 lac_triplet_alloc (size_t nrow, size_t ncol, size_t cap)
@@ -70,7 +70,7 @@ triplet_reserve (lac_triplet *T, size_t need)
   if (need <= cap)
     return LAC_SUCCESS;
   while (cap < need)
-    cap += cap / 2 + 16;                        /* x 1.5: less waste than x 2 */
+    cap += cap / 2 + 16;                     /* x 1.5: less waste than x 2 */
   i = lac_realloc (T->i, cap * sizeof *i);
   if (i)
     T->i = i;
@@ -121,7 +121,7 @@ lac_triplet_add_block (lac_triplet *T, size_t nr, const size_t *rows,
   for (size_t a = 0; a < nr; a++)
     for (size_t b = 0; b < nc; b++)
       {
-        T->i[T->nz] = (int) rows[a];           /* T(rows[a], cols[b]) += B_ab */
+        T->i[T->nz] = (int) rows[a];        /* T(rows[a], cols[b]) += B_ab */
         T->j[T->nz] = (int) cols[b];
         T->x[T->nz] = B[a * nc + b];
         T->nz++;
@@ -129,7 +129,7 @@ lac_triplet_add_block (lac_triplet *T, size_t nr, const size_t *rows,
   return LAC_SUCCESS;
 }
 
-/* ---- compressed sparse columns -------------------------------------------- */
+/* ---- compressed sparse columns ----------------------------------------- */
 
 lac_csc *
 lac_csc_alloc (size_t nrow, size_t ncol, size_t nnz)

@@ -66,7 +66,8 @@ truss_2d (size_t m, size_t nfix)
     for (size_t b = 0; b < m; b++)
       {
         xy[2 * (a * m + b)] = (double) b + 0.1 * sin ((double) (7 * a + b));
-        xy[2 * (a * m + b) + 1] = (double) a + 0.1 * cos ((double) (a + 5 * b));
+        xy[2 * (a * m + b) + 1] = (double) a
+                                  + 0.1 * cos ((double) (a + 5 * b));
       }
   for (size_t a = 0; a < m; a++)
     for (size_t b = 0; b < m; b++)
@@ -105,7 +106,8 @@ expect (const char *what, const lac_csc *A, int nk, const int *kinds,
     {
       lac_solver *S = lac_solver_alloc ((lac_solver_kind) kinds[s]);
       const char *name = lac_solver_kind_name ((lac_solver_kind) kinds[s]);
-      double *b = calloc (A->ncol, sizeof *b), *x = calloc (A->ncol, sizeof *x);
+      double *b = calloc (A->ncol, sizeof *b);
+      double *x = calloc (A->ncol, sizeof *x);
       lac_error_clear ();
       check_status (lac_solver_factor (S, A), want, "%s: %s", what, name);
       if (want != LAC_SUCCESS)
