@@ -86,6 +86,7 @@ demo: all
 
 bench: all $(BENCH)
 	@for b in $(BENCH); do echo "== $$b"; ./$$b || exit 1; done
+	@for s in bench/*.sh; do echo "== $$s"; sh $$s $(B) || exit 1; done
 
 clean:
 	rm -rf build

@@ -19,11 +19,20 @@
 
 #include <math.h>
 #include <string.h>
+#include <time.h>
 #include <gsl/gsl_linalg.h>
 #include "lac_mem.h"
 #include "lac_status.h"
 
 #define SCHUR_BLOCK 64   /* columns of K^{-1} C computed at a time */
+
+static double
+seconds (void)
+{
+  struct timespec t;
+  clock_gettime (CLOCK_MONOTONIC, &t);
+  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
+}
 
 lac_newton *
 lac_newton_alloc (lac_solver_kind kind, size_t n, size_t k)
@@ -383,9 +392,13 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
       s->active[i] = sys->G[i] <= 0;     /* G is rounded by its producer */
       s->d[i] = sys->G[i];
     }
+  s->time_setup = s->time_solve = 0;
   if (s->kind != LAC_SOLVER_CHOLMOD)
     return LAC_SUCCESS;
-  return schur_setup (s);
+  double t0 = seconds ();
+  int status = schur_setup (s);
+  s->time_setup = seconds () - t0;
+  return status;
 }
 
 int
@@ -397,6 +410,7 @@ lac_newton_iterate (lac_newton *s)
     LAC_ERROR (LAC_EINVAL, "lac_newton_set was not called");
   r.iter = (int) s->nhist + 1;
   r.nactive = lac_newton_nactive (s);
+  double t0 = seconds ();
   /* Step 21: solve the saddle system for the current active set */
   status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
                                          : saddle_iterate (s);
@@ -411,6 +425,7 @@ lac_newton_iterate (lac_newton *s)
       status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
                                              : saddle_iterate (s);
     }
+  s->time_solve += seconds () - t0;
   if (status)
     return status;
   mean_gaps (s);                                          /* d = G - C^T U */

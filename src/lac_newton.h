@@ -91,6 +91,8 @@ typedef struct lac_newton
   lac_csc *Ct;         /* owned: C^T (rows of C^T = multipliers)            */
   double *work;        /* owned, scratch                                   */
   size_t changed;      /* statuses changed by the last update               */
+  double time_setup;   /* seconds in lac_newton_set (cholmod: factor, S)  */
+  double time_solve;   /* seconds in the solves of all iterations          */
   int restarted;       /* 1: the first solve was singular with the initial
                           statuses and was redone with all active          */
   int factored_K;

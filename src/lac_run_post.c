@@ -198,6 +198,18 @@ lac_run_stage_output (lac_run *r)
         snprintf (key, sizeof key, "time_%s", lac_run_stage_name (s));
         status = lac_run_summary_add (r, key, "%.3f", r->time[s]);
       }
+  if (r->opts.timings && r->contact && !status)     /* parts of the stages */
+    {
+      if ((status = lac_run_summary_add (r, "time_refine", "%.3f",
+                                         r->time_refine))
+          || (status = lac_run_summary_add (r, "time_pairing", "%.3f",
+                                            r->time_pairing))
+          || (status = lac_run_summary_add (r, "time_factor_K", "%.3f",
+                                            r->newton->time_setup)))
+        return status;
+      status = lac_run_summary_add (r, "time_active_set", "%.3f",
+                                    r->newton->time_solve);
+    }
   if (status || r->opts.no_output)
     {
       snprintf (r->progress, sizeof r->progress, "no files written");
