@@ -418,7 +418,8 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
  * field (pressure == 0 flag) or -p n.  Shared by traction and pressure. */
 static int
 surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
-              lac_field *t, void *ctx, int is_pressure, double p, double *F)
+              lac_field *t, lac_field_n *tn, void *ctx, int is_pressure,
+              double p, double *F)
 {
   qcache qc;
   int status = check_model (m, model);
@@ -469,6 +470,8 @@ surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
           if (is_pressure)
             for (int i = 0; i < dim; i++)
               tx[i] = -p * mp.normal[i];                   /* t = -p n */
+          else if (tn)
+            tn (mp.x, mp.normal, ctx, tx);                 /* t(x, n) */
           else
             t (mp.x, ctx, tx);
           for (int a = 0; a < nf; a++)
@@ -493,7 +496,20 @@ lac_assembly_traction (const lac_mesh *m, lac_model model,
 {
   if (!t)
     LAC_ERROR (LAC_EINVAL, "traction field is NULL");
-  return surface_load (m, model, g, t, ctx, 0, 0.0, F);
+  return surface_load (m, model, g, t, NULL, ctx, 0, 0.0, F);
+}
+
+/* lac_assembly_traction_n: as lac_assembly_traction with a traction that
+ * depends on the outward unit normal, t(x, n) (e.g. sigma(x) n of an exact
+ * solution). */
+int
+lac_assembly_traction_n (const lac_mesh *m, lac_model model,
+                         const lac_group *g, lac_field_n *t, void *ctx,
+                         double *F)
+{
+  if (!t)
+    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
+  return surface_load (m, model, g, NULL, t, ctx, 0, 0.0, F);
 }
 
 /* lac_assembly_pressure: F += int_{facets of g} (-p n) . v w ds with n the
@@ -503,7 +519,7 @@ int
 lac_assembly_pressure (const lac_mesh *m, lac_model model,
                        const lac_group *g, double p, double *F)
 {
-  return surface_load (m, model, g, NULL, NULL, 1, p, F);
+  return surface_load (m, model, g, NULL, NULL, NULL, 1, p, F);
 }
 
 /* ---- Dirichlet data [LAC (4)] ------------------------------------------ */

@@ -21,6 +21,9 @@
 
 /* A vector field given by a function: out[0..dim-1] = f(x). */
 typedef void lac_field (const double *x, void *ctx, double *out);
+/* A field that depends on the outward unit normal n at x (tractions). */
+typedef void lac_field_n (const double *x, const double *n, void *ctx,
+                          double *out);
 /* Its gradient: out[i*dim + k] = d f_i / d x_k. */
 typedef void lac_field_grad (const double *x, void *ctx, double *out);
 
@@ -49,6 +52,10 @@ int lac_assembly_volume_force (const lac_mesh *m, lac_model model,
 int lac_assembly_traction (const lac_mesh *m, lac_model model,
                            const lac_group *g, lac_field *t, void *ctx,
                            double *F);
+/* The same with a traction t(x, n) depending on the outward normal. */
+int lac_assembly_traction_n (const lac_mesh *m, lac_model model,
+                             const lac_group *g, lac_field_n *t, void *ctx,
+                             double *F);
 /* F += int_{facets of g} (-p n) . v  (pressure p > 0 pushes inward). */
 int lac_assembly_pressure (const lac_mesh *m, lac_model model,
                            const lac_group *g, double p, double *F);

@@ -18,6 +18,16 @@
  *                   sigma_zz = -nu p; u_i = c_i x_i vanishes on the
  *                   symmetry planes x_i = 0.  The contact pressure is
  *                   lambda = -p on every horizontal interface.
+ *   manufactured2d  the paper's 2D manufactured solution [LAC §5.3]:
+ *                     u_x = -0.2 y^3 (x - 1/2),
+ *                     u_y = -0.05 (x - 1/2)^2 (1 + y) - 0.01 y,
+ *                   which closes the gap to y <= -0.05 (x-1/2)^2 on y = 0
+ *   manufactured3d  u_x = u_y = 0.2 x y z^2,
+ *                   u_z = -0.2 (1 + x^2 + y^2)(1 + 0.01 z) - 0.01 z - 0.3,
+ *                   which closes the gap to z <= -0.2 (1+x^2+y^2) - 0.3
+ * The manufactured ones carry their second derivatives, from which the
+ * body force f = -div sigma = -[(l+m) grad div u + m lap u] follows for
+ * any E, nu (Lame l, m; the paper takes E = 1, nu = 0).
  *
  * Adding a solution: a setup (coefficients from the parameters), u and
  * grad u (or reuse the radial ones), and one line in lac_exact_table.
@@ -115,6 +125,88 @@ taylor_setup (lac_exact *e)
     }
 }
 
+/* ---- manufactured solutions [LAC §5.3] -------------------------------- */
+
+static void
+mfd2_u (const lac_exact *e, const double *x, double *u)
+{
+  (void) e;
+  double a = x[0] - 0.5, y = x[1];
+  u[0] = -0.2 * y * y * y * a;
+  u[1] = -0.05 * a * a * (1 + y) - 0.01 * y;
+}
+
+static void
+mfd2_grad (const lac_exact *e, const double *x, double *g)
+{
+  (void) e;
+  double a = x[0] - 0.5, y = x[1];
+  g[0] = -0.2 * y * y * y;               /* du_x/dx */
+  g[1] = -0.6 * y * y * a;               /* du_x/dy */
+  g[2] = -0.1 * a * (1 + y);             /* du_y/dx */
+  g[3] = -0.05 * a * a - 0.01;           /* du_y/dy */
+}
+
+static void
+mfd2_hess (const lac_exact *e, const double *x, double *h)
+{
+  (void) e;
+  double a = x[0] - 0.5, y = x[1];
+  h[0] = 0;                h[1] = -0.6 * y * y;       /* u_x: xx xy */
+  h[2] = -0.6 * y * y;     h[3] = -1.2 * y * a;       /*      yx yy */
+  h[4] = -0.1 * (1 + y);   h[5] = -0.1 * a;           /* u_y: xx xy */
+  h[6] = -0.1 * a;         h[7] = 0;                  /*      yx yy */
+}
+
+static void
+mfd3_u (const lac_exact *e, const double *x, double *u)
+{
+  (void) e;
+  double X = x[0], Y = x[1], Z = x[2];
+  u[0] = u[1] = 0.2 * X * Y * Z * Z;
+  u[2] = -0.2 * (1 + X * X + Y * Y) * (1 + 0.01 * Z) - 0.01 * Z - 0.3;
+}
+
+static void
+mfd3_grad (const lac_exact *e, const double *x, double *g)
+{
+  (void) e;
+  double X = x[0], Y = x[1], Z = x[2];
+  for (int i = 0; i < 2; i++)            /* u_x and u_y are equal */
+    {
+      g[3 * i + 0] = 0.2 * Y * Z * Z;
+      g[3 * i + 1] = 0.2 * X * Z * Z;
+      g[3 * i + 2] = 0.4 * X * Y * Z;
+    }
+  g[6] = -0.4 * X * (1 + 0.01 * Z);
+  g[7] = -0.4 * Y * (1 + 0.01 * Z);
+  g[8] = -0.002 * (1 + X * X + Y * Y) - 0.01;
+}
+
+static void
+mfd3_hess (const lac_exact *e, const double *x, double *h)
+{
+  (void) e;
+  double X = x[0], Y = x[1], Z = x[2];
+  for (int i = 0; i < 2; i++)
+    {
+      double *q = h + 9 * i;             /* d2 u_i / dx_j dx_k */
+      q[0] = 0;            q[1] = 0.2 * Z * Z;  q[2] = 0.4 * Y * Z;
+      q[3] = 0.2 * Z * Z;  q[4] = 0;            q[5] = 0.4 * X * Z;
+      q[6] = 0.4 * Y * Z;  q[7] = 0.4 * X * Z;  q[8] = 0.4 * X * Y;
+    }
+  double *q = h + 18;
+  q[0] = -0.4 * (1 + 0.01 * Z);  q[1] = 0;                      q[2] = -0.004 * X;
+  q[3] = 0;                      q[4] = -0.4 * (1 + 0.01 * Z);  q[5] = -0.004 * Y;
+  q[6] = -0.004 * X;             q[7] = -0.004 * Y;             q[8] = 0;
+}
+
+static void
+no_setup (lac_exact *e)
+{
+  (void) e;
+}
+
 /* ---- the table -------------------------------------------------------- */
 
 #define M_PS (1u << LAC_PLANE_STRAIN)
@@ -123,12 +215,16 @@ taylor_setup (lac_exact *e)
 
 const lac_exact_solution lac_exact_table[] = {    /* lac_exact_kind order */
   { "thick_sphere", M_AXI | M_3D, "a b p E nu", sphere_setup, radial_u,
-    radial_grad },
+    radial_grad, NULL },
   { "thick_cylinder", M_PS | M_3D, "a b p E nu", cylinder_setup, radial_u,
-    radial_grad },
+    radial_grad, NULL },
   { "taylor", M_PS | M_AXI | M_3D, "p E nu", taylor_setup, linear_u,
-    linear_grad },
-  { NULL, 0, NULL, NULL, NULL, NULL }
+    linear_grad, NULL },
+  { "manufactured2d", M_PS, "E nu", no_setup, mfd2_u, mfd2_grad,
+    mfd2_hess },
+  { "manufactured3d", M_3D, "E nu", no_setup, mfd3_u, mfd3_grad,
+    mfd3_hess },
+  { NULL, 0, NULL, NULL, NULL, NULL, NULL }
 };
 
 int
@@ -232,4 +328,78 @@ lac_exact_sigma (const double *x, void *ctx, double *s)
   for (int i = 0; i < ns; i++)
     for (int j = 0; j < ns; j++)
       s[i] += D[i * ns + j] * eps[j];
+}
+
+/* f = -div sigma = -[(l + m) grad(div u) + m lap u]  [LAC (1)], with the
+ * Lame constants of the solution's material (plane strain: the same). */
+void
+lac_exact_force (const double *x, void *ctx, double *f)
+{
+  const lac_exact *e = ctx;
+  int d = e->dim;
+  double h[27];
+  for (int i = 0; i < d; i++)
+    f[i] = 0;
+  if (e->kind == LAC_EXACT_NONE || !lac_exact_table[e->kind].hess)
+    return;
+  lac_exact_table[e->kind].hess (e, x, h);
+  double E = e->par.E, nu = e->par.nu;
+  double mu = E / (2 * (1 + nu)), la = E * nu / ((1 + nu) * (1 - 2 * nu));
+  for (int i = 0; i < d; i++)
+    {
+      double graddiv = 0, lap = 0;
+      for (int k = 0; k < d; k++)
+        {
+          graddiv += h[(k * d + k) * d + i];   /* d/dx_i (du_k/dx_k) */
+          lap += h[(i * d + k) * d + k];       /* d2 u_i / dx_k^2 */
+        }
+      f[i] = -((la + mu) * graddiv + mu * lap);
+    }
+}
+
+/* sigma n from the Voigt stress of the model. */
+static void
+sigma_times_n (int dim, const double *s, const double *n, double *t)
+{
+  if (dim == 2)
+    {
+      t[0] = s[0] * n[0] + s[3] * n[1];
+      t[1] = s[3] * n[0] + s[1] * n[1];
+      return;
+    }
+  t[0] = s[0] * n[0] + s[3] * n[1] + s[5] * n[2];
+  t[1] = s[3] * n[0] + s[1] * n[1] + s[4] * n[2];
+  t[2] = s[5] * n[0] + s[4] * n[1] + s[2] * n[2];
+}
+
+void
+lac_exact_traction (const double *x, const double *n, void *ctx, double *t)
+{
+  const lac_exact *e = ctx;
+  double s[6];
+  lac_exact_sigma (x, ctx, s);
+  sigma_times_n (e->dim, s, n, t);                         /* t = sigma n */
+}
+
+void
+lac_exact_traction_tangential (const double *x, const double *n, void *ctx,
+                               double *t)
+{
+  const lac_exact *e = ctx;
+  double tn = 0;
+  lac_exact_traction (x, n, ctx, t);
+  for (int i = 0; i < e->dim; i++)
+    tn += t[i] * n[i];
+  for (int i = 0; i < e->dim; i++)
+    t[i] -= tn * n[i];                          /* t - (n.t) n */
+}
+
+double
+lac_exact_normal_stress (const lac_exact *e, const double *x, const double *n)
+{
+  double t[3], tn = 0;
+  lac_exact_traction (x, n, (void *) e, t);
+  for (int i = 0; i < e->dim; i++)
+    tn += t[i] * n[i];
+  return tn;
 }

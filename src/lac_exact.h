@@ -23,7 +23,7 @@
 typedef enum
 {
   LAC_EXACT_NONE = -1, LAC_EXACT_THICK_SPHERE = 0, LAC_EXACT_THICK_CYLINDER,
-  LAC_EXACT_TAYLOR
+  LAC_EXACT_TAYLOR, LAC_EXACT_MANUFACTURED2D, LAC_EXACT_MANUFACTURED3D
 } lac_exact_kind;
 
 typedef struct lac_exact_params       /* the keys of [exact] */
@@ -55,6 +55,9 @@ typedef struct lac_exact_solution
   void (*setup) (lac_exact *e);
   void (*u) (const lac_exact *e, const double *x, double *u);
   void (*grad) (const lac_exact *e, const double *x, double *g);
+  /* second derivatives h[(i*dim + j)*dim + k] = d2 u_i / dx_j dx_k, or
+   * NULL when u solves the equations with no body force */
+  void (*hess) (const lac_exact *e, const double *x, double *h);
 } lac_exact_solution;
 
 /* The table, terminated by an entry with name NULL (scene files read the
@@ -75,6 +78,17 @@ void lac_exact_init (lac_exact *e, int kind, lac_model model,
 void lac_exact_u (const double *x, void *ctx, double *u);
 void lac_exact_grad (const double *x, void *ctx, double *g);
 void lac_exact_sigma (const double *x, void *ctx, double *s);
+/* The body force f = -div sigma(u) [LAC (1)] (zero without hess). */
+void lac_exact_force (const double *x, void *ctx, double *f);
+/* The traction sigma(u) n, and its tangential part sigma n - (n.sigma n) n
+ * (lac_field_n callbacks). */
+void lac_exact_traction (const double *x, const double *n, void *ctx,
+                         double *t);
+void lac_exact_traction_tangential (const double *x, const double *n,
+                                    void *ctx, double *t);
+/* n.sigma(u) n, the contact pressure of the exact solution [LAC (6)]. */
+double lac_exact_normal_stress (const lac_exact *e, const double *x,
+                                const double *n);
 
 /* Radial solutions: R = |x| over the first e->nr coordinates. */
 double lac_exact_radius (const lac_exact *e, const double *x);

@@ -185,10 +185,10 @@ check_groups (lac_run *r)
   for (size_t k = 0; k < sc->nload; k++)
     {
       const lac_scene_load *l = &sc->load[k];
-      int want = l->kind == LAC_LOAD_FORCE ? d : d - 1;
+      int vol = l->kind == LAC_LOAD_FORCE || l->kind == LAC_LOAD_EXACT_FORCE;
+      int want = vol ? d : d - 1;
       if (l->group && !find_group (r, &l->sec, l->group, want,
-                                   l->kind == LAC_LOAD_FORCE ? "a volume "
-                                   "force" : "a surface load"))
+                                   vol ? "a volume force" : "a surface load"))
         return LAC_EINVAL;
     }
   return LAC_SUCCESS;
@@ -361,7 +361,19 @@ add_loads (lac_run *r)
       const lac_group *g = l->group ? lac_mesh_group (r->mesh, l->group)
                            : NULL;
       const_ctx c = { r->dim, { l->vec[0], l->vec[1], l->vec[2] } };
-      if (l->kind == LAC_LOAD_PRESSURE)
+      lac_exact e;
+      lac_run_exact (r, &e);
+      if (l->kind == LAC_LOAD_EXACT_TRACTION)
+        status = lac_assembly_traction_n (r->mesh, r->model, g,
+                                          lac_exact_traction, &e, r->F);
+      else if (l->kind == LAC_LOAD_EXACT_TANGENTIAL)
+        status = lac_assembly_traction_n (r->mesh, r->model, g,
+                                          lac_exact_traction_tangential, &e,
+                                          r->F);
+      else if (l->kind == LAC_LOAD_EXACT_FORCE)
+        status = lac_assembly_volume_force (r->mesh, r->model, g,
+                                            lac_exact_force, &e, r->F);
+      else if (l->kind == LAC_LOAD_PRESSURE)
         status = lac_assembly_pressure (r->mesh, r->model, g, l->pressure,
                                         r->F);
       else if (l->kind == LAC_LOAD_TRACTION)

@@ -178,6 +178,8 @@ lac_run_contact_solve (lac_run *r)
   return LAC_SUCCESS;
 }
 
+static int multiplier_means (lac_run *r, const lac_exact *e);
+
 /* n^T sigma n for a Voigt stress of the model (lac_material.h order). */
 static double
 normal_stress (int dim, const double *s, const double *n)
@@ -189,9 +191,43 @@ normal_stress (int dim, const double *s, const double *n)
 }
 
 /* Per multiplier: the centroid of T^m cap Gamma_C and, with an exact
- * solution, the mean of its contact pressure n.sigma.n there. */
+ * solution, the mean of its contact pressure n.sigma.n there; *l2 =
+ * ||lambda - lambda_h||_{0, Gamma_C} over the covered parts of every
+ * macro-element (lambda_h = 0 on the non-admissible ones, Gamma_C^eps).
+ * Axisymmetric measures carry 2 pi r. */
 static int
-multiplier_geometry (lac_run *r, const lac_exact *e)
+multiplier_geometry (lac_run *r, const lac_exact *e, double *l2)
+{
+  const lac_contact *c = r->contact;
+  int dim = r->dim, nodes[LAC_MAX_FACE_NODES];
+  const lac_macro *M = r->macro;
+  const lac_pairing *P = r->pairing;
+  lac_map mp;
+  *l2 = 0;
+  for (size_t mm = 0; e->kind != LAC_EXACT_NONE && mm < M->n; mm++)
+    {
+      long i = c->mult[mm];
+      double lh = i >= 0 ? r->newton->lambda[i] : 0.0, s[6];
+      for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
+        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
+          {
+            int nn = lac_contact_facet_eval (r->mesh, M->cell[j], M->face[j],
+                                             P->xs + p * (dim - 1), nodes, &mp);
+            if (nn < 0)
+              return -nn;
+            double w = P->w[p] * (r->model == LAC_AXISYMMETRIC
+                                  ? 6.283185307179586 * mp.x[0] : 1.0);
+            lac_exact_sigma (mp.x, (void *) e, s);
+            double d = normal_stress (dim, s, mp.normal) - lh;
+            *l2 += w * d * d;                    /* int (lambda - lambda_h)^2 */
+          }
+    }
+  *l2 = sqrt (*l2);
+  return multiplier_means (r, e);
+}
+
+static int
+multiplier_means (lac_run *r, const lac_exact *e)
 {
   const lac_macro *M = r->macro;
   const lac_pairing *P = r->pairing;
@@ -284,13 +320,13 @@ lac_run_contact_post (lac_run *r, const lac_exact *e)
 {
   const lac_newton *s = r->newton;
   size_t k = r->contact->k;
-  double lmin = HUGE_VAL, lmax = -HUGE_VAL, elam = 0, lref = 0;
+  double lmin = HUGE_VAL, lmax = -HUGE_VAL, elam = 0, lref = 0, l2lam;
   int status;
   r->lam_x = lac_calloc (3 * k, sizeof *r->lam_x);
   r->lam_exact = lac_calloc (k, sizeof *r->lam_exact);
   if (!r->lam_x || !r->lam_exact)
     LAC_ERROR (LAC_ENOMEM, "multiplier data");
-  if ((status = multiplier_geometry (r, e)))
+  if ((status = multiplier_geometry (r, e, &l2lam)))
     return status;
   for (size_t i = 0; i < k; i++)
     {
@@ -311,7 +347,8 @@ lac_run_contact_post (lac_run *r, const lac_exact *e)
   if (e->kind == LAC_EXACT_NONE)
     return LAC_SUCCESS;
   if ((status = lac_run_summary_add (r, "max_rel_err_lambda", "%.3e",
-                                     lref > 0 ? elam / lref : elam)))
+                                     lref > 0 ? elam / lref : elam))
+      || (status = lac_run_summary_add (r, "l2_err_lambda", "%.10e", l2lam)))
     return status;
   if ((status = lac_run_summary_add (r, "max_rel_err_sigma", "%.3e",
                                      sigma_error (r, e))))

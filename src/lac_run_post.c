@@ -35,6 +35,32 @@ cell_types (const lac_mesh *m, char *buf, size_t size)
                                 lac_refelem_get ((lac_elem_type) t)->name);
 }
 
+/* h = the largest cell diameter (largest distance between two vertices
+ * of a cell), the mesh size of the convergence tables. */
+static double
+mesh_size (const lac_mesh *m)
+{
+  double h = 0;
+  int d = m->dim;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      int nv = lac_refelem_get (m->type[c])->nvertices;
+      const int *v = m->conn + m->ptr[c];
+      for (int a = 0; a < nv; a++)
+        for (int b = a + 1; b < nv; b++)
+          {
+            double s = 0;
+            for (int k = 0; k < d; k++)
+              {
+                double t = m->x[(size_t) v[a] * d + k] - m->x[(size_t) v[b] * d + k];
+                s += t * t;
+              }
+            h = fmax (h, sqrt (s));
+          }
+    }
+  return h;
+}
+
 /* Mean radial displacement u.x/R (and its exact value) over the nodes at
  * radius R0; returns the number of such nodes. */
 static size_t
@@ -71,14 +97,14 @@ summary_exact (lac_run *r, const lac_exact *e)
   int status = lac_run_summary_add (r, "exact", "%s",
                                     lac_scene_exact_name (x->solution));
   if (!status)
-    status = lac_run_summary_add (r, "err_l2", "%.10e", r->err_l2);
+    status = lac_run_summary_add (r, "l2_err_u", "%.10e", r->err_l2);
   if (!status)
-    status = lac_run_summary_add (r, "err_h1", "%.10e", r->err_h1);
+    status = lac_run_summary_add (r, "h1_err_u", "%.10e", r->err_h1);
   if (!status)
-    status = lac_run_summary_add (r, "rel_err_l2", "%.10e", r->norm_l2 > 0
+    status = lac_run_summary_add (r, "rel_l2_err_u", "%.10e", r->norm_l2 > 0
                                   ? r->err_l2 / r->norm_l2 : 0.0);
   if (!status)
-    status = lac_run_summary_add (r, "rel_err_h1", "%.10e", r->norm_h1 > 0
+    status = lac_run_summary_add (r, "rel_h1_err_u", "%.10e", r->norm_h1 > 0
                                   ? r->err_h1 / r->norm_h1 : 0.0);
   for (int k = 0; k < 2 && !status && e->nr > 0; k++)   /* radial only */
     {
@@ -131,6 +157,7 @@ make_summary (lac_run *r, const lac_exact *e)
       || (status = lac_run_summary_add (r, "nodes", "%zu", m->nnodes))
       || (status = lac_run_summary_add (r, "cells", "%zu", m->ncells))
       || (status = lac_run_summary_add (r, "dofs", "%zu", r->ndof))
+      || (status = lac_run_summary_add (r, "h", "%.10e", mesh_size (m)))
       || (status = lac_run_summary_add (r, "fixed_dofs", "%zu", r->nfixed))
       || (status = lac_run_summary_add (r, "nnz_K", "%zu", r->nnz))
       || (status = lac_run_summary_add (r, "load_work", "%.10e", work))

@@ -93,11 +93,14 @@ static const key_spec dirichlet_keys[] = {
   ENUM (lac_scene_dirichlet, symmetry, symmetry_names),
   BOOL (lac_scene_dirichlet, exact),
 };
+static const char *const load_exact_names[] =
+  { "none", "traction", "tangential", "force", NULL };
 static const key_spec load_keys[] = {
   STR (lac_scene_load, group),
   NUM (lac_scene_load, pressure, -HUGE_VAL, HUGE_VAL, 0, "a number"),
   VEC (lac_scene_load, traction, ntraction),
   VEC (lac_scene_load, force, nforce),
+  ENUM (lac_scene_load, exact, load_exact_names),
 };
 static const key_spec exact_keys[] = {
   { "solution", K_ENUM, F (lac_scene_exact, solution), 0,    /* lac_exact.h */

@@ -54,6 +54,10 @@
  *     pressure             p: traction -p n on the group (p > 0 pushes)
  *     traction             tx ty [tz]: traction per unit area
  *     force                fx fy [fz]: force per unit volume
+ *     exact                traction | tangential | force: the traction
+ *                          sigma(u) n (or its tangential part, for a
+ *                          contact side) or the body force -div sigma(u)
+ *                          of the [exact] solution (manufactured solutions)
  *   [contact NAME]         frictionless unilateral contact by the LAC
  *                          method (at most one section in this version)
  *     slave                facet group carrying the multipliers (its cells
@@ -163,7 +167,10 @@ typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
 
 typedef enum
 {
-  LAC_LOAD_PRESSURE, LAC_LOAD_TRACTION, LAC_LOAD_FORCE
+  LAC_LOAD_PRESSURE, LAC_LOAD_TRACTION, LAC_LOAD_FORCE,
+  LAC_LOAD_EXACT_TRACTION,    /* sigma(u) n of the [exact] solution        */
+  LAC_LOAD_EXACT_TANGENTIAL,  /* its tangential part (on a contact side)   */
+  LAC_LOAD_EXACT_FORCE        /* -div sigma(u) of the [exact] solution     */
 } lac_load_kind;
 
 typedef struct lac_scene_load            /* [load NAME] */
@@ -175,6 +182,8 @@ typedef struct lac_scene_load            /* [load NAME] */
   double vec[3];        /* traction or force, model components */
   double traction[3], force[3];     /* raw key values (table storage)  */
   int ntraction, nforce;
+  int exact;                        /* 0 none, 1 traction, 2 tangential,
+                                       3 force (table storage)          */
 } lac_scene_load;
 
 typedef struct lac_scene_exact           /* [exact] */

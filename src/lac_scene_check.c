@@ -231,9 +231,25 @@ finish_load (lac_scene *sc, lac_scene_load *l)
   nkind += given (&l->sec, "pressure");
   nkind += given (&l->sec, "traction");
   nkind += given (&l->sec, "force");
+  nkind += given (&l->sec, "exact");
   if (nkind != 1)
     return lac_scene_error (sc, &l->sec, NULL, LAC_EINVAL, "give exactly "
-                            "one of pressure, traction, force");
+                            "one of pressure, traction, force, exact");
+  if (given (&l->sec, "exact"))
+    {
+      if (sc->exact.sec.line == 0)
+        return lac_scene_error (sc, &l->sec, "exact", LAC_EINVAL,
+                                "needs an [exact] section");
+      if (l->exact == 0)
+        return lac_scene_error (sc, &l->sec, "exact", LAC_EINVAL,
+                                "expected traction, tangential or force");
+      l->kind = l->exact == 1 ? LAC_LOAD_EXACT_TRACTION
+                : l->exact == 2 ? LAC_LOAD_EXACT_TANGENTIAL
+                : LAC_LOAD_EXACT_FORCE;
+      return l->kind == LAC_LOAD_EXACT_FORCE
+             ? LAC_SUCCESS
+             : require (sc, &l->sec, "group", "boundary physical group");
+    }
   if (given (&l->sec, "pressure"))
     l->kind = LAC_LOAD_PRESSURE;
   else if (given (&l->sec, "traction"))

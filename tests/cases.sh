@@ -46,7 +46,7 @@ if "$LAC" run chapters/01-problem/sphere-axi.scene --out "$C/demo" > "$C/demo.ou
     case_fail demo "no effects line on stderr"
   elif [ "$(grep -c '^lac: \[[1-7]/7\]' "$C/demo.err")" -ne 7 ]; then
     case_fail demo "expected 7 progress lines on stderr"
-  elif [ -z "$(summary_value "$C/demo.out" err_l2)" ] || [ -z "$(summary_value "$C/demo.out" rel_err_u_r_inner)" ]; then
+  elif [ -z "$(summary_value "$C/demo.out" l2_err_u)" ] || [ -z "$(summary_value "$C/demo.out" rel_err_u_r_inner)" ]; then
     case_fail demo "no error lines in the summary"
   else
     case_ok demo
@@ -78,11 +78,11 @@ done
 
 # Convergence: tri6 halves h from level 1 to level 2, L2 error / 8 (> 6).
 "$LAC" run chapters/01-problem/sphere-axi.scene --set level=2 --no-output --quiet > "$C/level2.out" 2>&1
-e1=$(summary_value "$C/demo.out" err_l2); e2=$(summary_value "$C/level2.out" err_l2)
+e1=$(summary_value "$C/demo.out" l2_err_u); e2=$(summary_value "$C/level2.out" l2_err_u)
 if [ -n "$e1" ] && [ -n "$e2" ] && awk -v a="$e1" -v b="$e2" 'BEGIN { exit !(a / b > 6) }'; then
   case_ok convergence
 else
-  case_fail convergence "err_l2 level 1 = '$e1', level 2 = '$e2': ratio not > 6"
+  case_fail convergence "l2_err_u level 1 = '$e1', level 2 = '$e2': ratio not > 6"
 fi
 
 # VTU: well-formed XML, counts as in the summary.
