@@ -98,9 +98,9 @@ macro_measures (lac_contact *c, const lac_mesh *mesh, lac_model model,
   size_t inodes[MAX_INTERIOR];
   double phis[MAX_INTERIOR] = { 0 };
   size_t nint = lac_macromesh_interior (mesh, M, m, inodes, MAX_INTERIOR);
-  if (nint == 0 || nint > MAX_INTERIOR)
-    LAC_ERROR (LAC_ESANITY, "macro-element %zu has %zu interior nodes "
-               "[LAC Hyp. 1]", m, nint);
+  if (nint > MAX_INTERIOR)
+    LAC_ERROR (LAC_ESANITY, "macro-element %zu has %zu interior nodes",
+               m, nint);
   c->meas[m] = c->covered[m] = 0;
   for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
     {
@@ -112,6 +112,15 @@ macro_measures (lac_contact *c, const lac_mesh *mesh, lac_model model,
       if (st)
         return st;
       c->meas[m] += mj;                                         /* |T^m| */
+    }
+  if (nint == 0)
+    {
+      /* No interior node (P0 on a linear trace, lac_macromesh_trace):
+       * Hypothesis 1 fails; the criterion degenerates to that of the
+       * constant function 1, sqrt(delta). */
+      c->inode[m] = (size_t) -1;
+      c->phiint[m] = c->covered[m];
+      return LAC_SUCCESS;
     }
   size_t best = nint;
   for (size_t t = 0; t < nint; t++)

@@ -9,8 +9,8 @@
 #include "lac_mem.h"
 #include "lac_status.h"
 
-static lac_contact *
-contact_alloc (size_t nmacro)
+lac_contact *
+lac_contact_alloc (size_t nmacro)
 {
   lac_contact *c = lac_calloc (1, sizeof *c);
   if (!c)
@@ -51,6 +51,8 @@ lac_contact_free (lac_contact *c)
   lac_csc_free (c->C);
   lac_free (c->G);
   lac_free (c->area);
+  lac_free (c->xpt);
+  lac_free (c->npt);
   lac_free (c);
 }
 
@@ -60,7 +62,7 @@ lac_contact_build (const lac_mesh *mesh, lac_model model, const lac_macro *M,
                    double epsilon, lac_contact **out)
 {
   *out = NULL;
-  lac_contact *c = contact_alloc (M->n);
+  lac_contact *c = lac_contact_alloc (M->n);
   if (!c)
     LAC_ERROR (LAC_ENOMEM, "contact data for %zu macro-elements", M->n);
   int st = lac_admissibility_compute (c, mesh, model, M, P, epsilon);

@@ -54,6 +54,8 @@ typedef struct lac_contact
   lac_csc *C;         /* owned, ndof x k                     [LAC (16)-(17)] */
   double *G;          /* owned, k: mean initial gaps           [LAC (18)]    */
   double *area;       /* owned, k: |T^m cap Gamma_C| = M^LAC_ii [LAC (16)]   */
+  double *xpt, *npt;  /* owned, 3k, node-to-segment only (else NULL): the
+                         collocation point and unit normal of multiplier i */
 } lac_contact;
 
 /* Items 1 and 2 above.  The pairing's slave list must be the sub-facets of
@@ -68,6 +70,24 @@ int lac_contact_build (const lac_mesh *mesh, lac_model model,
                        const lac_pairing_facets *master, double epsilon,
                        lac_contact **out);
 void lac_contact_free (lac_contact *c);   /* NULL allowed */
+/* Zeroed arrays for nmacro macro-elements (C, xpt, npt NULL). */
+lac_contact *lac_contact_alloc (size_t nmacro);
+
+/* The node-to-segment (2D) / node-to-face (3D) method, for comparison
+ * [LAC §1]: one multiplier per slave node a whose projection along the
+ * nodal normal n_a (average of the adjacent facet normals) lands on a
+ * master facet; the constraint is collocated there:
+ *   C(:,i) = w_a (e_a - sum_b phi^M_b(xi) e_b) n_a,  G_i = w_a g_a,
+ * with w_a the node's share of the slave surface (|T|/nnodes of each
+ * adjacent facet: lumped, so quadratic vertices get a positive weight) and
+ * g_a the distance to the master along n_a.  The master candidates of a
+ * node are the masters paired with its facets (P).  The "macro-elements"
+ * of the result are the slave nodes (nmacro = their number; inode = node).
+ * LAC_EADMISS if no node projects onto the master. */
+int lac_contact_build_nts (const lac_mesh *mesh, lac_model model,
+                           const lac_macro *M, const lac_pairing *P,
+                           const lac_pairing_facets *master,
+                           lac_contact **out);
 
 /* Dirichlet data on contact dofs: G_i -= C(dof,i) value for every fixed
  * dof, then the row of C is zeroed (the fixed value moves into the gap). */

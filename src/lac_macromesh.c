@@ -792,3 +792,50 @@ lac_macromesh_interior (const lac_mesh *mesh, const lac_macro *M, size_t m,
     nodes[i] = node[i];
   return count;
 }
+
+/* lac_macromesh_trace: the raw trace mesh as "macro-mesh": one element per
+ * slave facet, nothing gathered or refined (the P0 multipliers of [LAC
+ * §4.2], which violate Hypothesis 1 for linear elements: used only to
+ * compare with LAC).  inode = (size_t) -1 where the facet has no interior
+ * node; meas = |T^s|, phi = 0. */
+int
+lac_macromesh_trace (const lac_mesh *mesh, const char *slave, lac_macro **out)
+{
+  const lac_group *G = mesh ? lac_mesh_group (mesh, slave) : NULL;
+  *out = NULL;
+  if (!G)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' not found", slave);
+  if (G->dim != mesh->dim - 1 || G->n == 0)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is not a non-empty "
+              "group of boundary facets", slave);
+  lac_macro *M = lac_calloc (1, sizeof *M);
+  size_t n = G->n;
+  if (M)
+    {
+      M->n = n;
+      M->ptr = lac_malloc ((n + 1) * sizeof *M->ptr);
+      M->cell = lac_malloc (n * sizeof *M->cell);
+      M->face = lac_malloc (n * sizeof *M->face);
+      M->inode = lac_malloc (n * sizeof *M->inode);
+      M->meas = lac_calloc (n, sizeof *M->meas);
+      M->phi = lac_calloc (n, sizeof *M->phi);
+    }
+  if (!M || !M->ptr || !M->cell || !M->face || !M->inode || !M->meas
+      || !M->phi)
+    {
+      lac_macromesh_free (M);
+      MM_ERROR (LAC_ENOMEM, "trace macro-mesh of %zu facets", n);
+    }
+  M->ptr[0] = 0;
+  for (size_t e = 0; e < n; e++)
+    {
+      M->ptr[e + 1] = e + 1;
+      M->cell[e] = G->cell[e];
+      M->face[e] = G->face[e];
+      size_t in[MAXPATCH];
+      M->inode[e] = lac_macromesh_interior (mesh, M, e, in, MAXPATCH) > 0
+                    ? in[0] : (size_t) -1;
+    }
+  *out = M;
+  return LAC_SUCCESS;
+}

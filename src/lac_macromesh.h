@@ -135,6 +135,14 @@ int lac_macromesh_build (lac_mesh **mesh, const char *slave,
                          const lac_macro_opts *opts, lac_macro **out);
 void lac_macromesh_free (lac_macro *M);          /* NULL allowed */
 
+/* The raw trace as "macro-mesh": one element per facet of `slave`, no
+ * gathering, no refinement (P0 multipliers on the slave trace, [LAC §4.2]:
+ * for linear elements they violate Hypothesis 1; for comparisons only).
+ * inode[m] = (size_t) -1 where the facet has no interior node, meas and
+ * phi are left 0 (lac_admissibility computes the measures). */
+int lac_macromesh_trace (const lac_mesh *mesh, const char *slave,
+                         lac_macro **out);
+
 /* One refinement round (lac_refine.c): cut face cut[c] of every cell with
  * cut[c] >= 0 with the templates above; returns the new mesh (all groups
  * remapped) and the map old -> new.  opts may be NULL. */

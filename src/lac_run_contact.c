@@ -83,7 +83,9 @@ lac_run_stage_contact (lac_run *r)
       || (c->master && !contact_group (r, "master", c->master)))
     return LAC_EINVAL;
   t0 = lac_run_now ();
-  status = lac_macromesh_build (&r->mesh, c->slave, NULL, &r->macro);
+  status = c->method == 0                        /* lac: Hypothesis 1 */
+           ? lac_macromesh_build (&r->mesh, c->slave, NULL, &r->macro)
+           : lac_macromesh_trace (r->mesh, c->slave, &r->macro);
   if (status)
     return lac_scene_error (sc, &c->sec, "slave", status, "%s",
                             lac_error_message ());
@@ -130,9 +132,13 @@ lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d)
   if (r->scene->ncontact == 0)
     return LAC_SUCCESS;
   c = &r->scene->contact[0];
-  status = lac_contact_build (r->mesh, r->model, r->macro, r->pairing,
-                              r->master.n ? &r->master : NULL, c->epsilon,
-                              &r->contact);
+  if (c->method == 2)                            /* node-to-segment */
+    status = lac_contact_build_nts (r->mesh, r->model, r->macro, r->pairing,
+                                    &r->master, &r->contact);
+  else
+    status = lac_contact_build (r->mesh, r->model, r->macro, r->pairing,
+                                r->master.n ? &r->master : NULL, c->epsilon,
+                                &r->contact);
   if (status)
     return lac_scene_error (r->scene, &c->sec, status == LAC_EADMISS
                             ? "epsilon" : NULL, status, "%s",
@@ -204,6 +210,21 @@ multiplier_geometry (lac_run *r, const lac_exact *e, double *l2)
   const lac_pairing *P = r->pairing;
   lac_map mp;
   *l2 = 0;
+  if (c->xpt)                                    /* collocation points */
+    {
+      for (size_t i = 0; i < c->k; i++)
+        {
+          memcpy (r->lam_x + 3 * i, c->xpt + 3 * i, 3 * sizeof (double));
+          if (e->kind == LAC_EXACT_NONE)
+            continue;
+          r->lam_exact[i] = lac_exact_normal_stress (e, c->xpt + 3 * i,
+                                                     c->npt + 3 * i);
+          double d = r->lam_exact[i] - r->newton->lambda[i];
+          *l2 += c->area[i] * d * d;             /* nodal quadrature */
+        }
+      *l2 = sqrt (*l2);
+      return LAC_SUCCESS;
+    }
   for (size_t mm = 0; e->kind != LAC_EXACT_NONE && mm < M->n; mm++)
     {
       long i = c->mult[mm];

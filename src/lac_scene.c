@@ -112,6 +112,7 @@ static const key_spec exact_keys[] = {
   NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
 };
 static const char *const obstacle_names[] = { "none", "graph", NULL };
+static const char *const method_names[] = { "lac", "p0", "nts", NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),
@@ -120,6 +121,7 @@ static const key_spec contact_keys[] = {
   VEC12 (lac_scene_contact, curvature, ncurvature),
   VEC12 (lac_scene_contact, center, ncenter),
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
+  ENUM (lac_scene_contact, method, method_names),
 };
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),

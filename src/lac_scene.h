@@ -71,6 +71,10 @@
  *     height curvature center   the graph (0; 0 [0]; 0 [0])
  *     epsilon              admissibility threshold in (0, 1] [LAC Def. 1]
  *                                                     0.01
+ *     method               lac | p0 (one multiplier per raw slave facet,
+ *                          no macro-elements: violates Hypothesis 1) |
+ *                          nts (node-to-segment / node-to-face
+ *                          collocation): p0 and nts for comparisons  lac
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b
@@ -203,6 +207,7 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double curvature[3], center[3];    /* (room for 3: the parser's limit) */
   int ncurvature, ncenter;
   double epsilon;       /* admissibility threshold [LAC Def. 1]            */
+  int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
 } lac_scene_contact;
 
 typedef struct lac_scene_output          /* [output] */

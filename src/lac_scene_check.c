@@ -360,6 +360,9 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
     return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "only one "
                             "[contact] section is supported (the first is "
                             "[contact %s])", sc->contact[0].sec.name);
+  if (c->method == 2 && !c->master)
+    return lac_scene_error (sc, &c->sec, "method", LAC_EINVAL, "nts needs a "
+                            "master group (not an obstacle)");
   if (c->master && strcmp (c->slave, c->master) == 0)
     return lac_scene_error (sc, &c->sec, "master", LAC_EINVAL, "the master "
                             "group must differ from the slave group");

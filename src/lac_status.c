@@ -41,16 +41,20 @@ lac_error_clear (void)
   last_message[0] = '\0';
 }
 
+/* The message is formatted into a local buffer first, so an argument may
+ * be the previous message (lac_error_message ()) to wrap it. */
 int
 lac_error_set (int status, const char *func, const char *fmt, ...)
 {
+  char buf[sizeof last_message];
   va_list ap;
-  int n = snprintf (last_message, sizeof last_message, "%s: ", func);
-  if (n < 0 || (size_t) n >= sizeof last_message)
+  int n = snprintf (buf, sizeof buf, "%s: ", func);
+  if (n < 0 || (size_t) n >= sizeof buf)
     n = 0;
   va_start (ap, fmt);
-  vsnprintf (last_message + n, sizeof last_message - (size_t) n, fmt, ap);
+  vsnprintf (buf + n, sizeof buf - (size_t) n, fmt, ap);
   va_end (ap);
+  memcpy (last_message, buf, sizeof buf);
   return status;
 }
 

@@ -91,3 +91,19 @@ contact_bad master-and-obstacle "[contact interface]|exactly one of master" \
   $T2 --set contact.interface.obstacle=graph
 contact_bad same-groups "master = 'upper_bottom'|must differ" \
   $T2 --set contact.interface.master=upper_bottom
+
+# ---- comparison methods [LAC §4.2, §5.1] --------------------------------
+# Node-to-segment collocation fails the patch test with non-matching
+# meshes (the pressure oscillates); P0 on a fine linear slave trace has more
+# multipliers than the master can control (no interior d.o.f.: Hypothesis 1
+# fails) and its saddle-point system is singular: a clear message.
+if "$LAC" run $T2 --set element=quad4 --set level=1 --set contact.interface.method=nts \
+     --quiet --no-output > "$C/nts.out" 2> "$C/nts.err" \
+   && awk -v a="$(value_of "$C/nts.out" max_rel_err_lambda)" 'BEGIN { exit !(a > 1e-3) }'; then
+  contact_ok nts-oscillates
+else
+  contact_fail nts-oscillates "nts on the patch test: max_rel_err_lambda = $(value_of "$C/nts.out" max_rel_err_lambda) (want > 1e-3) $(tail -1 "$C/nts.err")"
+fi
+contact_bad p0-singular "singular|inf-sup" chapters/08-experiments/taylor3d.scene \
+  --set element=tet4 --set level=1 --set contact.interface.method=p0 \
+  --set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom

@@ -1,0 +1,34 @@
+/* t001: status codes and the stored message; a message may wrap the
+ *       previous one (lac_error_set formats before it stores). */
+#include <string.h>
+#include "check.h"
+#include "lac_status.h"
+
+static int
+inner (void)
+{
+  LAC_ERROR (LAC_ESING, "pivot %d is zero", 7);
+}
+
+static int
+outer (void)
+{
+  int st = inner ();
+  return LAC_ERRMSG (st, "solve failed (%s)", lac_error_message ());
+}
+
+int
+main (void)
+{
+  lac_init ();
+  check_int (outer (), LAC_ESING, "status passed through");
+  check_true (strcmp (lac_error_message (),
+                      "outer: solve failed (inner: pivot 7 is zero)") == 0,
+              "wrapped message: '%s'", lac_error_message ());
+  lac_error_clear ();
+  check_true (lac_error_message ()[0] == '\0', "cleared");
+  for (int s = -2; s <= 9; s++)
+    check_true (lac_strerror (s)[0] != '\0', "strerror %d", s);
+  lac_finalize ();
+  return check_summary ();
+}
