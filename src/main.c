@@ -2,6 +2,8 @@
  *
  *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--out DIR]
  *                 [--quiet] [--timings] [--no-output]
+ *   lac infsup SCENE [...]     (lac_cli_infsup.c)
+ *   lac render RESULT [...]    (lac_cli_render.c)
  *   lac --help | --version
  *
  * The only file that prints and exits.  Progress (the active effects, one
@@ -12,6 +14,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lac_cli_infsup.h"
+#include "lac_cli_render.h"
 #include "lac_linalg.h"
 #include "lac_run.h"
 #include "lac_scene.h"
@@ -25,6 +29,8 @@ enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
 
 static const char *help_text =
   "usage: lac run SCENE [options]      solve the scene, write the results\n"
+  "       lac infsup SCENE [options]   estimate the inf-sup constant beta_h\n"
+  "       lac render RESULT [options]  draw a result directory as PNG\n"
   "       lac --help                   this text\n"
   "       lac --version                the version\n"
   "\n"
@@ -262,10 +268,20 @@ main (int argc, char **argv)
   int ret;
   if (argc < 2)
     return usage_error ("no command", NULL);
+  /* The other subcommands parse their own arguments (and --help). */
+  if (strcmp (argv[1], "infsup") == 0 || strcmp (argv[1], "render") == 0)
+    {
+      lac_init ();
+      ret = argv[1][0] == 'i' ? lac_cli_infsup (argc - 1, argv + 1)
+                              : lac_cli_render (argc - 1, argv + 1);
+      lac_finalize ();
+      return ret;
+    }
   for (int k = 1; k < argc; k++)
     if (strcmp (argv[k], "--help") == 0 || strcmp (argv[k], "-h") == 0)
       {
         fputs (help_text, stdout);
+        printf ("\n%s\n%s", lac_cli_infsup_help, lac_cli_render_help);
         return EXIT_SUCCESS;
       }
   if (strcmp (argv[1], "--version") == 0)

@@ -107,3 +107,19 @@ fi
 contact_bad p0-singular "singular|inf-sup" chapters/08-experiments/taylor3d.scene \
   --set element=tet4 --set level=1 --set contact.interface.method=p0 \
   --set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom
+
+# beta_h [LAC (10)]: P0 on the raw trace decays with h, LAC stays bounded
+# (Taylor 2D quad4, the finer body as slave, levels 0 and 3).
+beta_of () {
+  # shellcheck disable=SC2086
+  "$LAC" infsup $T2 --set element=quad4 --set level="$1" \
+    --set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom \
+    --set contact.interface.method="$2" --quiet 2>/dev/null | sed -n 's/^beta_h = //p'
+}
+bl0=$(beta_of 0 lac); bl3=$(beta_of 3 lac); bp0=$(beta_of 0 p0); bp3=$(beta_of 3 p0)
+if awk -v a="$bl0" -v b="$bl3" -v c="$bp0" -v d="$bp3" \
+     'BEGIN { exit !(a > 0 && c > 0 && b / a > 0.5 && d / c < 0.5 && b > 3 * d) }'; then
+  contact_ok infsup-p0-vs-lac
+else
+  contact_fail infsup-p0-vs-lac "beta_h LAC $bl0 -> $bl3, P0 $bp0 -> $bp3 (want LAC ratio > 0.5, P0 ratio < 0.5)"
+fi
