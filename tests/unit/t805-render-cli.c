@@ -1,0 +1,263 @@
+/* t805: `lac render` on result directories built in the test
+ *
+ * A 2D axisymmetric result (quad8 quarter annulus, contact.csv along the
+ * inner arc listed out of order) and a 3D one (hex8 box, contact.csv on
+ * the top face) are written with lac_output_vtu plus small summary.txt and
+ * contact.csv files; lac_cli_render draws the fields and the contact views
+ * (2D through gnuplot when it is installed: the macro-elements come out
+ * ordered along the arc from the equator, each spanning its length), lists
+ * the fields, and rejects bad command lines (exit status 2) and bad
+ * results (1).  Its stdout and stderr go to /dev/null.
+ */
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "check.h"
+#include "lac_cli_render.h"
+#include "lac_mem.h"
+#include "lac_output.h"
+#include "lac_render.h"
+#include "lac_status.h"
+#include "t8-render.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* Run lac_cli_render with stdout and stderr sent to /dev/null. */
+static int
+cli (const char *a0, const char *a1, const char *a2, const char *a3,
+     const char *a4, const char *a5)
+{
+  char *argv[7] = { (char *) "render", (char *) a0, (char *) a1, (char *) a2,
+                    (char *) a3, (char *) a4, (char *) a5 };
+  int argc = 1, out, err, null, ret;
+  while (argc < 7 && argv[argc])
+    argc++;
+  fflush (stdout);
+  fflush (stderr);
+  out = dup (1);
+  err = dup (2);
+  null = open ("/dev/null", O_WRONLY);
+  dup2 (null, 1);
+  dup2 (null, 2);
+  ret = lac_cli_render (argc, argv);
+  fflush (stdout);
+  fflush (stderr);
+  dup2 (out, 1);
+  dup2 (err, 2);
+  close (out);
+  close (err);
+  close (null);
+  return ret;
+}
+
+static int
+have_gnuplot (void)
+{
+  const char *path = getenv ("PATH");
+  char buf[4200], dir[4096];
+  while (path && *path)
+    {
+      size_t n = strcspn (path, ":");
+      snprintf (dir, sizeof dir, "%.*s", (int) n, path);
+      snprintf (buf, sizeof buf, "%s/gnuplot", dir);
+      if (access (buf, X_OK) == 0)
+        return 1;
+      path += n + (path[n] == ':');
+    }
+  return 0;
+}
+
+static void
+write_file (const char *dir, const char *name, const char *text)
+{
+  char path[600];
+  FILE *fp;
+  snprintf (path, sizeof path, "%s/%s", dir, name);
+  if ((fp = fopen (path, "w")))
+    {
+      fputs (text, fp);
+      fclose (fp);
+    }
+}
+
+static int
+png_size (const char *path, int *w, int *h)
+{
+  unsigned char *img = t8_read_png (path, w, h);
+  free (img);
+  return img != NULL;
+}
+
+/* A result directory from a mesh: u radial, stresses of a thick sphere. */
+static void
+write_result (const char *dir, lac_mesh *m, lac_model model)
+{
+  int dim = m->dim, ns = lac_model_nstress (model);
+  double *u = lac_malloc (m->nnodes * (size_t) dim * sizeof *u),
+    *s = lac_malloc (m->nnodes * (size_t) ns * sizeof *s),
+    *vm = lac_malloc (m->nnodes * sizeof *vm);
+  char path[600];
+  lac_output_fields f;
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      double r2 = 0;
+      for (int i = 0; i < dim; i++)
+        r2 += m->x[a * (size_t) dim + (size_t) i]
+              * m->x[a * (size_t) dim + (size_t) i];
+      for (int i = 0; i < dim; i++)
+        u[a * (size_t) dim + (size_t) i] = 1e-3 * m->x[a * (size_t) dim
+                                                      + (size_t) i];
+      for (int k = 0; k < ns; k++)
+        s[a * (size_t) ns + (size_t) k] = k < dim ? -1000 / (r2 + 1) : 0;
+      vm[a] = sqrt (r2);
+    }
+  memset (&f, 0, sizeof f);
+  f.mesh = m;
+  f.model = model;
+  f.u = u;
+  f.sigma = s;
+  f.vm = vm;
+  mkdir (dir, 0777);
+  snprintf (path, sizeof path, "%s/solution.vtu", dir);
+  check_status (lac_output_vtu (path, &f), LAC_SUCCESS, "write %s", path);
+  lac_free (u);
+  lac_free (s);
+  lac_free (vm);
+}
+
+static void
+test_2d (void)
+{
+  size_t n[2] = { 2, 6 };
+  double L[2] = { 1, 1 };
+  lac_mesh *m = NULL;
+  char dir[512], png[600], dat[600], csv[2048], *p = csv;
+  int w, h;
+  FILE *fp;
+  snprintf (dir, sizeof dir, "%s", t8_path ("t805-2d"));
+  check_status (lac_mesh_box (LAC_QUAD8, n, L, 0, &m), LAC_SUCCESS, "box");
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      double r = 20 + 20 * m->x[2 * a], th = m->x[2 * a + 1] * PI / 2;
+      m->x[2 * a] = r * cos (th);
+      m->x[2 * a + 1] = r * sin (th);
+    }
+  write_result (dir, m, LAC_AXISYMMETRIC);
+  write_file (dir, "summary.txt", "title = t805 quarter annulus\n"
+              "model = axisymmetric\n");
+  /* six macro-elements on r = 20, listed as 3 0 5 1 4 2 (k = angle index);
+   * one more, not admissible (no centroid) */
+  p += sprintf (p, "macro,x,y,z,measure,covered,criterion,admissible,"
+                "multiplier,lambda,lambda_exact,mean_gap,active\n");
+  for (int j = 0; j < 6; j++)
+    {
+      int k = (int[]) { 3, 0, 5, 1, 4, 2 }[j];
+      double th = (k + 0.5) * PI / 12, len = 20 * PI / 12;
+      p += sprintf (p, "%d,%.10e,%.10e,0,%.10e,1,0.6,1,%d,%g,-10,0,1\n", j,
+                    20 * cos (th), 20 * sin (th),
+                    2 * PI * 20 * cos (th) * len, j, -10.0 - k);
+    }
+  sprintf (p, "6,0,0,0,1,0,0,0,-1,0,0,0,0\n");
+  write_file (dir, "contact.csv", csv);
+
+  check_int (cli (dir, "--edges", "--field", "radial_stress", NULL, NULL), 0,
+             "2D field");
+  snprintf (png, sizeof png, "%s/radial_stress.png", dir);
+  check_true (png_size (png, &w, &h) && w == 800 && h == 600, "%s", png);
+  snprintf (png, sizeof png, "%s/small.png", dir);
+  check_int (cli (dir, "--out", png, "--width=400", "--height=300",
+                  "--scale=auto"), 0, "2D von Mises, small, auto scale");
+  check_true (png_size (png, &w, &h) && w == 400 && h == 300, "%s", png);
+  check_int (cli (dir, "--list", NULL, NULL, NULL, NULL), 0, "--list");
+  if (have_gnuplot ())
+    {
+      double s0, lam0, s1, lam1, ds;
+      check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 0,
+                 "2D contact curves");
+      snprintf (png, sizeof png, "%s/contact.png", dir);
+      check_true (png_size (png, &w, &h) && w == 800, "%s", png);
+      snprintf (dat, sizeof dat, "%s/contact.dat", dir);
+      fp = fopen (dat, "r");
+      check_true (fp != NULL, "%s kept", dat);
+      if (fp)
+        {
+          char line[256];
+          int ok = fgets (line, sizeof line, fp) != NULL;     /* comment */
+          ok &= fscanf (fp, "%lf %lf %*f %*f %lf %lf %*f %*f", &s0, &lam0, &s1,
+                        &lam1)
+                == 4;
+          check_true (ok, "read %s", dat);
+          ds = 20 * PI / 12;                       /* the length, not 2 pi r l */
+          check_abs (s0, 0, 1e-9, "s starts at 0");
+          check_abs (s1, ds, 1e-6, "first macro spans its length");
+          check_abs (lam0, -10, 0, "first macro: the one at the equator");
+          for (int k = 1; ok && k < 6; k++)
+            {
+              ok = fscanf (fp, "%lf %lf %*f %*f %*f %*f %*f %*f", &s0, &lam0)
+                   == 2;
+              check_abs (lam0, -10.0 - k, 0, "macro %d in order", k);
+              check_abs (s0, k * ds, 1e-6, "macro %d starts at k ds", k);
+            }
+          fclose (fp);
+        }
+    }
+
+  /* bad command lines and results */
+  check_int (cli (NULL, NULL, NULL, NULL, NULL, NULL), 2, "no directory");
+  check_int (cli (dir, "--bogus", NULL, NULL, NULL, NULL), 2, "bad option");
+  check_int (cli (dir, "--scale", "abc", NULL, NULL, NULL), 2, "bad scale");
+  check_int (cli (dir, "--range", "3:1", NULL, NULL, NULL), 2, "bad range");
+  check_int (cli (dir, "--width", "10", NULL, NULL, NULL), 2, "bad width");
+  check_int (cli (dir, "--field", NULL, NULL, NULL, NULL), 2, "no field");
+  check_int (cli (dir, dir, NULL, NULL, NULL, NULL), 2, "two directories");
+  check_int (cli (dir, "--field", "nope", NULL, NULL, NULL), 1,
+             "unknown field");
+  check_message ("available:", "unknown field: list");
+  check_int (cli ("/nonexistent", NULL, NULL, NULL, NULL, NULL), 1,
+             "no result there");
+  check_int (cli (dir, "--help", NULL, NULL, NULL, NULL), 0, "--help");
+  lac_mesh_free (m);
+}
+
+static void
+test_3d (void)
+{
+  size_t n[3] = { 2, 2, 2 };
+  double L[3] = { 2, 2, 1 };
+  lac_mesh *m = NULL;
+  char dir[512], png[600];
+  int w, h;
+  snprintf (dir, sizeof dir, "%s", t8_path ("t805-3d"));
+  check_status (lac_mesh_box (LAC_HEX8, n, L, 0, &m), LAC_SUCCESS, "box");
+  write_result (dir, m, LAC_SOLID3D);
+  write_file (dir, "contact.csv",
+              "macro,x,y,z,measure,admissible,lambda,mean_gap\n"
+              "0,0.5,0.5,1,1,1,-25,0\n1,1.5,0.5,1,1,1,-24,0\n"
+              "2,0.5,1.5,1,1,1,-23,0\n3,1.5,1.5,1,1,1,-22,0\n");
+  check_int (cli (dir, "--contact", "--scale", "10", NULL, NULL), 0,
+             "3D contact discs");
+  snprintf (png, sizeof png, "%s/contact.png", dir);
+  check_true (png_size (png, &w, &h) && w == 800, "%s", png);
+  check_int (cli (dir, "--az", "-60", "--el=40", "--field", "u"), 0,
+             "3D |u|");
+  snprintf (png, sizeof png, "%s/u.png", dir);
+  check_true (png_size (png, &w, &h), "%s", png);
+  write_file (dir, "contact.csv", "macro,x,y\n");
+  check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 1,
+             "contact.csv without the columns");
+  check_message ("no column", "message names the column");
+  lac_mesh_free (m);
+}
+
+int
+main (void)
+{
+  lac_init ();
+  test_2d ();
+  test_3d ();
+  return check_summary ();
+}
