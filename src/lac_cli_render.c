@@ -53,7 +53,7 @@ const char lac_cli_render_help[] =
   "  --field NAME      the field (von_mises): any point array of the VTU\n"
   "                    (stress_xx, ...), a component or the magnitude of a\n"
   "                    vector (displacement_x, displacement_magnitude),\n"
-  "                    radial_stress (n.sigma.n, n = x/|x|),\n"
+  "                    radial_stress (n.sigma.n, n = x/|x|), x, y, z,\n"
   "                    displacement_error (|u - u_exact|); aliases vm, u,\n"
   "                    u_x, s_xx and the nodes.csv column names\n"
   "  --list            print the available fields and exit\n"
@@ -256,6 +256,21 @@ summary_value (const char *dir, const char *key, char *buf, size_t len)
   return found;
 }
 
+/* The title of the run (summary.txt), or the directory's last name. */
+static void
+scene_title (const char *dir, char *buf, size_t len)
+{
+  size_t n = strlen (dir);
+  const char *p;
+  if (summary_value (dir, "title", buf, len))
+    return;
+  while (n > 1 && dir[n - 1] == '/')
+    n--;
+  for (p = dir + n; p > dir && p[-1] != '/'; p--)
+    ;
+  snprintf (buf, len, "%.*s", (int) (dir + n - p), p);
+}
+
 typedef struct macro_rows
 {
   size_t n;                        /* admissible macro-elements          */
@@ -401,8 +416,7 @@ fill_opts (const render_args *a, double scale, const char *what,
   o->fixed_range = a->fixed_range;
   o->vmin = a->vmin;
   o->vmax = a->vmax;
-  if (!summary_value (a->dir, "title", scene, sizeof scene))
-    snprintf (scene, sizeof scene, "%s", a->dir);
+  scene_title (a->dir, scene, sizeof scene);
   if (a->title)
     snprintf (title, tlen, "%s", a->title);
   else if (scale != 0)
@@ -717,8 +731,7 @@ draw_contact_2d (const render_args *a, const lac_render_result *res,
                                               ".png") ? n - 4 : n), file);
   snprintf (dat, sizeof dat, "%s/%s.dat", dir, name);
   snprintf (gp, sizeof gp, "%s/%s.gp", dir, name);
-  if (!summary_value (a->dir, "title", scene, sizeof scene))
-    snprintf (scene, sizeof scene, "%s", a->dir);
+  scene_title (a->dir, scene, sizeof scene);
   snprintf (title, sizeof title, "%s", a->title ? a->title : scene);
   if ((status = write_curves_dat (dat, rows, res->axisymmetric, &exact))
       || (status = write_curves_gp (gp, name, file, title, a, rows, exact,
