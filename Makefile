@@ -5,6 +5,7 @@
 #   make             build build/liblac.a and build/lac
 #   make test-asan   the test suite under -fsanitize=address,undefined
 #   make bench       benchmarks (not in CI): sizes, times, memory
+#   make figures     regenerate figures/ (pictures of the experiments)
 #   make help        all targets
 #
 # Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
@@ -31,6 +32,8 @@ UNITSRC  := $(sort $(wildcard tests/unit/t*.c))
 UNIT     := $(UNITSRC:tests/unit/%.c=$(B)/tests/%)
 EXSRC    := $(wildcard chapters/[0-9][0-9]-*/example.c)
 EX       := $(EXSRC:chapters/%/example.c=$(B)/chapters/%)
+FIGSRC   := $(wildcard figures/*.c)
+FIGPROG  := $(FIGSRC:figures/%.c=$(B)/figures/%)
 BENCHSRC := $(wildcard bench/*.c)
 BENCH    := $(BENCHSRC:bench/%.c=$(B)/bench/%)
 
@@ -62,6 +65,9 @@ $(B)/tests/numcmp: tests/numcmp.c
 $(B)/chapters/%: chapters/%/example.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+$(B)/figures/%: figures/%.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 $(B)/bench/%: bench/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
@@ -88,11 +94,15 @@ bench: all $(BENCH)
 	@for b in $(BENCH); do echo "== $$b"; ./$$b || exit 1; done
 	@for s in bench/*.sh; do echo "== $$s"; sh $$s $(B) || exit 1; done
 
+# Regenerate figures/ (OSMesa pictures, gnuplot curves; no display needed).
+figures: all $(FIGPROG)
+	sh figures/make-figures.sh $(B)
+
 clean:
 	rm -rf build
 
 help:
 	@sed -n '3,9p' Makefile
 
-.PHONY: all deps test test-asan demo bench clean help
+.PHONY: all deps test test-asan demo bench figures clean help
 .DELETE_ON_ERROR:
