@@ -267,13 +267,15 @@ multiplier_means (lac_run *r, const lac_exact *e)
                                              P->xs + p * (dim - 1), nodes, &mp);
             if (nn < 0)
               return -nn;
-            wsum += P->w[p];
+            double w = P->w[p] * (r->model == LAC_AXISYMMETRIC
+                                  ? 6.283185307179586 * mp.x[0] : 1.0);
+            wsum += w;                          /* as the LAC terms: 2 pi r */
             for (int k = 0; k < dim; k++)
-              xc[k] += P->w[p] * mp.x[k];
+              xc[k] += w * mp.x[k];
             if (e->kind != LAC_EXACT_NONE)
               {
                 lac_exact_sigma (mp.x, (void *) e, s);
-                r->lam_exact[i] += P->w[p] * normal_stress (dim, s, mp.normal);
+                r->lam_exact[i] += w * normal_stress (dim, s, mp.normal);
               }
           }
       for (int k = 0; k < dim && wsum > 0; k++)
