@@ -1,7 +1,9 @@
 /* lac_macromesh.c -- the macro-mesh T^M of the slave contact boundary
  *                                                 [LAC Hyp. 1, §4.4, Fig. 2]
  *
- * Builds T^M in four steps (conventions and ownership in lac_macromesh.h):
+ * Builds T^M in four steps (conventions and ownership in lac_macromesh.h);
+ * this file holds steps 1 and 3 and the public functions, step 2 is in
+ * lac_macromesh_gather.c and step 4 in lac_macromesh_nodes.c:
  *
  *   1. check the slave group: it exists, is a non-empty facet group, lists
  *      no facet twice, and every facet is on the boundary (a cut would
@@ -27,38 +29,20 @@
  *      sub-facets that are on no boundary edge of T^m and on no other
  *      macro-element), and the designated one x_{m*+1}: the largest
  *      int_{T^m} phi_i [LAC Remark 1, Def. 1].
+ *
+ * lac_macromesh_trace builds the raw trace mesh instead (one element per
+ * slave facet, for comparisons only).
  */
 #include "lac_macromesh.h"
 
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "lac_macromesh_internal.h"
 #include "lac_mem.h"
-#include "lac_quadrature.h"
 #include "lac_status.h"
-
-/* Messages from the static helpers carry the public function's name. */
-#define MM_ERRMSG(status, ...) \
-  lac_error_set ((status), "lac_macromesh_build", __VA_ARGS__)
-#define MM_ERROR(status, ...) return MM_ERRMSG ((status), __VA_ARGS__)
-
-#define MAXSUBF 16   /* sub-facets of one macro-element (5 at most here) */
-#define MAXPATCH (MAXSUBF * LAC_MAX_FACE_NODES)
-
-enum { KEEP, CUT, GATHER };   /* what a slave facet needs */
-
-/* Macro-elements under construction: T^k has the facets ptr[k]..ptr[k+1]-1;
- * pending[k]: its single (whole) facet still has to be cut. */
-typedef struct mlist
-{
-  size_t n;
-  size_t *ptr, *cell;          /* owned */
-  int *face;                   /* owned */
-  unsigned char *pending;      /* owned */
-} mlist;
 
 static void
 mlist_clear (mlist *L)
@@ -201,141 +185,6 @@ check_boundary (const lac_mesh *m, const lac_group *G)
   return status;
 }
 
-/* ---- step 2: first macro-elements, gathering 2D segments --------------- */
-
-static void
-push_macro (mlist *L, const lac_group *G, const size_t *e, size_t n,
-            int pending)
-{
-  size_t j = L->ptr[L->n];
-  for (size_t i = 0; i < n; i++, j++)
-    {
-      L->cell[j] = G->cell[e[i]];
-      L->face[j] = G->face[e[i]];
-    }
-  L->pending[L->n] = (unsigned char) pending;
-  L->ptr[++L->n] = j;
-}
-
-/* The other end of segment e (ends end[2e], end[2e+1]) than node v. */
-static size_t
-other_end (const size_t *end, size_t e, size_t v)
-{
-  return end[2 * e] == v ? end[2 * e + 1] : end[2 * e];
-}
-
-/* The segment after e through node v: none (SIZE_MAX) unless exactly two
- * segments meet at v (ends of chains and junctions break chains). */
-static size_t
-next_seg (const size_t *deg, const size_t *inc, size_t e, size_t v)
-{
-  if (deg[v] != 2)
-    return SIZE_MAX;
-  return inc[2 * v] == e ? inc[2 * v + 1] : inc[2 * v];
-}
-
-/* Split a chain of k segments into macro-elements of 2 (the last of 3 if k
- * is odd); a lone segment is left to be cut  [LAC §4.4, item 1]. */
-static void
-push_chain (mlist *L, const lac_group *G, const size_t *chain, size_t k)
-{
-  size_t i = 0;
-  if (k == 1)
-    {
-      push_macro (L, G, chain, 1, 1);
-      return;
-    }
-  for (; i + 3 != k && i < k; i += 2)
-    push_macro (L, G, chain + i, 2, 0);
-  if (i < k)
-    push_macro (L, G, chain + i, 3, 0);
-}
-
-/* The macro-elements before refinement, in the order of the group's facets
- * (a chain of segments is emitted where its first facet appears). */
-static int
-start_macros (const lac_mesh *m, const lac_group *G, const unsigned char *kind,
-              mlist *L)
-{
-  size_t n = G->n, *end = NULL, *deg = NULL, *inc = NULL, *chain = NULL;
-  unsigned char *seen = NULL;
-  int status = LAC_SUCCESS;
-
-  L->ptr = lac_malloc ((n + 1) * sizeof *L->ptr);
-  L->cell = lac_malloc (n * sizeof *L->cell);
-  L->face = lac_malloc (n * sizeof *L->face);
-  L->pending = lac_malloc (n * sizeof *L->pending);
-  end = lac_malloc (2 * n * sizeof *end);
-  deg = lac_calloc (m->nnodes, sizeof *deg);
-  inc = lac_malloc (2 * m->nnodes * sizeof *inc);
-  chain = lac_malloc (n * sizeof *chain);
-  seen = lac_calloc (n, sizeof *seen);
-  if (!L->ptr || !L->cell || !L->face || !L->pending || !end || !deg || !inc
-      || !chain || !seen)
-    {
-      status = MM_ERRMSG (LAC_ENOMEM, "macro-elements of %zu facets", n);
-      goto done;
-    }
-  L->n = 0;
-  L->ptr[0] = 0;
-
-  /* Incidence of the segments to be gathered (end nodes only). */
-  for (size_t e = 0; e < n; e++)
-    if (kind[e] == GATHER)
-      {
-        int nodes[LAC_MAX_FACE_NODES];
-        lac_mesh_facet_nodes (m, G->cell[e], G->face[e], nodes, NULL);
-        for (int i = 0; i < 2; i++)
-          {
-            size_t v = (size_t) nodes[i];
-            end[2 * e + (size_t) i] = v;
-            if (deg[v] < 2)
-              inc[2 * v + deg[v]] = e;
-            deg[v]++;
-          }
-      }
-
-  for (size_t e = 0; e < n; e++)
-    {
-      size_t cur = e, v, k = 0, s, out, nxt;
-      if (kind[e] != GATHER)
-        {
-          push_macro (L, G, &e, 1, kind[e] == CUT);
-          continue;
-        }
-      if (seen[e])
-        continue;
-      /* Walk back through the first end to the start of the chain (or
-       * around a closed loop back to e). */
-      v = end[2 * e];
-      while ((nxt = next_seg (deg, inc, cur, v)) != SIZE_MAX && nxt != e)
-        {
-          v = other_end (end, nxt, v);
-          cur = nxt;
-        }
-      /* Walk forward from there, collecting the chain. */
-      s = cur;
-      out = other_end (end, s, v);
-      while (s != SIZE_MAX && !seen[s])
-        {
-          seen[s] = 1;
-          chain[k++] = s;
-          nxt = next_seg (deg, inc, s, out);
-          if (nxt != SIZE_MAX)
-            out = other_end (end, nxt, out);
-          s = nxt;
-        }
-      push_chain (L, G, chain, k);
-    }
-done:
-  lac_free (end);
-  lac_free (deg);
-  lac_free (inc);
-  lac_free (chain);
-  lac_free (seen);
-  return status;
-}
-
 /* ---- step 3: refinement rounds ----------------------------------------- */
 
 /* Facet lists of L through the map of one round. */
@@ -434,223 +283,6 @@ refine_rounds (lac_mesh **cur, const lac_mesh *orig, mlist *L,
   return status;
 }
 
-/* ---- step 4: measures and interior nodes ------------------------------- */
-
-/* The distinct nodes of the patch of sub-facets (cell[j], face[j]), j <
- * nsub, and which of them are interior: not on an edge (3D) or end (2D)
- * that only one sub-facet of the patch has.  Returns the number of nodes,
- * or 0 if the patch is too large. */
-static size_t
-patch_nodes (const lac_mesh *m, const size_t *cell, const int *face,
-             size_t nsub, size_t *node, int *inter)
-{
-  int fn[MAXSUBF][LAC_MAX_FACE_NODES], nfn[MAXSUBF];
-  size_t nn = 0, ekey[MAXSUBF * 4][2];
-  int ecount[MAXSUBF * 4], ne = 0;
-
-  if (nsub > MAXSUBF)
-    return 0;
-  for (size_t j = 0; j < nsub; j++)
-    {
-      nfn[j] = lac_mesh_facet_nodes (m, cell[j], face[j], fn[j], NULL);
-      if (nfn[j] <= 0)
-        return 0;
-      for (int a = 0; a < nfn[j]; a++)
-        {
-          size_t v = (size_t) fn[j][a], i = 0;
-          while (i < nn && node[i] != v)
-            i++;
-          if (i == nn)
-            node[nn] = v, inter[nn++] = 1;
-        }
-    }
-  /* Boundary edges (ends in 2D) of the patch: those seen only once. */
-  for (size_t j = 0; j < nsub; j++)
-    {
-      const lac_refelem *re = lac_refelem_get (m->type[cell[j]]);
-      const lac_refelem *rf = lac_refelem_get (re->face_type[face[j]]);
-      int nedge = rf->dim == 1 ? 2 : rf->nfaces;
-      for (int e = 0; e < nedge; e++)
-        {
-          size_t a, b;
-          int i = 0;
-          if (rf->dim == 1)
-            a = b = (size_t) fn[j][e];
-          else
-            {
-              a = (size_t) fn[j][rf->face_node[e][0]];
-              b = (size_t) fn[j][rf->face_node[e][1]];
-              if (a > b)
-                {
-                  size_t t = a;
-                  a = b;
-                  b = t;
-                }
-            }
-          while (i < ne && !(ekey[i][0] == a && ekey[i][1] == b))
-            i++;
-          if (i == ne)
-            ekey[ne][0] = a, ekey[ne][1] = b, ecount[ne++] = 0;
-          ecount[i]++;
-        }
-    }
-  for (size_t j = 0; j < nsub; j++)
-    {
-      const lac_refelem *re = lac_refelem_get (m->type[cell[j]]);
-      const lac_refelem *rf = lac_refelem_get (re->face_type[face[j]]);
-      int nedge = rf->dim == 1 ? 2 : rf->nfaces;
-      for (int e = 0; e < nedge; e++)
-        {
-          const lac_refelem *rd = rf->dim == 1 ? NULL
-                                  : lac_refelem_get (rf->face_type[e]);
-          int nen = rd ? rd->nnodes : 1;
-          size_t a = (size_t) fn[j][rd ? rf->face_node[e][0] : e];
-          size_t b = rd ? (size_t) fn[j][rf->face_node[e][1]] : a;
-          int i = 0;
-          if (a > b)
-            {
-              size_t t = a;
-              a = b;
-              b = t;
-            }
-          while (!(ekey[i][0] == a && ekey[i][1] == b))
-            i++;
-          if (ecount[i] != 1)
-            continue;
-          for (int q = 0; q < nen; q++)       /* the edge's nodes: boundary */
-            {
-              size_t v = (size_t) fn[j][rd ? rf->face_node[e][q] : e];
-              for (size_t k = 0; k < nn; k++)
-                if (node[k] == v)
-                  inter[k] = 0;
-            }
-        }
-    }
-  return nn;
-}
-
-static int
-cmp_size (const void *a, const void *b)
-{
-  size_t x = *(const size_t *) a, y = *(const size_t *) b;
-  return x < y ? -1 : x > y;
-}
-
-/* meas, inode, phi of every macro-element. */
-static int
-finish (const lac_mesh *m, const mlist *L, lac_macro *M)
-{
-  enum { LINE, TRI, QUAD };
-  lac_quad *rule[3] = { NULL, NULL, NULL };
-  size_t *owner = NULL;
-  int status = LAC_SUCCESS;
-  const size_t none = SIZE_MAX, several = SIZE_MAX - 1;
-
-  owner = lac_malloc (m->nnodes * sizeof *owner);
-  rule[LINE] = lac_quad_alloc (LAC_SHAPE_LINE, 6);
-  rule[TRI] = lac_quad_alloc (LAC_SHAPE_TRI, 6);
-  rule[QUAD] = lac_quad_alloc (LAC_SHAPE_QUAD, 6);
-  if (!owner || !rule[LINE] || !rule[TRI] || !rule[QUAD])
-    {
-      status = MM_ERRMSG (LAC_ENOMEM, "quadrature for macro-elements");
-      goto done;
-    }
-  /* owner[i]: the macro-element whose facets hold node i, or `several`. */
-  for (size_t i = 0; i < m->nnodes; i++)
-    owner[i] = none;
-  for (size_t k = 0; k < L->n; k++)
-    for (size_t j = L->ptr[k]; j < L->ptr[k + 1]; j++)
-      {
-        int fn[LAC_MAX_FACE_NODES];
-        int nf = lac_mesh_facet_nodes (m, L->cell[j], L->face[j], fn, NULL);
-        for (int a = 0; a < nf; a++)
-          {
-            size_t *o = &owner[fn[a]];
-            *o = *o == none || *o == k ? k : several;
-          }
-      }
-
-  for (size_t k = 0; k < L->n && !status; k++)
-    {
-      size_t node[MAXPATCH], nsub = L->ptr[k + 1] - L->ptr[k], nn, best = 0;
-      int inter[MAXPATCH], found = 0;
-      double integ[MAXPATCH], meas = 0;
-
-      nn = patch_nodes (m, L->cell + L->ptr[k], L->face + L->ptr[k], nsub,
-                        node, inter);
-      if (nn == 0)
-        {
-          status = MM_ERRMSG (LAC_ESANITY, "macro-element %zu: %zu "
-                              "sub-facets, bad or too many", k, nsub);
-          break;
-        }
-      for (size_t i = 0; i < nn; i++)
-        integ[i] = 0;
-      /* |T^m| = sum int 1,  int_{T^m} phi_i = sum int N_a  (i = node a) */
-      for (size_t j = L->ptr[k]; j < L->ptr[k + 1] && !status; j++)
-        {
-          const lac_refelem *re = lac_refelem_get (m->type[L->cell[j]]);
-          const lac_refelem *rf = lac_refelem_get (re->face_type[L->face[j]]);
-          const lac_quad *q = rule[rf->shape == LAC_SHAPE_LINE ? LINE
-                                   : rf->shape == LAC_SHAPE_TRI ? TRI : QUAD];
-          int fn[LAC_MAX_FACE_NODES], slot[LAC_MAX_FACE_NODES];
-          double xe[LAC_MAX_FACE_NODES * 3];
-          lac_mesh_facet_nodes (m, L->cell[j], L->face[j], fn, NULL);
-          for (int a = 0; a < rf->nnodes; a++)
-            {
-              size_t i = 0;
-              while (node[i] != (size_t) fn[a])
-                i++;
-              slot[a] = (int) i;
-              for (int d = 0; d < m->dim; d++)
-                xe[a * m->dim + d] = m->x[(size_t) fn[a] * (size_t) m->dim
-                                          + (size_t) d];
-            }
-          for (int p = 0; p < q->n; p++)
-            {
-              lac_map mp;
-              status = lac_map_face (rf, m->dim, xe, q->xi + p * q->dim, &mp);
-              if (status)
-                break;
-              meas += q->w[p] * mp.detJ;
-              for (int a = 0; a < rf->nnodes; a++)
-                integ[slot[a]] += q->w[p] * mp.N[a] * mp.detJ;
-            }
-        }
-      if (status)
-        break;
-      /* x_{m*+1}: the interior node of largest integral, lowest index on
-       * ties  [LAC Remark 1]. */
-      for (size_t i = 0; i < nn; i++)
-        {
-          double tie = 1e-12 * fabs (integ[best]);
-          int better;
-          if (!inter[i] || owner[node[i]] != k)
-            continue;
-          better = !found || integ[i] > integ[best] + tie
-                   || (fabs (integ[i] - integ[best]) <= tie
-                       && node[i] < node[best]);
-          if (better)
-            best = i, found = 1;
-        }
-      if (!found)
-        {
-          status = MM_ERRMSG (LAC_ESANITY, "macro-element %zu (cell %zu, "
-                              "face %d) has no interior node", k,
-                              L->cell[L->ptr[k]], L->face[L->ptr[k]]);
-          break;
-        }
-      M->inode[k] = node[best];
-      M->phi[k] = integ[best];
-      M->meas[k] = meas;
-    }
-done:
-  lac_free (owner);
-  for (int s = 0; s < 3; s++)
-    lac_quad_free (rule[s]);
-  return status;
-}
-
 /* ---- public ------------------------------------------------------------ */
 
 void
@@ -665,6 +297,51 @@ lac_macromesh_free (lac_macro *M)
   lac_free (M->meas);
   lac_free (M->phi);
   lac_free (M);
+}
+
+/* Step 1 of lac_macromesh_build: the slave group `slave` of m, which must
+ * be a non-empty group of boundary facets. */
+static int
+slave_group (const lac_mesh *m, const char *slave, const lac_group **G)
+{
+  *G = lac_mesh_group (m, slave);
+  if (!*G)
+    {
+      char msg[768];
+      const char *p = strstr (lac_error_message (), ": ");
+      snprintf (msg, sizeof msg, "%s", p ? p + 2 : lac_error_message ());
+      MM_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
+    }
+  if ((*G)->dim != m->dim - 1)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension %d; it "
+              "must be a group of boundary facets (dimension %d)", slave,
+              (*G)->dim, m->dim - 1);
+  if ((*G)->n == 0)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is empty", slave);
+  return LAC_SUCCESS;
+}
+
+/* Step 4 of lac_macromesh_build: measures and interior nodes of the
+ * macro-elements L on mesh m; the facet lists are then moved into M. */
+static int
+fill_macro (const lac_mesh *m, mlist *L, lac_macro *M)
+{
+  int status;
+  M->n = L->n;
+  M->inode = lac_malloc (L->n * sizeof *M->inode);
+  M->meas = lac_malloc (L->n * sizeof *M->meas);
+  M->phi = lac_malloc (L->n * sizeof *M->phi);
+  if (!M->inode || !M->meas || !M->phi)
+    MM_ERROR (LAC_ENOMEM, "macro-mesh of %zu elements", L->n);
+  status = lac_macromesh_finish (m, L, M);
+  if (status)
+    return status;
+  M->ptr = L->ptr;
+  M->cell = L->cell;
+  M->face = L->face;
+  L->ptr = L->cell = NULL;
+  L->face = NULL;
+  return LAC_SUCCESS;
 }
 
 /* lac_macromesh_build: T^M on the facet group `slave`  [LAC Hyp. 1, §4.4].
@@ -700,20 +377,9 @@ lac_macromesh_build (lac_mesh **mesh, const char *slave,
   cur = *mesh;
 
   /* Step 1: the slave group. */
-  G = lac_mesh_group (cur, slave);
-  if (!G)
-    {
-      char msg[768];
-      const char *p = strstr (lac_error_message (), ": ");
-      snprintf (msg, sizeof msg, "%s", p ? p + 2 : lac_error_message ());
-      MM_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
-    }
-  if (G->dim != cur->dim - 1)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension %d; it "
-              "must be a group of boundary facets (dimension %d)", slave,
-              G->dim, cur->dim - 1);
-  if (G->n == 0)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is empty", slave);
+  status = slave_group (cur, slave, &G);
+  if (status)
+    return status;
   kind = lac_malloc (G->n * sizeof *kind);
   M = lac_calloc (1, sizeof *M);
   if (!kind || !M)
@@ -728,30 +394,13 @@ lac_macromesh_build (lac_mesh **mesh, const char *slave,
 
   /* Step 2: first macro-elements; step 3: cut what has to be cut. */
   if (!status)
-    status = start_macros (cur, G, kind, &L);
+    status = lac_macromesh_start (cur, G, kind, &L);
   if (!status)
     status = refine_rounds (&cur, *mesh, &L, opts, M);
-  if (status)
-    goto done;
 
   /* Step 4: measures and interior nodes, moved into M. */
-  M->n = L.n;
-  M->inode = lac_malloc (L.n * sizeof *M->inode);
-  M->meas = lac_malloc (L.n * sizeof *M->meas);
-  M->phi = lac_malloc (L.n * sizeof *M->phi);
-  if (!M->inode || !M->meas || !M->phi)
-    {
-      status = MM_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu elements", L.n);
-      goto done;
-    }
-  status = finish (cur, &L, M);
-  if (status)
-    goto done;
-  M->ptr = L.ptr;
-  M->cell = L.cell;
-  M->face = L.face;
-  L.ptr = L.cell = NULL;
-  L.face = NULL;
+  if (!status)
+    status = fill_macro (cur, &L, M);
 
 done:
   lac_free (kind);
@@ -770,27 +419,6 @@ done:
     }
   *out = M;
   return LAC_SUCCESS;
-}
-
-/* lac_macromesh_interior: the interior nodes of T^m, sorted. */
-size_t
-lac_macromesh_interior (const lac_mesh *mesh, const lac_macro *M, size_t m,
-                        size_t *nodes, size_t nmax)
-{
-  size_t node[MAXPATCH], nn, count = 0;
-  int inter[MAXPATCH];
-
-  if (!mesh || !M || m >= M->n)
-    return 0;
-  nn = patch_nodes (mesh, M->cell + M->ptr[m], M->face + M->ptr[m],
-                    M->ptr[m + 1] - M->ptr[m], node, inter);
-  for (size_t i = 0; i < nn; i++)
-    if (inter[i])
-      node[count++] = node[i];
-  qsort (node, count, sizeof *node, cmp_size);
-  for (size_t i = 0; i < count && i < nmax; i++)
-    nodes[i] = node[i];
-  return count;
 }
 
 /* lac_macromesh_trace: the raw trace mesh as "macro-mesh": one element per

@@ -13,7 +13,7 @@
  * Meshes are read through the gmsh C API (lac_mesh_gmsh.c): .msh files
  * (formats 2.2 and 4.1) or .geo files meshed on the fly; tests may also build
  * meshes in code (lac_mesh_box).  gmsh tags are mapped to contiguous 0-based
- * indices in lac_mesh_gmsh.c and only there; node_tag/cell_tag keep the
+ * indices in lac_mesh_gmsh_cells.c and only there; node_tag/cell_tag keep the
  * original tags for messages.
  *
  * Ownership: every pointer field is owned by the mesh; lac_mesh_free frees

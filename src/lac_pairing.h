@@ -156,7 +156,7 @@ void lac_pairing_free (lac_pairing *P);                /* NULL allowed */
 /* query */
 double lac_pairing_total (const lac_pairing *P);   /* sum of covered[s] */
 
-/* ---- geometry kernels (lac_pairing_geom.c), also used by the tests ---- */
+/* ---- geometry kernels (lac_pairing_geom.c, lac_pairing_project.c) ---- */
 
 /* Projection onto a face map x = X(xi) (re: a seg/tri/quad face element,
  * sdim = re->dim + 1, xe: its nodes).  With dir != NULL, solve

@@ -537,6 +537,141 @@ remap_groups (const lac_mesh *m, const lac_refine_map *map, lac_mesh *r)
   return status;
 }
 
+/* Sizes of the refined mesh, counted in step 1 of lac_refine_cut. */
+typedef struct rsizes
+{
+  size_t nnew, ncells, nconn, npieces;
+} rsizes;
+
+/* Where step 3 of lac_refine_cut writes next: cell, node, connectivity
+ * entry and face piece of the new mesh and map. */
+typedef struct rcursor
+{
+  size_t nc, nn, pc, pp;
+} rcursor;
+
+/* Step 1 of lac_refine_cut: check cut[] and count the cells, connectivity
+ * entries, new nodes and face pieces of the refined mesh (building the
+ * templates into the cache). */
+static int
+refine_sizes (const lac_mesh *m, const int *cut, const lac_macro_opts *opts,
+              tmpl *cache, rsizes *z)
+{
+  memset (z, 0, sizeof *z);
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      const lac_refelem *re = lac_refelem_get (m->type[c]);
+      const tmpl *T;
+      int status;
+      if (!re || re->dim != m->dim)
+        RF_ERROR (LAC_EINVAL, "cell %zu (tag %zu) is not a %dD cell", c,
+                  m->cell_tag[c], m->dim);
+      if (cut[c] < 0)
+        {
+          z->ncells++;
+          z->nconn += m->ptr[c + 1] - m->ptr[c];
+          z->npieces += (size_t) re->nfaces;
+          continue;
+        }
+      if (cut[c] >= re->nfaces)
+        RF_ERROR (LAC_EINVAL, "cell %zu (tag %zu, %s) has no face %d", c,
+                  m->cell_tag[c], re->name, cut[c]);
+      status = tmpl_get (cache, re, cut[c], opts, &T);
+      if (status)
+        return status;
+      z->nnew += (size_t) T->nnew;
+      z->ncells += (size_t) T->nsub;
+      for (int s = 0; s < T->nsub; s++)
+        z->nconn += (size_t) lac_refelem_get (T->type[s])->nnodes;
+      for (int g = 0; g < re->nfaces; g++)
+        z->npieces += (size_t) T->npiece[g];
+    }
+  return LAC_SUCCESS;
+}
+
+/* Step 2 of lac_refine_cut: old nodes keep their indices and tags; new
+ * tags follow the largest. */
+static void
+copy_nodes (const lac_mesh *m, lac_mesh *r)
+{
+  size_t maxtag = 0;
+  memcpy (r->x, m->x, m->nnodes * (size_t) m->dim * sizeof *r->x);
+  for (size_t i = 0; i < m->nnodes; i++)
+    {
+      r->node_tag[i] = m->node_tag[i];
+      if (m->node_tag[i] > maxtag)
+        maxtag = m->node_tag[i];
+    }
+  for (size_t i = m->nnodes; i < r->nnodes; i++)
+    r->node_tag[i] = maxtag + 1 + (i - m->nnodes);
+}
+
+/* Step 3, a cell that is not cut: copied, each face its own piece. */
+static void
+copy_cell (const lac_mesh *m, size_t c, lac_mesh *r, lac_refine_map *mp,
+           rcursor *w)
+{
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  r->type[w->nc] = m->type[c];
+  r->cell_tag[w->nc] = m->cell_tag[c];
+  r->body[w->nc] = m->body[c];
+  for (size_t k = m->ptr[c]; k < m->ptr[c + 1]; k++)
+    r->conn[w->pc++] = m->conn[k];
+  r->ptr[++w->nc] = w->pc;
+  for (int g = 0; g < LAC_MAX_FACES; g++)
+    {
+      mp->fptr[c * LAC_MAX_FACES + (size_t) g] = w->pp;
+      if (g < re->nfaces)
+        mp->fcell[w->pp] = w->nc - 1, mp->fface[w->pp++] = g;
+    }
+}
+
+/* Step 3, a cut cell: its new nodes placed by the parent's map, its
+ * sub-cells, and the pieces of each of its faces. */
+static void
+cut_cell (const lac_mesh *m, size_t c, const tmpl *T, lac_mesh *r,
+          lac_refine_map *mp, rcursor *w)
+{
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  double xe[LAC_MAX_NODES * 3], N[LAC_MAX_NODES];
+  lac_mesh_cell_coords (m, c, xe);
+  for (int k = 0; k < T->nnew; k++)
+    {
+      double *x = r->x + (w->nn + (size_t) k) * (size_t) m->dim;
+      lac_refelem_eval (re, T->xi[k], N, NULL);
+      for (int i = 0; i < m->dim; i++)          /* x = sum_a x_a N_a(xi) */
+        {
+          x[i] = 0;
+          for (int a = 0; a < re->nnodes; a++)
+            x[i] += xe[a * m->dim + i] * N[a];
+        }
+    }
+  for (int s = 0; s < T->nsub; s++)
+    {
+      const lac_refelem *rs = lac_refelem_get (T->type[s]);
+      r->type[w->nc] = T->type[s];
+      r->cell_tag[w->nc] = m->cell_tag[c];
+      r->body[w->nc] = m->body[c];
+      for (int a = 0; a < rs->nnodes; a++)
+        {
+          int id = T->node[s][a];
+          r->conn[w->pc++] = id >= 0 ? m->conn[m->ptr[c] + (size_t) id]
+                                     : (int) (w->nn + (size_t) (-1 - id));
+        }
+      r->ptr[++w->nc] = w->pc;
+    }
+  for (int g = 0; g < LAC_MAX_FACES; g++)
+    {
+      mp->fptr[c * LAC_MAX_FACES + (size_t) g] = w->pp;
+      for (int p = 0; g < re->nfaces && p < T->npiece[g]; p++, w->pp++)
+        {
+          mp->fcell[w->pp] = mp->cptr[c] + (size_t) T->psub[g][p];
+          mp->fface[w->pp] = T->pface[g][p];
+        }
+    }
+  w->nn += (size_t) T->nnew;
+}
+
 /* lac_refine_cut: one round of local refinement  [LAC §4.4].
  *
  *   Every cell c with cut[c] >= 0 is replaced by the sub-cells of its
@@ -559,8 +694,8 @@ lac_refine_cut (const lac_mesh *m, const int *cut, const lac_macro_opts *opts,
   tmpl *cache = NULL;                      /* owned, one per (type, face) */
   lac_mesh *r = NULL;
   lac_refine_map *mp = NULL;
-  size_t nnew = 0, ncells = 0, nconn = 0, npieces = 0, maxtag = 0;
-  size_t nc = 0, nn, pc = 0, pp = 0;
+  rsizes z;
+  rcursor w = { 0, 0, 0, 0 };
 
   if (!out || !map)
     RF_ERROR (LAC_EINVAL, "no output pointers");
@@ -573,132 +708,46 @@ lac_refine_cut (const lac_mesh *m, const int *cut, const lac_macro_opts *opts,
   if (!cache)
     RF_ERROR (LAC_ENOMEM, "refinement templates");
 
-  /* Pass 1: sizes of the new mesh. */
-  for (size_t c = 0; c < m->ncells; c++)
-    {
-      const lac_refelem *re = lac_refelem_get (m->type[c]);
-      const tmpl *T;
-      if (!re || re->dim != m->dim)
-        {
-          status = RF_ERRMSG (LAC_EINVAL, "cell %zu (tag %zu) is not a %dD "
-                              "cell", c, m->cell_tag[c], m->dim);
-          goto done;
-        }
-      if (cut[c] < 0)
-        {
-          ncells++;
-          nconn += m->ptr[c + 1] - m->ptr[c];
-          npieces += (size_t) re->nfaces;
-          continue;
-        }
-      if (cut[c] >= re->nfaces)
-        {
-          status = RF_ERRMSG (LAC_EINVAL, "cell %zu (tag %zu, %s) has no "
-                              "face %d", c, m->cell_tag[c], re->name,
-                              cut[c]);
-          goto done;
-        }
-      status = tmpl_get (cache, re, cut[c], opts, &T);
-      if (status)
-        goto done;
-      nnew += (size_t) T->nnew;
-      ncells += (size_t) T->nsub;
-      for (int s = 0; s < T->nsub; s++)
-        nconn += (size_t) lac_refelem_get (T->type[s])->nnodes;
-      for (int g = 0; g < re->nfaces; g++)
-        npieces += (size_t) T->npiece[g];
-    }
-  r = lac_mesh_alloc (m->dim, m->nnodes + nnew, ncells, nconn);
-  mp = map_alloc (m->ncells, npieces);
+  /* Step 1: sizes of the new mesh. */
+  status = refine_sizes (m, cut, opts, cache, &z);
+  if (status)
+    goto done;
+  r = lac_mesh_alloc (m->dim, m->nnodes + z.nnew, z.ncells, z.nconn);
+  mp = map_alloc (m->ncells, z.npieces);
   if (!r || !mp)
     {
-      status = RF_ERRMSG (LAC_ENOMEM, "refined mesh of %zu cells", ncells);
+      status = RF_ERRMSG (LAC_ENOMEM, "refined mesh of %zu cells", z.ncells);
       goto done;
     }
 
-  /* Old nodes keep their indices and tags; new tags follow the largest. */
-  memcpy (r->x, m->x, m->nnodes * (size_t) m->dim * sizeof *r->x);
-  for (size_t i = 0; i < m->nnodes; i++)
-    {
-      r->node_tag[i] = m->node_tag[i];
-      if (m->node_tag[i] > maxtag)
-        maxtag = m->node_tag[i];
-    }
-  for (size_t i = m->nnodes; i < r->nnodes; i++)
-    r->node_tag[i] = maxtag + 1 + (i - m->nnodes);
+  /* Step 2: the old nodes. */
+  copy_nodes (m, r);
 
-  /* Pass 2: cells, new nodes, pieces. */
-  nn = m->nnodes;
+  /* Step 3: cells, new nodes, pieces. */
+  w.nn = m->nnodes;
   for (size_t c = 0; c < m->ncells; c++)
     {
-      const lac_refelem *re = lac_refelem_get (m->type[c]);
-      const size_t *pcell = m->ptr + c;
       const tmpl *T = NULL;
-      mp->cptr[c] = nc;
+      mp->cptr[c] = w.nc;
       if (cut[c] < 0)
+        copy_cell (m, c, r, mp, &w);
+      else
         {
-          r->type[nc] = m->type[c];
-          r->cell_tag[nc] = m->cell_tag[c];
-          r->body[nc] = m->body[c];
-          for (size_t k = pcell[0]; k < pcell[1]; k++)
-            r->conn[pc++] = m->conn[k];
-          r->ptr[++nc] = pc;
-          for (int g = 0; g < LAC_MAX_FACES; g++)
-            {
-              mp->fptr[c * LAC_MAX_FACES + (size_t) g] = pp;
-              if (g < re->nfaces)
-                mp->fcell[pp] = nc - 1, mp->fface[pp++] = g;
-            }
-          continue;
+          tmpl_get (cache, lac_refelem_get (m->type[c]), cut[c], opts,
+                    &T);                        /* built in step 1 */
+          cut_cell (m, c, T, r, mp, &w);
         }
-      tmpl_get (cache, re, cut[c], opts, &T);    /* built in pass 1 */
-      {
-        double xe[LAC_MAX_NODES * 3], N[LAC_MAX_NODES];
-        lac_mesh_cell_coords (m, c, xe);
-        for (int k = 0; k < T->nnew; k++)
-          {
-            double *x = r->x + (nn + (size_t) k) * (size_t) m->dim;
-            lac_refelem_eval (re, T->xi[k], N, NULL);
-            for (int i = 0; i < m->dim; i++)      /* x = sum_a x_a N_a(xi) */
-              {
-                x[i] = 0;
-                for (int a = 0; a < re->nnodes; a++)
-                  x[i] += xe[a * m->dim + i] * N[a];
-              }
-          }
-      }
-      for (int s = 0; s < T->nsub; s++)
-        {
-          const lac_refelem *rs = lac_refelem_get (T->type[s]);
-          r->type[nc] = T->type[s];
-          r->cell_tag[nc] = m->cell_tag[c];
-          r->body[nc] = m->body[c];
-          for (int a = 0; a < rs->nnodes; a++)
-            {
-              int id = T->node[s][a];
-              r->conn[pc++] = id >= 0 ? m->conn[pcell[0] + (size_t) id]
-                                      : (int) (nn + (size_t) (-1 - id));
-            }
-          r->ptr[++nc] = pc;
-        }
-      for (int g = 0; g < LAC_MAX_FACES; g++)
-        {
-          mp->fptr[c * LAC_MAX_FACES + (size_t) g] = pp;
-          for (int p = 0; g < re->nfaces && p < T->npiece[g]; p++, pp++)
-            {
-              mp->fcell[pp] = mp->cptr[c] + (size_t) T->psub[g][p];
-              mp->fface[pp] = T->pface[g][p];
-            }
-        }
-      nn += (size_t) T->nnew;
     }
-  mp->cptr[m->ncells] = nc;
-  mp->fptr[m->ncells * LAC_MAX_FACES] = pp;
-  if (nc != ncells || pc != nconn || pp != npieces || nn != r->nnodes)
+  mp->cptr[m->ncells] = w.nc;
+  mp->fptr[m->ncells * LAC_MAX_FACES] = w.pp;
+  if (w.nc != z.ncells || w.pc != z.nconn || w.pp != z.npieces
+      || w.nn != r->nnodes)
     {
       status = RF_ERRMSG (LAC_ESANITY, "refinement counts disagree");
       goto done;
     }
+
+  /* Step 4: the groups. */
   status = remap_groups (m, mp, r);
 
 done:
