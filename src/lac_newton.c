@@ -225,10 +225,37 @@ schur_iterate (lac_newton *s)
   return status;
 }
 
-/* Saddle path: the matrix of [LAC Alg. 1, line 21] for the current
+/* Saddle path, scaling: a symmetric diagonal scaling D of the saddle
+ * matrix, D = diag(K)^{-1/2} on the displacements and, on multiplier i,
+ * 1 / max_r |D_r C_ri|.  Without it a partly covered macro-element (its
+ * column of C scales with the covered fraction delta) or a contrast of
+ * Young's moduli between the bodies would make the matrix look singular
+ * to the solvers' condition test although the problem is well posed. */
+static void
+saddle_scaling (const lac_newton *s, double *D)
+{
+  const lac_csc *K = s->sys->K, *C = s->sys->C;
+  for (size_t j = 0; j < s->n; j++)
+    {
+      double kjj = 0;
+      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+        if ((size_t) K->i[p] == j)
+          kjj = fabs (K->x[p]);
+      D[j] = kjj > 0 ? 1 / sqrt (kjj) : 1.0;
+    }
+  for (size_t i = 0; i < s->k; i++)
+    {
+      double cmax = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        cmax = fmax (cmax, fabs (D[C->i[p]] * C->x[p]));
+      D[s->n + i] = s->active[i] && cmax > 0 ? 1 / cmax : 1.0;
+    }
+}
+
+/* Saddle path: the matrix D A D of [LAC Alg. 1, line 21] for the current
  * statuses, with identity rows for inactive multipliers (line 17). */
 static lac_csc *
-saddle_matrix (const lac_newton *s)
+saddle_matrix (const lac_newton *s, const double *D)
 {
   const lac_csc *K = s->sys->K, *C = s->sys->C;
   size_t n = s->n, k = s->k;
@@ -238,9 +265,10 @@ saddle_matrix (const lac_newton *s)
   lac_csc *A = NULL;
   int status = T ? LAC_SUCCESS : LAC_ENOMEM;
 
-  for (size_t j = 0; !status && j < n; j++)                /* K */
+  for (size_t j = 0; !status && j < n; j++)                /* D K D */
     for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
-      status = lac_triplet_add (T, (size_t) K->i[p], j, K->x[p]);
+      status = lac_triplet_add (T, (size_t) K->i[p], j,
+                                D[K->i[p]] * K->x[p] * D[j]);
   for (size_t i = 0; !status && i < k; i++)
     {
       if (!s->active[i])
@@ -250,9 +278,10 @@ saddle_matrix (const lac_newton *s)
         }
       for (int p = C->p[i]; !status && p < C->p[i + 1]; p++)
         {
-          status = lac_triplet_add (T, (size_t) C->i[p], n + i, -C->x[p]);
+          double c = -D[C->i[p]] * C->x[p] * D[n + i];     /* -D C D */
+          status = lac_triplet_add (T, (size_t) C->i[p], n + i, c);
           if (!status)
-            status = lac_triplet_add (T, n + i, (size_t) C->i[p], -C->x[p]);
+            status = lac_triplet_add (T, n + i, (size_t) C->i[p], c);
         }
     }
   if (!status)
@@ -266,13 +295,21 @@ saddle_iterate (lac_newton *s)
 {
   size_t n = s->n, k = s->k;
   double *rhs = s->work, *sol = s->work + n + k;
+  double *D = lac_malloc ((n + k) * sizeof *D);
   int status;
-  lac_csc *A = saddle_matrix (s);
+  if (!D)
+    return LAC_ERRMSG (LAC_ENOMEM, "saddle scaling of %zu unknowns", n + k);
+  saddle_scaling (s, D);
+  lac_csc *A = saddle_matrix (s, D);
   if (!A)
-    return LAC_ENOMEM;
-  memcpy (rhs, s->sys->F, n * sizeof *rhs);                /* [F; -G_A; 0] */
+    {
+      lac_free (D);
+      return LAC_ENOMEM;
+    }
+  for (size_t j = 0; j < n; j++)                          /* D [F; -G_A; 0] */
+    rhs[j] = D[j] * s->sys->F[j];
   for (size_t i = 0; i < k; i++)
-    rhs[n + i] = s->active[i] ? -s->sys->G[i] : 0.0;
+    rhs[n + i] = s->active[i] ? -D[n + i] * s->sys->G[i] : 0.0;
   lac_solver_free (s->solver);
   s->solver = lac_solver_alloc (s->kind);
   status = s->solver ? lac_solver_factor (s->solver, A) : LAC_ENOMEM;
@@ -285,10 +322,13 @@ saddle_iterate (lac_newton *s)
     status = lac_solver_solve (s->solver, rhs, sol);
   if (!status)
     {
-      memcpy (s->U, sol, n * sizeof *s->U);
-      memcpy (s->lambda, sol + n, k * sizeof *s->lambda);
+      for (size_t j = 0; j < n; j++)
+        s->U[j] = D[j] * sol[j];                          /* x = D y */
+      for (size_t i = 0; i < k; i++)
+        s->lambda[i] = D[n + i] * sol[n + i];
     }
   lac_csc_free (A);
+  lac_free (D);
   return status;
 }
 
@@ -299,21 +339,18 @@ record (lac_newton *s, lac_newton_record *r)
   const lac_contact_system *sys = s->sys;
   size_t n = s->n;
   double *res = s->work + (s->kind == LAC_SOLVER_CHOLMOD ? n : 0);
-  double nF = 0, nCl = 0, nr = 0, lmax = 0, ncp = 0, pen = 0;
+  double nF = 0, nr = 0, nU = 0, lmax = 0, ncp = 0, pen = 0;
 
   lac_csc_matvec (sys->K, s->U, res);                      /* res = K U */
   for (size_t i = 0; i < s->k; i++)
     for (int p = sys->C->p[i]; p < sys->C->p[i + 1]; p++)
-      {
-        double t = sys->C->x[p] * s->lambda[i];
-        res[sys->C->i[p]] -= t;                           /* - C lambda */
-        nCl += t * t;
-      }
+      res[sys->C->i[p]] -= sys->C->x[p] * s->lambda[i];  /* - C lambda */
   for (size_t j = 0; j < n; j++)
     {
       res[j] -= sys->F[j];                                /* - F */
-      nr += res[j] * res[j];
-      nF += sys->F[j] * sys->F[j];
+      nr = fmax (nr, fabs (res[j]));
+      nF = fmax (nF, fabs (sys->F[j]));
+      nU = fmax (nU, fabs (s->U[j]));
     }
   for (size_t i = 0; i < s->k; i++)
     {
@@ -327,7 +364,10 @@ record (lac_newton *s, lac_newton_record *r)
       if (csum > 0)
         pen = fmax (pen, -s->d[i] / csum);
     }
-  r->residual = sqrt (nr) / fmax (fmax (sqrt (nF), sqrt (nCl)), 1e-300);
+  /* normwise backward error (infinity norms): independent of the units
+   * and of the contrast of the stiffnesses */
+  double scale = s->normK * nU + s->normC * lmax + nF;
+  r->residual = nr / (scale > 0 ? scale : 1e-300);
   r->ncp = ncp / (lmax > 0 ? lmax : 1.0);
   r->max_penetration = pen;
 }
@@ -379,6 +419,14 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
                sys->K->nrow, sys->K->ncol, sys->C->nrow, sys->C->ncol, s->n, s->k);
   s->sys = sys;
   s->nhist = 0;
+  s->normK = s->normC = 0;
+  for (size_t j = 0; j < s->n; j++)       /* ||K||_inf = max column sum */
+    {
+      double sum = 0;
+      for (int p = sys->K->p[j]; p < sys->K->p[j + 1]; p++)
+        sum += fabs (sys->K->x[p]);
+      s->normK = fmax (s->normK, sum);
+    }
   s->restarted = 0;
   memset (s->U, 0, s->n * sizeof *s->U);
   memset (s->lambda, 0, s->k * sizeof *s->lambda);
@@ -386,6 +434,13 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
   s->Ct = lac_csc_transpose (sys->C);
   if (!s->Ct)
     return LAC_ENOMEM;
+  for (size_t r = 0; r < s->n; r++)       /* ||C||_inf = max row sum */
+    {
+      double sum = 0;
+      for (int p = s->Ct->p[r]; p < s->Ct->p[r + 1]; p++)
+        sum += fabs (s->Ct->x[p]);
+      s->normC = fmax (s->normC, sum);
+    }
   /* Initial status [LAC Alg. 1, lines 2-8]: closed or penetrating -> active */
   for (size_t i = 0; i < s->k; i++)
     {

@@ -33,7 +33,11 @@
  *   [ -C_A^T   0  ] [ lambda_A ] = [ -G_A ],   lambda_I = 0,
  *
  * is solved exactly, then the statuses are updated; it stops when no
- * status changes.  Back ends: `umfpack` and `dense` factorize the full
+ * status changes.  The saddle-point matrix is scaled symmetrically
+ * (diag(K)^-1/2 on the displacements, the largest scaled entry of each
+ * column of C on the multipliers) before it is factorized, so that partly
+ * covered macro-elements and contrasts of stiffness do not spoil its
+ * conditioning.  Back ends: `umfpack` and `dense` factorize the full
  * saddle system (inactive multipliers get the identity row of [LAC Alg. 1,
  * line 17]); `cholmod` factorizes K once and solves the active set on the
  * Schur complement S_A = C_A^T K^{-1} C_A (dense, k x k), reusing the
@@ -70,7 +74,9 @@ typedef struct lac_newton_record
   int iter;            /* 1, 2, ...                                         */
   size_t nactive;      /* size of the active set used in this iteration     */
   size_t nchanged;     /* statuses changed by the update after it           */
-  double residual;     /* ||K U - C lambda - F|| / max(||F||, ||C lambda||)  */
+  double residual;     /* normwise backward error of the equilibrium:
+                          ||K U - C lambda - F|| / (||K|| ||U|| + ||C||
+                          ||lambda|| + ||F||), infinity norms              */
   double ncp;          /* max_i |A_i(U, lambda)| / max |lambda| (or 1)       */
   double max_penetration; /* max_i (-d_i / |C(:,i)|_1), scale of a length    */
 } lac_newton_record;
@@ -91,6 +97,7 @@ typedef struct lac_newton
   lac_csc *Ct;         /* owned: C^T (rows of C^T = multipliers)            */
   double *work;        /* owned, scratch                                   */
   size_t changed;      /* statuses changed by the last update               */
+  double normK, normC; /* ||K||_inf, ||C||_inf (for the backward error)   */
   double time_setup;   /* seconds in lac_newton_set (cholmod: factor, S)  */
   double time_solve;   /* seconds in the solves of all iterations          */
   int restarted;       /* 1: the first solve was singular with the initial

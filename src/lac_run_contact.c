@@ -120,6 +120,10 @@ lac_run_stage_contact (lac_run *r)
             r->macro->n, c->slave, r->macro->ncut, r->macro->nnew,
             r->pairing->npairs, gm ? "'" : "the rigid obstacle",
             gm ? c->master : "", gm ? "'" : "");
+  if (r->pairing->nfail)                   /* projections that failed */
+    snprintf (r->progress + strlen (r->progress),
+              sizeof r->progress - strlen (r->progress),
+              "; %zu pairs dropped (projection failed)", r->pairing->nfail);
   return LAC_SUCCESS;
 }
 
@@ -358,6 +362,10 @@ lac_run_contact_post (lac_run *r, const lac_exact *e)
       elam = fmax (elam, fabs (s->lambda[i] - r->lam_exact[i]));
       lref = fmax (lref, fabs (r->lam_exact[i]));
     }
+  if (r->pairing->nfail
+      && (status = lac_run_summary_add (r, "pairs_dropped", "%zu",
+                                        r->pairing->nfail)))
+    return status;
   if ((status = lac_run_summary_add (r, "macro_elements", "%zu", r->macro->n))
       || (status = lac_run_summary_add (r, "multipliers", "%zu", k))
       || (status = lac_run_summary_add (r, "active", "%zu",
