@@ -40,3 +40,17 @@ for s in taylor2d:quad4 taylor2d:tri6 taylor3d:hex8 taylor3d:tet4; do
             v["lambda_min"], v["lambda_max"], v["max_rel_err_lambda"] }'
   done
 done
+echo
+echo "lambda on the self-included spheres (exact -4.894179894), slave = the inner shell"
+printf '%-12s %-6s %-4s %8s %14s %14s %12s\n' scene element method mult lambda_min lambda_max max_rel_err
+for s in spheres-axi:quad8:2 spheres-axi:tri6:2 spheres3d:tet10:0; do
+  sc=${s%%:*}; r=${s#*:}; e=${r%%:*}; L=${r##*:}
+  name=$(sed -n 's/^\[contact \([a-z_0-9]*\)\]/\1/p' "$S/$sc.scene")
+  for m in lac p0 nts; do
+    "$B/lac" run "$S/$sc.scene" --set element="$e" --set level="$L" \
+        --set contact."$name".method=$m --quiet --no-output 2>&1 |
+      awk -v sc="$sc" -v e="$e" -v m="$m" -F' = ' '{ v[$1] = $2 }
+        END { printf "%-12s %-6s %-4s %8s %14s %14s %12s\n", sc, e, m,
+              v["multipliers"], v["lambda_min"], v["lambda_max"], v["max_rel_err_lambda"] }'
+  done
+done
