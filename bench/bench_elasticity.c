@@ -29,6 +29,8 @@
  *   --part N                     run only part 1, 2 or 3
  *   --min-dofs N, --max-dofs N   skip sizes outside [N, M] dofs (parts 2, 3)
  *   --solver cholmod|umfpack     one sparse back end only (parts 2, 3)
+ *   --mem-fraction F             factorize if the predicted factor takes
+ *                                at most F x MemAvailable (default 0.85)
  * A progress line per run goes to stderr; the tables (markdown) to stdout.
  */
 #include <errno.h>
@@ -54,7 +56,7 @@
 #define DENSE_MAX_DOFS 2500
 /* From this size on, lac_solver_estimate first predicts the factor's
  * memory; the factorization is skipped, with the prediction printed, if it
- * exceeds 85% of MemAvailable. */
+ * exceeds 85% of MemAvailable (--mem-fraction F changes the 85%). */
 #ifndef ESTIMATE_FROM_DOFS
 #define ESTIMATE_FROM_DOFS 200000
 #endif
@@ -193,6 +195,9 @@ residual (const lac_csc *K, const double *u, const double *F)
   return num / den;
 }
 
+/* Fraction of MemAvailable the predicted factor may take (--mem-fraction). */
+static double mem_fraction = 0.85;
+
 /* Predict the factor's memory; SKIPPED (message in r) if it will not fit. */
 static int
 check_fits (lac_solver_kind kind, const lac_csc *K, result *r)
@@ -205,7 +210,7 @@ check_fits (lac_solver_kind kind, const lac_csc *K, result *r)
   need = info.peak_bytes / 1048576.0;
   r->nnz_factor = info.nnz_factor;
   r->flops = info.flops;
-  if (avail > 0 && need > 0.85 * avail)
+  if (avail > 0 && need > mem_fraction * avail)
     {
       snprintf (r->msg, sizeof r->msg, "skipped: the %s analysis predicts "
                 "%.1f GB for the factor (nnz %.3g, %.3g flop), %.1f GB are "
@@ -519,13 +524,16 @@ main (int argc, char **argv)
       max_dofs = (size_t) atof (argv[++a]);
     else if (!strcmp (argv[a], "--min-dofs") && a + 1 < argc)
       min_dofs = (size_t) atof (argv[++a]);
+    else if (!strcmp (argv[a], "--mem-fraction") && a + 1 < argc)
+      mem_fraction = atof (argv[++a]);
     else if (!strcmp (argv[a], "--solver") && a + 1 < argc
              && lac_solver_kind_from_name (argv[a + 1]) > 0)
       only_kind = lac_solver_kind_from_name (argv[++a]);
     else
       {
         fprintf (stderr, "usage: %s [--quick] [--part 1|2|3] [--min-dofs N]"
-                 " [--max-dofs N] [--solver cholmod|umfpack]\n", argv[0]);
+                 " [--max-dofs N] [--solver cholmod|umfpack]"
+                 " [--mem-fraction F]\n", argv[0]);
         return 2;
       }
   if (quick && max_dofs > 30000)
