@@ -76,7 +76,7 @@ $(B)/bench/%: bench/%.c $(LIB)
 
 # ---- tests ---------------------------------------------------------------
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
-test: all $(UNIT) $(NUMCMP)
+test: all $(UNIT) $(NUMCMP) $(FIGPROG)
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).

@@ -292,6 +292,7 @@ material_groups (lac_run *r, int *owner, const lac_scene_material **dflt)
           owner[c] = (int) k;
           r->E[c] = mt->E;
           r->nu[c] = mt->nu;
+          r->law[c] = (char) mt->law;
         }
     }
   return LAC_SUCCESS;
@@ -306,8 +307,9 @@ stage_material (lac_run *r)
   int *owner, status;
   r->E = lac_malloc (m->ncells * sizeof *r->E);
   r->nu = lac_malloc (m->ncells * sizeof *r->nu);
+  r->law = lac_calloc (m->ncells, 1);
   owner = lac_malloc (m->ncells * sizeof *owner);
-  if (!r->E || !r->nu || !owner)
+  if (!r->E || !r->nu || !r->law || !owner)
     {
       lac_free (owner);
       LAC_ERROR (LAC_ENOMEM, "material arrays for %zu cells", m->ncells);
@@ -323,6 +325,7 @@ stage_material (lac_run *r)
         owner[c] = (int) (dflt - sc->material);
         r->E[c] = dflt->E;
         r->nu[c] = dflt->nu;
+        r->law[c] = (char) dflt->law;
       }
     else if (owner[c] < 0)
       {
@@ -342,9 +345,15 @@ stage_material (lac_run *r)
   r->mat.model = r->model;
   r->mat.E = r->E;
   r->mat.nu = r->nu;
+  int nh = 0;
+  for (size_t k = 0; k < sc->nmaterial; k++)
+    nh += sc->material[k].law != 0;
   snprintf (r->progress, sizeof r->progress, "%zu material%s, %s",
             sc->nmaterial, sc->nmaterial > 1 ? "s" : "",
-            "linear elastic");
+            nh == (int) sc->nmaterial ? "neo-Hookean"
+            : nh ? "neo-Hookean and linear elastic"
+            : sc->scene.large_deformation ? "linear elastic (Saint "
+              "Venant-Kirchhoff)" : "linear elastic");
   return LAC_SUCCESS;
 }
 
@@ -451,7 +460,8 @@ stage_assemble (lac_run *r)
       || (status = add_loads (r))                           /* F = l(v)    */
       || (status = add_dirichlet (r, d))
       || (status = lac_run_check_rigid (r, d))
-      || (status = lac_run_contact_assemble (r, d)))      /* C, G */
+      || (!r->scene->scene.large_deformation          /* C, G (else: */
+          && (status = lac_run_contact_assemble (r, d)))) /* per Newton it.) */
     goto done;
   if (!(r->K = lac_csc_from_triplet (T)))
     {
@@ -561,6 +571,22 @@ lac_run_alloc (const lac_scene *sc, const lac_run_opts *opts)
     : r->model == LAC_AXISYMMETRIC ? "axisymmetric" : "3D solid";
   if (sc->ncontact)
     r->effects[r->neffects++] = "frictionless contact (LAC)";
+  if (sc->scene.large_deformation)
+    {
+      int nh = 0;
+      for (size_t k = 0; k < sc->nmaterial; k++)
+        nh += sc->material[k].law != 0;
+      r->effects[r->neffects++] = "large deformation";
+      if (nh)
+        r->effects[r->neffects++] = "neo-Hookean material";
+      if (nh < (int) sc->nmaterial)
+        r->effects[r->neffects++] = "Saint Venant-Kirchhoff material";
+      if (sc->ncontact)
+        r->effects[r->neffects++] = "re-pairing every iteration";
+      if (sc->steps.n > 1 || sc->steps.start > 0)
+        r->effects[r->neffects++] = "load steps";
+      return r;
+    }
   r->effects[r->neffects++] = "small strain";
   r->effects[r->neffects++] = "linear elastic material";
   return r;
@@ -592,6 +618,8 @@ lac_run_free (lac_run *r)
   lac_csc_free (r->K);
   lac_free (r->nu);
   lac_free (r->E);
+  lac_free (r->law);
+  lac_run_nl_free (r->nl);
   lac_mesh_free (r->mesh);
   lac_free (r->out_dir);
   lac_free (r);
@@ -603,13 +631,18 @@ lac_run_iterate (lac_run *r)
   static int (*const stage[LAC_NSTAGES]) (lac_run *) = {
     stage_mesh, lac_run_stage_contact, stage_material, stage_assemble, stage_solve,
     lac_run_stage_post, lac_run_stage_output };
+  static int (*const stage_nl[LAC_NSTAGES]) (lac_run *) = {  /* large def. */
+    stage_mesh, lac_run_nl_contact, stage_material, stage_assemble,
+    lac_run_nl_solve, lac_run_nl_post, lac_run_nl_output };
   double t0 = lac_run_now ();
   int status;
   if (r->stage >= LAC_NSTAGES)
     return LAC_SUCCESS;
   r->progress[0] = '\0';
-  status = stage[r->stage] (r);
-  r->time[r->stage] = lac_run_now () - t0;
+  status = (r->scene->scene.large_deformation ? stage_nl : stage)[r->stage] (r);
+  r->time[r->stage] += lac_run_now () - t0;   /* solve: all load steps */
+  if (status == LAC_CONTINUE)                 /* a load step: same stage */
+    return LAC_CONTINUE;
   if (status)
     return status;
   r->stage++;

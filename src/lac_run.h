@@ -9,6 +9,12 @@
  *   while ((status = lac_run_iterate (r)) == LAC_CONTINUE)
  *     fprintf (stderr, "%s\n", r->progress);
  *
+ * A scene with [scene] large_deformation = yes runs the same stages with
+ * the large-deformation versions of contact (macro-mesh only: the pairing
+ * moves with the bodies), solve (load steps, [LAC Alg. 1]; the solve stage
+ * then returns LAC_CONTINUE after each load step, with r->progress about
+ * that step), post (Cauchy stresses) and output (lac_run_nonlinear.c).
+ *
  * Stages: mesh (read/mesh through gmsh, check groups against the scene),
  * contact (macro-mesh and pairing, lac_run_contact.c; skipped without a
  * [contact] section), material (E, nu per cell), assemble (K, F, Dirichlet, rigid-motion
@@ -84,6 +90,11 @@ typedef struct lac_run
   double *lam_x;            /* owned, 3k: centroid of T^m cap Gamma_C    */
   double *lam_exact;        /* owned, k: mean exact n.sigma.n there      */
   double time_refine, time_pairing;  /* seconds, parts of stage contact  */
+
+  /* large deformation ([scene] large_deformation = yes; NULL otherwise):
+   * lac_run_nonlinear.c, one load step per call of the solve stage */
+  char *law;                /* owned, ncells: lac_law of each cell       */
+  struct lac_run_nl *nl;    /* owned: the Newton workspace and records   */
 
   /* post-processing */
   double *sigma;            /* owned, nnodes*ns: nodal stresses          */

@@ -2,7 +2,8 @@
  *
  * Not part of the public interface: only lac_run.c (the run, stages mesh
  * to solve), lac_run_rigid.c (the rigid-motion check of the assemble
- * stage) and lac_run_post.c (stages post and output) include it.
+ * stage), lac_run_post.c (stages post and output), lac_run_contact.c and
+ * lac_run_nonlinear.c (the large-deformation stages) include it.
  */
 #ifndef LAC_RUN_INTERNAL_H
 #define LAC_RUN_INTERNAL_H
@@ -32,6 +33,15 @@ int lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d);
 int lac_run_contact_solve (lac_run *r);
 int lac_run_contact_post (lac_run *r, const lac_exact *e);
 int lac_run_contact_csv (const lac_run *r, const char *path);
+
+/* The large-deformation run (lac_run_nonlinear.c): the stages contact,
+ * solve (one load step per call: LAC_CONTINUE until the last), post and
+ * output of a scene with [scene] large_deformation = yes. */
+int lac_run_nl_contact (lac_run *r);
+int lac_run_nl_solve (lac_run *r);
+int lac_run_nl_post (lac_run *r);
+int lac_run_nl_output (lac_run *r);
+void lac_run_nl_free (struct lac_run_nl *nl);   /* NULL allowed */
 
 /* Stages 5 and 6 (lac_run_post.c). */
 int lac_run_stage_post (lac_run *r);

@@ -39,6 +39,7 @@ const char *const lac_scene_element_names[] =
     "tet4", "tet10", "hex8", "hex20", "hex27", NULL };
 static const char *const inverted_names[] = { "flip", "reject", NULL };
 static const char *const symmetry_names[] = { "x", "y", "z", "r", NULL };
+static const char *const law_names[] = { "linear", "neo_hookean", NULL };
 
 /* element name -> type, dimension, order, recombine, serendipity */
 const lac_scene_element_spec lac_scene_elements[LAC_SCENE_NELEMENTS] = {
@@ -69,6 +70,7 @@ static const key_spec scene_keys[] = {
   ENUM (lac_scene_main, element, lac_scene_element_names),
   ENUM (lac_scene_main, solver, solver_names),
   STR (lac_scene_main, out),
+  BOOL (lac_scene_main, large_deformation),
 };
 static const key_spec mesh_keys[] = {
   STR (lac_scene_mesh, file),
@@ -82,6 +84,7 @@ static const key_spec material_keys[] = {
   STR (lac_scene_material, group),
   NUM (lac_scene_material, E, 0, HUGE_VAL, 1, "a number > 0"),
   NUM (lac_scene_material, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
+  ENUM (lac_scene_material, law, law_names),
 };
 static const key_spec dirichlet_keys[] = {
   STR (lac_scene_dirichlet, group),
@@ -92,6 +95,7 @@ static const key_spec dirichlet_keys[] = {
   BOOL (lac_scene_dirichlet, clamp),
   ENUM (lac_scene_dirichlet, symmetry, symmetry_names),
   BOOL (lac_scene_dirichlet, exact),
+  BOOL (lac_scene_dirichlet, ramp),
 };
 static const char *const load_exact_names[] =
   { "none", "traction", "tangential", "force", NULL };
@@ -123,6 +127,14 @@ static const key_spec contact_keys[] = {
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
   ENUM (lac_scene_contact, method, method_names),
 };
+static const key_spec steps_keys[] = {
+  INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),
+  NUM (lac_scene_steps, start, 0, 1, 2, "a number in [0, 1)"),
+  NUM (lac_scene_steps, tol, 0, HUGE_VAL, 1, "a number > 0"),
+  INT (lac_scene_steps, maxit, 1, 1000, "an integer in 1..1000"),
+  STR (lac_scene_steps, monitor),
+  STR (lac_scene_steps, curve),
+};
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),
   BOOL (lac_scene_output, csv),
@@ -139,6 +151,7 @@ const section_spec lac_scene_sections[NSEC] = {
   { "exact", 0, exact_keys, NK (exact_keys) },
   { "output", 0, output_keys, NK (output_keys) },
   { "contact", 1, contact_keys, NK (contact_keys) },
+  { "steps", 0, steps_keys, NK (steps_keys) },
 };
 
 /* ---- sections: lookup and creation ------------------------------------ */
@@ -200,6 +213,17 @@ set_defaults (int kind, lac_scene_section *s)
     case SEC_CONTACT:
       ((lac_scene_contact *) s)->epsilon = LAC_EPSILON_DEFAULT;
       break;
+    case SEC_DIRICHLET:
+      ((lac_scene_dirichlet *) s)->ramp = 1;
+      break;
+    case SEC_STEPS:
+      {
+        lac_scene_steps *t = (lac_scene_steps *) s;
+        t->n = 1;
+        t->tol = 1e-8;
+        t->maxit = 25;
+        break;
+      }
     default:
       break;
     }
@@ -215,6 +239,7 @@ singleton (lac_scene *sc, int kind)
     case SEC_MESH: return &sc->mesh.sec;
     case SEC_EXACT: return &sc->exact.sec;
     case SEC_OUTPUT: return &sc->output.sec;
+    case SEC_STEPS: return &sc->steps.sec;
     default: return NULL;
     }
 }
@@ -376,6 +401,7 @@ lac_scene_read_string (const char *text, const char *path, size_t nset,
   set_defaults (SEC_MESH, &sc->mesh.sec);
   set_defaults (SEC_EXACT, &sc->exact.sec);
   set_defaults (SEC_OUTPUT, &sc->output.sec);
+  set_defaults (SEC_STEPS, &sc->steps.sec);
   status = set_names (sc, path);
   if (!status)
     status = lac_scene_parse (sc, text, path, nset, set);    /* steps 1-3 */
@@ -451,6 +477,7 @@ lac_scene_free (lac_scene *sc)
   section_free (&sc->mesh.sec);
   section_free (&sc->exact.sec);
   section_free (&sc->output.sec);
+  section_free (&sc->steps.sec);
   lac_free (sc->mesh.path);
   for (size_t k = 0; k < sc->nmaterial; k++)
     section_free (&sc->material[k].sec);

@@ -25,6 +25,11 @@
  *     solver               dense | umfpack | cholmod  cholmod
  *     out                  output directory (relative to the current
  *                          directory)                 out/<scene basename>
+ *     large_deformation    yes: total Lagrangian hyperelasticity, load
+ *                          steps and one generalized Newton loop for
+ *                          material, geometry and contact, re-pairing at
+ *                          every iteration [LAC §4.5, Alg. 1]
+ *                          (lac_nonlinear.h)          no
  *   [mesh]
  *     file                 .geo or .msh, relative to the scene file's
  *                          directory                  (required)
@@ -40,6 +45,9 @@
  *                                                     another material
  *     E                    Young's modulus > 0        (required)
  *     nu                   Poisson's ratio in (-1, 1/2)  (required)
+ *     law                  linear (Hooke; Saint Venant-Kirchhoff with
+ *                          large_deformation) | neo_hookean (needs
+ *                          large_deformation; lac_hyper.h)   linear
  *   [dirichlet NAME]       imposed displacements on the nodes of a group
  *     group                physical group (any dimension)  (required)
  *     ux uy uz             value of one component (3d: ux uy uz; plane
@@ -48,6 +56,9 @@
  *     clamp                yes: every component zero
  *     symmetry             x | y | z | r: the normal component zero
  *     exact                yes: every component from the [exact] solution
+ *     ramp                 yes | no: with [steps], the values grow with
+ *                          the load factor t (yes) or are imposed whole
+ *                          from the first step (no)   yes
  *   [load NAME]            exactly one of:
  *     group                boundary group (pressure, traction) or volume
  *                          group (force; all cells if absent)
@@ -82,6 +93,17 @@
  *                          strain, 3d with uz = 0: cylinder a < r < b)
  *     a b p E nu           inner and outer radius, inner pressure, Young's
  *                          modulus, Poisson's ratio   (all required)
+ *   [steps]                load steps of a large_deformation scene: the
+ *                          load factor t goes to `start` in one step (if
+ *                          start > 0), then to 1 in n equal steps; loads
+ *                          and ramped Dirichlet values are t times theirs
+ *     n                    number of equal steps >= 1          1
+ *     start                load factor of the first step in [0, 1)   0
+ *     tol                  Newton tolerance > 0 (residual, gaps)  1e-8
+ *     maxit                Newton iterations per step, 1..1000    25
+ *     monitor              node group (a physical point): its displacement
+ *                          at every step goes to the curve CSV  (none)
+ *     curve                file name of the per-step CSV    curve.csv
  *   [output]
  *     vtu                  yes | no: solution.vtu     yes
  *     csv                  yes | no: nodes.csv        yes
@@ -129,6 +151,7 @@ typedef struct lac_scene_main            /* [scene] */
   int element;          /* lac_elem_type, LAC_ELEM_NONE if not given */
   int solver;           /* lac_solver_kind */
   char *out;            /* owned, NULL if not given */
+  int large_deformation;  /* 1: the nonlinear run (lac_nonlinear.h) */
 } lac_scene_main;
 
 typedef struct lac_scene_mesh            /* [mesh] */
@@ -148,6 +171,7 @@ typedef struct lac_scene_material        /* [material NAME] */
   lac_scene_section sec;
   char *group;          /* owned, NULL: every cell not in another group */
   double E, nu;
+  int law;              /* lac_law (lac_hyper.h): 0 linear, 1 neo_hookean */
 } lac_scene_material;
 
 typedef enum
@@ -167,6 +191,7 @@ typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
   double value[3];      /* their values                                 */
   double ux, uy, uz, ur;            /* raw key values (table storage)  */
   int clamp, exact, symmetry;       /* raw key values (table storage)  */
+  int ramp;             /* 1: values times the load factor ([steps])   */
 } lac_scene_dirichlet;
 
 typedef enum
@@ -210,6 +235,17 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
 } lac_scene_contact;
 
+typedef struct lac_scene_steps           /* [steps] */
+{
+  lac_scene_section sec;
+  int n;                /* equal load steps (after the start step)        */
+  double start;         /* load factor of a first step, 0: none            */
+  double tol;           /* Newton tolerance (lac_nl_opts.tol)              */
+  int maxit;            /* Newton iterations per step                      */
+  char *monitor;        /* owned, NULL: node group followed step by step   */
+  char *curve;          /* owned, NULL: file name of the per-step CSV      */
+} lac_scene_steps;
+
 typedef struct lac_scene_output          /* [output] */
 {
   lac_scene_section sec;
@@ -225,6 +261,7 @@ typedef struct lac_scene
   lac_scene_mesh mesh;
   lac_scene_exact exact;        /* exact.sec.line == 0: no [exact]       */
   lac_scene_output output;
+  lac_scene_steps steps;        /* steps.sec.line == 0: no [steps]       */
   size_t nmaterial, ndirichlet, nload, ncontact;
   lac_scene_material *material;     /* owned, nmaterial  */
   lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */

@@ -4,8 +4,9 @@
  * depend on other keys (title, order and recombine from the element),
  * required keys, conflicting keys, keys that depend on the model
  * (displacement components, symmetry axes, vector sizes, the exact
- * solution), and that the mesh file exists.  The first error stops with a
- * one-line message naming the scene line.
+ * solution), that the mesh file exists, and the keys of the
+ * large-deformation run.  The first error stops with a one-line message
+ * naming the scene line.
  */
 #include "lac_scene_internal.h"
 
@@ -369,6 +370,34 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   return LAC_SUCCESS;
 }
 
+/* The keys of the large-deformation run (lac_nonlinear.h) and the keys
+ * that need it: law = neo_hookean and [steps]; [exact] (small-strain
+ * solutions) and the comparison contact methods do not go with it. */
+static int
+finish_nonlinear (lac_scene *sc)
+{
+  const lac_scene_main *m = &sc->scene;
+  for (size_t k = 0; k < sc->nmaterial && !m->large_deformation; k++)
+    if (sc->material[k].law != 0)
+      return lac_scene_error (sc, &sc->material[k].sec, "law", LAC_EINVAL,
+                              "needs [scene] large_deformation = yes (a "
+                              "finite-strain law)");
+  if (!m->large_deformation && sc->steps.sec.line != 0)
+    return lac_scene_error (sc, &sc->steps.sec, NULL, LAC_EINVAL, "load "
+                            "steps need [scene] large_deformation = yes");
+  if (!m->large_deformation)
+    return LAC_SUCCESS;
+  if (sc->exact.sec.line != 0)
+    return lac_scene_error (sc, &sc->exact.sec, NULL, LAC_EINVAL, "the "
+                            "exact solutions are small-strain solutions; "
+                            "not with large_deformation = yes");
+  if (sc->ncontact && sc->contact[0].method != 0)
+    return lac_scene_error (sc, &sc->contact[0].sec, "method", LAC_EINVAL,
+                            "large_deformation = yes runs the LAC method "
+                            "only (method = lac)");
+  return LAC_SUCCESS;
+}
+
 int
 lac_scene_finish (lac_scene *sc)
 {
@@ -385,5 +414,5 @@ lac_scene_finish (lac_scene *sc)
   for (size_t k = 0; k < sc->ncontact; k++)
     if ((status = finish_contact (sc, &sc->contact[k])))
       return status;
-  return LAC_SUCCESS;
+  return finish_nonlinear (sc);
 }

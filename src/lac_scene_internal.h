@@ -37,7 +37,7 @@ typedef struct section_spec
 } section_spec;
 
 enum { SEC_SCENE, SEC_MESH, SEC_MATERIAL, SEC_DIRICHLET, SEC_LOAD,
-       SEC_EXACT, SEC_OUTPUT, SEC_CONTACT, NSEC };
+       SEC_EXACT, SEC_OUTPUT, SEC_CONTACT, SEC_STEPS, NSEC };
 
 extern const section_spec lac_scene_sections[NSEC];
 
