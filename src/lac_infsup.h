@@ -41,7 +41,9 @@
  *       by contact alone makes K singular and the estimate is refused
  *       (LAC_ESING).  Hence H1 is the default.
  *   M = diag(h_i |T^m_i cap Gamma_C|) (lac_infsup_norm_lac), h_i the
- *       diameter of macro-element T^m_i: mu^T M mu = sum_i h_i
+ *       diameter of macro-element T^m_i (node-to-segment multipliers: the
+ *       node's tributary measure w_i and h_i = w_i in 2D, sqrt(w_i) in 3D;
+ *       axisymmetric w_i include 2 pi r): mu^T M mu = sum_i h_i
  *       ||mu||^2_{0, T^m_i cap Gamma_C}, the h-weighted L2 norm, the usual
  *       computable stand-in for the H^{-1/2} (W') norm of a piecewise
  *       constant: by an inverse inequality h^{1/2} ||mu||_0 <= C ||mu||_{-1/2}

@@ -236,14 +236,17 @@ lac_infsup_norm_lac (const lac_mesh *mesh, const lac_macro *Mm,
   if (!mesh || !Mm || !c || !M)
     LAC_ERROR (LAC_EINVAL, "mesh, macro-mesh, contact data or output is NULL");
   *M = NULL;
-  if (c->nmacro != Mm->n)
+  if (!c->xpt && c->nmacro != Mm->n)
     LAC_ERROR (LAC_EBADLEN, "contact data for %zu macro-elements, macro-mesh"
                " of %zu", c->nmacro, Mm->n);
   if (!(D = lac_csc_alloc (c->k, c->k, c->k)))
     LAC_ERROR (LAC_ENOMEM, "norm matrix of %zu multipliers", c->k);
   for (size_t i = 0; i < c->k; i++)
     {
-      double hi = lac_infsup_macro_diameter (mesh, Mm, c->macro[i]);
+      /* node-to-segment multipliers (c->xpt): the tributary measure w_i
+       * of the node stands for |T^m cap Gamma_C|, and its size for h_i */
+      double hi = c->xpt ? (mesh->dim == 2 ? c->area[i] : sqrt (c->area[i]))
+                         : lac_infsup_macro_diameter (mesh, Mm, c->macro[i]);
       D->p[i] = (int) i;
       D->i[i] = (int) i;
       D->x[i] = hi * c->area[i];             /* h_i |T^m_i cap Gamma_C| */

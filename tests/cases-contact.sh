@@ -123,3 +123,16 @@ if awk -v a="$bl0" -v b="$bl3" -v c="$bp0" -v d="$bp3" \
 else
   contact_fail infsup-p0-vs-lac "beta_h LAC $bl0 -> $bl3, P0 $bp0 -> $bp3 (want LAC ratio > 0.5, P0 ratio < 0.5)"
 fi
+
+# `lac infsup` prints beta_h for any contact scene: every method, and a
+# rigid obstacle.
+for args in "$T2 --set contact.interface.method=nts" "$T2 --set contact.interface.method=p0" \
+            "chapters/08-experiments/manufactured2d.scene"; do
+  # shellcheck disable=SC2086
+  b=$("$LAC" infsup $args --quiet 2>"$C/infsup.err" | sed -n 's/^beta_h = //p')
+  if awk -v b="$b" 'BEGIN { exit !(b != "" && b > 0) }'; then
+    contact_ok "infsup $args"
+  else
+    contact_fail "infsup $args" "beta_h = '$b': $(tail -1 "$C/infsup.err")"
+  fi
+done
