@@ -40,9 +40,9 @@ mark_contact_nodes (lac_run *r, const lac_group *s, const lac_group *m)
   return LAC_SUCCESS;
 }
 
-/* The facet group named by `key` of the [contact] section. */
-static const lac_group *
-contact_group (lac_run *r, const char *key, const char *name)
+/* The facet group named by `key` of the [contact] section, checked. */
+const lac_group *
+lac_run_contact_group (lac_run *r, const char *key, const char *name)
 {
   const lac_scene_contact *c = &r->scene->contact[0];
   const lac_group *g = lac_mesh_group (r->mesh, name);
@@ -79,8 +79,8 @@ lac_run_stage_contact (lac_run *r)
       return LAC_SUCCESS;
     }
   c = &sc->contact[0];
-  if (!contact_group (r, "slave", c->slave)
-      || (c->master && !contact_group (r, "master", c->master)))
+  if (!lac_run_contact_group (r, "slave", c->slave)
+      || (c->master && !lac_run_contact_group (r, "master", c->master)))
     return LAC_EINVAL;
   t0 = lac_run_now ();
   status = c->method == 0                        /* lac: Hypothesis 1 */

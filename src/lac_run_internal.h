@@ -24,6 +24,14 @@ void lac_run_exact (const lac_run *r, lac_exact *e);
  * free motion (lac_run_rigid.c). */
 int lac_run_check_rigid (lac_run *r, const lac_dirichlet *d);
 
+/* Distinct cell types of the mesh, "tri6" or "tri6+quad8". */
+void lac_run_cell_types (const lac_mesh *m, char *buf, size_t size);
+
+/* The non-empty facet group `name` given by key `key` of the [contact]
+ * section, or NULL with a message naming the scene line. */
+const lac_group *lac_run_contact_group (lac_run *r, const char *key,
+                                        const char *name);
+
 /* Seconds on a monotonic clock. */
 double lac_run_now (void);
 

@@ -94,28 +94,6 @@ lac_run_nl_free (struct lac_run_nl *nl)
 
 /* ---- stage contact ------------------------------------------------------ */
 
-static const lac_group *
-facet_group (lac_run *r, const char *key, const char *name)
-{
-  const lac_scene_contact *c = &r->scene->contact[0];
-  const lac_group *g = lac_mesh_group (r->mesh, name);
-  if (!g)
-    {
-      lac_scene_error (r->scene, &c->sec, key, LAC_EINVAL, "no physical "
-                       "group of that name in mesh '%s'",
-                       r->scene->mesh.file);
-      return NULL;
-    }
-  if (g->dim != r->dim - 1 || g->n == 0)
-    {
-      lac_scene_error (r->scene, &c->sec, key, LAC_EINVAL, "%s",
-                       g->n == 0 ? "the group has no facets"
-                       : "not a group of boundary facets (dimension must be"
-                         " the mesh's minus one)");
-      return NULL;
-    }
-  return g;
-}
 
 /* The macro-mesh [LAC Hyp. 1, Remark 3], the master facets, the marks of
  * the contact nodes (for the rigid-motion check). */
@@ -130,8 +108,8 @@ lac_run_nl_contact (lac_run *r)
       return LAC_SUCCESS;
     }
   c = &sc->contact[0];
-  if (!facet_group (r, "slave", c->slave)
-      || (c->master && !facet_group (r, "master", c->master)))
+  if (!lac_run_contact_group (r, "slave", c->slave)
+      || (c->master && !lac_run_contact_group (r, "master", c->master)))
     return LAC_EINVAL;
   double t0 = lac_run_now ();
   int status = lac_macromesh_build (&r->mesh, c->slave, NULL, &r->macro);
@@ -395,20 +373,6 @@ lac_run_nl_solve (lac_run *r)
 
 /* ---- stage post --------------------------------------------------------- */
 
-/* Distinct cell types, "hex8+pyr5" (as the linear summary). */
-static void
-cell_types (const lac_mesh *m, char *buf, size_t size)
-{
-  int seen[LAC_NELEM_TYPES] = { 0 };
-  size_t len = 0;
-  buf[0] = '\0';
-  for (size_t c = 0; c < m->ncells; c++)
-    seen[m->type[c]] = 1;
-  for (int t = 0; t < LAC_NELEM_TYPES; t++)
-    if (seen[t] && len < size)
-      len += (size_t) snprintf (buf + len, size - len, "%s%s", len ? "+" : "",
-                                lac_refelem_get ((lac_elem_type) t)->name);
-}
 
 static int
 nl_summary (lac_run *r)
@@ -419,7 +383,7 @@ nl_summary (lac_run *r)
   double umax = 0, vmax = 0;
   char effects[256] = "", types[128];
   int itmax = 0, status;
-  cell_types (m, types, sizeof types);
+  lac_run_cell_types (m, types, sizeof types);
   for (size_t a = 0; a < m->nnodes; a++)
     {
       double q = 0;

@@ -21,8 +21,8 @@
 /* ---- stage 5: post ---------------------------------------------------- */
 
 /* Distinct cell types of the mesh, "tri6" or "tri6+quad8". */
-static void
-cell_types (const lac_mesh *m, char *buf, size_t size)
+void
+lac_run_cell_types (const lac_mesh *m, char *buf, size_t size)
 {
   int seen[LAC_NELEM_TYPES] = { 0 };
   size_t len = 0;
@@ -144,7 +144,7 @@ make_summary (lac_run *r, const lac_exact *e)
       umax = fmax (umax, sqrt (s));
       vmax = fmax (vmax, r->vm[a]);
     }
-  cell_types (m, types, sizeof types);
+  lac_run_cell_types (m, types, sizeof types);
   for (size_t k = 0; k < r->neffects; k++)
     snprintf (effects + strlen (effects), sizeof effects - strlen (effects),
               "%s%s", k ? ", " : "", r->effects[k]);
