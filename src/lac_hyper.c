@@ -17,6 +17,7 @@
  *   K_(a,i),(b,k) += w sum_(kL) T^(a,i)_kL dF^(b,k)_kL.
  */
 #include "lac_hyper.h"
+#include "lac_post.h"
 
 #include <math.h>
 #include <string.h>
@@ -581,6 +582,20 @@ lac_hyper_cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u,
   return cauchy_at (m, h, u, c, xi, s);
 }
 
+typedef struct hyper_ctx
+{
+  const lac_hyper *h;
+  const double *u;
+} hyper_ctx;
+
+static int
+hyper_stress (const lac_mesh *m, size_t c, const double *xi, void *ctx,
+              double *s)
+{
+  const hyper_ctx *q = ctx;
+  return cauchy_at (m, q->h, q->u, c, xi, s);
+}
+
 int
 lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
                         const double *u, const char *cells, double *sigma,
@@ -591,34 +606,7 @@ lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
     return status;
   if (!u || !sigma)
     LAC_ERROR (LAC_EINVAL, "displacement or output is NULL");
-  int ns = lac_model_nstress (h->model);
-  double s[6];
-  unsigned *count = lac_calloc (m->nnodes, sizeof *count);
-  if (!count)
-    LAC_ERROR (LAC_ENOMEM, "counters for %zu nodes", m->nnodes);
-  memset (sigma, 0, m->nnodes * (size_t) ns * sizeof *sigma);
-  for (size_t c = 0; c < m->ncells && !status; c++)
-    {
-      if ((cells && !cells[c]) || !(h->E[c] > 0.0))
-        continue;
-      const lac_refelem *re = lac_refelem_get (m->type[c]);
-      const int *conn = m->conn + m->ptr[c];
-      for (int a = 0; re && a < re->nnodes && !status; a++)
-        {
-          status = cauchy_at (m, h, u, c, re->xi + a * re->dim, s);
-          for (int k = 0; k < ns && !status; k++)
-            sigma[(size_t) conn[a] * (size_t) ns + (size_t) k] += s[k];
-          count[conn[a]]++;
-        }
-    }
-  for (size_t a = 0; a < m->nnodes && !status; a++)
-    {
-      if (count[a] > 0)
-        for (int k = 0; k < ns; k++)
-          sigma[a * (size_t) ns + (size_t) k] /= count[a];   /* mean */
-      if (vm)
-        vm[a] = lac_von_mises (h->model, sigma + a * (size_t) ns);
-    }
-  lac_free (count);
-  return status;
+  hyper_ctx q = { h, u };
+  return lac_post_nodal_average (m, h->model, h->E, cells, hyper_stress, &q,
+                                 sigma, vm);
 }
