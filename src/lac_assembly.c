@@ -41,37 +41,8 @@
 #include "lac_spaces.h"
 #include "lac_status.h"
 
-#define QCACHE_MAXDEG 16
 #define TWO_PI 6.283185307179586476925286766559
 
-/* A small cache of quadrature rules, one per (shape, degree), allocated on
- * first use and freed by qcache_free. */
-typedef struct qcache
-{
-  lac_quad *q[LAC_SHAPE_PYR + 1][QCACHE_MAXDEG + 1];  /* owned */
-} qcache;
-
-static const lac_quad *
-qcache_get (qcache *qc, lac_shape shape, int degree)
-{
-  int maxdeg = lac_quad_max_degree (shape);
-  if (maxdeg >= 0 && degree > maxdeg)
-    degree = maxdeg;                    /* the best rule there is */
-  if (degree > QCACHE_MAXDEG)
-    degree = QCACHE_MAXDEG;
-  if (!qc->q[shape][degree])
-    qc->q[shape][degree] = lac_quad_alloc (shape, degree);  /* message set */
-  return qc->q[shape][degree];
-}
-
-static void
-qcache_free (qcache *qc)
-{
-  for (int s = 0; s <= LAC_SHAPE_PYR; s++)
-    for (int d = 0; d <= QCACHE_MAXDEG; d++)
-      lac_quad_free (qc->q[s][d]);
-  memset (qc, 0, sizeof *qc);
-}
 
 /* The linear element with the same vertices as a quadratic one. */
 static lac_elem_type
@@ -208,7 +179,7 @@ check_elastic (const lac_mesh *m, const lac_elastic *mat)
 /* Element stiffness with a given quadrature cache (see the public one). */
 static int
 cell_stiffness (const lac_mesh *m, const lac_elastic *mat, size_t c,
-                qcache *qc, double *Ke)
+                lac_quad_cache *qc, double *Ke)
 {
   int dim = m->dim, ns = lac_model_nstress (mat->model);
   double D[36], xe[LAC_MAX_NODES * 3];
@@ -226,7 +197,7 @@ cell_stiffness (const lac_mesh *m, const lac_elastic *mat, size_t c,
                m->cell_tag ? m->cell_tag[c] : c, mat->E[c], mat->nu[c]);
   int nen = re->nnodes, nc = nen * dim;
   lac_mesh_cell_coords (m, c, xe);
-  const lac_quad *q = qcache_get (qc, re->shape,
+  const lac_quad *q = lac_quad_cache_get (qc, re->shape,
                                   stiffness_degree (re, mat->model,
                                                     is_curved (re, dim, xe)));
   if (!q)
@@ -279,7 +250,7 @@ int
 lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
                              size_t c, double *Ke)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_elastic (m, mat);
   if (status)
     return status;
@@ -287,7 +258,7 @@ lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
     LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells)", c, m->ncells);
   memset (&qc, 0, sizeof qc);
   status = cell_stiffness (m, mat, c, &qc, Ke);
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   return status;
 }
 
@@ -312,7 +283,7 @@ int
 lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
                         lac_triplet *K)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_elastic (m, mat);
   if (status)
     return status;
@@ -336,7 +307,7 @@ lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
       size_t nc = (size_t) cell_dofs (m, c, dofs);
       status = lac_triplet_add_block (K, nc, dofs, nc, dofs, Ke); /* K += Ke */
     }
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   lac_free (Ke);
   return status;
 }
@@ -364,7 +335,7 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
                            const lac_group *g, lac_field *f, void *ctx,
                            double *F)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_model (m, model);
   if (status)
     return status;
@@ -389,7 +360,7 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
                                dim);
           break;
         }
-      const lac_quad *q = qcache_get (&qc, re->shape, load_degree (re, model));
+      const lac_quad *q = lac_quad_cache_get (&qc, re->shape, load_degree (re, model));
       if (!q)
         {
           status = LAC_ENOMEM;
@@ -410,7 +381,7 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
                 += w * fx[i] * mp.N[a];                     /* F += f.N_a w */
         }
     }
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   return status;
 }
 
@@ -421,7 +392,7 @@ surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
               lac_field *t, lac_field_n *tn, void *ctx, int is_pressure,
               double p, double *F)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_model (m, model);
   if (status)
     return status;
@@ -455,7 +426,7 @@ surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
         for (int i = 0; i < dim; i++)
           xe[a * dim + i] = m->x[(size_t) dim * (size_t) fnodes[a]
                                  + (size_t) i];
-      const lac_quad *q = qcache_get (&qc, rf->shape, load_degree (rf, model));
+      const lac_quad *q = lac_quad_cache_get (&qc, rf->shape, load_degree (rf, model));
       if (!q)
         {
           status = LAC_ENOMEM;
@@ -480,7 +451,7 @@ surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
                 += w * tx[i] * mp.N[a];                     /* F += t.N_a w */
         }
     }
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   return status;
 }
 

@@ -27,7 +27,6 @@
 #include "lac_status.h"
 
 #define TWO_PI 6.283185307179586476925286766559
-#define QMAXDEG 16
 
 /* ---- laws --------------------------------------------------------------- */
 
@@ -171,32 +170,6 @@ lac_hyper_stress (lac_law law, double E, double nu, const double *F,
 
 /* ---- kinematics at one point -------------------------------------------- */
 
-/* Quadrature rules, one per (shape, degree), allocated on first use. */
-typedef struct qcache
-{
-  lac_quad *q[LAC_SHAPE_PYR + 1][QMAXDEG + 1];  /* owned */
-} qcache;
-
-static const lac_quad *
-qcache_get (qcache *qc, lac_shape shape, int degree)
-{
-  int maxdeg = lac_quad_max_degree (shape);
-  if (maxdeg >= 0 && degree > maxdeg)
-    degree = maxdeg;
-  if (degree > QMAXDEG)
-    degree = QMAXDEG;
-  if (!qc->q[shape][degree])
-    qc->q[shape][degree] = lac_quad_alloc (shape, degree);  /* message set */
-  return qc->q[shape][degree];
-}
-
-static void
-qcache_free (qcache *qc)
-{
-  for (int s = 0; s <= LAC_SHAPE_PYR; s++)
-    for (int d = 0; d <= QMAXDEG; d++)
-      lac_quad_free (qc->q[s][d]);
-}
 
 static int
 quad_degree (const lac_hyper *h, const lac_refelem *re)
@@ -337,7 +310,7 @@ gather (const lac_mesh *m, size_t c, int nen, const double *u, double *ue)
  * LAC_MAX_NODES*3*9 doubles. */
 static int
 cell_eval (const lac_mesh *m, const lac_hyper *h, size_t c, const double *u,
-           qcache *qc, double *fe, double *Ke, double *T)
+           lac_quad_cache *qc, double *fe, double *Ke, double *T)
 {
   int dim = m->dim, status;
   double xe[LAC_MAX_NODES * 3], ue[LAC_MAX_NODES * 3], P[9], A[81];
@@ -347,7 +320,7 @@ cell_eval (const lac_mesh *m, const lac_hyper *h, size_t c, const double *u,
     LAC_ERROR (LAC_EINVAL, "cell %zu (tag %zu) is not a %dD cell", c,
                m->cell_tag ? m->cell_tag[c] : c, dim);
   lac_law law = h->law ? (lac_law) h->law[c] : LAC_LAW_NEO_HOOKEAN;
-  const lac_quad *q = qcache_get (qc, re->shape, quad_degree (h, re));
+  const lac_quad *q = lac_quad_cache_get (qc, re->shape, quad_degree (h, re));
   if (!q)
     return LAC_ENOMEM;
   int nen = re->nnodes, nc = nen * dim;
@@ -383,7 +356,7 @@ int
 lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
                 const double *u, double *fe, double *Ke)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_hyper (m, h);
   if (status)
     return status;
@@ -399,7 +372,7 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
       memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
     }
   status = cell_eval (m, h, c, u, &qc, fe, Ke, T);
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   lac_free (T);
   return status;
 }
@@ -440,7 +413,7 @@ static int
 assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
           double *Fint, lac_triplet *Tk, lac_csc *Kc)
 {
-  qcache qc;
+  lac_quad_cache qc;
   int status = check_hyper (m, h);
   if (status)
     return status;
@@ -489,7 +462,7 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
             Kc->x[p] += Ke[r * nc + j];
           }
     }
-  qcache_free (&qc);
+  lac_quad_cache_free (&qc);
   lac_free (Ke);
   lac_free (T);
   return status;

@@ -44,6 +44,8 @@
  */
 #include "lac_quadrature.h"
 
+#include <string.h>
+
 #include <gsl/gsl_integration.h>
 
 #include "lac_mem.h"
@@ -410,4 +412,30 @@ lac_quad_alloc (lac_shape shape, int degree)
       return rule_collapsed_pyr (degree);
     }
   return NULL;
+}
+
+/* ---- a cache of rules -------------------------------------------------- */
+
+const lac_quad *
+lac_quad_cache_get (lac_quad_cache *qc, lac_shape shape, int degree)
+{
+  int maxdeg = lac_quad_max_degree (shape);
+  if (maxdeg >= 0 && degree > maxdeg)
+    degree = maxdeg;                    /* the best rule there is */
+  if (degree > LAC_QUAD_CACHE_MAXDEG)
+    degree = LAC_QUAD_CACHE_MAXDEG;
+  if (degree < 0)
+    degree = 0;
+  if (!qc->q[shape][degree])
+    qc->q[shape][degree] = lac_quad_alloc (shape, degree);  /* message set */
+  return qc->q[shape][degree];
+}
+
+void
+lac_quad_cache_free (lac_quad_cache *qc)
+{
+  for (int s = 0; s <= LAC_SHAPE_PYR; s++)
+    for (int d = 0; d <= LAC_QUAD_CACHE_MAXDEG; d++)
+      lac_quad_free (qc->q[s][d]);
+  memset (qc, 0, sizeof *qc);
 }

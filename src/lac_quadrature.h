@@ -35,4 +35,19 @@ double lac_quad_ref_measure (lac_shape shape);
 /* Highest degree lac_quad_alloc accepts for `shape` (-1 if unknown). */
 int lac_quad_max_degree (lac_shape shape);
 
+/* A cache of rules, one per (shape, degree), allocated on first use: a
+ * zeroed struct (memset or = { 0 }) is an empty cache.  Degrees above the
+ * best rule of a shape, or above LAC_QUAD_CACHE_MAXDEG, get that rule.
+ * lac_quad_cache_get returns NULL (message set) if a rule cannot be made;
+ * the rules stay owned by the cache until lac_quad_cache_free. */
+#define LAC_QUAD_CACHE_MAXDEG 16
+typedef struct lac_quad_cache
+{
+  lac_quad *q[LAC_SHAPE_PYR + 1][LAC_QUAD_CACHE_MAXDEG + 1];   /* owned */
+} lac_quad_cache;
+
+const lac_quad *lac_quad_cache_get (lac_quad_cache *qc, lac_shape shape,
+                                    int degree);
+void lac_quad_cache_free (lac_quad_cache *qc);   /* empties the cache */
+
 #endif /* LAC_QUADRATURE_H */
