@@ -11,6 +11,7 @@
  *    lines (and, with --vector, the least stable multiplier pattern).
  * This file belongs to the command line (see lac_cli_infsup.h): it prints.
  */
+#include "lac_cli.h"
 #include "lac_cli_infsup.h"
 
 #include <math.h>
@@ -75,14 +76,6 @@ typedef struct args
   int vector, quiet, help;
 } args;
 
-static void
-print_error (const char *msg)
-{
-  fputs ("lac: ", stderr);
-  for (const char *p = msg; *p; p++)
-    fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
-  fputc ('\n', stderr);
-}
 
 static int
 usage (const char *what, const char *arg)
@@ -92,25 +85,6 @@ usage (const char *what, const char *arg)
   return EXIT_USAGE;
 }
 
-/* "--name VALUE" or "--name=VALUE" at argv[*k]; NULL if not that option
- * (*missing = 1 if the value is missing). */
-static const char *
-opt_value (int argc, char **argv, int *k, const char *name, int *missing)
-{
-  size_t n = strlen (name);
-  if (strncmp (argv[*k], name, n) != 0)
-    return NULL;
-  if (argv[*k][n] == '=')
-    return argv[*k] + n + 1;
-  if (argv[*k][n] != '\0')
-    return NULL;
-  if (*k + 1 >= argc)
-    {
-      *missing = 1;
-      return NULL;
-    }
-  return argv[++*k];
-}
 
 static int
 parse (int argc, char **argv, args *a)
@@ -119,9 +93,9 @@ parse (int argc, char **argv, args *a)
     {
       const char *v;
       int missing = 0;
-      if ((v = opt_value (argc, argv, &k, "--set", &missing)))
+      if ((v = lac_cli_option_value (argc, argv, &k, "--set", &missing)))
         a->set[a->nset++] = v;
-      else if ((v = opt_value (argc, argv, &k, "--norm", &missing)))
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--norm", &missing)))
         {
           if (strcmp (v, "h1") && strcmp (v, "energy"))
             return usage ("--norm: expected h1 or energy, got", v);
@@ -253,17 +227,17 @@ lac_cli_infsup (int argc, char **argv)
   /* 1. The scene: it must have multipliers. */
   ret = EXIT_FAIL;
   if (lac_scene_read (a.scene, a.nset, a.set, &sc))
-    print_error (lac_error_message ());
+    lac_cli_print_error (lac_error_message ());
   else if (sc->ncontact == 0)
     fprintf (stderr, "lac: %s: no [contact] section: the inf-sup constant "
              "[LAC (10)] is a property of the contact multipliers; add a "
              "[contact NAME] section with slave and master groups\n",
              sc->path);
   else if (!(r = lac_run_alloc (sc, &ro)))
-    print_error (lac_error_message ());
+    lac_cli_print_error (lac_error_message ());
   /* 2.-4. The stages up to assemble, then the estimate. */
   else if (run_to_assemble (r, a.quiet) || estimate (r, &a))
-    print_error (lac_error_message ());
+    lac_cli_print_error (lac_error_message ());
   else
     ret = fflush (stdout) == 0 ? 0 : EXIT_FAIL;
   lac_run_free (r);

@@ -26,6 +26,7 @@
  * This is command-line glue: it prints and runs gnuplot (fork, execvp);
  * the library files do not.
  */
+#include "lac_cli.h"
 #include "lac_cli_render.h"
 #include "lac_cli_render_internal.h"
 
@@ -84,14 +85,6 @@ const char lac_cli_render_help[] =
   "         lac render out/sph --field radial_stress --edges --units MPa\n";
 
 
-static void
-print_error (const char *msg)
-{
-  fputs ("lac: ", stderr);
-  for (const char *p = msg; *p; p++)
-    fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
-  fputc ('\n', stderr);
-}
 
 static int
 usage_error (const char *what, const char *arg)
@@ -101,24 +94,6 @@ usage_error (const char *what, const char *arg)
   return EXIT_USAGE;
 }
 
-/* "--name VALUE" or "--name=VALUE" at argv[*k]; NULL if not that option. */
-static const char *
-option_value (int argc, char **argv, int *k, const char *name, int *missing)
-{
-  size_t n = strlen (name);
-  if (strncmp (argv[*k], name, n) != 0)
-    return NULL;
-  if (argv[*k][n] == '=')
-    return argv[*k] + n + 1;
-  if (argv[*k][n] != '\0')
-    return NULL;
-  if (*k + 1 >= argc)
-    {
-      *missing = 1;
-      return NULL;
-    }
-  return argv[++*k];
-}
 
 static int
 to_double (const char *s, double *v)
@@ -138,7 +113,7 @@ numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
   double *dst[2] = { &a->az, &a->el }, v;
   const char *s;
   for (int i = 0; i < 4; i++)
-    if ((s = option_value (argc, argv, k, names[i], missing)))
+    if ((s = lac_cli_option_value (argc, argv, k, names[i], missing)))
       {
         if (!to_double (s, &v))
           return -1;
@@ -158,20 +133,20 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
                     int *missing, int *bad)
 {
   const char *v;
-  if ((v = option_value (argc, argv, k, "--field", missing)))
+  if ((v = lac_cli_option_value (argc, argv, k, "--field", missing)))
     a->field = v;
-  else if ((v = option_value (argc, argv, k, "--out", missing)))
+  else if ((v = lac_cli_option_value (argc, argv, k, "--out", missing)))
     a->out = v;
-  else if ((v = option_value (argc, argv, k, "--title", missing)))
+  else if ((v = lac_cli_option_value (argc, argv, k, "--title", missing)))
     a->title = v;
-  else if ((v = option_value (argc, argv, k, "--units", missing)))
+  else if ((v = lac_cli_option_value (argc, argv, k, "--units", missing)))
     a->units = v;
-  else if ((v = option_value (argc, argv, k, "--scale", missing)))
+  else if ((v = lac_cli_option_value (argc, argv, k, "--scale", missing)))
     {
       a->auto_scale = !strcmp (v, "auto");
       *bad = !a->auto_scale && !to_double (v, &a->scale);
     }
-  else if ((v = option_value (argc, argv, k, "--range", missing)))
+  else if ((v = lac_cli_option_value (argc, argv, k, "--range", missing)))
     {
       char lo[64];
       const char *c = strchr (v, ':');
@@ -533,7 +508,7 @@ lac_cli_render (int argc, char **argv)
   snprintf (path, sizeof path, "%s/solution.vtu", a.dir);
   if (lac_render_result_read (path, &res))
     {
-      print_error (lac_error_message ());
+      lac_cli_print_error (lac_error_message ());
       return EXIT_RUN;
     }
   if (a.list)
@@ -553,7 +528,7 @@ lac_cli_render (int argc, char **argv)
   lac_render_result_free (res);
   if (ret)
     {
-      print_error (lac_error_message ());
+      lac_cli_print_error (lac_error_message ());
       return EXIT_RUN;
     }
   printf ("%s\n", out);

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lac_cli.h"
 #include "lac_cli_infsup.h"
 #include "lac_cli_render.h"
 #include "lac_linalg.h"
@@ -109,14 +110,6 @@ static const char *help_text =
 
 /* Print "lac: message" on one line (newlines in the message become
  * blanks). */
-static void
-print_error (const char *msg)
-{
-  fputs ("lac: ", stderr);
-  for (const char *p = msg; *p; p++)
-    fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
-  fputc ('\n', stderr);
-}
 
 static int
 usage_error (const char *what, const char *arg)
@@ -136,25 +129,6 @@ typedef struct cmdline
   char solver_set[64];
 } cmdline;
 
-/* The value of option `name` at argv[*k]: "--name VALUE" or "--name=VALUE";
- * NULL if argv[*k] is not that option. */
-static const char *
-option_value (int argc, char **argv, int *k, const char *name, int *missing)
-{
-  size_t n = strlen (name);
-  if (strncmp (argv[*k], name, n) != 0)
-    return NULL;
-  if (argv[*k][n] == '=')
-    return argv[*k] + n + 1;
-  if (argv[*k][n] != '\0')
-    return NULL;
-  if (*k + 1 >= argc)
-    {
-      *missing = 1;
-      return NULL;
-    }
-  return argv[++*k];
-}
 
 static int
 parse_run_args (int argc, char **argv, cmdline *c)
@@ -163,9 +137,9 @@ parse_run_args (int argc, char **argv, cmdline *c)
     {
       const char *v;
       int missing = 0;
-      if ((v = option_value (argc, argv, &k, "--set", &missing)))
+      if ((v = lac_cli_option_value (argc, argv, &k, "--set", &missing)))
         c->set[c->nset++] = v;
-      else if ((v = option_value (argc, argv, &k, "--solver", &missing)))
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--solver", &missing)))
         {
           if (lac_solver_kind_from_name (v) < 0)
             return usage_error ("--solver: expected dense, umfpack or "
@@ -173,7 +147,7 @@ parse_run_args (int argc, char **argv, cmdline *c)
           snprintf (c->solver_set, sizeof c->solver_set, "scene.solver=%s", v);
           c->set[c->nset++] = c->solver_set;
         }
-      else if ((v = option_value (argc, argv, &k, "--out", &missing)))
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
       else if (missing)
         return usage_error ("missing value after", argv[k]);
@@ -225,12 +199,12 @@ cmd_run (const cmdline *c)
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
   if (status)
     {
-      print_error (lac_error_message ());
+      lac_cli_print_error (lac_error_message ());
       return EXIT_RUN;
     }
   if (!(r = lac_run_alloc (sc, &opts)))
     {
-      print_error (lac_error_message ());
+      lac_cli_print_error (lac_error_message ());
       lac_scene_free (sc);
       return EXIT_RUN;
     }
@@ -264,12 +238,12 @@ cmd_run (const cmdline *c)
     for (size_t k = 0; k < r->nsummary; k++)
       printf ("%s = %s\n", r->key[k], r->val[k]);
   else
-    print_error (lac_error_message ());
+    lac_cli_print_error (lac_error_message ());
   lac_run_free (r);
   lac_scene_free (sc);
   if (fflush (stdout) != 0)
     {
-      print_error ("cannot write the summary to stdout");
+      lac_cli_print_error ("cannot write the summary to stdout");
       return EXIT_RUN;
     }
   return status == LAC_SUCCESS ? EXIT_SUCCESS : EXIT_RUN;
