@@ -9,6 +9,7 @@
 #define LAC_RUN_INTERNAL_H
 
 #include "lac_exact.h"
+#include "lac_output.h"
 #include "lac_run.h"
 
 /* Append "key = value" to the summary (value from printf format). */
@@ -50,6 +51,15 @@ int lac_run_nl_solve (lac_run *r);
 int lac_run_nl_post (lac_run *r);
 int lac_run_nl_output (lac_run *r);
 void lac_run_nl_free (struct lac_run_nl *nl);   /* NULL allowed */
+
+/* Parts of the output stage shared by the linear and the large-
+ * deformation runs (lac_run_post.c): the time_<stage> summary lines; the
+ * files solution.vtu and nodes.csv into a batch; summary.txt (last) and
+ * the renaming of the batch into place. */
+int lac_run_stage_timings (lac_run *r);
+int lac_run_write_fields (const lac_run *r, lac_output_batch *b,
+                          const lac_output_fields *f);
+int lac_run_write_summary (lac_run *r, lac_output_batch *b);
 
 /* Stages 5 and 6 (lac_run_post.c). */
 int lac_run_stage_post (lac_run *r);

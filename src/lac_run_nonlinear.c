@@ -521,13 +521,7 @@ static int
 nl_timings (lac_run *r)
 {
   const lac_nl *s = r->nl->s;
-  int status = LAC_SUCCESS;
-  for (int k = 0; k < LAC_STAGE_OUTPUT && !status; k++)
-    {
-      char key[32];
-      snprintf (key, sizeof key, "time_%s", lac_run_stage_name (k));
-      status = lac_run_summary_add (r, key, "%.3f", r->time[k]);
-    }
+  int status = lac_run_stage_timings (r);
   if (!status)
     status = lac_run_summary_add (r, "time_assemble_KT", "%.3f",
                                   s->time_assemble);
@@ -556,11 +550,7 @@ lac_run_nl_output (lac_run *r)
     }
   if (!(b = lac_output_batch_alloc (r->out_dir)))
     return LAC_EIO;
-  if (o->vtu && (!(path = lac_output_batch_add (b, "solution.vtu"))
-                 || (status = lac_output_vtu (path, &f))))
-    goto done;
-  if (o->csv && (!(path = lac_output_batch_add (b, "nodes.csv"))
-                 || (status = lac_output_csv (path, &f))))
+  if ((status = lac_run_write_fields (r, b, &f)))
     goto done;
   if (!(path = lac_output_batch_add (b, curve))
       || (status = write_curve (r, path)))
@@ -571,12 +561,8 @@ lac_run_nl_output (lac_run *r)
   if (r->macro && (!(path = lac_output_batch_add (b, "contact_steps.csv"))
                    || (status = write_mults (r, path, 0))))
     goto done;
-  if (!(path = lac_output_batch_add (b, "summary.txt"))
-      || (status = lac_output_summary (path, r->nsummary,
-                                       (const char *const *) r->key,
-                                       (const char *const *) r->val)))
+  if ((status = lac_run_write_summary (r, b)))
     goto done;
-  status = lac_output_commit (b);
   snprintf (r->progress, sizeof r->progress, "%s/: %s%s%s%ssummary.txt",
             r->out_dir, o->vtu ? "solution.vtu, " : "",
             o->csv ? "nodes.csv, " : "", curve,

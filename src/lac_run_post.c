@@ -209,6 +209,49 @@ lac_run_stage_post (lac_run *r)
 
 /* ---- stage 6: output -------------------------------------------------- */
 
+/* time_<stage> lines for the stages before the output (--timings). */
+int
+lac_run_stage_timings (lac_run *r)
+{
+  int status = LAC_SUCCESS;
+  for (int s = 0; s < LAC_STAGE_OUTPUT && !status; s++)
+    {
+      char key[32];
+      snprintf (key, sizeof key, "time_%s", lac_run_stage_name (s));
+      status = lac_run_summary_add (r, key, "%.3f", r->time[s]);
+    }
+  return status;
+}
+
+/* solution.vtu and nodes.csv, as [output] asks, into the batch b. */
+int
+lac_run_write_fields (const lac_run *r, lac_output_batch *b,
+                      const lac_output_fields *f)
+{
+  const lac_scene_output *o = &r->scene->output;
+  const char *path;
+  int status = LAC_SUCCESS;
+  if (o->vtu && !status)
+    status = (path = lac_output_batch_add (b, "solution.vtu"))
+             ? lac_output_vtu (path, f) : LAC_ENOMEM;
+  if (o->csv && !status)
+    status = (path = lac_output_batch_add (b, "nodes.csv"))
+             ? lac_output_csv (path, f) : LAC_ENOMEM;
+  return status;
+}
+
+/* summary.txt, written last, then the batch renamed into place. */
+int
+lac_run_write_summary (lac_run *r, lac_output_batch *b)
+{
+  const char *path = lac_output_batch_add (b, "summary.txt");
+  int status = path ? lac_output_summary (path, r->nsummary,
+                                          (const char *const *) r->key,
+                                          (const char *const *) r->val)
+                    : LAC_ENOMEM;
+  return status ? status : lac_output_commit (b);
+}
+
 int
 lac_run_stage_output (lac_run *r)
 {
@@ -216,15 +259,8 @@ lac_run_stage_output (lac_run *r)
   lac_output_fields f = { r->mesh, r->model, r->u, r->u_exact, r->sigma,
                           r->vm };
   lac_output_batch *b;
-  const char *path;
-  int status = LAC_SUCCESS;
-  if (r->opts.timings)
-    for (int s = 0; s < LAC_STAGE_OUTPUT && !status; s++)
-      {
-        char key[32];
-        snprintf (key, sizeof key, "time_%s", lac_run_stage_name (s));
-        status = lac_run_summary_add (r, key, "%.3f", r->time[s]);
-      }
+  const char *path = "";
+  int status = r->opts.timings ? lac_run_stage_timings (r) : LAC_SUCCESS;
   if (r->opts.timings && r->contact && !status)     /* parts of the stages */
     {
       if ((status = lac_run_summary_add (r, "time_refine", "%.3f",
@@ -244,11 +280,7 @@ lac_run_stage_output (lac_run *r)
     }
   if (!(b = lac_output_batch_alloc (r->out_dir)))
     return LAC_EIO;
-  if (o->vtu && (!(path = lac_output_batch_add (b, "solution.vtu"))
-                 || (status = lac_output_vtu (path, &f))))
-    goto done;
-  if (o->csv && (!(path = lac_output_batch_add (b, "nodes.csv"))
-                 || (status = lac_output_csv (path, &f))))
+  if ((status = lac_run_write_fields (r, b, &f)))
     goto done;
   if (o->csv && r->contact
       && (!(path = lac_output_batch_add (b, "contact.csv"))
@@ -257,12 +289,8 @@ lac_run_stage_output (lac_run *r)
   if (o->matrix && (!(path = lac_output_batch_add (b, "K.mtx"))
                     || (status = lac_csc_write_mm (r->K0, path))))
     goto done;
-  if (!(path = lac_output_batch_add (b, "summary.txt"))
-      || (status = lac_output_summary (path, r->nsummary,
-                                       (const char *const *) r->key,
-                                       (const char *const *) r->val)))
+  if ((status = lac_run_write_summary (r, b)))
     goto done;
-  status = lac_output_commit (b);
   snprintf (r->progress, sizeof r->progress, "%s/: %s%s%s%ssummary.txt",
             r->out_dir, o->vtu ? "solution.vtu, " : "",
             o->csv ? "nodes.csv, " : "",
