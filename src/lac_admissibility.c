@@ -22,13 +22,6 @@
 
 #define MAX_INTERIOR 32   /* interior nodes of one macro-element (hex20: 12) */
 
-/* Weight of the surface measure: 2 pi r in axisymmetric models. */
-static double
-axi_weight (lac_model model, const double *x)
-{
-  return model == LAC_AXISYMMETRIC ? 6.283185307179586476925286766559 * x[0] : 1.0;
-}
-
 /* |T^s| of slave sub-facet j by its own quadrature rule. */
 static int
 facet_measure (const lac_mesh *mesh, lac_model model, size_t cell, int face,
@@ -54,7 +47,7 @@ facet_measure (const lac_mesh *mesh, lac_model model, size_t cell, int face,
           lac_quad_free (q);
           return -st;
         }
-      *meas += q->w[p] * mp.detJ * axi_weight (model, mp.x);   /* |T^s| */
+      *meas += q->w[p] * mp.detJ * lac_model_weight (model, mp.x);   /* |T^s| */
     }
   lac_quad_free (q);
   return LAC_SUCCESS;
@@ -76,7 +69,7 @@ facet_paired (const lac_mesh *mesh, lac_model model, const lac_macro *M,
                                        P->xs + p * dimf, nodes, &mp);
       if (nn < 0)
         return -nn;
-      double w = P->w[p] * axi_weight (model, mp.x);
+      double w = P->w[p] * lac_model_weight (model, mp.x);
       *covered += w;                                  /* |T^m cap Gamma_C| */
       for (int a = 0; a < nn; a++)
         for (size_t t = 0; t < nint; t++)

@@ -41,7 +41,6 @@
 #include "lac_spaces.h"
 #include "lac_status.h"
 
-#define TWO_PI 6.283185307179586476925286766559
 
 
 /* The linear element with the same vertices as a quadratic one. */
@@ -114,13 +113,6 @@ static int
 load_degree (const lac_refelem *re, lac_model model)
 {
   return 2 * re->order + 2 + (model == LAC_AXISYMMETRIC ? 1 : 0);
-}
-
-/* The integration weight of the model at a point x: 2 pi r or 1. */
-static double
-model_weight (lac_model model, const double *x)
-{
-  return model == LAC_AXISYMMETRIC ? TWO_PI * x[0] : 1.0;
 }
 
 /* fill_B: the strain-displacement matrix at one point (file header).
@@ -215,7 +207,7 @@ cell_stiffness (const lac_mesh *m, const lac_elastic *mat, size_t c,
         LAC_ERROR (LAC_EINVAL, "cell %zu (tag %zu): r = %g <= 0 at a"
                    " quadrature point; an axisymmetric mesh must lie in r >= 0",
                    c, m->cell_tag ? m->cell_tag[c] : c, mp.x[0]);
-      double w = q->w[p] * mp.detJ * model_weight (mat->model, mp.x);
+      double w = q->w[p] * mp.detJ * lac_model_weight (mat->model, mp.x);
       fill_B (mat->model, nen, &mp, B);
       for (int i = 0; i < ns; i++)                  /* DB = D B */
         for (int j = 0; j < nc; j++)
@@ -373,7 +365,7 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
           status = lac_map_cell (re, dim, xe, q->xi + p * dim, &mp);
           if (status)
             break;
-          double w = q->w[p] * mp.detJ * model_weight (model, mp.x);
+          double w = q->w[p] * mp.detJ * lac_model_weight (model, mp.x);
           f (mp.x, ctx, fx);
           for (int a = 0; a < re->nnodes; a++)
             for (int i = 0; i < dim; i++)
@@ -437,7 +429,7 @@ surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
           status = lac_map_face (rf, dim, xe, q->xi + ip * rf->dim, &mp);
           if (status)
             break;
-          double w = q->w[ip] * mp.detJ * model_weight (model, mp.x);
+          double w = q->w[ip] * mp.detJ * lac_model_weight (model, mp.x);
           if (is_pressure)
             for (int i = 0; i < dim; i++)
               tx[i] = -p * mp.normal[i];                   /* t = -p n */

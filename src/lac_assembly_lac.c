@@ -54,8 +54,7 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
     nm = lac_contact_facet_eval (mesh, mcell, mface, xm, mn, &mm);
   if (ns < 0 || nm < 0)
     return ns < 0 ? -ns : -nm;
-  if (model == LAC_AXISYMMETRIC)
-    w *= 6.283185307179586476925286766559 * ms.x[0];                          /* 2 pi r dGamma */
+  w *= lac_model_weight (model, ms.x);                    /* 2 pi r dGamma */
   for (int a = 0; !st && a < ns; a++)
     for (int c = 0; !st && c < dim; c++)                  /* C^S */
       st = lac_triplet_add (T, (size_t) sn[a] * dim + c, i,

@@ -26,7 +26,6 @@
 #include "lac_spaces.h"
 #include "lac_status.h"
 
-#define TWO_PI 6.283185307179586476925286766559
 
 /* ---- laws --------------------------------------------------------------- */
 
@@ -212,7 +211,7 @@ point_eval (const lac_hyper *h, const lac_refelem *re, int dim,
         LAC_ERROR (LAC_EINVAL, "R = %g <= 0 at a quadrature point; an "
                    "axisymmetric mesh must lie in r >= 0", R);
       pt->hoop = 1.0 / R;
-      pt->w *= TWO_PI * R;
+      pt->w *= lac_model_weight (LAC_AXISYMMETRIC, pt->mp.x);   /* 2 pi R */
       for (int a = 0; a < re->nnodes; a++)            /* F_tt = 1 + u_r/R */
         pt->F[8] += ue[a * dim] * pt->mp.N[a] * pt->hoop;
     }

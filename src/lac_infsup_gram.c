@@ -20,7 +20,6 @@
 #include "lac_quadrature.h"
 #include "lac_status.h"
 
-#define TWO_PI 6.283185307179586476925286766559
 
 /* One rule per shape, allocated on first use. */
 typedef struct gcache
@@ -73,7 +72,7 @@ cell_gram (const lac_mesh *m, lac_model model, size_t c, double ell,
           if (!(mp.x[0] > 0))
             LAC_ERROR (LAC_EINVAL, "cell %zu (tag %zu): r = %g <= 0 at a "
                        "quadrature point", c, m->cell_tag[c], mp.x[0]);
-          w *= TWO_PI * mp.x[0];                      /* 2 pi r dr dz */
+          w *= lac_model_weight (LAC_AXISYMMETRIC, mp.x);  /* 2 pi r dr dz */
         }
       for (int a = 0; a < nen; a++)
         for (int b = a; b < nen; b++)

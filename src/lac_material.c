@@ -129,3 +129,10 @@ lac_von_mises (lac_model m, const double *s)
     q += 3.0 * s[k] * s[k];
   return sqrt (q);
 }
+
+double
+lac_model_weight (lac_model m, const double *x)
+{
+  return m == LAC_AXISYMMETRIC ? 6.283185307179586476925286766559 * x[0]
+                               : 1.0;                        /* 2 pi r */
+}

@@ -28,6 +28,11 @@ int lac_material_check (double E, double nu);
 /* D (ns x ns, row-major) with sigma = D eps. */
 int lac_material_D (lac_model m, double E, double nu, double *D);
 
+/* The weight of the model's measure at x: 2 pi r (r = x[0]) for the
+ * axisymmetric model, whose integrals are over the solid of revolution,
+ * 1 otherwise.  Every volume and surface integral of lac uses it. */
+double lac_model_weight (lac_model m, const double *x);
+
 /* von Mises stress of a Voigt stress vector of the model. */
 double lac_von_mises (lac_model m, const double *s);
 

@@ -54,8 +54,7 @@ slave_nodes (const lac_mesh *mesh, lac_model model, const lac_macro *M,
             }
           nts_node *q = &v[idx[g]];
           double wa = P->measure[j] / k;              /* lumped share */
-          if (model == LAC_AXISYMMETRIC)
-            wa *= 6.283185307179586 * q->x[0];
+          wa *= lac_model_weight (model, q->x);      /* 2 pi r */
           q->w += wa;
           for (int c = 0; c < dim; c++)
             q->n[c] += wa * mp.normal[c];

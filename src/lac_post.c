@@ -31,7 +31,6 @@
 #include "lac_spaces.h"
 #include "lac_status.h"
 
-#define TWO_PI 6.283185307179586476925286766559
 
 /* Largest extent of the bounding box of a cell (for relative tolerances). */
 static double
@@ -298,7 +297,7 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
           status = lac_map_cell (re, dim, xe, q->xi + p * dim, &mp);
           if (status)
             break;
-          double w = q->w[p] * mp.detJ * (axi ? TWO_PI * mp.x[0] : 1.0);
+          double w = q->w[p] * mp.detJ * lac_model_weight (model, mp.x);
           interp (m, c, re->nnodes, &mp, u, uh, gh);
           exact (mp.x, ctx, ue);
           for (int i = 0; i < dim; i++)

@@ -240,8 +240,7 @@ multiplier_geometry (lac_run *r, const lac_exact *e, double *l2)
                                              P->xs + p * (dim - 1), nodes, &mp);
             if (nn < 0)
               return -nn;
-            double w = P->w[p] * (r->model == LAC_AXISYMMETRIC
-                                  ? 6.283185307179586 * mp.x[0] : 1.0);
+            double w = P->w[p] * lac_model_weight (r->model, mp.x);
             lac_exact_sigma (mp.x, (void *) e, s);
             double d = normal_stress (dim, s, mp.normal) - lh;
             *l2 += w * d * d;                    /* int (lambda - lambda_h)^2 */
@@ -271,8 +270,7 @@ multiplier_means (lac_run *r, const lac_exact *e)
                                              P->xs + p * (dim - 1), nodes, &mp);
             if (nn < 0)
               return -nn;
-            double w = P->w[p] * (r->model == LAC_AXISYMMETRIC
-                                  ? 6.283185307179586 * mp.x[0] : 1.0);
+            double w = P->w[p] * lac_model_weight (r->model, mp.x);
             wsum += w;                          /* as the LAC terms: 2 pi r */
             for (int k = 0; k < dim; k++)
               xc[k] += w * mp.x[k];
