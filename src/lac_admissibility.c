@@ -24,8 +24,8 @@
 
 /* |T^s| of slave sub-facet j by its own quadrature rule. */
 static int
-facet_measure (const lac_mesh *mesh, lac_model model, size_t cell, int face,
-               double *meas)
+facet_measure (const lac_mesh *mesh, lac_model model, lac_quad_cache *qc,
+               size_t cell, int face, double *meas)
 {
   int nodes[LAC_MAX_FACE_NODES];
   lac_elem_type ft;
@@ -34,7 +34,7 @@ facet_measure (const lac_mesh *mesh, lac_model model, size_t cell, int face,
   const lac_refelem *re = lac_refelem_get (ft);
   if (nn <= 0 || !re)
     LAC_ERROR (LAC_ESANITY, "cell %zu has no face %d", cell, face);
-  lac_quad *q = lac_quad_alloc (re->shape, 2 * re->order + 2);
+  const lac_quad *q = lac_quad_cache_get (qc, re->shape, 2 * re->order + 2);
   if (!q)
     return LAC_ENOMEM;
   *meas = 0;
@@ -43,13 +43,9 @@ facet_measure (const lac_mesh *mesh, lac_model model, size_t cell, int face,
       int st = lac_contact_facet_eval (mesh, cell, face, q->xi + p * re->dim,
                                        nodes, &mp);
       if (st < 0)
-        {
-          lac_quad_free (q);
-          return -st;
-        }
+        return -st;
       *meas += q->w[p] * mp.detJ * lac_model_weight (model, mp.x);   /* |T^s| */
     }
-  lac_quad_free (q);
   return LAC_SUCCESS;
 }
 
@@ -86,7 +82,8 @@ facet_paired (const lac_mesh *mesh, lac_model model, const lac_macro *M,
  * support meets Gamma_C. */
 static int
 macro_measures (lac_contact *c, const lac_mesh *mesh, lac_model model,
-                const lac_macro *M, size_t m, const lac_pairing *P)
+                const lac_macro *M, size_t m, const lac_pairing *P,
+                lac_quad_cache *qc)
 {
   size_t inodes[MAX_INTERIOR];
   double phis[MAX_INTERIOR] = { 0 };
@@ -98,7 +95,7 @@ macro_measures (lac_contact *c, const lac_mesh *mesh, lac_model model,
   for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
     {
       double mj = 0;
-      int st = facet_measure (mesh, model, M->cell[j], M->face[j], &mj);
+      int st = facet_measure (mesh, model, qc, M->cell[j], M->face[j], &mj);
       if (!st)
         st = facet_paired (mesh, model, M, j, P, nint, inodes,
                            &c->covered[m], phis);
@@ -138,12 +135,14 @@ lac_admissibility_compute (lac_contact *c, const lac_mesh *mesh,
   if (P->nslave != M->ptr[M->n])
     LAC_ERROR (LAC_EINVAL, "the pairing has %zu slave facets, the macro-mesh "
                "%zu sub-facets", P->nslave, M->ptr[M->n]);
+  lac_quad_cache qc = { 0 };            /* the facets' rules, made once */
+  int st = LAC_SUCCESS;
   c->k = 0;
-  for (size_t m = 0; m < M->n; m++)
+  for (size_t m = 0; m < M->n && !st; m++)
     {
-      int st = macro_measures (c, mesh, model, M, m, P);
+      st = macro_measures (c, mesh, model, M, m, P, &qc);
       if (st)
-        return st;
+        break;
       c->crit[m] = c->covered[m] > 0
         ? c->phiint[m] / sqrt (c->covered[m] * c->meas[m]) : 0.0;
       c->admissible[m] = c->crit[m] >= epsilon;                /* Def. 1 */
@@ -151,5 +150,6 @@ lac_admissibility_compute (lac_contact *c, const lac_mesh *mesh,
       if (c->admissible[m])
         c->macro[c->k++] = m;
     }
-  return LAC_SUCCESS;
+  lac_quad_cache_free (&qc);
+  return st;
 }

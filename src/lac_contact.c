@@ -121,8 +121,16 @@ long
 lac_contact_mult_of_subfacet (const lac_contact *c, const lac_macro *M,
                               size_t j)
 {
-  for (size_t m = 0; m < M->n; m++)
-    if (j >= M->ptr[m] && j < M->ptr[m + 1])
-      return c->mult[m];
-  return -1;
+  size_t lo = 0, hi = M->n;             /* ptr is increasing: bisection */
+  if (j >= M->ptr[M->n])
+    return -1;
+  while (hi - lo > 1)
+    {
+      size_t mid = (lo + hi) / 2;
+      if (M->ptr[mid] <= j)
+        lo = mid;
+      else
+        hi = mid;
+    }
+  return c->mult[lo];
 }
