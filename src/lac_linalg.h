@@ -68,6 +68,13 @@ void lac_solver_free (lac_solver *s);
 /* Factorize the square matrix A.  LAC_ESING (message with the column or
  * pivot) if A is singular, or not positive definite for cholmod. */
 int lac_solver_factor (lac_solver *s, const lac_csc *A);
+/* Factorize A again when only its numbers have changed (a Newton tangent
+ * of a fixed mesh): the fill-reducing ordering and the symbolic analysis
+ * of the last factorization of s are reused if A has the same order and
+ * pattern (checked by a checksum of p and i), only the numbers are
+ * factored; otherwise, or for dense, it is lac_solver_factor.  The same
+ * checks and messages as lac_solver_factor. */
+int lac_solver_refactor (lac_solver *s, const lac_csc *A);
 /* x = A^{-1} b with the last factorization (x and b may not alias). */
 int lac_solver_solve (lac_solver *s, const double *b, double *x);
 /* Solve with nrhs right-hand sides stored column after column. */
@@ -114,6 +121,7 @@ typedef struct lac_solver_info
   double flops;          /* floating-point operations of the factorization */
   const char *method;    /* e.g. "supernodal LL'" (static string)         */
   const char *ordering;  /* fill-reducing ordering, "" for dense          */
+  int analysis_reused;   /* 1: lac_solver_refactor kept the analysis      */
 } lac_solver_info;
 
 /* Fill *info from the last successful factorization (LAC_EINVAL if none). */

@@ -75,6 +75,12 @@ lac_newton_free (lac_newton *s)
   lac_free (s);
 }
 
+void
+lac_newton_share_solver (lac_newton *s, lac_solver *so)
+{
+  s->shared = so;
+}
+
 size_t
 lac_newton_nactive (const lac_newton *s)
 {
@@ -113,6 +119,14 @@ rho_of (const lac_newton *s, size_t i)
   return s->sys->rho ? s->sys->rho[i] : 1.0;
 }
 
+/* The factorization of K on the Schur path: the shared solver if one was
+ * given (lac_newton_share_solver), the own one otherwise. */
+static lac_solver *
+k_solver (const lac_newton *s)
+{
+  return s->shared ? s->shared : s->solver;
+}
+
 /* Schur path, set-up: factorize K, U0 = K^{-1} F and the dense
  * S = C^T K^{-1} C (k x k, row-major), SCHUR_BLOCK columns at a time. */
 static int
@@ -124,14 +138,19 @@ schur_setup (lac_newton *s)
   double *B = NULL, *X = NULL;
   int status;
 
-  lac_solver_free (s->solver);
-  s->solver = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
-  if (!s->solver)
-    return LAC_ENOMEM;
-  status = lac_solver_factor (s->solver, sys->K);          /* K = L L^T */
+  if (s->shared)          /* K = L L^T, the analysis of the last K kept */
+    status = lac_solver_refactor (s->shared, sys->K);
+  else
+    {
+      lac_solver_free (s->solver);
+      s->solver = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+      if (!s->solver)
+        return LAC_ENOMEM;
+      status = lac_solver_factor (s->solver, sys->K);      /* K = L L^T */
+    }
   if (status)
     return status;
-  status = lac_solver_solve (s->solver, sys->F, U0);       /* U0 = K^{-1} F */
+  status = lac_solver_solve (k_solver (s), sys->F, U0);    /* U0 = K^{-1} F */
   if (status)
     return status;
   B = lac_malloc (n * SCHUR_BLOCK * sizeof *B);
@@ -148,7 +167,7 @@ schur_setup (lac_newton *s)
       for (size_t j = 0; j < nb; j++)                      /* B = C(:, block) */
         for (int p = sys->C->p[j0 + j]; p < sys->C->p[j0 + j + 1]; p++)
           B[j * n + sys->C->i[p]] = sys->C->x[p];
-      status = lac_solver_solve_many (s->solver, nb, B, X); /* X = K^{-1} B */
+      status = lac_solver_solve_many (k_solver (s), nb, B, X); /* X = K^-1 B */
       if (status)
         goto done;
       for (size_t i = 0; i < k; i++)                       /* S(i,block) = C_i^T X */
@@ -219,7 +238,7 @@ schur_iterate (lac_newton *s)
       for (size_t a = 0; a < m; a++)                       /* F + C_A lambda_A */
         for (int p = sys->C->p[A[a]]; p < sys->C->p[A[a] + 1]; p++)
           rhs[sys->C->i[p]] += sys->C->x[p] * s->lambda[A[a]];
-      status = lac_solver_solve (s->solver, rhs, s->U);
+      status = lac_solver_solve (k_solver (s), rhs, s->U);
     }
   lac_free (A);
   return status;

@@ -94,6 +94,8 @@ typedef struct lac_newton
   /* internals */
   const lac_contact_system *sys;
   lac_solver *solver;  /* owned: K (cholmod) or the saddle matrix          */
+  lac_solver *shared;  /* borrowed, NULL: a cholmod solver that factors K
+                          with lac_solver_refactor instead of `solver`   */
   lac_csc *Ct;         /* owned: C^T (rows of C^T = multipliers)            */
   double *work;        /* owned, scratch                                   */
   size_t changed;      /* statuses changed by the last update               */
@@ -108,6 +110,12 @@ typedef struct lac_newton
 lac_newton *lac_newton_alloc (lac_solver_kind kind, size_t n, size_t k);
 void lac_newton_free (lac_newton *s);
 
+/* Factor K with `so` (a cholmod solver the caller owns and keeps between
+ * calls) by lac_solver_refactor: a Newton loop on a fixed mesh calls
+ * lac_newton_set with a new K_T of the same pattern at every iteration,
+ * and the ordering and symbolic analysis are then made once.  Only the
+ * Schur path (kind cholmod) uses it. */
+void lac_newton_share_solver (lac_newton *s, lac_solver *so);
 /* Step 0 of [LAC Alg. 1]: borrow the system, lambda = 0, status active iff
  * G_i <= 0 (closed or penetrating at the start), factorize K (cholmod). */
 int lac_newton_set (lac_newton *s, const lac_contact_system *sys);

@@ -55,6 +55,7 @@ lac_nl_free (lac_nl *s)
   lac_free (s->g1);
   lac_free (s->g0);
   lac_csc_free (s->K);
+  lac_solver_free (s->solver);
   lac_free (s->r);
   lac_free (s->Fint);
   lac_free (s->dU);
@@ -454,15 +455,32 @@ increments (const lac_nl *s, lac_dirichlet *inc)
   return LAC_SUCCESS;
 }
 
+/* The solver kept for K_T (s->solver) if `kind` is that of the options;
+ * NULL for another kind (the umfpack fallback of a step where K_T is not
+ * SPD), which gets a solver of its own per solve. */
+static lac_solver *
+kept_solver (lac_nl *s, lac_solver_kind kind)
+{
+  if (kind != s->opts.kind)
+    return NULL;
+  if (!s->solver)
+    s->solver = lac_solver_alloc (kind);
+  return s->solver;
+}
+
 /* K_T dU = r without contact. */
 static int
 solve_plain (lac_nl *s, lac_solver_kind kind)
 {
-  lac_solver *so = lac_solver_alloc (kind);
-  int status = so ? lac_solver_factor (so, s->K) : LAC_ENOMEM;
+  lac_solver *kept = kept_solver (s, kind);
+  lac_solver *so = kept ? kept : lac_solver_alloc (kind);
+  int status = !so ? LAC_ENOMEM
+               : kept ? lac_solver_refactor (so, s->K)  /* same pattern */
+               : lac_solver_factor (so, s->K);
   if (!status)
     status = lac_solver_solve (so, s->r, s->dU);
-  lac_solver_free (so);
+  if (!kept)
+    lac_solver_free (so);
   return status;
 }
 
@@ -499,6 +517,8 @@ solve_contact (lac_nl *s, lac_solver_kind kind, int all)
         idx[a++] = i;
       }
   lac_contact_system sys = { s->K, s->r, CA, GA, NULL };
+  if (!status && kind == LAC_SOLVER_CHOLMOD)   /* Schur path: K_T kept */
+    lac_newton_share_solver (nw, kept_solver (s, kind));
   if (!status)
     status = lac_newton_set (nw, &sys);
   if (!status)

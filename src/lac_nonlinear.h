@@ -180,6 +180,9 @@ typedef struct lac_nl
   char *fixed;           /* owned, ndof: dof fixed                          */
   double *g1, *g0;       /* owned, ndof: value at t = 1 (ramped), constant  */
   lac_csc *K;            /* owned: K_T (pattern kept between iterations)    */
+  lac_solver *solver;    /* owned: the solver of K_T for opts.kind, kept
+                            between iterations: the ordering and symbolic
+                            analysis are made once (lac_solver_refactor)   */
   double *r, *Fint, *dU; /* owned, ndof                                     */
   double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
   char *active_save;

@@ -55,6 +55,11 @@ struct lac_solver
   int cc_started;
   cholmod_common cc;
   cholmod_factor *L;       /* owned by CHOLMOD                           */
+  /* the analysis kept for lac_solver_refactor (umfpack, cholmod) */
+  void *symbolic;          /* owned by UMFPACK: ordering, symbolic LU    */
+  double sym_nnz, sym_fl;  /* cholmod: nnz(L) and flops of the analysis  */
+  size_t sym_n, sym_nnz_A; /* order and entries of the analysed pattern  */
+  unsigned long long sym_hash;  /* checksum of that pattern              */
 };
 
 /* ---- names ------------------------------------------------------------ */
@@ -107,9 +112,23 @@ lac_solver_alloc (lac_solver_kind kind)
   return s;
 }
 
-/* Drop the stored factorization (the solver can factor again). */
+/* Drop the analysis kept for lac_solver_refactor. */
 static void
-release (lac_solver *s)
+forget_analysis (lac_solver *s)
+{
+  if (s->symbolic)
+    umfpack_dl_free_symbolic (&s->symbolic);
+  if (s->L)
+    cholmod_l_free_factor (&s->L, &s->cc);
+  s->sym_n = s->sym_nnz_A = 0;
+  s->sym_hash = 0;
+}
+
+/* Drop the stored factorization (the solver can factor again); with
+ * keep_analysis the ordering and symbolic analysis stay (for CHOLMOD, L
+ * keeps its structure and gets new numbers). */
+static void
+release (lac_solver *s, int keep_analysis)
 {
   lac_free (s->lu);
   lac_free (s->perm);
@@ -122,8 +141,8 @@ release (lac_solver *s)
   s->Ax = NULL;
   if (s->numeric)
     umfpack_dl_free_numeric (&s->numeric);
-  if (s->L)
-    cholmod_l_free_factor (&s->L, &s->cc);
+  if (!keep_analysis)
+    forget_analysis (s);
   s->factored = 0;
   s->n = 0;
 }
@@ -133,7 +152,7 @@ lac_solver_free (lac_solver *s)
 {
   if (!s)
     return;
-  release (s);
+  release (s, 0);
   if (s->cc_started)
     cholmod_l_finish (&s->cc);
   lac_free (s);
@@ -244,7 +263,6 @@ static int
 umf_factor (lac_solver *s, const lac_csc *A)
 {
   size_t n = A->ncol, nnz = (size_t) A->p[n];
-  void *symbolic = NULL;
   double *info = s->uinfo;
   int st;
 
@@ -261,12 +279,13 @@ umf_factor (lac_solver *s, const lac_csc *A)
       s->Ai[q] = A->i[q];
       s->Ax[q] = A->x[q];
     }
-  st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, s->Ap, s->Ai, s->Ax,
-                            &symbolic, s->control, info);
+  st = UMFPACK_OK;
+  if (!s->symbolic)                   /* ordering + symbolic LU, or kept */
+    st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, s->Ap, s->Ai, s->Ax,
+                              &s->symbolic, s->control, info);
   if (st == UMFPACK_OK)
-    st = umfpack_dl_numeric (s->Ap, s->Ai, s->Ax, symbolic, &s->numeric,
+    st = umfpack_dl_numeric (s->Ap, s->Ai, s->Ax, s->symbolic, &s->numeric,
                              s->control, info);
-  umfpack_dl_free_symbolic (&symbolic);
   if (st == UMFPACK_ERROR_out_of_memory)
     LAC_ERROR (LAC_ENOMEM, "UMFPACK ran out of memory factoring n = %zu, "
                "nnz = %zu", n, nnz);
@@ -465,7 +484,12 @@ chol_factor (lac_solver *s, const lac_csc *A)
   cc->memory_usage = 0;
   if (!(C = upper_copy (A, CHOLMOD_REAL, cc)))
     return LAC_ENOMEM;
-  s->L = cholmod_l_analyze (C, cc);
+  if (!s->L)                /* ordering + symbolic factorization, or kept */
+    {
+      s->L = cholmod_l_analyze (C, cc);
+      s->sym_nnz = cc->lnz;
+      s->sym_fl = cc->fl;
+    }
   if (s->L)
     cholmod_l_factorize (C, s->L, cc);
   cholmod_l_free_sparse (&C, cc);
@@ -481,8 +505,8 @@ chol_factor (lac_solver *s, const lac_csc *A)
                (long) ((ss_long *) s->L->Perm)[s->L->minor], s->L->minor);
   if ((status = chol_check_pivots (s)))
     return status;
-  s->info.nnz_factor = cc->lnz;
-  s->info.flops = cc->fl;
+  s->info.nnz_factor = s->sym_nnz;
+  s->info.flops = s->sym_fl;
   s->info.peak_bytes = (double) cc->memory_usage;
   s->info.method = s->L->is_super ? "supernodal LL' (CHOLMOD)"
     : s->L->is_ll ? "simplicial LL' (CHOLMOD)" : "simplicial LDL' (CHOLMOD)";
@@ -582,10 +606,26 @@ rcond_check (lac_solver *s, const lac_csc *A)
 
 /* ---- the interface ------------------------------------------------------ */
 
-int
-lac_solver_factor (lac_solver *s, const lac_csc *A)
+/* FNV-1a over the order and the pattern of A: lac_solver_refactor reuses
+ * an analysis only for the pattern it was made for. */
+static unsigned long long
+pattern_hash (const lac_csc *A)
+{
+  unsigned long long h = 1469598103934665603ull;
+  size_t nnz = (size_t) A->p[A->ncol];
+  h = (h ^ A->ncol) * 1099511628211ull;
+  for (size_t j = 0; j <= A->ncol; j++)
+    h = (h ^ (unsigned long long) A->p[j]) * 1099511628211ull;
+  for (size_t q = 0; q < nnz; q++)
+    h = (h ^ (unsigned long long) A->i[q]) * 1099511628211ull;
+  return h;
+}
+
+static int
+factor (lac_solver *s, const lac_csc *A, int reuse)
 {
   int status;
+  unsigned long long hash = 0;
   if (!s || !A)
     LAC_ERROR (LAC_EINVAL, "no solver or no matrix");
   if (A->nrow != A->ncol)
@@ -593,7 +633,13 @@ lac_solver_factor (lac_solver *s, const lac_csc *A)
                A->ncol);
   if (A->ncol == 0)
     LAC_ERROR (LAC_EINVAL, "empty matrix (n = 0)");
-  release (s);
+  if (reuse && s->kind != LAC_SOLVER_DENSE)
+    {
+      hash = pattern_hash (A);
+      reuse = s->sym_n == A->ncol && s->sym_nnz_A == (size_t) A->p[A->ncol]
+              && s->sym_hash == hash;
+    }
+  release (s, reuse);
   memset (&s->info, 0, sizeof s->info);
   s->n = A->ncol;
   s->info.n = A->ncol;
@@ -607,8 +653,27 @@ lac_solver_factor (lac_solver *s, const lac_csc *A)
   if (!status)
     status = rcond_check (s, A);
   if (status)
-    release (s);             /* keep nothing half-made; the message stays */
+    release (s, 0);          /* keep nothing half-made; the message stays */
+  else if (s->kind != LAC_SOLVER_DENSE)
+    {
+      s->sym_n = A->ncol;
+      s->sym_nnz_A = (size_t) A->p[A->ncol];
+      s->sym_hash = hash ? hash : pattern_hash (A);
+      s->info.analysis_reused = reuse;
+    }
   return status;
+}
+
+int
+lac_solver_factor (lac_solver *s, const lac_csc *A)
+{
+  return factor (s, A, 0);
+}
+
+int
+lac_solver_refactor (lac_solver *s, const lac_csc *A)
+{
+  return factor (s, A, 1);
 }
 
 static int

@@ -1,7 +1,8 @@
 /* t012: dense, UMFPACK and CHOLMOD agree (1e-10 relative) with small
  * residuals (< 1e-12) on an SPD 2D Laplacian-like matrix and, for dense and
  * UMFPACK, on a random nonsymmetric well-conditioned matrix; several
- * right-hand sides, refactoring, names, info and argument errors. */
+ * right-hand sides, refactoring (and lac_solver_refactor's reuse of the
+ * analysis), names, info and argument errors. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -175,6 +176,77 @@ test_refactor (const lac_csc *A1, const lac_csc *A2)
   free (x);
 }
 
+/* lac_solver_refactor: new numbers on the same pattern reuse the analysis
+ * (info.analysis_reused) and solve as well as a fresh factorization; a
+ * different pattern is analysed again; a singular matrix is refused and
+ * the next refactor starts afresh. */
+static void
+test_reuse (const lac_csc *A, const lac_csc *Other)
+{
+  size_t n = A->ncol, nnz = (size_t) A->p[n];
+  lac_csc *A2 = lac_csc_alloc (n, n, nnz), *Z = lac_csc_alloc (n, n, nnz);
+  double *b = malloc (n * sizeof *b), *x = malloc (n * sizeof *x);
+  double *y = malloc (n * sizeof *y);
+  memcpy (A2->p, A->p, (n + 1) * sizeof *A->p);
+  memcpy (Z->p, A->p, (n + 1) * sizeof *A->p);
+  memcpy (A2->i, A->i, nnz * sizeof *A->i);
+  memcpy (Z->i, A->i, nnz * sizeof *A->i);
+  for (size_t j = 0; j < n; j++)           /* A2 = A + diag(j % 5), SPD */
+    for (int q = A->p[j]; q < A->p[j + 1]; q++)
+      {
+        A2->x[q] = A->x[q] + ((size_t) A->i[q] == j ? (double) (j % 5) : 0);
+        Z->x[q] = 0;                        /* the zero matrix: singular */
+      }
+  for (size_t i = 0; i < n; i++)
+    b[i] = cos (0.3 * (double) i);
+  for (int kind = 1; kind < 3; kind++)
+    {
+      lac_solver *S = lac_solver_alloc ((lac_solver_kind) kind);
+      lac_solver *F = lac_solver_alloc ((lac_solver_kind) kind);
+      lac_solver_info info;
+      check_status (lac_solver_refactor (S, A), LAC_SUCCESS, "%d: first", kind);
+      lac_solver_get_info (S, &info);
+      check_int (info.analysis_reused, 0, "%d: nothing to reuse at first",
+                 kind);
+      check_status (lac_solver_refactor (S, A2), LAC_SUCCESS, "%d: same "
+                    "pattern", kind);
+      lac_solver_get_info (S, &info);
+      check_int (info.analysis_reused, 1, "%d: analysis reused", kind);
+      check_status (lac_solver_solve (S, b, x), LAC_SUCCESS, "solve");
+      lac_solver_factor (F, A2);
+      lac_solver_solve (F, b, y);
+      check_true (relres (A2, x, b) < 1e-12 && reldiff (n, x, y) < 1e-12,
+                  "%d: refactor residual %.3g, vs factor %.3g", kind,
+                  relres (A2, x, b), reldiff (n, x, y));
+      if (kind == LAC_SOLVER_UMFPACK)
+        {
+          check_status (lac_solver_refactor (S, Other), LAC_SUCCESS,
+                        "%d: other pattern", kind);
+          lac_solver_get_info (S, &info);
+          check_int (info.analysis_reused, 0, "%d: other pattern analysed",
+                     kind);
+          check_status (lac_solver_refactor (S, A), LAC_SUCCESS, "back");
+        }
+      check_status (lac_solver_refactor (S, Z), LAC_ESING, "%d: singular",
+                    kind);
+      check_status (lac_solver_solve (S, b, x), LAC_EINVAL, "%d: nothing "
+                    "stored after a failure", kind);
+      check_status (lac_solver_refactor (S, A2), LAC_SUCCESS, "%d: again",
+                    kind);
+      lac_solver_get_info (S, &info);
+      check_int (info.analysis_reused, 0, "%d: analysed afresh", kind);
+      lac_solver_solve (S, b, x);
+      check_true (reldiff (n, x, y) < 1e-12, "%d: after failure", kind);
+      lac_solver_free (S);
+      lac_solver_free (F);
+    }
+  lac_csc_free (A2);
+  lac_csc_free (Z);
+  free (b);
+  free (x);
+  free (y);
+}
+
 static void
 test_errors (const lac_csc *Ansym)
 {
@@ -267,6 +339,7 @@ main (void)
   compare ("laplacian", L, all, 3);
   compare ("nonsymmetric", N, all, 2);
   test_refactor (L, L);
+  test_reuse (L, N);
   test_errors (N);
   test_alloc_failures ();
   lac_csc_free (L);
