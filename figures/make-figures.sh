@@ -102,11 +102,13 @@ if [ -f $RING ] && want 10; then
   if [ $QUICK = 1 ]; then
     # touch, then 10 mm of crushing in 4 steps (the pipeline, not the curve)
     RING_MESHES=${RING_MESHES:-"hex8:0"}
-    RING_SET="--set dirichlet.ends.uz=-30 --set steps.start=0.6666666666666666 --set steps.n=4"
+    RING_SET="--set dirichlet.ends.uz=-30 --set steps.start=0.6666666666666666 --set steps.n=4 --set steps.vtu_every=2"
   else
     RING_MESHES=${RING_MESHES:-"hex8:0 hex20:0"}
-    RING_SET=
+    RING_SET="--set steps.vtu_every=15"
   fi
+  # steps.vtu_every: step_NNN.vtu every K-th load step and the last (61
+  # steps: 15, 30, 45, 60, 61; --quick, 5 steps: 2, 4, 5) for Figure 11
   for m in $RING_MESHES; do
     n=ring-${m%:*}-${m#*:}
     # shellcheck disable=SC2086
@@ -307,6 +309,52 @@ say "fig08 ($(since "$t") s)"
 fi
 
 # ---- Figures 10 and 11: ring on block [LAC §5.4] -------------------------
+# vtu_umax FILE...: the largest |u| of the displacement arrays of VTU files
+vtu_umax () {
+  awk '/<DataArray/ { on = /Name="displacement"/; next }
+       /<\/DataArray>/ { on = 0 }
+       on { m = $1 * $1 + $2 * $2 + $3 * $3; if (m > M) M = m }
+       END { printf "%.6g\n", sqrt(M) }' "$@"
+}
+# ring_steps_figure RUN ELEMENT: fig11-ring-ELEMENT-u-steps.png, |u| on the
+# deformed shape at the step files of $W/RUN/steps.pvd ([steps] vtu_every),
+# one picture each in $W/RUN (step_NNN-u.png), same colour range, a montage
+ring_steps_figure () {
+  rs=$1 re=$2
+  [ -f "$W/$rs/steps.pvd" ] || { fail "no $W/$rs/steps.pvd (steps.vtu_every)"; return; }
+  sel=$(sed -n 's/.*file="step_0*\([0-9][0-9]*\)\.vtu".*/\1/p' "$W/$rs/steps.pvd" \
+        | awk '{ s[++m] = $1 } END { for (i = 1; i <= m; i++)
+                 if (i == m || s[m] - s[i] >= s[1] / 2) printf "%d ", s[i] }')
+  [ -n "$sel" ] || { fail "no step file in $W/$rs/steps.pvd"; return; }
+  files=$(for s in $sel; do printf '%s/%s/step_%03d.vtu ' "$W" "$rs" "$s"; done)
+  # shellcheck disable=SC2086
+  umax=$(vtu_umax $files)
+  last=$(($(wc -l < "$W/$rs/ring_curve.csv") - 2))
+  np=0
+  for s in $sel; do
+    f=$(printf "step_%03d" "$s")
+    imp=$(awk -F, -v s="$s" '$1 == s { printf "%.1f", -$3 }' "$W/$rs/ring_curve.csv")
+    "$LAC" render "$W/$rs" --vtu "$f.vtu" --out "$W/$rs/$f-u.png" --field u --scale 1 \
+      --edges --az 30 --el 20 --units mm --range "0:$umax" \
+      --title "step $s/$last: ends moved down by $imp mm" > /dev/null 2> "$W/render.err" \
+      || { fail "lac render $rs --vtu $f.vtu: $(tail -1 "$W/render.err")"; return; }
+    np=$((np + 1))
+  done
+  cols=$(( np <= 2 ? np : np <= 4 ? 2 : 3 ))
+  rows=$(( (np + cols - 1) / cols ))
+  {
+    echo "set terminal pngcairo size $((800 * cols)),$((600 * rows + 60)) font \"DejaVu Sans,16\" enhanced"
+    echo "set output '$OUTABS/fig11-ring-$re-u-steps.png'"
+    echo "set multiplot layout $rows,$cols title \"ring on block, $re: |u| (mm) on the deformed shape (x1) at $np load steps, one colour range ($(val "$rs" dofs) dofs)\" margins 0,1,0,$(awk -v h=$((600 * rows + 60)) 'BEGIN { printf "%.4f", 1 - 60 / h }') spacing 0,0"
+    echo 'unset border; unset tics; unset key; set size ratio -1'
+    echo 'set xrange [0:799]; set yrange [0:599]'
+    for s in $sel; do
+      printf "plot '%s/step_%03d-u.png' binary filetype=png with rgbimage\n" "$rs" "$s"
+    done
+    echo 'unset multiplot'
+  } > "$W/ring-u-steps.gp"
+  gp ring-u-steps
+}
 if want 10; then
 t=$(date +%s)
 if [ ! -f $RING ]; then
@@ -367,6 +415,10 @@ else
     e=${m%:*}; l=${m#*:}; n=ring-$e-$l
     render "$n" "fig11-ring-$e-u.png" --field u --scale 1 --edges --az 30 --el 20 --units mm \
       --title "ring on block, $e: |u| at the last step (x1, $(val "$n" dofs) dofs)"
+    # |u| at several load steps: the step files of steps.pvd (a step
+    # closer than K/2 to the last is left out: 15, 30, 45, 61), drawn with
+    # one colour range, assembled by gnuplot (2 x 2)
+    ring_steps_figure "$n" "$e"
     # four steps spread over the crushing (from the first with contact)
     steps=$(awk -F, 'NR > 2 && $11 > 0 { s[++n] = $1 }
                      END { if (n == 0) exit; for (k = 1; k <= 4; k++) { i = int(1 + (n - 1) * k / 4 + 0.5); if (i < 1) i = 1; printf "%d ", s[i] } }' \

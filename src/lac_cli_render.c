@@ -1,7 +1,8 @@
 /* lac_cli_render.c -- `lac render RESULT_DIR [options]` (see the header)
  *
- * 1. read RESULT_DIR/solution.vtu back (lac_render_result_read) and
- *    RESULT_DIR/summary.txt (the title) when present;
+ * 1. read RESULT_DIR/solution.vtu back (lac_render_result_read), or the
+ *    file of --vtu (a step_NNN.vtu of a large-deformation run with [steps]
+ *    vtu_every), and RESULT_DIR/summary.txt (the title) when present;
  * 2. a field picture: the nodal field by name (lac_render_result_scalar),
  *    the mesh deformed by scale * u, lac_render_mesh;
  * 3. --contact, from RESULT_DIR/contact.csv (one row per macro-element,
@@ -46,10 +47,11 @@ enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
 const char lac_cli_render_help[] =
   "usage: lac render RESULT_DIR [options]   draw a result of lac run as PNG\n"
   "\n"
-  "lac render reads RESULT_DIR/solution.vtu (and summary.txt for the title)\n"
-  "and draws the mesh -- a 2D mesh, or the boundary surface of a 3D mesh\n"
-  "seen obliquely -- coloured by a nodal field (viridis colour map, colour\n"
-  "bar with ticks), without a display (OSMesa).\n"
+  "lac render reads RESULT_DIR/solution.vtu (or the --vtu file, and\n"
+  "summary.txt for the title) and draws the mesh -- a 2D mesh, or the\n"
+  "boundary surface of a 3D mesh seen obliquely -- coloured by a nodal\n"
+  "field (viridis colour map, colour bar with ticks), without a display\n"
+  "(OSMesa).\n"
   "\n"
   "options of render:\n"
   "  --field NAME      the field (von_mises): any point array of the VTU\n"
@@ -64,7 +66,13 @@ const char lac_cli_render_help[] =
   "  --edges           draw the cell edges\n"
   "  --az A, --el E    3D view: azimuth and elevation in degrees (35, 25;\n"
   "                    z up, azimuth 0 looks along +y)\n"
-  "  --range MIN:MAX   fixed colour range (default: the field's range)\n"
+  "  --range MIN:MAX   fixed colour range (default: the field's range;\n"
+  "                    the same range for several pictures compares them)\n"
+  "  --vtu FILE        read FILE instead of solution.vtu, relative to\n"
+  "                    RESULT_DIR (absolute if it starts with /): e.g. the\n"
+  "                    load step step_015.vtu of a run with [steps]\n"
+  "                    vtu_every; default --out RESULT_DIR/step_015-FIELD.png\n"
+  "                    (not with --contact: contact.csv is the last step)\n"
   "  --title TEXT      title line (default: the scene title and the scale)\n"
   "  --units TEXT      units shown with the field name over the colour bar\n"
   "  --width W, --height H   image size in pixels (800 x 600)\n"
@@ -141,6 +149,8 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
     a->title = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--units", missing)))
     a->units = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--vtu", missing)))
+    a->vtu = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--scale", missing)))
     {
       a->auto_scale = !strcmp (v, "auto");
@@ -197,6 +207,9 @@ parse_args (int argc, char **argv, render_args *a)
     }
   if (!a->dir)
     return usage_error ("no result directory given", NULL);
+  if (a->vtu && a->contact)
+    return usage_error ("--contact draws contact.csv, the last step: not "
+                        "with", "--vtu");
   return 0;
 }
 
@@ -365,6 +378,43 @@ auto_scale (const lac_mesh *m, const double *u)
   return umax > 0 ? 0.1 * sqrt (diag) / umax : 0;
 }
 
+/* The last name of a path. */
+static const char *
+base_name (const char *path)
+{
+  const char *p = strrchr (path, '/');
+  return p ? p + 1 : path;
+}
+
+/* The VTU to read: RESULT_DIR/solution.vtu, or --vtu (relative to
+ * RESULT_DIR unless absolute); the default PNG: RESULT_DIR/FIELD.png,
+ * with --vtu RESULT_DIR/STEM-FIELD.png (STEM: the VTU's name less .vtu). */
+static void
+result_paths (const render_args *a, char *vtu, size_t vlen, char *out,
+              size_t olen)
+{
+  const char *what = a->contact ? "contact"
+                     : a->field ? a->field : "von_mises";
+  if (!a->vtu)
+    snprintf (vtu, vlen, "%s/solution.vtu", a->dir);
+  else if (a->vtu[0] == '/')
+    snprintf (vtu, vlen, "%s", a->vtu);
+  else
+    snprintf (vtu, vlen, "%s/%s", a->dir, a->vtu);
+  if (a->out)
+    snprintf (out, olen, "%s", a->out);
+  else if (a->vtu)
+    {
+      const char *b = base_name (a->vtu);
+      size_t n = strlen (b);
+      if (n > 4 && !strcmp (b + n - 4, ".vtu"))
+        n -= 4;
+      snprintf (out, olen, "%s/%.*s-%s.png", a->dir, (int) n, b, what);
+    }
+  else
+    snprintf (out, olen, "%s/%s.png", a->dir, what);
+}
+
 static void
 fill_opts (const render_args *a, double scale, const char *what,
            char *title, size_t tlen, lac_render_opts *o)
@@ -382,6 +432,9 @@ fill_opts (const render_args *a, double scale, const char *what,
   o->vmin = a->vmin;
   o->vmax = a->vmax;
   lac_cli_render_scene_title (a->dir, scene, sizeof scene);
+  if (a->vtu)                                    /* name the step file */
+    snprintf (scene + strlen (scene), sizeof scene - strlen (scene),
+              ", %s", base_name (a->vtu));
   if (a->title)
     snprintf (title, tlen, "%s", a->title);
   else if (scale != 0)
@@ -505,7 +558,7 @@ lac_cli_render (int argc, char **argv)
       }
   if ((ret = parse_args (argc, argv, &a)))
     return ret;
-  snprintf (path, sizeof path, "%s/solution.vtu", a.dir);
+  result_paths (&a, path, sizeof path, out, sizeof out);
   if (lac_render_result_read (path, &res))
     {
       lac_cli_print_error (lac_error_message ());
@@ -519,11 +572,6 @@ lac_cli_render (int argc, char **argv)
       lac_render_result_free (res);
       return 0;
     }
-  if (a.out)
-    snprintf (out, sizeof out, "%s", a.out);
-  else
-    snprintf (out, sizeof out, "%s/%s.png", a.dir, a.contact ? "contact"
-              : a.field ? a.field : "von_mises");
   ret = render_result (&a, res, out);
   lac_render_result_free (res);
   if (ret)

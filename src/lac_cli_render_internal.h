@@ -11,6 +11,7 @@
 typedef struct render_args
 {
   const char *dir, *field, *out, *title, *units;
+  const char *vtu;          /* --vtu FILE, NULL: solution.vtu               */
   double scale, az, el, vmin, vmax;
   int auto_scale, edges, contact, list, width, height, fixed_range;
 } render_args;

@@ -22,7 +22,21 @@
  *             imposed displacement, the [steps] monitor node's
  *             displacement, iterations, residual, active multipliers,
  *             contact force, lambda_min), contact_steps.csv (every
- *             multiplier at every step) and summary.txt.
+ *             multiplier at every step) and summary.txt; with [steps]
+ *             vtu_every = K > 0 also step_NNN.vtu after every K-th step
+ *             and the last (NNN the 1-based step number, the fields of
+ *             solution.vtu at that step) and steps.pvd, the ParaView
+ *             collection of them with the load factor t as timestep.
+ * The step files go through the same batch as the other files (written
+ * under temporary names, renamed together at the end), so a run that
+ * fails at step 40 leaves the files of an earlier run untouched: the
+ * solve stage keeps a copy of the displacement of each step to be
+ * written (only those, only when K > 0: (n / K) * dofs numbers), and the
+ * output stage computes their Cauchy stresses (one nodal pass per file,
+ * cheap next to a load step) and writes them.  The last step's file is
+ * solution.vtu's fields, written again under its step name.  The step
+ * files do not depend on [output] vtu (asking for them is enough);
+ * --no-output writes none.
  * Loads of [load] sections are dead loads (given on the reference
  * configuration), times t.
  */
@@ -76,6 +90,9 @@ struct lac_run_nl
   nl_step *step;              /* owned, nfactor                           */
   size_t nmult, capmult;
   nl_mult *mult;              /* owned                                    */
+  size_t nkept;               /* steps before the last with a step file   */
+  size_t *kept;               /* owned, their indices j (0-based)         */
+  double *ukept;              /* owned, nkept * ndof displacements        */
 };
 
 void
@@ -89,6 +106,8 @@ lac_run_nl_free (struct lac_run_nl *nl)
   lac_free (nl->factor);
   lac_free (nl->step);
   lac_free (nl->mult);
+  lac_free (nl->kept);
+  lac_free (nl->ukept);
   lac_free (nl);
 }
 
@@ -190,6 +209,30 @@ nl_factors (lac_run *r, struct lac_run_nl *nl)
   return LAC_SUCCESS;
 }
 
+/* 1 if step j (0-based) of n gets a step_NNN.vtu: every K-th, the last. */
+static int
+step_file_wanted (size_t j, size_t n, int K)
+{
+  return K > 0 && ((j + 1) % (size_t) K == 0 || j + 1 == n);
+}
+
+/* Room for the displacements of the step files before the last one. */
+static int
+nl_kept_alloc (lac_run *r, struct lac_run_nl *nl)
+{
+  int K = r->scene->steps.vtu_every;
+  size_t n = 0;
+  for (size_t j = 0; j + 1 < nl->nfactor; j++)
+    n += (size_t) step_file_wanted (j, nl->nfactor, K);
+  if (n == 0)
+    return LAC_SUCCESS;
+  nl->kept = lac_malloc (n * sizeof *nl->kept);
+  nl->ukept = lac_malloc (n * r->ndof * sizeof *nl->ukept);
+  if (!nl->kept || !nl->ukept)
+    LAC_ERROR (LAC_ENOMEM, "displacements of %zu step files", n);
+  return LAC_SUCCESS;
+}
+
 /* The node of the [steps] monitor group. */
 static int
 nl_monitor (lac_run *r, struct lac_run_nl *nl)
@@ -222,7 +265,7 @@ nl_setup (lac_run *r)
   nl->mat.nu = r->nu;
   nl->mat.law = r->law;
   if ((status = nl_dirichlet (r, nl)) || (status = nl_factors (r, nl))
-      || (status = nl_monitor (r, nl)))
+      || (status = nl_monitor (r, nl)) || (status = nl_kept_alloc (r, nl)))
     return status;
   lac_nl_problem *p = &nl->prob;
   p->mesh = r->mesh;
@@ -351,6 +394,13 @@ lac_run_nl_solve (lac_run *r)
   record_step (nl, j, r, lac_run_now () - t0);
   if ((status = record_mults (nl, r, (int) j + 1)))
     return status;
+  if (j + 1 < nl->nfactor
+      && step_file_wanted (j, nl->nfactor, r->scene->steps.vtu_every))
+    {
+      nl->kept[nl->nkept] = j;                  /* room: nl_kept_alloc */
+      memcpy (nl->ukept + nl->nkept++ * r->ndof, nl->s->U,
+              r->ndof * sizeof *nl->ukept);
+    }
   const nl_step *q = &nl->step[j];
   char mon[80] = "";
   if (nl->monitor != SIZE_MAX)
@@ -517,6 +567,72 @@ write_mults (const lac_run *r, const char *path, int last_only)
   return LAC_SUCCESS;
 }
 
+/* step_NNN.vtu of step j (0-based): the displacement u, its Cauchy
+ * stresses in sigma, vm (the last step: those of solution.vtu). */
+static int
+write_step_vtu (const lac_run *r, lac_output_batch *b, size_t j,
+                const double *u, const double *sigma, const double *vm)
+{
+  lac_output_fields f = { r->mesh, r->model, u, NULL, sigma, vm };
+  char name[64];
+  const char *path;
+  snprintf (name, sizeof name, "step_%03zu.vtu", j + 1);
+  if (!(path = lac_output_batch_add (b, name)))
+    return LAC_ENOMEM;
+  return lac_output_vtu (path, &f);
+}
+
+/* steps.pvd: the ParaView collection of the step files, timestep = the
+ * load factor t (VTK file formats, "ParaView data (PVD)"). */
+static int
+write_pvd (const lac_run *r, const char *path)
+{
+  const struct lac_run_nl *nl = r->nl;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  fprintf (f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n");
+  for (size_t j = 0; j < nl->nfactor; j++)
+    if (step_file_wanted (j, nl->nfactor, r->scene->steps.vtu_every))
+      fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
+               "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
+  fprintf (f, "  </Collection>\n</VTKFile>\n");
+  if (fclose (f) != 0)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  return LAC_SUCCESS;
+}
+
+/* The step files ([steps] vtu_every) and steps.pvd; stresses of the kept
+ * steps as in stage post (lac_hyper_cauchy_nodal). */
+static int
+write_steps (const lac_run *r, lac_output_batch *b)
+{
+  const struct lac_run_nl *nl = r->nl;
+  size_t nn = r->mesh->nnodes;
+  double *sigma = lac_malloc (nn * (size_t) r->ns * sizeof *sigma),
+    *vm = lac_malloc (nn * sizeof *vm);
+  const char *path;
+  int status = sigma && vm ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "stresses of the step files");
+  for (size_t q = 0; q < nl->nkept && !status; q++)
+    {
+      const double *u = nl->ukept + q * r->ndof;
+      if (!(status = lac_hyper_cauchy_nodal (r->mesh, &nl->mat, u, NULL,
+                                             sigma, vm)))
+        status = write_step_vtu (r, b, nl->kept[q], u, sigma, vm);
+    }
+  if (!status)
+    status = write_step_vtu (r, b, nl->nfactor - 1, r->u, r->sigma, r->vm);
+  if (!status)
+    status = (path = lac_output_batch_add (b, "steps.pvd"))
+             ? write_pvd (r, path) : LAC_ENOMEM;
+  lac_free (sigma);
+  lac_free (vm);
+  return status;
+}
+
 static int
 nl_timings (lac_run *r)
 {
@@ -542,6 +658,7 @@ lac_run_nl_output (lac_run *r)
   const char *curve = sc->steps.curve ? sc->steps.curve : "curve.csv";
   lac_output_batch *b;
   const char *path = "";
+  char nsteps[64];
   int status = r->opts.timings ? nl_timings (r) : LAC_SUCCESS;
   if (status || r->opts.no_output)
     {
@@ -561,12 +678,17 @@ lac_run_nl_output (lac_run *r)
   if (r->macro && (!(path = lac_output_batch_add (b, "contact_steps.csv"))
                    || (status = write_mults (r, path, 0))))
     goto done;
+  if (sc->steps.vtu_every > 0 && (status = write_steps (r, b)))
+    goto done;
   if ((status = lac_run_write_summary (r, b)))
     goto done;
-  snprintf (r->progress, sizeof r->progress, "%s/: %s%s%s%ssummary.txt",
+  snprintf (nsteps, sizeof nsteps, "%zu step_NNN.vtu, steps.pvd, ",
+            r->nl->nkept + 1);
+  snprintf (r->progress, sizeof r->progress, "%s/: %s%s%s%s%ssummary.txt",
             r->out_dir, o->vtu ? "solution.vtu, " : "",
             o->csv ? "nodes.csv, " : "", curve,
-            r->macro ? ", contact.csv, contact_steps.csv, " : ", ");
+            r->macro ? ", contact.csv, contact_steps.csv, " : ", ",
+            sc->steps.vtu_every > 0 ? nsteps : "");
 done:
   if (!status && !path)
     status = LAC_ENOMEM;

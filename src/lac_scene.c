@@ -134,6 +134,7 @@ static const key_spec steps_keys[] = {
   INT (lac_scene_steps, maxit, 1, 1000, "an integer in 1..1000"),
   STR (lac_scene_steps, monitor),
   STR (lac_scene_steps, curve),
+  INT (lac_scene_steps, vtu_every, 0, 100000, "an integer in 0..100000"),
 };
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),

@@ -104,6 +104,8 @@
  *     monitor              node group (a physical point): its displacement
  *                          at every step goes to the curve CSV  (none)
  *     curve                file name of the per-step CSV    curve.csv
+ *     vtu_every            K >= 0: step_NNN.vtu after every K-th step and
+ *                          the last, listed in steps.pvd (0: none)   0
  *   [output]
  *     vtu                  yes | no: solution.vtu     yes
  *     csv                  yes | no: nodes.csv        yes
@@ -244,6 +246,7 @@ typedef struct lac_scene_steps           /* [steps] */
   int maxit;            /* Newton iterations per step                      */
   char *monitor;        /* owned, NULL: node group followed step by step   */
   char *curve;          /* owned, NULL: file name of the per-step CSV      */
+  int vtu_every;        /* K > 0: step_NNN.vtu every K steps, 0: none      */
 } lac_scene_steps;
 
 typedef struct lac_scene_output          /* [output] */
