@@ -332,6 +332,19 @@ vtu_umax () {
        on { m = $1 * $1 + $2 * $2 + $3 * $3; if (m > M) M = m }
        END { printf "%.6g\n", sqrt(M) }' "$@"
 }
+# vtu_box FILE...: the bounding box x0:x1:y0:y1:z0:z1 of the deformed
+# configurations x + u of VTU files (one point per line, as lac writes them)
+vtu_box () {
+  awk '/<DataArray/ { c = /Name="coordinates"/; d = /Name="displacement"/
+                      if (FNR == 1 || c) n = 0; m = 0; next }
+       /<\/DataArray>/ { c = d = 0 }
+       c { x[++n] = $1; y[n] = $2; z[n] = $3 }
+       d { m++; X = x[m] + $1; Y = y[m] + $2; Z = z[m] + $3
+           if (!seen++) { a = b = X; e = f = Y; g = h = Z }
+           if (X < a) a = X; if (X > b) b = X; if (Y < e) e = Y; if (Y > f) f = Y
+           if (Z < g) g = Z; if (Z > h) h = Z }
+       END { printf "%.6g:%.6g:%.6g:%.6g:%.6g:%.6g\n", a, b, e, f, g, h }' "$@"
+}
 # ring_steps_figure RUN ELEMENT: fig11-ring-ELEMENT-u-steps.png, |u| on the
 # deformed shape at the step files of $W/RUN/steps.pvd ([steps] vtu_every),
 # one picture each in $W/RUN (step_NNN-u.png), same colour range, a montage
@@ -345,13 +358,15 @@ ring_steps_figure () {
   files=$(for s in $sel; do printf '%s/%s/step_%03d.vtu ' "$W" "$rs" "$s"; done)
   # shellcheck disable=SC2086
   umax=$(vtu_umax $files)
+  # shellcheck disable=SC2086
+  box=$(vtu_box $files)
   last=$(($(wc -l < "$W/$rs/ring_curve.csv") - 2))
   np=0
   for s in $sel; do
     f=$(printf "step_%03d" "$s")
     imp=$(awk -F, -v s="$s" '$1 == s { printf "%.1f", -$3 }' "$W/$rs/ring_curve.csv")
     "$LAC" render "$W/$rs" --vtu "$f.vtu" --out "$W/$rs/$f-u.png" --field u --scale 1 \
-      --edges --az 30 --el 20 --units mm --range "0:$umax" \
+      --edges --az 30 --el 20 --units mm --range "0:$umax" --box "$box" \
       --title "step $s/$last: ends moved down by $imp mm" > /dev/null 2> "$W/render.err" \
       || { fail "lac render $rs --vtu $f.vtu: $(tail -1 "$W/render.err")"; return; }
     np=$((np + 1))

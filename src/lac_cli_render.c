@@ -68,6 +68,9 @@ const char lac_cli_render_help[] =
   "                    z up, azimuth 0 looks along +y)\n"
   "  --range MIN:MAX   fixed colour range (default: the field's range;\n"
   "                    the same range for several pictures compares them)\n"
+  "  --box X0:X1:Y0:Y1[:Z0:Z1]  frame this box (model coordinates) with the\n"
+  "                    drawing: the same box for several pictures (load\n"
+  "                    steps) gives them one scale and position\n"
   "  --vtu FILE        read FILE instead of solution.vtu, relative to\n"
   "                    RESULT_DIR (absolute if it starts with /): e.g. the\n"
   "                    load step step_015.vtu of a run with [steps]\n"
@@ -110,6 +113,23 @@ to_double (const char *s, double *v)
   errno = 0;
   *v = strtod (s, &e);
   return e != s && *e == '\0' && errno == 0 && isfinite (*v);
+}
+
+/* --box X0:X1:Y0:Y1[:Z0:Z1] into a->box; 1 if malformed (4 or 6 numbers,
+ * each lower bound below its upper one; 2D boxes get z = 0:0). */
+static int
+parse_box (const char *v, render_args *a)
+{
+  char buf[256], *save = NULL, *tok;
+  int n = 0;
+  snprintf (buf, sizeof buf, "%s", v);
+  memset (a->box, 0, sizeof a->box);
+  for (tok = strtok_r (buf, ":", &save); tok; tok = strtok_r (NULL, ":", &save))
+    if (n == 6 || !to_double (tok, &a->box[n++]))
+      return 1;
+  a->fixed_box = 1;
+  return !(n == 4 || n == 6) || !(a->box[1] > a->box[0])
+         || !(a->box[3] > a->box[2]) || (n == 6 && !(a->box[5] > a->box[4]));
 }
 
 /* The numeric options; 1 if argv[*k] was one, -1 on a bad value. */
@@ -156,6 +176,8 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
       a->auto_scale = !strcmp (v, "auto");
       *bad = !a->auto_scale && !to_double (v, &a->scale);
     }
+  else if ((v = lac_cli_option_value (argc, argv, k, "--box", missing)))
+    *bad = parse_box (v, a);
   else if ((v = lac_cli_option_value (argc, argv, k, "--range", missing)))
     {
       char lo[64];
@@ -431,6 +453,12 @@ fill_opts (const render_args *a, double scale, const char *what,
   o->fixed_range = a->fixed_range;
   o->vmin = a->vmin;
   o->vmax = a->vmax;
+  o->fixed_box = a->fixed_box;
+  for (int d = 0; d < 3; d++)
+    {
+      o->box_lo[d] = a->box[2 * d];
+      o->box_hi[d] = a->box[2 * d + 1];
+    }
   lac_cli_render_scene_title (a->dir, scene, sizeof scene);
   if (a->vtu)                                    /* name the step file */
     snprintf (scene + strlen (scene), sizeof scene - strlen (scene),

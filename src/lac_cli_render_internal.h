@@ -12,6 +12,8 @@ typedef struct render_args
 {
   const char *dir, *field, *out, *title, *units;
   const char *vtu;          /* --vtu FILE, NULL: solution.vtu               */
+  int fixed_box;            /* --box given                                  */
+  double box[6];            /* --box: x0 x1 y0 y1 z0 z1                      */
   double scale, az, el, vmin, vmax;
   int auto_scale, edges, contact, list, width, height, fixed_range;
 } render_args;

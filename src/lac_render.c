@@ -183,6 +183,22 @@ make_layout (const lac_render_opts *o, int has_field, double vmin,
   L->y0 = top + line;
 }
 
+/* With o->fixed_box, the eight corners of the box join the bounding box
+ * (2D: the four corners of its z = 0 face). */
+static int
+bbox_box (const view *V, const lac_render_opts *o, double *lo, double *hi)
+{
+  double c[24];
+  int nc = V->dim == 3 ? 8 : 4;
+  if (!o->fixed_box)
+    return LAC_SUCCESS;
+  for (int k = 0; k < nc; k++)
+    for (int d = 0; d < 3; d++)
+      c[3 * k + d] = d == 2 && V->dim != 3 ? 0.0
+                     : (k >> d) & 1 ? o->box_hi[d] : o->box_lo[d];
+  return bbox_points (V, c, (size_t) nc, lo, hi);
+}
+
 /* Fit the bounding box [lo, hi] into the picture area. */
 static void
 fit_view (view *V, const layout *L, const lac_render_opts *o,
@@ -458,7 +474,8 @@ render_geom (const lac_render_geom *g, const lac_render_opts *o,
   if ((status = bbox_points (&V, g->body.x, 3 * g->body.n, lo, hi))
       || (status = bbox_points (&V, g->overlay.x, 3 * g->overlay.n, lo, hi))
       || (status = bbox_points (&V, g->edges.x, 2 * g->edges.n, lo, hi))
-      || (status = bbox_points (&V, g->thick.x, 2 * g->thick.n, lo, hi)))
+      || (status = bbox_points (&V, g->thick.x, 2 * g->thick.n, lo, hi))
+      || (status = bbox_box (&V, o, lo, hi)))
     return status;
   if (!(lo[0] <= hi[0]))
     LAC_ERROR (LAC_EINVAL, "nothing to draw (no cell, face or point)");

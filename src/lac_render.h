@@ -51,6 +51,11 @@ typedef struct lac_render_opts
   const char *units;         /* borrowed: "(units)" after the label, or NULL */
   int fixed_range;           /* 1: colours span [vmin, vmax]; 0: the data's */
   double vmin, vmax;
+  int fixed_box;             /* 1: the camera frames the box [box_lo, box_hi]
+                                (model coordinates, 2D: z ignored) with the
+                                drawing: one box for several pictures gives
+                                them one scale and position             */
+  double box_lo[3], box_hi[3];
   int colorbar;              /* 1: draw the colour bar when there is a field */
   int subdiv;                /* sub-segments per edge of a quadratic face (4) */
   int supersample;           /* anti-aliasing factor 1..4 (2)               */

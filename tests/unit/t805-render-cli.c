@@ -6,7 +6,8 @@
  * contact.csv files; lac_cli_render draws the fields and the contact views
  * (2D through gnuplot when it is installed: the macro-elements come out
  * ordered along the arc from the equator, each spanning its length), lists
- * the fields, and rejects bad command lines (exit status 2) and bad
+ * the fields, frames a given --box, and rejects bad command lines (exit
+ * status 2) and bad
  * results (1).  Its stdout and stderr go to /dev/null.
  */
 #include <fcntl.h>
@@ -223,6 +224,53 @@ test_2d (void)
   lac_mesh_free (m);
 }
 
+/* Drawn fraction of the left 3/4 of DIR/u.png (the colour bar is right). */
+static double
+drawn_u (const char *dir, unsigned char **img)
+{
+  char png[600];
+  int w = 0, h = 0;
+  double f;
+  snprintf (png, sizeof png, "%s/u.png", dir);
+  *img = t8_read_png (png, &w, &h);
+  if (!*img)
+    return -1;
+  f = t8_frac_drawn (*img, w, 0, 3 * w / 4, 40, h);
+  return f;
+}
+
+/* --box: the box of the mesh itself changes nothing (byte for byte); a
+ * box 3 times larger frames the mesh smaller (area ~1/9); malformed boxes
+ * are usage errors. */
+static void
+test_box (const char *dir)
+{
+  unsigned char *a = NULL, *b = NULL, *c = NULL;
+  double f0, f1, f2;
+  check_int (cli (dir, "--field", "u", NULL, NULL, NULL), 0, "u");
+  f0 = drawn_u (dir, &a);
+  check_int (cli (dir, "--field", "u", "--box", "0:2:0:2:0:1", NULL), 0,
+             "own box");
+  f1 = drawn_u (dir, &b);
+  check_int (cli (dir, "--field", "u", "--box", "-2:4:-2:4:-1:2", NULL), 0,
+             "larger box");
+  f2 = drawn_u (dir, &c);
+  check_true (a && b && !memcmp (a, b, 800 * 600 * 4), "the mesh's own box "
+              "changes no pixel");
+  check_true (f0 > 0.1 && f2 > 0.005 && f2 < 0.2 * f0, "framed smaller: "
+              "%.3f of the picture drawn, %.3f with a 3x box", f0, f2);
+  check_true (fabs (f1 - f0) < 1e-12, "own box %.3f vs %.3f", f1, f0);
+  check_int (cli (dir, "--box", "1:0:0:1", NULL, NULL, NULL), 2, "x0 > x1");
+  check_int (cli (dir, "--box", "0:1:0", NULL, NULL, NULL), 2, "3 numbers");
+  check_int (cli (dir, "--box", "0:1:0:1:0:1:5", NULL, NULL, NULL), 2,
+             "7 numbers");
+  check_int (cli (dir, "--box", "0:1:a:1", NULL, NULL, NULL), 2, "not a "
+             "number");
+  free (a);
+  free (b);
+  free (c);
+}
+
 static void
 test_3d (void)
 {
@@ -246,6 +294,7 @@ test_3d (void)
              "3D |u|");
   snprintf (png, sizeof png, "%s/u.png", dir);
   check_true (png_size (png, &w, &h), "%s", png);
+  test_box (dir);
   write_file (dir, "contact.csv", "macro,x,y\n");
   check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 1,
              "contact.csv without the columns");
