@@ -413,7 +413,7 @@ else
       echo "$GPTERM" | sed "s/size 900,620/size $((700 * nl + 200)),620/"
       echo "set output '$OUTABS/fig10-ring-center-displacement.png'"
       echo "set multiplot layout 1,$nl title \"ring on block: vertical displacement of the middle of the half-ring (inner bottom point)\" font \",14\""
-      echo 'set grid; set key bottom left'
+      echo 'set grid; set key bottom left; set yrange [-30:0]'
       echo 'set xlabel "imposed displacement of the ring'"'"'s ends (mm, downwards)"'
       echo 'set ylabel "displacement of the middle of the ring, u_z (mm)"'
       for l in $levels; do

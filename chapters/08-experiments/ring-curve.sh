@@ -13,7 +13,7 @@
 # $OUT/ring-ELEMENT-LEVEL/ (OUT = out/ring-curve); each has ring_curve.csv
 # (the curve), contact_steps.csv (the pressure of every step) and
 # solution.vtu.  B is the build directory (build).  The fine hex20 and
-# hex27 runs take hours: they are for `make figures`, not CI.
+# hex27 runs take one to two hours each on 2 cores: not for CI.
 set -e
 B=${B:-build}
 OUT=${OUT:-out/ring-curve}
