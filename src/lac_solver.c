@@ -33,9 +33,8 @@
 #include <cholmod.h>
 #include <umfpack.h>
 #include "lac_mem.h"
+#include "lac_solver_internal.h"
 #include "lac_status.h"
-
-typedef SuiteSparse_long ss_long;
 
 struct lac_solver
 {
@@ -363,8 +362,8 @@ check_symmetric (const lac_csc *A)
 }
 
 /* Upper triangle of A as a CHOLMOD matrix with stype = 1. */
-static cholmod_sparse *
-upper_copy (const lac_csc *A, int xtype, cholmod_common *cc)
+cholmod_sparse *
+lac_solver_upper_copy (const lac_csc *A, int xtype, cholmod_common *cc)
 {
   size_t n = A->ncol, nz = 0;
   cholmod_sparse *C;
@@ -460,8 +459,8 @@ chol_check_pivots (lac_solver *s)
   return LAC_SUCCESS;
 }
 
-static const char *
-chol_ordering (int ord)
+const char *
+lac_solver_chol_ordering (int ord)
 {
   switch (ord)
     {
@@ -482,7 +481,7 @@ chol_factor (lac_solver *s, const lac_csc *A)
   if (status)
     return status;
   cc->memory_usage = 0;
-  if (!(C = upper_copy (A, CHOLMOD_REAL, cc)))
+  if (!(C = lac_solver_upper_copy (A, CHOLMOD_REAL, cc)))
     return LAC_ENOMEM;
   if (!s->L)                /* ordering + symbolic factorization, or kept */
     {
@@ -510,7 +509,7 @@ chol_factor (lac_solver *s, const lac_csc *A)
   s->info.peak_bytes = (double) cc->memory_usage;
   s->info.method = s->L->is_super ? "supernodal LL' (CHOLMOD)"
     : s->L->is_ll ? "simplicial LL' (CHOLMOD)" : "simplicial LDL' (CHOLMOD)";
-  s->info.ordering = chol_ordering (s->L->ordering);
+  s->info.ordering = lac_solver_chol_ordering (s->L->ordering);
   return LAC_SUCCESS;
 }
 
@@ -703,108 +702,6 @@ int
 lac_solver_solve (lac_solver *s, const double *b, double *x)
 {
   return lac_solver_solve_many (s, 1, b, x);
-}
-
-/* Symbolic analyses for lac_solver_estimate. */
-static int
-umf_estimate (const lac_csc *A, lac_solver_info *e)
-{
-  size_t n = A->ncol, nnz = (size_t) A->p[n];
-  ss_long *Ap = lac_malloc ((n + 1) * sizeof *Ap);
-  ss_long *Ai = lac_malloc (nnz * sizeof *Ai);
-  double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-  void *symbolic = NULL;
-  int st = UMFPACK_ERROR_out_of_memory;
-  if (Ap && Ai)
-    {
-      for (size_t j = 0; j <= n; j++)
-        Ap[j] = A->p[j];
-      for (size_t q = 0; q < nnz; q++)
-        Ai[q] = A->i[q];
-      umfpack_dl_defaults (control);
-      st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, Ap, Ai, NULL,
-                                &symbolic, control, info);
-      umfpack_dl_free_symbolic (&symbolic);
-    }
-  lac_free (Ap);
-  lac_free (Ai);
-  if (st != UMFPACK_OK)
-    LAC_ERROR (st == UMFPACK_ERROR_out_of_memory ? LAC_ENOMEM : LAC_EDEP,
-               "UMFPACK symbolic analysis failed with status %d", st);
-  e->nnz_factor = info[UMFPACK_LNZ_ESTIMATE] + info[UMFPACK_UNZ_ESTIMATE]
-                  - (double) n;
-  e->flops = info[UMFPACK_FLOPS_ESTIMATE];
-  e->peak_bytes = info[UMFPACK_PEAK_MEMORY_ESTIMATE]
-                  * info[UMFPACK_SIZE_OF_UNIT];
-  e->method = "LU (UMFPACK), estimate";
-  e->ordering = "";
-  return LAC_SUCCESS;
-}
-
-static int
-chol_estimate (const lac_csc *A, lac_solver_info *e)
-{
-  cholmod_common cc;
-  cholmod_sparse *C;
-  cholmod_factor *L = NULL;
-  int status = LAC_SUCCESS;
-  if (!cholmod_l_start (&cc))
-    LAC_ERROR (LAC_EDEP, "cholmod_l_start failed");
-  cc.print = 0;
-  C = upper_copy (A, CHOLMOD_PATTERN, &cc);
-  if (C)
-    L = cholmod_l_analyze (C, &cc);
-  if (!C)
-    status = LAC_ENOMEM;
-  else if (!L)
-    status = LAC_ERRMSG (cc.status == CHOLMOD_OUT_OF_MEMORY ? LAC_ENOMEM
-                         : LAC_EDEP, "CHOLMOD analyze failed with status %d",
-                         cc.status);
-  else
-    {
-      double xs = L->is_super ? (double) L->xsize : cc.lnz;
-      e->nnz_factor = cc.lnz;
-      e->flops = cc.fl;
-      e->peak_bytes = 8.0 * (xs + (double) (L->is_super ? L->ssize : 0));
-      e->method = L->is_super ? "supernodal LL' (CHOLMOD), estimate"
-                              : "simplicial (CHOLMOD), estimate";
-      e->ordering = chol_ordering (L->ordering);
-    }
-  cholmod_l_free_factor (&L, &cc);
-  cholmod_l_free_sparse (&C, &cc);
-  cholmod_l_finish (&cc);
-  return status;
-}
-
-int
-lac_solver_estimate (lac_solver_kind kind, const lac_csc *A,
-                     lac_solver_info *info)
-{
-  double n;
-  if (!A || !info)
-    LAC_ERROR (LAC_EINVAL, "no matrix or no info");
-  if (A->nrow != A->ncol || A->ncol == 0)
-    LAC_ERROR (LAC_EBADLEN, "matrix is %zu x %zu, not square and non-empty",
-               A->nrow, A->ncol);
-  memset (info, 0, sizeof *info);
-  info->n = A->ncol;
-  n = (double) A->ncol;
-  switch (kind)
-    {
-    case LAC_SOLVER_DENSE:
-      info->nnz_factor = n * n;
-      info->peak_bytes = 8 * n * n;
-      info->flops = 2.0 / 3.0 * n * n * n;
-      info->method = "LU, partial pivoting (GSL), estimate";
-      info->ordering = "";
-      return LAC_SUCCESS;
-    case LAC_SOLVER_UMFPACK:
-      return umf_estimate (A, info);
-    case LAC_SOLVER_CHOLMOD:
-      return chol_estimate (A, info);
-    default:
-      LAC_ERROR (LAC_EINVAL, "unknown solver kind %d", (int) kind);
-    }
 }
 
 int
