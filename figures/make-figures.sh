@@ -325,25 +325,20 @@ say "fig08 ($(since "$t") s)"
 fi
 
 # ---- Figures 10 and 11: ring on block [LAC §5.4] -------------------------
-# vtu_umax FILE...: the largest |u| of the displacement arrays of VTU files
-vtu_umax () {
-  awk '/<DataArray/ { on = /Name="displacement"/; next }
-       /<\/DataArray>/ { on = 0 }
-       on { m = $1 * $1 + $2 * $2 + $3 * $3; if (m > M) M = m }
-       END { printf "%.6g\n", sqrt(M) }' "$@"
-}
-# vtu_box FILE...: the bounding box x0:x1:y0:y1:z0:z1 of the deformed
-# configurations x + u of VTU files (one point per line, as lac writes them)
-vtu_box () {
+# vtu_extent FILE...: "UMAX X0:X1:Y0:Y1:Z0:Z1", the largest |u| and the
+# bounding box of the deformed configurations x + u of VTU files, in one
+# pass (one point per line, as lac writes them)
+vtu_extent () {
   awk '/<DataArray/ { c = /Name="coordinates"/; d = /Name="displacement"/
                       if (FNR == 1 || c) n = 0; m = 0; next }
        /<\/DataArray>/ { c = d = 0 }
        c { x[++n] = $1; y[n] = $2; z[n] = $3 }
        d { m++; X = x[m] + $1; Y = y[m] + $2; Z = z[m] + $3
+           u = $1 * $1 + $2 * $2 + $3 * $3; if (u > U) U = u
            if (!seen++) { a = b = X; e = f = Y; g = h = Z }
            if (X < a) a = X; if (X > b) b = X; if (Y < e) e = Y; if (Y > f) f = Y
            if (Z < g) g = Z; if (Z > h) h = Z }
-       END { printf "%.6g:%.6g:%.6g:%.6g:%.6g:%.6g\n", a, b, e, f, g, h }' "$@"
+       END { printf "%.6g %.6g:%.6g:%.6g:%.6g:%.6g:%.6g\n", sqrt(U), a, b, e, f, g, h }' "$@"
 }
 # ring_steps_figure RUN ELEMENT: fig11-ring-ELEMENT-u-steps.png, |u| on the
 # deformed shape at the step files of $W/RUN/steps.pvd ([steps] vtu_every),
@@ -357,9 +352,8 @@ ring_steps_figure () {
   [ -n "$sel" ] || { fail "no step file in $W/$rs/steps.pvd"; return; }
   files=$(for s in $sel; do printf '%s/%s/step_%03d.vtu ' "$W" "$rs" "$s"; done)
   # shellcheck disable=SC2086
-  umax=$(vtu_umax $files)
-  # shellcheck disable=SC2086
-  box=$(vtu_box $files)
+  ext=$(vtu_extent $files)
+  umax=${ext% *} box=${ext#* }
   last=$(($(wc -l < "$W/$rs/ring_curve.csv") - 2))
   np=0
   for s in $sel; do
