@@ -25,9 +25,15 @@ DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libinih-dev gnuplot-nox
 
 B        ?= build
-LIBSRC   := $(filter-out src/main.c,$(wildcard src/*.c))
+# The library, folder by folder in the order data flows (src/README.md);
+# the command line (src/cli) is outside it.
+LAYERS   := base linalg fem contact solve io render run
+LIBSRC   := $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c))
 LIBOBJ   := $(LIBSRC:src/%.c=$(B)/src/%.o)
 LIB      := $(B)/liblac.a
+CLISRC   := $(filter-out src/cli/main.c,$(wildcard src/cli/*.c))
+CLIOBJ   := $(CLISRC:src/%.c=$(B)/src/%.o)
+CLILIB   := $(B)/liblac-cli.a
 UNITSRC  := $(sort $(wildcard tests/unit/t*.c))
 UNIT     := $(UNITSRC:tests/unit/%.c=$(B)/tests/%)
 EXSRC    := $(wildcard chapters/[0-9][0-9]-*/example.c)
@@ -48,17 +54,19 @@ $(B)/.deps-ok:
 # ---- build ---------------------------------------------------------------
 $(LIB): $(LIBOBJ)
 	$(AR) rcs $@ $^
+$(CLILIB): $(CLIOBJ)
+	$(AR) rcs $@ $^
 $(B)/src/%.o: src/%.c | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -c $< -o $@
-$(B)/lac: src/main.c $(LIB)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+$(B)/lac: src/cli/main.c $(CLILIB) $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/check.o: tests/check.c tests/check.h | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) -c $< -o $@
-$(B)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(B)/tests/check.o $(LIB)
+$(B)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(B)/tests/check.o $(CLILIB) $(LIB)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(B)/tests/check.o $(LIB) $(LDLIBS) -o $@
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(B)/tests/check.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/numcmp: tests/numcmp.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
@@ -72,7 +80,7 @@ $(B)/bench/%: bench/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
--include $(LIBOBJ:.o=.d)
+-include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d)
 
 # ---- tests ---------------------------------------------------------------
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)

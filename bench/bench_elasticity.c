@@ -41,10 +41,10 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#include "lac_assembly.h"
-#include "lac_linalg.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "linalg/lac_linalg.h"
+#include "fem/lac_mesh.h"
+#include "base/lac_status.h"
 
 /* UMFPACK is not run on 3D cubes above this many dofs, for time: its LU of
  * a 3D stiffness has 3-3.5 times the entries of CHOLMOD's factor and

@@ -28,8 +28,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 #include "unit/t6-pairing-mesh.h"
 
 static double

@@ -37,10 +37,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "lac_render.h"
-#include "lac_run.h"
-#include "lac_scene.h"
-#include "lac_status.h"
+#include "render/lac_render.h"
+#include "run/lac_run.h"
+#include "io/lac_scene.h"
+#include "base/lac_status.h"
 
 #define MAX_SET 64
 #define MAX_DRAW 16

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "lac_status.h"
+#include "base/lac_status.h"
 
 static int nfail, npass;
 

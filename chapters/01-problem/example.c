@@ -24,11 +24,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lac_assembly.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_post.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "fem/lac_post.h"
+#include "base/lac_status.h"
 
 /* Stop on a failed library call with its stored one-line message. */
 static void

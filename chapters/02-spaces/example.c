@@ -15,9 +15,9 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "lac_quadrature.h"
-#include "lac_spaces.h"
-#include "lac_status.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
 
 /* Round to the printed 4 digits, and turn -0 into +0, so that the output
  * does not depend on the last bits of the arithmetic. */

@@ -24,9 +24,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lac_macromesh.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "fem/lac_mesh.h"
+#include "base/lac_status.h"
 
 /* Stop on a failed library call with its stored one-line message. */
 static void

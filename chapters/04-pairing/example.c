@@ -27,9 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lac_mesh.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "fem/lac_mesh.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 
 #define PI 3.14159265358979323846
 

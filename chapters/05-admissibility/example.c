@@ -25,11 +25,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_mem.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "base/lac_mem.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 /* Stop on a failed library call with its stored one-line message. */
 static void

@@ -2,7 +2,7 @@
  *       previous one (lac_error_set formats before it stores). */
 #include <string.h>
 #include "check.h"
-#include "lac_status.h"
+#include "base/lac_status.h"
 
 static int
 inner (void)

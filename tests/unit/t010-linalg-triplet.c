@@ -2,9 +2,9 @@
  * against a dense reference, growth and argument errors. */
 #include <stdlib.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 enum { NR = 7, NC = 5, NADD = 400 };
 

@@ -5,8 +5,8 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_status.h"
 
 /* Read "coordinate real general" back into triplets (NULL on a bad file). */
 static lac_triplet *

@@ -7,9 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 /* 5-point Laplacian on an m x m grid (Dirichlet outside) plus 0.1 I,
  * with the unknowns in a scrambled order so that the pattern is not banded. */

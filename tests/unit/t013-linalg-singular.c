@@ -5,8 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_status.h"
 
 /* Pure-Neumann 5-point Laplacian on m x m: rows sum to zero, the
  * constants are its kernel.  shift is added to the diagonal. */

@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "fem/lac_mesh.h"
+#include "base/lac_status.h"
 
 /* A face of a cell: sorted vertices, for matching. */
 typedef struct

@@ -4,8 +4,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "fem/lac_mesh.h"
+#include "base/lac_status.h"
 
 /* Mirror images written out by hand (independent of lac_mesh.c, which
  * swaps xi and eta): node a of the mirrored cell is node mirror[a]. */

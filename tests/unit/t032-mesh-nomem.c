@@ -1,9 +1,9 @@
 /* t032: every allocation failure in box meshes, groups and gmsh reading is
  * reported as LAC_ENOMEM, leaks nothing and leaves no mesh  [LAC §2] */
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "io/lac_mesh_gmsh.h"
+#include "base/lac_status.h"
 
 typedef int (*make_fn) (lac_mesh **m);
 

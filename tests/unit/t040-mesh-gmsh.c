@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_mesh.h"
-#include "lac_status.h"
+#include "io/lac_mesh_gmsh.h"
+#include "base/lac_status.h"
 
 #define DIR "tests/meshes/"
 

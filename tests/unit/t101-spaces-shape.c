@@ -12,7 +12,7 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "lac_spaces.h"
+#include "fem/lac_spaces.h"
 
 /* A pseudo-random point inside the reference element (deterministic). */
 static double

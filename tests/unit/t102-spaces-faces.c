@@ -17,9 +17,9 @@
 #include <math.h>
 
 #include "check.h"
-#include "lac_quadrature.h"
-#include "lac_spaces.h"
-#include "lac_status.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
 
 /* Linear counterpart of a face type (its vertices only). */
 static const lac_refelem *

@@ -19,9 +19,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_quadrature.h"
-#include "lac_spaces.h"
-#include "lac_status.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
 
 static const double A[9] = { 1.1, 0.2, -0.1, -0.15, 0.9, 0.1, 0.05, -0.2, 1.2 };
 static const double b[3] = { 0.3, -0.7, 2.0 };

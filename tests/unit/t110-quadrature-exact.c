@@ -19,8 +19,8 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "lac_quadrature.h"
-#include "lac_status.h"
+#include "fem/lac_quadrature.h"
+#include "base/lac_status.h"
 
 #define DMAX 41
 

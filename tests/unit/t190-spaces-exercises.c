@@ -18,9 +18,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_quadrature.h"
-#include "lac_spaces.h"
-#include "lac_status.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
 
 /* Laplace stiffness K_ab = int grad N_a . grad N_b of a hex27 cell. */
 static void

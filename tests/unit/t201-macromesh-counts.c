@@ -20,9 +20,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_macromesh.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 /* One cell of type t with its reference nodes mapped by x = A xi + b, and
  * the facet group "s" = face f. */

@@ -18,9 +18,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_macromesh.h"
-#include "lac_quadrature.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "fem/lac_quadrature.h"
+#include "base/lac_status.h"
 
 typedef struct fkey
 {

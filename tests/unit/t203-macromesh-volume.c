@@ -22,8 +22,8 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "lac_macromesh.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "base/lac_status.h"
 
 static void
 union_group (lac_mesh *m, const char *a, const char *b)

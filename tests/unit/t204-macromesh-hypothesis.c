@@ -22,9 +22,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_macromesh.h"
-#include "lac_quadrature.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "fem/lac_quadrature.h"
+#include "base/lac_status.h"
 
 /* int_facet 1 and int_facet N_a for the facet's nodes. */
 static double

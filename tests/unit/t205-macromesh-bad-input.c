@@ -13,9 +13,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_macromesh.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "contact/lac_macromesh.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 static lac_mesh *
 box (lac_elem_type t, size_t nb)

@@ -23,8 +23,8 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "lac_contact.h"
-#include "lac_status.h"
+#include "contact/lac_contact.h"
+#include "base/lac_status.h"
 
 #define PI 3.14159265358979323846
 

@@ -12,8 +12,8 @@
  */
 #include <math.h>
 #include "check.h"
-#include "lac_contact.h"
-#include "lac_status.h"
+#include "contact/lac_contact.h"
+#include "base/lac_status.h"
 
 static void
 run (double x0, double want_int)

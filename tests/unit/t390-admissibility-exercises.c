@@ -41,10 +41,10 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 /* The example's set-up: slave block of width 50 (nup cells across) on top
  * of a master block [0, Lm] (x [0, 50]); returns the status of

@@ -21,11 +21,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_post.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "io/lac_mesh_gmsh.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "fem/lac_post.h"
+#include "base/lac_status.h"
 
 #define RA 20.0
 #define RB 40.0

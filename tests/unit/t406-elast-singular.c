@@ -5,10 +5,10 @@
 #include <math.h>
 #include <stdio.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 /* Assemble a box, fix the listed (group, component) pairs, try each solver:
  * every one must answer `want`. */

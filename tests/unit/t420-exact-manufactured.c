@@ -11,8 +11,8 @@
  */
 #include <math.h>
 #include "check.h"
-#include "lac_exact.h"
-#include "lac_status.h"
+#include "fem/lac_exact.h"
+#include "base/lac_status.h"
 
 static double
 rnd (unsigned *s)

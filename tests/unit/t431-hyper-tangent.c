@@ -17,10 +17,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_hyper.h"
-#include "lac_mem.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "fem/lac_hyper.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
 
 #define E0 300.0
 #define NU0 0.3

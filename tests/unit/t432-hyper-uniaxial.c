@@ -17,9 +17,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_hyper.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "fem/lac_hyper.h"
+#include "base/lac_status.h"
 
 #define E0 1000.0
 #define NU0 0.3

@@ -33,8 +33,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "lac_nonlinear.h"
-#include "lac_status.h"
+#include "solve/lac_nonlinear.h"
+#include "base/lac_status.h"
 
 #define DELTA 0.2
 #define NSTEPS 4

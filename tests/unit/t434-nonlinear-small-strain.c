@@ -14,9 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_nonlinear.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "solve/lac_nonlinear.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 #define DELTA 1e-5
 #define CURV (-1e-5)

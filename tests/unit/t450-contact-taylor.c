@@ -13,11 +13,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_newton.h"
-#include "lac_post.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "solve/lac_newton.h"
+#include "fem/lac_post.h"
+#include "base/lac_status.h"
 
 #define P 25.0
 

@@ -24,10 +24,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 #define LM 37.0
 

@@ -19,11 +19,12 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_post.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "io/lac_mesh_gmsh.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "fem/lac_post.h"
+#include "base/lac_status.h"
 
 /* Solve K u = F with Dirichlet data on a box or a read mesh (helper). */
 typedef struct problem

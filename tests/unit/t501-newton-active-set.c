@@ -11,9 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 enum { N = 40, KC = 6 };
 

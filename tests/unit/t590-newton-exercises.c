@@ -31,10 +31,10 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_newton.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
 
 #define E_ 2000.0
 #define NU 0.3

@@ -18,9 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lac_mesh.h"
-#include "lac_pairing.h"
-#include "lac_spaces.h"
+#include "fem/lac_mesh.h"
+#include "contact/lac_pairing.h"
+#include "fem/lac_spaces.h"
 
 /* The map of a surface: x = S(p), n = wanted outward normal at p. */
 typedef void pm_map (const double *p, double *x, double *n, const void *ctx);

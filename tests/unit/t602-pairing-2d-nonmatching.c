@@ -5,8 +5,8 @@
 #include <stdio.h>
 
 #include "check.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 #include "unit/t6-pairing-mesh.h"
 
 #define PI 3.14159265358979323846

@@ -6,8 +6,8 @@
 #include <stdio.h>
 
 #include "check.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 #include "unit/t6-pairing-mesh.h"
 
 typedef struct grid_spec

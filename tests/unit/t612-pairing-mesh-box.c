@@ -6,9 +6,9 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "lac_mesh.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "fem/lac_mesh.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 
 /* Lower block of type tl (nl cells), upper block of type tu (nu cells)
  * lifted by its height plus `gap`; slave: the lower block's top. */

@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 
 /* x(xi), the unit normal and J of a face. */
 static void

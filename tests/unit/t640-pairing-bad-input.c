@@ -7,9 +7,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 #include "unit/t6-pairing-mesh.h"
 
 /* Slave: 4 x 4 tri3 on the unit square (normal +z); master: 3 x 3 quad4

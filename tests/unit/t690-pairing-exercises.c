@@ -39,9 +39,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_mesh.h"
-#include "lac_pairing.h"
-#include "lac_status.h"
+#include "fem/lac_mesh.h"
+#include "contact/lac_pairing.h"
+#include "base/lac_status.h"
 
 #define TOL 1e-12
 #define PI 3.14159265358979323846

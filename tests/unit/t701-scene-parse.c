@@ -6,10 +6,10 @@
 #include <math.h>
 #include <string.h>
 #include "check.h"
-#include "lac_linalg.h"
-#include "lac_mem.h"
-#include "lac_scene.h"
-#include "lac_status.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "io/lac_scene.h"
+#include "base/lac_status.h"
 
 #define PATH "tests/bad/t701.scene"
 

@@ -10,9 +10,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_output.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "io/lac_output.h"
+#include "base/lac_status.h"
 
 static char dir[64];
 

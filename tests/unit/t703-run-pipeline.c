@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "lac_run.h"
-#include "lac_status.h"
+#include "run/lac_run.h"
+#include "base/lac_status.h"
 
 static const char *uniaxial =
   "[scene]\nmodel = plane_strain\n"

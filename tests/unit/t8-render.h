@@ -14,7 +14,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "lac_render.h"
+#include "render/lac_render.h"
 
 /* ${B}/tests/render/NAME, or /tmp/lac-NAME. */
 static inline const char *

@@ -9,10 +9,10 @@
  */
 #include <math.h>
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_render.h"
-#include "lac_render_internal.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "render/lac_render.h"
+#include "render/lac_render_internal.h"
+#include "base/lac_status.h"
 #include "t8-render.h"
 
 /* (x, y) in [0,1]^2 -> quarter annulus, nodes placed exactly on arcs. */

@@ -13,10 +13,10 @@
 #include <stdio.h>
 #include <string.h>
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_output.h"
-#include "lac_render.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "io/lac_output.h"
+#include "render/lac_render.h"
+#include "base/lac_status.h"
 #include "t8-render.h"
 
 typedef struct data

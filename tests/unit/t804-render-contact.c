@@ -8,9 +8,9 @@
  */
 #include <math.h>
 #include "check.h"
-#include "lac_mem.h"
-#include "lac_render.h"
-#include "lac_status.h"
+#include "base/lac_mem.h"
+#include "render/lac_render.h"
+#include "base/lac_status.h"
 #include "t8-render.h"
 
 static void

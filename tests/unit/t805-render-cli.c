@@ -18,11 +18,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "check.h"
-#include "lac_cli_render.h"
-#include "lac_mem.h"
-#include "lac_output.h"
-#include "lac_render.h"
-#include "lac_status.h"
+#include "cli/lac_cli_render.h"
+#include "base/lac_mem.h"
+#include "io/lac_output.h"
+#include "render/lac_render.h"
+#include "base/lac_status.h"
 #include "t8-render.h"
 
 static const double PI = 3.14159265358979323846;

@@ -27,9 +27,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_infsup.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_infsup.h"
+#include "base/lac_status.h"
 
 /* A CSC from a dense row-major matrix (zeros dropped). */
 static lac_csc *

@@ -19,8 +19,8 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "lac_cli_infsup.h"
-#include "lac_status.h"
+#include "cli/lac_cli_infsup.h"
+#include "base/lac_status.h"
 
 static char out[1 << 16], err[1 << 14];
 

@@ -33,13 +33,13 @@
 #include <string.h>
 #include <time.h>
 #include "check.h"
-#include "lac_assembly.h"
-#include "lac_contact.h"
-#include "lac_infsup.h"
-#include "lac_newton.h"
-#include "lac_obstacle.h"
-#include "lac_post.h"
-#include "lac_status.h"
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "contact/lac_infsup.h"
+#include "solve/lac_newton.h"
+#include "contact/lac_obstacle.h"
+#include "fem/lac_post.h"
+#include "base/lac_status.h"
 
 typedef struct hard_body
 {

@@ -26,9 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "lac_run.h"
-#include "lac_scene.h"
-#include "lac_status.h"
+#include "run/lac_run.h"
+#include "io/lac_scene.h"
+#include "base/lac_status.h"
 
 typedef struct res
 {

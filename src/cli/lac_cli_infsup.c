@@ -1,0 +1,247 @@
+/* lac_cli_infsup.c -- `lac infsup SCENE`: beta_h of a contact scene
+ *                                                          [LAC (10)]
+ *
+ * 1. read the scene with its --set overrides; refuse a scene without
+ *    [contact] (no multipliers, no inf-sup constant);
+ * 2. run the stages mesh, contact, material, assemble (lac_run_iterate);
+ * 3. A = the H1 Gram matrix (or the stiffness K with --norm energy), the
+ *    Dirichlet dofs of the run eliminated; C = the run's LAC matrix;
+ *    M = diag(h_i |T^m_i cap Gamma_C|) (lac_infsup.h);
+ * 4. beta_h = sqrt(lambda_min(C^T A^-1 C, M)), printed as "name = value"
+ *    lines (and, with --vector, the least stable multiplier pattern).
+ * This file belongs to the command line (see lac_cli_infsup.h): it prints.
+ */
+#include "cli/lac_cli.h"
+#include "cli/lac_cli_infsup.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "contact/lac_infsup.h"
+#include "base/lac_mem.h"
+#include "run/lac_run.h"
+#include "io/lac_scene.h"
+#include "base/lac_status.h"
+
+enum { EXIT_FAIL = 1, EXIT_USAGE = 2 };
+
+const char lac_cli_infsup_help[] =
+  "usage: lac infsup SCENE [options]   estimate the inf-sup constant beta_h\n"
+  "\n"
+  "Runs the stages mesh, contact, material and assemble of a scene with a\n"
+  "[contact] section, then computes the discrete inf-sup constant of the\n"
+  "LAC multipliers [LAC (10)]:\n"
+  "  beta_h^2 = min_mu (mu^T C^T A^-1 C mu) / (mu^T M mu),\n"
+  "the smallest eigenvalue of the pencil (C^T A^-1 C, M), where C is the\n"
+  "LAC matrix (one column per admissible macro-element), A the Gram matrix\n"
+  "of the displacement norm (Dirichlet dofs eliminated) and M =\n"
+  "diag(h_i |T^m_i cap Gamma_C|), h_i the diameter of macro-element i (an\n"
+  "h-weighted L2 norm, the usual stand-in for the H^-1/2 norm).\n"
+  "See chapters/09-infsup/README.md and src/contact/lac_infsup.h.\n"
+  "\n"
+  "options:\n"
+  "  --set KEY=VALUE   override a scene key (as for lac run), repeatable;\n"
+  "                    e.g. --set level=2, --set element=tri6,\n"
+  "                    --set contact.NAME.epsilon=1e-6\n"
+  "  --norm h1         A = H1 Gram matrix, per component grad-grad + mass /\n"
+  "                    ell^2, ell the diameter of the mesh (default; positive\n"
+  "                    definite even for a body held by contact alone)\n"
+  "  --norm energy     A = the stiffness K (refused if a body floats)\n"
+  "  --dense           form S = C^T A^-1 C and solve the k x k problem with\n"
+  "                    GSL (default for k <= 1000 multipliers)\n"
+  "  --sparse          shift-invert Lanczos, one saddle-point solve per step\n"
+  "                    (default above 1000 multipliers)\n"
+  "  --vector          also print the eigenvector: one line\n"
+  "                    'mu i macro h_i area_i mu_i' per multiplier\n"
+  "  --quiet           no progress lines on stderr\n"
+  "\n"
+  "stdout: 'name = value' lines: beta_h, lambda_min, lambda_2 (next\n"
+  "eigenvalue), multipliers, ndof, fixed_dofs, h_max, h_min, norm, path,\n"
+  "criterion_min (the smallest phibar sqrt(delta) of [LAC Def. 1] among the\n"
+  "multipliers, with its macro-element), iterations, residual, least_stable\n"
+  "(multiplier and macro-element where the eigenvector is largest).\n"
+  "Exit status: 0 success, 1 failure (message 'lac: ...' on stderr), 2 bad\n"
+  "command line.\n"
+  "\n"
+  "example: lac infsup chapters/08-experiments/taylor2d.scene --set level=2\n";
+
+typedef struct args
+{
+  const char *scene;
+  const char **set;            /* owned array, argc entries at most */
+  size_t nset;
+  lac_infsup_path path;
+  lac_infsup_norm norm;
+  int vector, quiet, help;
+} args;
+
+
+static int
+usage (const char *what, const char *arg)
+{
+  fprintf (stderr, "lac: infsup: %s%s%s (try lac infsup --help)\n", what,
+           arg ? " " : "", arg ? arg : "");
+  return EXIT_USAGE;
+}
+
+
+static int
+parse (int argc, char **argv, args *a)
+{
+  for (int k = 1; k < argc; k++)
+    {
+      const char *v;
+      int missing = 0;
+      if ((v = lac_cli_option_value (argc, argv, &k, "--set", &missing)))
+        a->set[a->nset++] = v;
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--norm", &missing)))
+        {
+          if (strcmp (v, "h1") && strcmp (v, "energy"))
+            return usage ("--norm: expected h1 or energy, got", v);
+          a->norm = strcmp (v, "energy") ? LAC_INFSUP_NORM_H1
+                    : LAC_INFSUP_NORM_ENERGY;
+        }
+      else if (missing)
+        return usage ("missing value after", argv[k]);
+      else if (!strcmp (argv[k], "--dense"))
+        a->path = LAC_INFSUP_DENSE;
+      else if (!strcmp (argv[k], "--sparse"))
+        a->path = LAC_INFSUP_SPARSE;
+      else if (!strcmp (argv[k], "--vector"))
+        a->vector = 1;
+      else if (!strcmp (argv[k], "--quiet"))
+        a->quiet = 1;
+      else if (!strcmp (argv[k], "--help") || !strcmp (argv[k], "-h"))
+        a->help = 1;
+      else if (argv[k][0] == '-' && argv[k][1] != '\0')
+        return usage ("unknown option", argv[k]);
+      else if (a->scene)
+        return usage ("more than one scene:", argv[k]);
+      else
+        a->scene = argv[k];
+    }
+  if (!a->scene && !a->help)
+    return usage ("no scene file given", NULL);
+  return 0;
+}
+
+/* Stages mesh .. assemble, with one progress line each. */
+static int
+run_to_assemble (lac_run *r, int quiet)
+{
+  int status = LAC_CONTINUE;
+  while (r->stage < LAC_STAGE_SOLVE && status == LAC_CONTINUE)
+    {
+      int stage = r->stage;
+      status = lac_run_iterate (r);
+      if (!quiet && status == LAC_CONTINUE)
+        fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
+                 LAC_STAGE_SOLVE + 1, lac_run_stage_name (stage),
+                 r->progress, r->time[stage]);
+    }
+  return status == LAC_CONTINUE ? LAC_SUCCESS : status;
+}
+
+/* Step 3-4: the matrices, the estimate and the printout. */
+static int
+estimate (lac_run *r, const args *a)
+{
+  const lac_contact *c = r->contact;
+  char *fixed = lac_calloc (r->ndof, 1);
+  double *h = lac_malloc ((c->k ? c->k : 1) * sizeof *h);
+  lac_csc *G = NULL, *M = NULL;
+  lac_infsup *res = NULL;
+  lac_infsup_opts o;
+  size_t nfixed;
+  int status, energy = a->norm == LAC_INFSUP_NORM_ENERGY;
+  if (!fixed || !h)
+    {
+      status = LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+      goto done;
+    }
+  nfixed = lac_infsup_fixed_dofs (r->K, fixed);        /* Dirichlet dofs */
+  if ((!energy && (status = lac_infsup_gram_h1 (r->mesh, r->model, fixed,
+                                                0.0, &G)))      /* A */
+      || (status = lac_infsup_norm_lac (r->mesh, r->macro, c, h, &M)))
+    goto done;
+  lac_infsup_opts_init (&o);
+  o.path = a->path;
+  if ((status = lac_infsup_estimate (energy ? r->K : G, c->C, M, &o, &res)))
+    goto done;
+  double hmin = HUGE_VAL, hmax = 0, cmin = HUGE_VAL;
+  size_t mcrit = 0;
+  for (size_t i = 0; i < c->k; i++)
+    {
+      hmin = fmin (hmin, h[i]), hmax = fmax (hmax, h[i]);
+      if (c->crit[c->macro[i]] < cmin)                /* [LAC Def. 1] */
+        cmin = c->crit[c->macro[i]], mcrit = c->macro[i];
+    }
+  printf ("beta_h = %.10e\n", res->beta);
+  printf ("lambda_min = %.10e\n", res->lambda_min);
+  printf ("lambda_2 = %.10e\n", res->lambda_2);
+  printf ("multipliers = %zu\n", c->k);
+  printf ("ndof = %zu\n", r->ndof);
+  printf ("fixed_dofs = %zu\n", nfixed);
+  printf ("h_max = %.6e\n", hmax);
+  printf ("h_min = %.6e\n", hmin);
+  printf ("criterion_min = %.6e (macro-element %zu)\n", cmin, mcrit);
+  printf ("norm = %s\n", energy ? "energy (A = K)" : "h1 (A = grad-grad + "
+          "mass / ell^2 per component, ell = mesh diameter)");
+  printf ("multiplier_norm = diag(h_i |T^m_i cap Gamma_C|)\n");
+  printf ("path = %s\n", lac_infsup_path_name (res->path));
+  printf ("iterations = %zu\n", res->iterations);
+  printf ("residual = %.3e\n", res->residual);
+  printf ("least_stable = %zu (macro-element %zu)\n", res->imax,
+          c->macro[res->imax]);
+  for (size_t i = 0; i < c->k && a->vector; i++)
+    printf ("mu %zu %zu %.6e %.6e %+.6e\n", i, c->macro[i], h[i], c->area[i],
+            res->mu[i]);
+done:
+  lac_infsup_free (res);
+  lac_csc_free (M);
+  lac_csc_free (G);
+  lac_free (h);
+  lac_free (fixed);
+  return status;
+}
+
+int
+lac_cli_infsup (int argc, char **argv)
+{
+  args a;
+  lac_scene *sc = NULL;
+  lac_run *r = NULL;
+  lac_run_opts ro = { NULL, 0, 1 };
+  int ret;
+  memset (&a, 0, sizeof a);
+  if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
+    return usage ("out of memory", NULL);
+  if ((ret = parse (argc, argv, &a)) || a.help)
+    {
+      if (!ret)
+        fputs (lac_cli_infsup_help, stdout);
+      lac_free (a.set);
+      return ret;
+    }
+  /* 1. The scene: it must have multipliers. */
+  ret = EXIT_FAIL;
+  if (lac_scene_read (a.scene, a.nset, a.set, &sc))
+    lac_cli_print_error (lac_error_message ());
+  else if (sc->ncontact == 0)
+    fprintf (stderr, "lac: %s: no [contact] section: the inf-sup constant "
+             "[LAC (10)] is a property of the contact multipliers; add a "
+             "[contact NAME] section with slave and master groups\n",
+             sc->path);
+  else if (!(r = lac_run_alloc (sc, &ro)))
+    lac_cli_print_error (lac_error_message ());
+  /* 2.-4. The stages up to assemble, then the estimate. */
+  else if (run_to_assemble (r, a.quiet) || estimate (r, &a))
+    lac_cli_print_error (lac_error_message ());
+  else
+    ret = fflush (stdout) == 0 ? 0 : EXIT_FAIL;
+  lac_run_free (r);
+  lac_scene_free (sc);
+  lac_free (a.set);
+  return ret;
+}

@@ -1,0 +1,612 @@
+/* lac_cli_render.c -- `lac render RESULT_DIR [options]` (see the header)
+ *
+ * 1. read RESULT_DIR/solution.vtu back (lac_render_result_read), or the
+ *    file of --vtu (a step_NNN.vtu of a large-deformation run with [steps]
+ *    vtu_every), and RESULT_DIR/summary.txt (the title) when present;
+ * 2. a field picture: the nodal field by name (lac_render_result_scalar),
+ *    the mesh deformed by scale * u, lac_render_mesh;
+ * 3. --contact, from RESULT_DIR/contact.csv (one row per macro-element,
+ *    admissible ones with their centroid):
+ *    2D: lambda (and the exact value when the run had one) and the mean gap
+ *        against the curvilinear abscissa s along Gamma_C, piecewise
+ *        constant per macro-element, drawn by gnuplot (pngcairo): the
+ *        macro-elements are ordered along the curve by walking from an end
+ *        to the nearest unvisited centroid, each spans its length
+ *        (measure, or measure / (2 pi r) in the axisymmetric model); the
+ *        data (.dat) and the script (.gp) are left next to the PNG so that
+ *        they can be edited and replotted;
+ *    3D: the mesh in light grey and, seen through it, one disc per
+ *        admissible macro-element at its centroid (moved by scale times the
+ *        displacement of the nearest node), of the macro-element's area,
+ *        coloured by lambda (contact.csv has no facets, so the slave
+ *        surface itself cannot be drawn from the result directory; the
+ *        library can, with lac_render_facets).
+ * Non-admissible macro-elements have no centroid in contact.csv and are
+ * left out of both contact views.
+ *
+ * This is command-line glue: it prints and runs gnuplot (fork, execvp);
+ * the library files do not.
+ */
+#include "cli/lac_cli.h"
+#include "cli/lac_cli_render.h"
+#include "cli/lac_cli_render_internal.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "base/lac_mem.h"
+#include "render/lac_render.h"
+#include "base/lac_status.h"
+
+enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
+
+const char lac_cli_render_help[] =
+  "usage: lac render RESULT_DIR [options]   draw a result of lac run as PNG\n"
+  "\n"
+  "lac render reads RESULT_DIR/solution.vtu (or the --vtu file, and\n"
+  "summary.txt for the title) and draws the mesh -- a 2D mesh, or the\n"
+  "boundary surface of a 3D mesh seen obliquely -- coloured by a nodal\n"
+  "field (viridis colour map, colour bar with ticks), without a display\n"
+  "(OSMesa).\n"
+  "\n"
+  "options of render:\n"
+  "  --field NAME      the field (von_mises): any point array of the VTU\n"
+  "                    (stress_xx, ...), a component or the magnitude of a\n"
+  "                    vector (displacement_x, displacement_magnitude),\n"
+  "                    radial_stress (n.sigma.n, n = x/|x|), x, y, z,\n"
+  "                    displacement_error (|u - u_exact|); aliases vm, u,\n"
+  "                    u_x, s_xx and the nodes.csv column names\n"
+  "  --list            print the available fields and exit\n"
+  "  --scale S|auto    draw the mesh at x + S u (0); auto: the largest\n"
+  "                    displacement is drawn as 10% of the mesh size\n"
+  "  --edges           draw the cell edges\n"
+  "  --az A, --el E    3D view: azimuth and elevation in degrees (35, 25;\n"
+  "                    z up, azimuth 0 looks along +y)\n"
+  "  --range MIN:MAX   fixed colour range (default: the field's range;\n"
+  "                    the same range for several pictures compares them)\n"
+  "  --box X0:X1:Y0:Y1[:Z0:Z1]  frame this box (model coordinates) with the\n"
+  "                    drawing: the same box for several pictures (load\n"
+  "                    steps) gives them one scale and position\n"
+  "  --vtu FILE        read FILE instead of solution.vtu, relative to\n"
+  "                    RESULT_DIR (absolute if it starts with /): e.g. the\n"
+  "                    load step step_015.vtu of a run with [steps]\n"
+  "                    vtu_every; default --out RESULT_DIR/step_015-FIELD.png\n"
+  "                    (not with --contact: contact.csv is the last step)\n"
+  "  --title TEXT      title line (default: the scene title and the scale)\n"
+  "  --units TEXT      units shown with the field name over the colour bar\n"
+  "  --width W, --height H   image size in pixels (800 x 600)\n"
+  "  --out FILE.png    output file (RESULT_DIR/FIELD.png, or\n"
+  "                    RESULT_DIR/contact.png with --contact)\n"
+  "  --contact         draw the contact results of RESULT_DIR/contact.csv:\n"
+  "                    in 2D the multiplier lambda (and its exact value) and\n"
+  "                    the mean gap per macro-element against the\n"
+  "                    curvilinear abscissa along Gamma_C (gnuplot; the .dat\n"
+  "                    and .gp files are kept next to the PNG); in 3D the\n"
+  "                    mesh in grey with one disc per macro-element at its\n"
+  "                    centroid, coloured by lambda\n"
+  "\n"
+  "The path of the file written is printed on stdout.  Exit status: 0\n"
+  "success, 1 failure (message 'lac: ...' on stderr), 2 bad command line.\n"
+  "\n"
+  "example: lac run chapters/01-problem/sphere-axi.scene --out out/sph\n"
+  "         lac render out/sph --field radial_stress --edges --units MPa\n";
+
+
+
+static int
+usage_error (const char *what, const char *arg)
+{
+  fprintf (stderr, "lac: render: %s%s%s (try lac render --help)\n", what,
+           arg ? " " : "", arg ? arg : "");
+  return EXIT_USAGE;
+}
+
+
+static int
+to_double (const char *s, double *v)
+{
+  char *e;
+  errno = 0;
+  *v = strtod (s, &e);
+  return e != s && *e == '\0' && errno == 0 && isfinite (*v);
+}
+
+/* --box X0:X1:Y0:Y1[:Z0:Z1] into a->box; 1 if malformed (4 or 6 numbers,
+ * each lower bound below its upper one; 2D boxes get z = 0:0). */
+static int
+parse_box (const char *v, render_args *a)
+{
+  char buf[256], *save = NULL, *tok;
+  int n = 0;
+  snprintf (buf, sizeof buf, "%s", v);
+  memset (a->box, 0, sizeof a->box);
+  for (tok = strtok_r (buf, ":", &save); tok; tok = strtok_r (NULL, ":", &save))
+    if (n == 6 || !to_double (tok, &a->box[n++]))
+      return 1;
+  a->fixed_box = 1;
+  return !(n == 4 || n == 6) || !(a->box[1] > a->box[0])
+         || !(a->box[3] > a->box[2]) || (n == 6 && !(a->box[5] > a->box[4]));
+}
+
+/* The numeric options; 1 if argv[*k] was one, -1 on a bad value. */
+static int
+numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
+{
+  static const char *const names[] = { "--az", "--el", "--width",
+                                       "--height" };
+  double *dst[2] = { &a->az, &a->el }, v;
+  const char *s;
+  for (int i = 0; i < 4; i++)
+    if ((s = lac_cli_option_value (argc, argv, k, names[i], missing)))
+      {
+        if (!to_double (s, &v))
+          return -1;
+        if (i < 2)
+          *dst[i] = v;
+        else if (v != floor (v) || v < 32 || v > 8192)
+          return -1;
+        else
+          *(i == 2 ? &a->width : &a->height) = (int) v;
+        return 1;
+      }
+  return 0;
+}
+
+static int
+parse_value_option (int argc, char **argv, int *k, render_args *a,
+                    int *missing, int *bad)
+{
+  const char *v;
+  if ((v = lac_cli_option_value (argc, argv, k, "--field", missing)))
+    a->field = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--out", missing)))
+    a->out = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--title", missing)))
+    a->title = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--units", missing)))
+    a->units = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--vtu", missing)))
+    a->vtu = v;
+  else if ((v = lac_cli_option_value (argc, argv, k, "--scale", missing)))
+    {
+      a->auto_scale = !strcmp (v, "auto");
+      *bad = !a->auto_scale && !to_double (v, &a->scale);
+    }
+  else if ((v = lac_cli_option_value (argc, argv, k, "--box", missing)))
+    *bad = parse_box (v, a);
+  else if ((v = lac_cli_option_value (argc, argv, k, "--range", missing)))
+    {
+      char lo[64];
+      const char *c = strchr (v, ':');
+      snprintf (lo, sizeof lo, "%.*s", c ? (int) (c - v) : 0, v);
+      *bad = !c || !to_double (lo, &a->vmin) || !to_double (c + 1, &a->vmax)
+             || !(a->vmax > a->vmin);
+      a->fixed_range = 1;
+    }
+  else
+    return 0;
+  return 1;
+}
+
+static int
+parse_args (int argc, char **argv, render_args *a)
+{
+  memset (a, 0, sizeof *a);
+  a->az = 35;
+  a->el = 25;
+  a->width = 800;
+  a->height = 600;
+  for (int k = 1; k < argc; k++)
+    {
+      int missing = 0, bad = 0, r = 0;
+      const char *opt = argv[k];
+      if (parse_value_option (argc, argv, &k, a, &missing, &bad)
+          || (r = numeric_option (argc, argv, &k, a, &missing)) > 0)
+        {
+          if (bad)
+            return usage_error ("bad value for", opt);
+        }
+      else if (r < 0)
+        return usage_error ("bad value for", opt);
+      else if (missing)
+        return usage_error ("missing value after", opt);
+      else if (!strcmp (opt, "--edges"))
+        a->edges = 1;
+      else if (!strcmp (opt, "--contact"))
+        a->contact = 1;
+      else if (!strcmp (opt, "--list"))
+        a->list = 1;
+      else if (opt[0] == '-' && opt[1] != '\0')
+        return usage_error ("unknown option", opt);
+      else if (a->dir)
+        return usage_error ("more than one result directory:", opt);
+      else
+        a->dir = opt;
+    }
+  if (!a->dir)
+    return usage_error ("no result directory given", NULL);
+  if (a->vtu && a->contact)
+    return usage_error ("--contact draws contact.csv, the last step: not "
+                        "with", "--vtu");
+  return 0;
+}
+
+/* ---- files of the result directory --------------------------------------- */
+
+/* The value of `key` in DIR/summary.txt ("key = value"); 0 if absent. */
+static int
+summary_value (const char *dir, const char *key, char *buf, size_t len)
+{
+  char path[4096], line[1024];
+  size_t n = strlen (key);
+  FILE *fp;
+  int found = 0;
+  snprintf (path, sizeof path, "%s/summary.txt", dir);
+  if (!(fp = fopen (path, "r")))
+    return 0;
+  while (!found && fgets (line, sizeof line, fp))
+    if (!strncmp (line, key, n) && !strncmp (line + n, " = ", 3))
+      {
+        size_t l = strcspn (line + n + 3, "\r\n");
+        l = l < len ? l : len - 1;
+        memcpy (buf, line + n + 3, l);
+        buf[l] = '\0';
+        found = 1;
+      }
+  fclose (fp);
+  return found;
+}
+
+/* The title of the run (summary.txt), or the directory's last name. */
+void
+lac_cli_render_scene_title (const char *dir, char *buf, size_t len)
+{
+  size_t n = strlen (dir);
+  const char *p;
+  if (summary_value (dir, "title", buf, len))
+    return;
+  while (n > 1 && dir[n - 1] == '/')
+    n--;
+  for (p = dir + n; p > dir && p[-1] != '/'; p--)
+    ;
+  snprintf (buf, len, "%.*s", (int) (dir + n - p), p);
+}
+
+
+static void
+rows_free (macro_rows *r)
+{
+  lac_free (r->x);
+  lac_free (r->meas);
+  lac_free (r->lam);
+  lac_free (r->lex);
+  lac_free (r->gap);
+}
+
+/* Column index of each wanted name in the CSV header line. */
+static int
+csv_columns (char *head, const char *const *want, int nwant, int *col)
+{
+  int k = 0;
+  for (int i = 0; i < nwant; i++)
+    col[i] = -1;
+  for (char *t = strtok (head, ",\r\n"); t; t = strtok (NULL, ",\r\n"), k++)
+    for (int i = 0; i < nwant; i++)
+      if (!strcmp (t, want[i]))
+        col[i] = k;
+  for (int i = 0; i < nwant; i++)
+    if (col[i] < 0 && i != 6)                /* lambda_exact: optional */
+      return i;
+  return -1;
+}
+
+static int
+rows_add (macro_rows *r, size_t *cap, const double *v)
+{
+  if (r->n == *cap)
+    {
+      size_t c = *cap ? 2 * *cap : 64;
+      double **dst[5] = { &r->x, &r->meas, &r->lam, &r->lex, &r->gap };
+      for (int i = 0; i < 5; i++)
+        {
+          double *p = lac_realloc (*dst[i], (i ? 1 : 3) * c * sizeof *p);
+          if (!p)
+            return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+          *dst[i] = p;
+        }
+      *cap = c;
+    }
+  memcpy (r->x + 3 * r->n, v, 3 * sizeof *v);
+  r->meas[r->n] = v[3];
+  r->lam[r->n] = v[5];
+  r->lex[r->n] = v[6];
+  r->gap[r->n++] = v[7];
+  return LAC_SUCCESS;
+}
+
+/* The admissible rows of DIR/contact.csv. */
+static int
+read_contact (const char *dir, macro_rows *r)
+{
+  static const char *const want[8] = { "x", "y", "z", "measure",
+                                       "admissible", "lambda",
+                                       "lambda_exact", "mean_gap" };
+  char path[4096], line[4096];
+  int col[8], miss, status = LAC_SUCCESS;
+  size_t cap = 0;
+  FILE *fp;
+  memset (r, 0, sizeof *r);
+  snprintf (path, sizeof path, "%s/contact.csv", dir);
+  if (!(fp = fopen (path, "r")))
+    LAC_ERROR (LAC_EIO, "cannot open '%s' (%s): --contact needs the "
+               "contact.csv of a run with a [contact] section", path,
+               strerror (errno));
+  if (!fgets (line, sizeof line, fp))
+    {
+      fclose (fp);
+      LAC_ERROR (LAC_EIO, "'%s' is empty", path);
+    }
+  if ((miss = csv_columns (line, want, 8, col)) >= 0)
+    {
+      fclose (fp);
+      LAC_ERROR (LAC_EIO, "'%s': no column '%s' in the header", path,
+                 want[miss]);
+    }
+  while (!status && fgets (line, sizeof line, fp))
+    {
+      double v[8] = { 0, 0, 0, 0, 0, 0, NAN, 0 };
+      int k = 0;
+      for (char *t = strtok (line, ",\r\n"); t; t = strtok (NULL, ",\r\n"),
+           k++)
+        for (int i = 0; i < 8; i++)
+          if (col[i] == k)
+            v[i] = strtod (t, NULL);
+      if (v[4] != 0)
+        status = rows_add (r, &cap, v);
+    }
+  fclose (fp);
+  if (!status && r->n == 0)
+    status = LAC_ERRMSG (LAC_EINVAL, "'%s' has no admissible "
+                         "macro-element", path);
+  return status;
+}
+
+/* ---- pictures ------------------------------------------------------------ */
+
+/* 10% of the bounding box diagonal over the largest |u|. */
+static double
+auto_scale (const lac_mesh *m, const double *u)
+{
+  double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] =
+    { -INFINITY, -INFINITY, -INFINITY }, diag = 0, umax = 0;
+  size_t d = (size_t) m->dim;
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      double s = 0;
+      for (size_t i = 0; i < d; i++)
+        {
+          lo[i] = fmin (lo[i], m->x[a * d + i]);
+          hi[i] = fmax (hi[i], m->x[a * d + i]);
+          s += u[a * d + i] * u[a * d + i];
+        }
+      umax = fmax (umax, sqrt (s));
+    }
+  for (size_t i = 0; i < d; i++)
+    diag += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  return umax > 0 ? 0.1 * sqrt (diag) / umax : 0;
+}
+
+/* The last name of a path. */
+static const char *
+base_name (const char *path)
+{
+  const char *p = strrchr (path, '/');
+  return p ? p + 1 : path;
+}
+
+/* The VTU to read: RESULT_DIR/solution.vtu, or --vtu (relative to
+ * RESULT_DIR unless absolute); the default PNG: RESULT_DIR/FIELD.png,
+ * with --vtu RESULT_DIR/STEM-FIELD.png (STEM: the VTU's name less .vtu). */
+static void
+result_paths (const render_args *a, char *vtu, size_t vlen, char *out,
+              size_t olen)
+{
+  const char *what = a->contact ? "contact"
+                     : a->field ? a->field : "von_mises";
+  if (!a->vtu)
+    snprintf (vtu, vlen, "%s/solution.vtu", a->dir);
+  else if (a->vtu[0] == '/')
+    snprintf (vtu, vlen, "%s", a->vtu);
+  else
+    snprintf (vtu, vlen, "%s/%s", a->dir, a->vtu);
+  if (a->out)
+    snprintf (out, olen, "%s", a->out);
+  else if (a->vtu)
+    {
+      const char *b = base_name (a->vtu);
+      size_t n = strlen (b);
+      if (n > 4 && !strcmp (b + n - 4, ".vtu"))
+        n -= 4;
+      snprintf (out, olen, "%s/%.*s-%s.png", a->dir, (int) n, b, what);
+    }
+  else
+    snprintf (out, olen, "%s/%s.png", a->dir, what);
+}
+
+static void
+fill_opts (const render_args *a, double scale, const char *what,
+           char *title, size_t tlen, lac_render_opts *o)
+{
+  char scene[512];
+  lac_render_opts_init (o);
+  o->width = a->width;
+  o->height = a->height;
+  o->scale = scale;
+  o->edges = a->edges;
+  o->azimuth = a->az;
+  o->elevation = a->el;
+  o->units = a->units;
+  o->fixed_range = a->fixed_range;
+  o->vmin = a->vmin;
+  o->vmax = a->vmax;
+  o->fixed_box = a->fixed_box;
+  for (int d = 0; d < 3; d++)
+    {
+      o->box_lo[d] = a->box[2 * d];
+      o->box_hi[d] = a->box[2 * d + 1];
+    }
+  lac_cli_render_scene_title (a->dir, scene, sizeof scene);
+  if (a->vtu)                                    /* name the step file */
+    snprintf (scene + strlen (scene), sizeof scene - strlen (scene),
+              ", %s", base_name (a->vtu));
+  if (a->title)
+    snprintf (title, tlen, "%s", a->title);
+  else if (scale != 0)
+    snprintf (title, tlen, "%s%s%s (u x %.3g)", scene,
+              what ? ": " : "", what ? what : "", scale);
+  else
+    snprintf (title, tlen, "%s%s%s", scene, what ? ": " : "",
+              what ? what : "");
+  o->title = title;
+}
+
+static int
+draw_field (const render_args *a, const lac_render_result *res,
+            const double *u, double scale, const char *out)
+{
+  const char *field = a->field ? a->field : "von_mises";
+  double *f = lac_malloc ((res->mesh->nnodes + 1) * sizeof *f);
+  char title[1024];
+  lac_render_opts o;
+  int status;
+  if (!f)
+    return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+  status = lac_render_result_scalar (res, field, f);
+  if (!status)
+    {
+      fill_opts (a, scale, NULL, title, sizeof title, &o);
+      o.label = field;
+      status = lac_render_mesh (res->mesh, u, f, &o, out);
+    }
+  lac_free (f);
+  return status;
+}
+
+/* 3D: discs at the centroids, moved with the nearest node. */
+static int
+draw_contact_3d (const render_args *a, const lac_render_result *res,
+                 const double *u, double scale, const macro_rows *rows,
+                 const char *out)
+{
+  const lac_mesh *m = res->mesh;
+  double *xyz = lac_malloc (3 * rows->n * sizeof *xyz),
+    *rad = lac_malloc (rows->n * sizeof *rad);
+  char title[1024];
+  lac_render_opts o;
+  int status;
+  if (!xyz || !rad)
+    {
+      lac_free (xyz);
+      lac_free (rad);
+      return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+    }
+  for (size_t k = 0; k < rows->n; k++)
+    {
+      size_t best = 0;
+      double dbest = INFINITY;
+      for (size_t p = 0; scale != 0 && p < m->nnodes; p++)
+        {
+          double d = 0;
+          for (int i = 0; i < 3; i++)
+            d += (m->x[3 * p + (size_t) i] - rows->x[3 * k + (size_t) i])
+                 * (m->x[3 * p + (size_t) i] - rows->x[3 * k + (size_t) i]);
+          if (d < dbest)
+            dbest = d, best = p;
+        }
+      for (int i = 0; i < 3; i++)
+        xyz[3 * k + (size_t) i] = rows->x[3 * k + (size_t) i]
+                                  + scale * u[3 * best + (size_t) i];
+      rad[k] = 0.9 * sqrt (rows->meas[k] / 3.14159265358979323846);
+    }
+  fill_opts (a, scale, "lambda per macro-element", title, sizeof title, &o);
+  o.label = "lambda";
+  status = lac_render_points (m, u, rows->n, xyz, rad, rows->lam, &o, out);
+  lac_free (xyz);
+  lac_free (rad);
+  return status;
+}
+
+/* ---- the command ---------------------------------------------------------- */
+
+static int
+render_result (const render_args *a, const lac_render_result *res,
+               const char *out)
+{
+  const lac_mesh *m = res->mesh;
+  double *u = lac_malloc ((m->nnodes * (size_t) m->dim + 1) * sizeof *u),
+    scale = a->scale;
+  macro_rows rows;
+  int status;
+  memset (&rows, 0, sizeof rows);
+  if (!u)
+    return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+  if ((status = lac_render_result_displacement (res, u)))
+    {
+      lac_free (u);
+      return status;
+    }
+  if (a->auto_scale)
+    scale = auto_scale (m, u);
+  if (!a->contact)
+    status = draw_field (a, res, u, scale, out);
+  else if (!(status = read_contact (a->dir, &rows)))
+    status = m->dim == 2 ? lac_cli_render_curves (a, res, &rows, out)
+             : draw_contact_3d (a, res, u, scale, &rows, out);
+  rows_free (&rows);
+  lac_free (u);
+  return status;
+}
+
+int
+lac_cli_render (int argc, char **argv)
+{
+  render_args a;
+  lac_render_result *res = NULL;
+  char path[4096], out[4096];
+  int ret;
+  for (int k = 1; k < argc; k++)
+    if (!strcmp (argv[k], "--help") || !strcmp (argv[k], "-h"))
+      {
+        fputs (lac_cli_render_help, stdout);
+        return 0;
+      }
+  if ((ret = parse_args (argc, argv, &a)))
+    return ret;
+  result_paths (&a, path, sizeof path, out, sizeof out);
+  if (lac_render_result_read (path, &res))
+    {
+      lac_cli_print_error (lac_error_message ());
+      return EXIT_RUN;
+    }
+  if (a.list)
+    {
+      char list[4096];
+      lac_render_result_list (res, list, sizeof list);
+      printf ("%s\n", list);
+      lac_render_result_free (res);
+      return 0;
+    }
+  ret = render_result (&a, res, out);
+  lac_render_result_free (res);
+  if (ret)
+    {
+      lac_cli_print_error (lac_error_message ());
+      return EXIT_RUN;
+    }
+  printf ("%s\n", out);
+  return fflush (stdout) == 0 ? 0 : EXIT_RUN;
+}

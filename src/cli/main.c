@@ -1,0 +1,298 @@
+/* main.c -- the lac command line
+ *
+ *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--out DIR]
+ *                 [--quiet] [--timings] [--no-output]
+ *   lac infsup SCENE [...]     (lac_cli_infsup.c)
+ *   lac render RESULT [...]    (lac_cli_render.c)
+ *   lac --help | --version
+ *
+ * The only file that prints and exits.  Progress (the active effects, one
+ * line per stage) goes to stderr, the summary lines "name = value" to
+ * stdout (and, identical, to DIR/summary.txt); an error is one line
+ * "lac: <message>" on stderr and a non-zero exit status.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli/lac_cli.h"
+#include "cli/lac_cli_infsup.h"
+#include "cli/lac_cli_render.h"
+#include "linalg/lac_linalg.h"
+#include "run/lac_run.h"
+#include "io/lac_scene.h"
+#include "base/lac_status.h"
+
+#ifndef LAC_VERSION
+#define LAC_VERSION "0.1.0"
+#endif
+
+enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
+
+static const char *help_text =
+  "usage: lac run SCENE [options]      solve the scene, write the results\n"
+  "       lac infsup SCENE [options]   estimate the inf-sup constant beta_h\n"
+  "       lac render RESULT [options]  draw a result directory as PNG\n"
+  "       lac --help                   this text\n"
+  "       lac --version                the version\n"
+  "\n"
+  "lac run reads the scene file SCENE (INI format; every section and key is\n"
+  "described in chapters/01-problem/scene-format.md and src/io/lac_scene.h),\n"
+  "meshes or reads the mesh with gmsh, assembles and solves the linear\n"
+  "elastic problem (with frictionless contact by the LAC method when the\n"
+  "scene has a [contact] section), computes nodal stresses and, when the\n"
+  "scene has an [exact] section, the errors against the exact solution.\n"
+  "\n"
+  "scene sections and keys (defaults in parentheses):\n"
+  "  [scene]          title, model = plane_strain|axisymmetric|3d,\n"
+  "                   element = tri3|tri6|quad4|quad8|quad9|tet4|tet10|hex8|\n"
+  "                   hex20|hex27 (any), solver = dense|umfpack|cholmod\n"
+  "                   (cholmod), out = DIR, large_deformation = yes|no (no;\n"
+  "                   yes: hyperelasticity, load steps, one Newton loop for\n"
+  "                   material, geometry and contact, re-pairing every\n"
+  "                   iteration)\n"
+  "  [mesh]           file = NAME.geo|NAME.msh (relative to the scene),\n"
+  "                   size (1), order = 1|2, level (0), recombine = yes|no,\n"
+  "                   inverted = flip|reject (flip)\n"
+  "  [material NAME]  group (all other cells), E, nu,\n"
+  "                   law = linear|neo_hookean (linear)\n"
+  "  [dirichlet NAME] group, and ux/uy/uz (axisymmetric ur/uz) = VALUE, or\n"
+  "                   clamp = yes, or symmetry = x|y|z|r, or exact = yes\n"
+  "                   (ramp = yes|no: grows with the load factor, yes)\n"
+  "  [load NAME]      group, and pressure = P, or traction = TX TY [TZ], or\n"
+  "                   force = FX FY [FZ] (per unit volume; group optional)\n"
+  "  [contact NAME]   slave = FACET_GROUP, master = FACET_GROUP,\n"
+  "                   epsilon (0.01): admissibility threshold in (0, 1]\n"
+  "  [exact]          solution = thick_sphere|thick_cylinder (a, b, p, E, nu)\n"
+  "                   | taylor (p, E, nu: uniform pressure, patch test)\n"
+  "  [steps]          n (1) equal load steps after a first step to the load\n"
+  "                   factor start (0), tol (1e-8), maxit (25), monitor =\n"
+  "                   NODE_GROUP, curve = FILE (curve.csv): one line per step,\n"
+  "                   vtu_every = K (0): step_NNN.vtu every K steps\n"
+  "  [output]         vtu = yes|no (yes), csv = yes|no (yes),\n"
+  "                   matrix = yes|no (no)\n"
+  "\n"
+  "options of run:\n"
+  "  --set KEY=VALUE   override a scene key after the file is read; KEY is\n"
+  "                    SECTION.KEY (mesh.level=2), TYPE.NAME.KEY\n"
+  "                    (material.steel.E=3000) or an alias: element, model,\n"
+  "                    solver, out, level, order, size.  Repeatable.\n"
+  "  --solver NAME     dense (GSL LU), umfpack (sparse LU) or cholmod\n"
+  "                    (sparse Cholesky, the default): same as\n"
+  "                    --set scene.solver=NAME\n"
+  "  --out DIR         output directory (created if needed).  Default: the\n"
+  "                    scene's [scene] out, else out/<scene name without\n"
+  "                    .scene>, relative to the current directory\n"
+  "  --quiet           no progress lines on stderr (errors still shown)\n"
+  "  --timings         add time_<stage> lines (seconds) to the summary\n"
+  "  --no-output       write no files (the summary still goes to stdout)\n"
+  "\n"
+  "output files in DIR (all renamed into place at the end, so a failed run\n"
+  "leaves the files of an earlier run untouched; summary.txt comes last):\n"
+  "  solution.vtu      mesh, displacement, stresses, von Mises (ParaView)\n"
+  "  nodes.csv         one row per node: coordinates, displacement, stress\n"
+  "  contact.csv       one row per macro-element: centroid, measure,\n"
+  "                    admissibility, lambda, mean gap, status ([contact])\n"
+  "  K.mtx             the stiffness matrix, Matrix Market ([output] matrix)\n"
+  "  curve.csv         large deformation: one row per load step (load factor,\n"
+  "                    imposed displacement, monitor node, iterations,\n"
+  "                    contact force); contact_steps.csv: every multiplier\n"
+  "                    at every step\n"
+  "  step_NNN.vtu      large deformation with [steps] vtu_every = K: the\n"
+  "                    fields of solution.vtu after every K-th load step and\n"
+  "                    the last; steps.pvd lists them with the load factor\n"
+  "                    as time (ParaView opens the series)\n"
+  "  summary.txt       the summary lines printed on stdout\n"
+  "\n"
+  "stderr: the active effects and one progress line per stage (mesh,\n"
+  "contact, material, assemble, solve, post, output), with the active-set\n"
+  "history (iteration, residual, active multipliers, changed statuses), or\n"
+  "with large deformation one solve line per load step (Newton iterations,\n"
+  "residual, active multipliers, the monitor node).  stdout: the summary, one\n"
+  "'name = value' per line.  Exit status: 0 success, 1 the run failed\n"
+  "(message 'lac: ...' on stderr), 2 bad command line.\n"
+  "\n"
+  "example: lac run chapters/01-problem/sphere-axi.scene --set level=1\n";
+
+/* Print "lac: message" on one line (newlines in the message become
+ * blanks). */
+
+static int
+usage_error (const char *what, const char *arg)
+{
+  fprintf (stderr, "lac: %s%s%s (try lac --help)\n", what, arg ? " " : "",
+           arg ? arg : "");
+  return EXIT_USAGE;
+}
+
+typedef struct cmdline
+{
+  const char *scene;
+  const char **set;     /* argc entries at most */
+  size_t nset;
+  const char *out;
+  int quiet, timings, no_output;
+  char solver_set[64];
+} cmdline;
+
+
+static int
+parse_run_args (int argc, char **argv, cmdline *c)
+{
+  for (int k = 2; k < argc; k++)
+    {
+      const char *v;
+      int missing = 0;
+      if ((v = lac_cli_option_value (argc, argv, &k, "--set", &missing)))
+        c->set[c->nset++] = v;
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--solver", &missing)))
+        {
+          if (lac_solver_kind_from_name (v) < 0)
+            return usage_error ("--solver: expected dense, umfpack or "
+                                "cholmod, got", v);
+          snprintf (c->solver_set, sizeof c->solver_set, "scene.solver=%s", v);
+          c->set[c->nset++] = c->solver_set;
+        }
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
+        c->out = v;
+      else if (missing)
+        return usage_error ("missing value after", argv[k]);
+      else if (strcmp (argv[k], "--quiet") == 0)
+        c->quiet = 1;
+      else if (strcmp (argv[k], "--timings") == 0)
+        c->timings = 1;
+      else if (strcmp (argv[k], "--no-output") == 0)
+        c->no_output = 1;
+      else if (argv[k][0] == '-' && argv[k][1] != '\0')
+        return usage_error ("unknown option", argv[k]);
+      else if (c->scene)
+        return usage_error ("more than one scene:", argv[k]);
+      else
+        c->scene = argv[k];
+    }
+  if (!c->scene)
+    return usage_error ("run: no scene file given", NULL);
+  return 0;
+}
+
+/* The active-set history [LAC Alg. 1]: one line per iteration. */
+static void
+print_newton (const lac_run *r)
+{
+  if (r->fallback)
+    fprintf (stderr, "lac:       note: %s\n", r->fallback);
+  fprintf (stderr, "lac:       iter  residual    ncp         active  "
+           "changed\n");
+  for (size_t k = 0; k < r->newton->nhist; k++)
+    {
+      const lac_newton_record *h = &r->newton->hist[k];
+      fprintf (stderr, "lac:       %4d  %.3e   %.3e   %6zu  %7zu\n",
+               h->iter, h->residual, h->ncp, h->nactive, h->nchanged);
+    }
+}
+
+/* 1. read the scene; 2. run the stages, reporting each; 3. print the
+ * summary. */
+static int
+cmd_run (const cmdline *c)
+{
+  lac_scene *sc = NULL;
+  lac_run *r = NULL;
+  lac_run_opts opts = { c->out, c->timings, c->no_output };
+  int status;
+
+  /* 1. The scene, with the overrides. */
+  status = lac_scene_read (c->scene, c->nset, c->set, &sc);
+  if (status)
+    {
+      lac_cli_print_error (lac_error_message ());
+      return EXIT_RUN;
+    }
+  if (!(r = lac_run_alloc (sc, &opts)))
+    {
+      lac_cli_print_error (lac_error_message ());
+      lac_scene_free (sc);
+      return EXIT_RUN;
+    }
+  if (!c->quiet)
+    {
+      fprintf (stderr, "lac: %s: %s\nlac: effects:", sc->path,
+               sc->scene.title);
+      for (size_t k = 0; k < r->neffects; k++)
+        fprintf (stderr, "%s %s", k ? "," : "", r->effects[k]);
+      fprintf (stderr, "\n");
+    }
+
+  /* 2. The stages. */
+  do
+    {
+      int stage = r->stage;
+      status = lac_run_iterate (r);
+      if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
+        {
+          fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
+                   LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
+                   r->time[stage]);
+          if (stage == LAC_STAGE_SOLVE && r->newton)
+            print_newton (r);
+        }
+    }
+  while (status == LAC_CONTINUE);
+
+  /* 3. The summary. */
+  if (status == LAC_SUCCESS)
+    for (size_t k = 0; k < r->nsummary; k++)
+      printf ("%s = %s\n", r->key[k], r->val[k]);
+  else
+    lac_cli_print_error (lac_error_message ());
+  lac_run_free (r);
+  lac_scene_free (sc);
+  if (fflush (stdout) != 0)
+    {
+      lac_cli_print_error ("cannot write the summary to stdout");
+      return EXIT_RUN;
+    }
+  return status == LAC_SUCCESS ? EXIT_SUCCESS : EXIT_RUN;
+}
+
+int
+main (int argc, char **argv)
+{
+  cmdline c;
+  int ret;
+  if (argc < 2)
+    return usage_error ("no command", NULL);
+  /* The other subcommands parse their own arguments (and --help). */
+  if (strcmp (argv[1], "infsup") == 0 || strcmp (argv[1], "render") == 0)
+    {
+      lac_init ();
+      ret = argv[1][0] == 'i' ? lac_cli_infsup (argc - 1, argv + 1)
+                              : lac_cli_render (argc - 1, argv + 1);
+      lac_finalize ();
+      return ret;
+    }
+  for (int k = 1; k < argc; k++)
+    if (strcmp (argv[k], "--help") == 0 || strcmp (argv[k], "-h") == 0)
+      {
+        fputs (help_text, stdout);
+        printf ("\n%s\n%s", lac_cli_infsup_help, lac_cli_render_help);
+        return EXIT_SUCCESS;
+      }
+  if (strcmp (argv[1], "--version") == 0)
+    {
+      printf ("lac %s\n", LAC_VERSION);
+      return EXIT_SUCCESS;
+    }
+  if (strcmp (argv[1], "run") != 0)
+    return usage_error ("unknown command", argv[1]);
+  memset (&c, 0, sizeof c);
+  if (!(c.set = malloc ((size_t) argc * sizeof *c.set)))
+    return usage_error ("out of memory", NULL);
+  if ((ret = parse_run_args (argc, argv, &c)) == 0)
+    {
+      lac_init ();
+      ret = cmd_run (&c);
+      lac_finalize ();
+    }
+  free (c.set);
+  return ret;
+}

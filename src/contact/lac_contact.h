@@ -1,0 +1,122 @@
+/* lac_contact.h -- the LAC contact data: admissibility, C and mean gaps
+ *                                          [LAC Def. 1, (16)-(18), §4.3]
+ *
+ * Given the macro-mesh T^M of the slave surface (lac_macromesh.h) and its
+ * pairing with the master surface (lac_pairing.h, slave list = the
+ * sub-facets of T^M in order), this module
+ *
+ *   1. measures, for every macro-element T^m, the covered fraction
+ *        delta_m = |T^m cap Gamma_C| / |T^m|
+ *      and the mean of its interior basis function over T^m cap Gamma_C,
+ *        phibar_m = (1/|T^m cap Gamma_C|) int_{T^m cap Gamma_C} phi_{m*+1},
+ *      and keeps T^m iff   phibar_m sqrt(delta_m) >= epsilon   [LAC Def. 1];
+ *   2. gives one multiplier to every admissible macro-element and assembles
+ *        C(:,i) = int_{T^m cap Gamma_C} (phi^S n^S  -  phi^M n^S) dGamma
+ *      (the blocks C^S and C^M of [LAC (16)-(17)], with n^M = -n^S) and
+ *        G_i    = int_{T^m cap Gamma_C} g0 dGamma                [LAC (18)]
+ *      with g0 the initial normal gap (> 0 open).
+ * The sign convention is the one of lac_newton.h.  Axisymmetric integrals
+ * carry the weight 2 pi r, in the measures of Definition 1 too (they are
+ * the measures of the surfaces of revolution).
+ *
+ * The default epsilon, LAC_EPSILON_DEFAULT = 1e-2, is below phibar of a
+ * fully covered macro-element of every type lac builds (the smallest is
+ * the hex20 six-hexahedra cut), so fully covered macro-elements are always
+ * admissible [LAC Def. 1, remark after it]; a test checks it.
+ *
+ * Ownership: lac_contact_alloc/lac_contact_free; the struct owns its arrays
+ * and refers to the mesh, macro-mesh and pairing by indices only.
+ */
+#ifndef LAC_CONTACT_H
+#define LAC_CONTACT_H
+
+#include <stddef.h>
+#include "linalg/lac_linalg.h"
+#include "contact/lac_macromesh.h"
+#include "fem/lac_material.h"
+#include "contact/lac_pairing.h"
+
+#define LAC_EPSILON_DEFAULT 1e-2
+
+typedef struct lac_contact
+{
+  size_t nmacro;      /* macro-elements of T^M                             */
+  double *meas;       /* owned, nmacro: |T^m| (2 pi r weighted if axisym.)  */
+  double *covered;    /* owned, nmacro: |T^m cap Gamma_C|                   */
+  size_t *inode;      /* owned, nmacro: the interior node x_{m*+1} used, the
+                         one of largest int over T^m cap Gamma_C [LAC Remark 1] */
+  double *phiint;     /* owned, nmacro: int_{T^m cap Gamma_C} phi_{m*+1}    */
+  double *crit;       /* owned, nmacro: phiint / sqrt(covered meas)         */
+  char *admissible;   /* owned, nmacro                                     */
+  long *mult;         /* owned, nmacro: multiplier index of T^m, -1 if none */
+  size_t k;           /* number of multipliers = admissible macro-elements  */
+  size_t *macro;      /* owned, k: macro-element of multiplier i            */
+  lac_csc *C;         /* owned, ndof x k                     [LAC (16)-(17)] */
+  double *G;          /* owned, k: mean initial gaps           [LAC (18)]    */
+  double *area;       /* owned, k: |T^m cap Gamma_C| = M^LAC_ii [LAC (16)]   */
+  double *xpt, *npt;  /* owned, 3k, node-to-segment only (else NULL): the
+                         collocation point and unit normal of multiplier i */
+} lac_contact;
+
+/* Items 1 and 2 above.  The pairing's slave list must be the sub-facets of
+ * M in order (cell = M->cell, face = M->face); master facets are given by
+ * `master` (of the same mesh), or master is NULL for a rigid obstacle
+ * (lac_obstacle.h: no master part in C).  epsilon in (0, 1].
+ * Errors: LAC_EINVAL (epsilon out of range, list mismatch), LAC_EADMISS
+ * (no admissible macro-element at all: the message gives the largest
+ * criterion found), LAC_ENOMEM. */
+int lac_contact_build (const lac_mesh *mesh, lac_model model,
+                       const lac_macro *M, const lac_pairing *P,
+                       const lac_pairing_facets *master, double epsilon,
+                       lac_contact **out);
+void lac_contact_free (lac_contact *c);   /* NULL allowed */
+/* Zeroed arrays for nmacro macro-elements (C, xpt, npt NULL). */
+lac_contact *lac_contact_alloc (size_t nmacro);
+
+/* The node-to-segment (2D) / node-to-face (3D) method, for comparison
+ * [LAC §1]: one multiplier per slave node a whose projection along the
+ * nodal normal n_a (average of the adjacent facet normals) lands on a
+ * master facet; the constraint is collocated there:
+ *   C(:,i) = w_a (e_a - sum_b phi^M_b(xi) e_b) n_a,  G_i = w_a g_a,
+ * with w_a the node's share of the slave surface (|T|/nnodes of each
+ * adjacent facet: lumped, so quadratic vertices get a positive weight) and
+ * g_a the distance to the master along n_a.  The master candidates of a
+ * node are the masters paired with its facets (P).  The "macro-elements"
+ * of the result are the slave nodes (nmacro = their number; inode = node).
+ * LAC_EADMISS if no node projects onto the master. */
+int lac_contact_build_nts (const lac_mesh *mesh, lac_model model,
+                           const lac_macro *M, const lac_pairing *P,
+                           const lac_pairing_facets *master,
+                           lac_contact **out);
+
+/* Dirichlet data on contact dofs: G_i -= C(dof,i) value for every fixed
+ * dof, then the row of C is zeroed (the fixed value moves into the gap). */
+int lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
+                                 const double *val);
+
+/* The multiplier of the macro-element owning slave sub-facet j (-1: none). */
+long lac_contact_mult_of_subfacet (const lac_contact *c, const lac_macro *M,
+                                   size_t j);
+
+
+
+/* ---- stages, called by lac_contact_build (exposed for tests) ---------- */
+
+/* Item 1, [LAC Def. 1]: meas, covered, phiint, crit, admissible, mult,
+ * k, macro of c (which must have nmacro = M->n and those arrays allocated). */
+int lac_admissibility_compute (lac_contact *c, const lac_mesh *mesh,
+                               lac_model model, const lac_macro *M,
+                               const lac_pairing *P, double epsilon);
+
+/* Item 2, [LAC (16)-(18)]: C, G and area of c for its k multipliers. */
+int lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
+                      const lac_macro *M, const lac_pairing *P,
+                      const lac_pairing_facets *master);
+
+/* Geometry of one facet (cell, face) of a mesh at reference point xi:
+ * fills m (x, N, unit outward normal, detJ) and the facet's global nodes
+ * (returns their number, or a negative status). */
+int lac_contact_facet_eval (const lac_mesh *mesh, size_t cell, int face,
+                            const double *xi, int *nodes, lac_map *m);
+
+#endif /* LAC_CONTACT_H */

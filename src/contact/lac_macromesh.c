@@ -1,0 +1,469 @@
+/* lac_macromesh.c -- the macro-mesh T^M of the slave contact boundary
+ *                                                 [LAC Hyp. 1, §4.4, Fig. 2]
+ *
+ * Builds T^M in four steps (conventions and ownership in lac_macromesh.h);
+ * this file holds steps 1 and 3 and the public functions, step 2 is in
+ * lac_macromesh_gather.c and step 4 in lac_macromesh_nodes.c:
+ *
+ *   1. check the slave group: it exists, is a non-empty facet group, lists
+ *      no facet twice, and every facet is on the boundary (a cut would
+ *      otherwise break conformity with the cell on the other side);
+ *   2. start the macro-elements: one per facet, except for 2D linear
+ *      segments, which are gathered two by two along their chains
+ *      [LAC §4.4, item 1]:
+ *
+ *          chain of 5 segments:  o-----o-----o-----o-----o-----o
+ *                                |    T^1    |       T^2       |
+ *                                      ^            ^     (^)
+ *                                  interior node    interior nodes: the
+ *                                                   one with the largest
+ *                                                   integral is fixed
+ *
+ *      a chain of odd length ends with one macro of three segments; a
+ *      closed loop is cut anywhere; an isolated segment (no neighbour) has
+ *      its cell cut at the segment's midpoint instead;
+ *   3. cut, in rounds, the cells owning a facet that has no interior node
+ *      (lac_refine.c): a round cuts at most one facet per cell, then every
+ *      macro-element's facet list is remapped to the new mesh;
+ *   4. for each T^m: its measure, its interior nodes (nodes of its
+ *      sub-facets that are on no boundary edge of T^m and on no other
+ *      macro-element), and the designated one x_{m*+1}: the largest
+ *      int_{T^m} phi_i [LAC Remark 1, Def. 1].
+ *
+ * lac_macromesh_trace builds the raw trace mesh instead (one element per
+ * slave facet, for comparisons only).
+ */
+#include "contact/lac_macromesh.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact/lac_macromesh_internal.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+static void
+mlist_clear (mlist *L)
+{
+  lac_free (L->ptr);
+  lac_free (L->cell);
+  lac_free (L->face);
+  lac_free (L->pending);
+  memset (L, 0, sizeof *L);
+}
+
+/* ---- step 1: the slave group ------------------------------------------- */
+
+typedef struct fkey
+{
+  int v[4];      /* vertex nodes of the facet, sorted, padded with -1 */
+  size_t e;      /* entry of the group                                 */
+} fkey;
+
+static int
+cmp_fkey (const void *a, const void *b)
+{
+  const fkey *p = a, *q = b;
+  for (int i = 0; i < 4; i++)
+    if (p->v[i] != q->v[i])
+      return p->v[i] < q->v[i] ? -1 : 1;
+  return 0;
+}
+
+static void
+make_key (const lac_mesh *m, size_t c, int f, fkey *k)
+{
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  int nv = lac_refelem_get (re->face_type[f])->nvertices;
+  for (int i = 0; i < 4; i++)
+    k->v[i] = i < nv ? m->conn[m->ptr[c] + (size_t) re->face_node[f][i]] : -1;
+  for (int i = 1; i < nv; i++)               /* insertion sort, nv <= 4 */
+    for (int j = i; j > 0 && k->v[j - 1] > k->v[j]; j--)
+      {
+        int t = k->v[j];
+        k->v[j] = k->v[j - 1];
+        k->v[j - 1] = t;
+      }
+}
+
+/* What facet e of G needs, from its face type. */
+static int
+classify (const lac_mesh *m, const lac_group *G, size_t e,
+          const lac_macro_opts *opts, unsigned char *kind)
+{
+  const lac_refelem *re, *rf;
+  int hex_cut = opts ? opts->hex_cut : LAC_MACRO_HEX_DEFAULT;
+
+  if (G->cell[e] >= m->ncells)
+    MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu out of range",
+              e, G->name, G->cell[e]);
+  re = lac_refelem_get (m->type[G->cell[e]]);
+  if (!re || re->dim != m->dim || G->face[e] < 0 || G->face[e] >= re->nfaces)
+    MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu (tag %zu) has "
+              "no face %d", e, G->name, G->cell[e],
+              m->cell_tag[G->cell[e]], G->face[e]);
+  rf = lac_refelem_get (re->face_type[G->face[e]]);
+  switch (rf->type)
+    {
+    case LAC_SEG2:                           /* tri3, quad4 */
+      *kind = opts && opts->cut_2d ? CUT : GATHER;
+      return LAC_SUCCESS;
+    case LAC_SEG3: case LAC_QUAD9:           /* mid / centre node exists */
+      *kind = KEEP;
+      return LAC_SUCCESS;
+    case LAC_TRI3: case LAC_QUAD4: case LAC_TRI6:
+      *kind = CUT;
+      return LAC_SUCCESS;
+    case LAC_QUAD8:
+      if (hex_cut == LAC_MACRO_HEX_PYRAMIDS)
+        MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': a %s cannot be cut "
+                  "into pyramids (its quad8 face would need pyramid13 "
+                  "cells, which lac does not have); use LAC_MACRO_HEX_SIX",
+                  e, G->name, re->name);
+      *kind = CUT;
+      return LAC_SUCCESS;
+    default:
+      MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': %s faces of %s cells "
+                "cannot be made into macro-elements", e, G->name, rf->name,
+                re->name);
+    }
+}
+
+/* No facet twice, and none shared with another cell: the slave facets must
+ * lie on the boundary (sorting the slave keys, then looking every face of
+ * the mesh up among them). */
+static int
+check_boundary (const lac_mesh *m, const lac_group *G)
+{
+  fkey *key = lac_malloc (G->n * sizeof *key);
+  int status = LAC_SUCCESS;
+
+  if (!key)
+    MM_ERROR (LAC_ENOMEM, "keys of %zu slave facets", G->n);
+  for (size_t e = 0; e < G->n; e++)
+    {
+      make_key (m, G->cell[e], G->face[e], &key[e]);
+      key[e].e = e;
+    }
+  qsort (key, G->n, sizeof *key, cmp_fkey);
+  for (size_t e = 1; e < G->n && !status; e++)
+    if (cmp_fkey (&key[e - 1], &key[e]) == 0)
+      {
+        size_t a = key[e - 1].e, b = key[e].e;
+        if (G->cell[a] == G->cell[b])
+          status = MM_ERRMSG (LAC_EINVAL, "group '%s' lists facet (cell %zu, "
+                              "face %d) twice (entries %zu and %zu)",
+                              G->name, G->cell[a], G->face[a], a, b);
+        else
+          status = MM_ERRMSG (LAC_EINVAL, "group '%s': facet %zu (cell %zu) "
+                              "and facet %zu (cell %zu) are the same face, "
+                              "interior to the mesh; a contact boundary "
+                              "must lie on the boundary", G->name, a,
+                              G->cell[a], b, G->cell[b]);
+      }
+  for (size_t c = 0; c < m->ncells && !status; c++)
+    {
+      const lac_refelem *re = lac_refelem_get (m->type[c]);
+      for (int f = 0; f < re->nfaces && !status; f++)
+        {
+          fkey k;
+          const fkey *hit;
+          make_key (m, c, f, &k);
+          hit = bsearch (&k, key, G->n, sizeof *key, cmp_fkey);
+          if (hit && !(G->cell[hit->e] == c && G->face[hit->e] == f))
+            status = MM_ERRMSG (LAC_EINVAL, "facet %zu of group '%s' (cell "
+                                "%zu, face %d) is shared with cell %zu "
+                                "(tag %zu): it is interior, a contact "
+                                "boundary must lie on the boundary", hit->e,
+                                G->name, G->cell[hit->e], G->face[hit->e],
+                                c, m->cell_tag[c]);
+        }
+    }
+  lac_free (key);
+  return status;
+}
+
+/* ---- step 3: refinement rounds ----------------------------------------- */
+
+/* Facet lists of L through the map of one round. */
+static int
+remap_macros (mlist *L, const lac_refine_map *map)
+{
+  size_t n = 0, *cell, *ptr = L->ptr;
+  int *face;
+
+  for (size_t j = 0; j < ptr[L->n]; j++)
+    {
+      size_t q = L->cell[j] * LAC_MAX_FACES + (size_t) L->face[j];
+      n += map->fptr[q + 1] - map->fptr[q];
+    }
+  cell = lac_malloc (n * sizeof *cell);
+  face = lac_malloc (n * sizeof *face);
+  if (!cell || !face)
+    {
+      lac_free (cell);
+      lac_free (face);
+      MM_ERROR (LAC_ENOMEM, "macro-element facets (%zu)", n);
+    }
+  n = 0;
+  for (size_t k = 0; k < L->n; k++)
+    {
+      size_t j0 = ptr[k], j1 = ptr[k + 1];
+      ptr[k] = n;
+      for (size_t j = j0; j < j1; j++)
+        {
+          size_t q = L->cell[j] * LAC_MAX_FACES + (size_t) L->face[j];
+          for (size_t p = map->fptr[q]; p < map->fptr[q + 1]; p++, n++)
+            {
+              cell[n] = map->fcell[p];
+              face[n] = map->fface[p];
+            }
+        }
+    }
+  ptr[L->n] = n;
+  lac_free (L->cell);
+  lac_free (L->face);
+  L->cell = cell;
+  L->face = face;
+  return LAC_SUCCESS;
+}
+
+/* Cut the pending facets, at most one per cell and round  [LAC §4.4]. *cur
+ * is replaced by each new mesh; meshes other than `orig` are freed. */
+static int
+refine_rounds (lac_mesh **cur, const lac_mesh *orig, mlist *L,
+               const lac_macro_opts *opts, lac_macro *M)
+{
+  int status = LAC_SUCCESS;
+
+  for (;;)
+    {
+      lac_mesh *m = *cur, *next = NULL;
+      lac_refine_map *map = NULL;
+      int *cut;
+      size_t ncut = 0;
+
+      for (size_t k = 0; k < L->n; k++)
+        ncut += L->pending[k];
+      if (!ncut)
+        break;
+      cut = lac_malloc (m->ncells * sizeof *cut);
+      if (!cut)
+        MM_ERROR (LAC_ENOMEM, "refinement round %d", M->nrounds + 1);
+      for (size_t c = 0; c < m->ncells; c++)
+        cut[c] = -1;
+      for (size_t k = 0; k < L->n; k++)
+        {
+          size_t c = L->cell[L->ptr[k]];
+          if (L->pending[k] && cut[c] < 0)
+            {
+              cut[c] = L->face[L->ptr[k]];
+              L->pending[k] = 0;
+              M->ncut++;
+            }
+        }
+      status = lac_refine_cut (m, cut, opts, &next, &map);
+      lac_free (cut);
+      if (!status)
+        status = remap_macros (L, map);
+      lac_refine_map_free (map);
+      if (status)
+        {
+          lac_mesh_free (next);
+          return status;
+        }
+      M->nnew += next->nnodes - m->nnodes;
+      M->nrounds++;
+      if (m != orig)
+        lac_mesh_free (m);
+      *cur = next;
+    }
+  return status;
+}
+
+/* ---- public ------------------------------------------------------------ */
+
+void
+lac_macromesh_free (lac_macro *M)
+{
+  if (!M)
+    return;
+  lac_free (M->ptr);
+  lac_free (M->cell);
+  lac_free (M->face);
+  lac_free (M->inode);
+  lac_free (M->meas);
+  lac_free (M->phi);
+  lac_free (M);
+}
+
+/* Step 1 of lac_macromesh_build: the slave group `slave` of m, which must
+ * be a non-empty group of boundary facets. */
+static int
+slave_group (const lac_mesh *m, const char *slave, const lac_group **G)
+{
+  *G = lac_mesh_group (m, slave);
+  if (!*G)
+    {
+      char msg[768];
+      const char *p = strstr (lac_error_message (), ": ");
+      snprintf (msg, sizeof msg, "%s", p ? p + 2 : lac_error_message ());
+      MM_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
+    }
+  if ((*G)->dim != m->dim - 1)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension %d; it "
+              "must be a group of boundary facets (dimension %d)", slave,
+              (*G)->dim, m->dim - 1);
+  if ((*G)->n == 0)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is empty", slave);
+  return LAC_SUCCESS;
+}
+
+/* Step 4 of lac_macromesh_build: measures and interior nodes of the
+ * macro-elements L on mesh m; the facet lists are then moved into M. */
+static int
+fill_macro (const lac_mesh *m, mlist *L, lac_macro *M)
+{
+  int status;
+  M->n = L->n;
+  M->inode = lac_malloc (L->n * sizeof *M->inode);
+  M->meas = lac_malloc (L->n * sizeof *M->meas);
+  M->phi = lac_malloc (L->n * sizeof *M->phi);
+  if (!M->inode || !M->meas || !M->phi)
+    MM_ERROR (LAC_ENOMEM, "macro-mesh of %zu elements", L->n);
+  status = lac_macromesh_finish (m, L, M);
+  if (status)
+    return status;
+  M->ptr = L->ptr;
+  M->cell = L->cell;
+  M->face = L->face;
+  L->ptr = L->cell = NULL;
+  L->face = NULL;
+  return LAC_SUCCESS;
+}
+
+/* lac_macromesh_build: T^M on the facet group `slave`  [LAC Hyp. 1, §4.4].
+ *
+ *   [in,out] mesh   *mesh is replaced by the refined mesh on success (the
+ *                   old one is freed); unchanged on failure
+ *   [in]     slave  name of the slave facet group
+ *   [in]     opts   NULL or the template choice (lac_macromesh.h)
+ *   [out]    out    the macro-mesh (free with lac_macromesh_free)
+ *   returns LAC_SUCCESS, LAC_EINVAL (message names the group, facet, cell
+ *   or element type), LAC_ENOMEM, LAC_ESANITY */
+int
+lac_macromesh_build (lac_mesh **mesh, const char *slave,
+                     const lac_macro_opts *opts, lac_macro **out)
+{
+  lac_mesh *cur = NULL;
+  const lac_group *G;
+  unsigned char *kind = NULL;
+  mlist L = { 0 };
+  lac_macro *M = NULL;
+  int status = LAC_SUCCESS;
+
+  if (!out)
+    MM_ERROR (LAC_EINVAL, "no output pointer");
+  *out = NULL;
+  if (!mesh || !*mesh || !slave)
+    MM_ERROR (LAC_EINVAL, "no mesh or no slave group name");
+  if (opts && (opts->hex_cut < LAC_MACRO_HEX_DEFAULT
+               || opts->hex_cut > LAC_MACRO_HEX_SIX
+               || (opts->cut_2d != 0 && opts->cut_2d != 1)))
+    MM_ERROR (LAC_EINVAL, "options hex_cut = %d, cut_2d = %d out of range",
+              opts->hex_cut, opts->cut_2d);
+  cur = *mesh;
+
+  /* Step 1: the slave group. */
+  status = slave_group (cur, slave, &G);
+  if (status)
+    return status;
+  kind = lac_malloc (G->n * sizeof *kind);
+  M = lac_calloc (1, sizeof *M);
+  if (!kind || !M)
+    {
+      status = MM_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu facets", G->n);
+      goto done;
+    }
+  for (size_t e = 0; e < G->n && !status; e++)
+    status = classify (cur, G, e, opts, &kind[e]);
+  if (!status)
+    status = check_boundary (cur, G);
+
+  /* Step 2: first macro-elements; step 3: cut what has to be cut. */
+  if (!status)
+    status = lac_macromesh_start (cur, G, kind, &L);
+  if (!status)
+    status = refine_rounds (&cur, *mesh, &L, opts, M);
+
+  /* Step 4: measures and interior nodes, moved into M. */
+  if (!status)
+    status = fill_macro (cur, &L, M);
+
+done:
+  lac_free (kind);
+  mlist_clear (&L);
+  if (status)
+    {
+      if (cur != *mesh)
+        lac_mesh_free (cur);
+      lac_macromesh_free (M);
+      return status;
+    }
+  if (cur != *mesh)
+    {
+      lac_mesh_free (*mesh);
+      *mesh = cur;
+    }
+  *out = M;
+  return LAC_SUCCESS;
+}
+
+/* lac_macromesh_trace: the raw trace mesh as "macro-mesh": one element per
+ * slave facet, nothing gathered or refined (the P0 multipliers of [LAC
+ * §4.2], which violate Hypothesis 1 for linear elements: used only to
+ * compare with LAC).  inode = (size_t) -1 where the facet has no interior
+ * node; meas = |T^s|, phi = 0. */
+int
+lac_macromesh_trace (const lac_mesh *mesh, const char *slave, lac_macro **out)
+{
+  const lac_group *G = mesh ? lac_mesh_group (mesh, slave) : NULL;
+  *out = NULL;
+  if (!G)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' not found", slave);
+  if (G->dim != mesh->dim - 1 || G->n == 0)
+    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is not a non-empty "
+              "group of boundary facets", slave);
+  lac_macro *M = lac_calloc (1, sizeof *M);
+  size_t n = G->n;
+  if (M)
+    {
+      M->n = n;
+      M->ptr = lac_malloc ((n + 1) * sizeof *M->ptr);
+      M->cell = lac_malloc (n * sizeof *M->cell);
+      M->face = lac_malloc (n * sizeof *M->face);
+      M->inode = lac_malloc (n * sizeof *M->inode);
+      M->meas = lac_calloc (n, sizeof *M->meas);
+      M->phi = lac_calloc (n, sizeof *M->phi);
+    }
+  if (!M || !M->ptr || !M->cell || !M->face || !M->inode || !M->meas
+      || !M->phi)
+    {
+      lac_macromesh_free (M);
+      MM_ERROR (LAC_ENOMEM, "trace macro-mesh of %zu facets", n);
+    }
+  M->ptr[0] = 0;
+  for (size_t e = 0; e < n; e++)
+    {
+      M->ptr[e + 1] = e + 1;
+      M->cell[e] = G->cell[e];
+      M->face[e] = G->face[e];
+      size_t in[MAXPATCH];
+      M->inode[e] = lac_macromesh_interior (mesh, M, e, in, MAXPATCH) > 0
+                    ? in[0] : (size_t) -1;
+    }
+  *out = M;
+  return LAC_SUCCESS;
+}

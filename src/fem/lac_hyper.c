@@ -1,0 +1,584 @@
+/* lac_hyper.c -- hyperelasticity in total Lagrangian form    [LAC §4.5, §5.4]
+ *
+ * See lac_hyper.h for the laws and the forms.  At each quadrature point of
+ * a cell the kinematics are evaluated on the REFERENCE cell (the total
+ * Lagrangian form: grad_X N_a never changes):
+ *
+ *   F_iJ = d_iJ + sum_a u_(a,i) dN_a/dX_J        (J < dim; F_33 = 1 in
+ *                                                 plane strain,
+ *   F_tt = 1 + sum_a u_(a,r) N_a / R              axisymmetric hoop)
+ *
+ * and the variation of F along dof (a,i) has at most three non-zero
+ * entries: (i, J) -> dN_a/dX_J, and (t, t) -> N_a / R for i = r in the
+ * axisymmetric model.  The tangent is assembled in two passes per point
+ * (the cost is that of a linear B^T D B product):
+ *
+ *   T^(a,i)_kL = sum_(pQ) dF^(a,i)_pQ A_pQkL        (9 numbers per dof)
+ *   K_(a,i),(b,k) += w sum_(kL) T^(a,i)_kL dF^(b,k)_kL.
+ */
+#include "fem/lac_hyper.h"
+#include "fem/lac_post.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
+
+
+/* ---- laws --------------------------------------------------------------- */
+
+int
+lac_law_from_name (const char *name)
+{
+  if (!name)
+    return -1;
+  if (strcmp (name, "linear") == 0)
+    return LAC_LAW_LINEAR;
+  if (strcmp (name, "neo_hookean") == 0)
+    return LAC_LAW_NEO_HOOKEAN;
+  return -1;
+}
+
+const char *
+lac_law_name (lac_law law)
+{
+  return law == LAC_LAW_NEO_HOOKEAN ? "neo_hookean" : "linear";
+}
+
+int
+lac_hyper_lame (double E, double nu, double *lambda, double *mu)
+{
+  if (!(E > 0) || !(nu > -1 && nu < 0.5))
+    LAC_ERROR (LAC_EINVAL, "E = %g, nu = %g is not a valid material (E > 0, "
+               "-1 < nu < 1/2)", E, nu);
+  *lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  *mu = E / (2 * (1 + nu));
+  return LAC_SUCCESS;
+}
+
+/* Fi = F^-1 (3x3); returns det F. */
+static double
+inverse3 (const double *F, double *Fi)
+{
+  double c00 = F[4] * F[8] - F[5] * F[7];
+  double c01 = F[5] * F[6] - F[3] * F[8];
+  double c02 = F[3] * F[7] - F[4] * F[6];
+  double J = F[0] * c00 + F[1] * c01 + F[2] * c02;
+  if (J == 0)
+    return 0;
+  Fi[0] = c00 / J;
+  Fi[1] = (F[2] * F[7] - F[1] * F[8]) / J;
+  Fi[2] = (F[1] * F[5] - F[2] * F[4]) / J;
+  Fi[3] = c01 / J;
+  Fi[4] = (F[0] * F[8] - F[2] * F[6]) / J;
+  Fi[5] = (F[2] * F[3] - F[0] * F[5]) / J;
+  Fi[6] = c02 / J;
+  Fi[7] = (F[1] * F[6] - F[0] * F[7]) / J;
+  Fi[8] = (F[0] * F[4] - F[1] * F[3]) / J;
+  return J;
+}
+
+/* Neo-Hookean P and A (lac_hyper.h), F^-T_iJ = Fi[J*3+i]. */
+static void
+neo_hookean (double lam, double mu, const double *F, const double *Fi,
+             double J, double *P, double *A)
+{
+  double lnJ = log (J);
+  for (int i = 0; i < 3; i++)
+    for (int Jj = 0; Jj < 3; Jj++)                 /* P = mu (F - F^-T)   */
+      P[i * 3 + Jj] = mu * F[i * 3 + Jj]           /*   + lam lnJ F^-T    */
+                      + (lam * lnJ - mu) * Fi[Jj * 3 + i];
+  if (!A)
+    return;
+  double c = mu - lam * lnJ;
+  for (int i = 0; i < 3; i++)
+    for (int Jj = 0; Jj < 3; Jj++)
+      for (int k = 0; k < 3; k++)
+        for (int L = 0; L < 3; L++)
+          A[((i * 3 + Jj) * 3 + k) * 3 + L]
+            = (i == k && Jj == L ? mu : 0.0)        /* mu d_ik d_JL        */
+              + lam * Fi[Jj * 3 + i] * Fi[L * 3 + k] /* lam F^-1_Ji F^-1_Lk */
+              + c * Fi[Jj * 3 + k] * Fi[L * 3 + i]; /* c F^-1_Jk F^-1_Li   */
+}
+
+/* Saint Venant-Kirchhoff P = F S and A (lac_hyper.h). */
+static void
+svk (double lam, double mu, const double *F, double *P, double *A)
+{
+  double E[9], S[9], trE = 0;
+  for (int I = 0; I < 3; I++)
+    for (int Jj = 0; Jj < 3; Jj++)
+      {
+        double s = 0;
+        for (int k = 0; k < 3; k++)
+          s += F[k * 3 + I] * F[k * 3 + Jj];        /* C = F^T F */
+        E[I * 3 + Jj] = 0.5 * (s - (I == Jj));      /* E = (C - I)/2 */
+      }
+  trE = E[0] + E[4] + E[8];
+  for (int I = 0; I < 9; I++)
+    S[I] = 2 * mu * E[I] + (I % 4 == 0 ? lam * trE : 0.0);
+                                         /* S = lam tr(E) I + 2 mu E */
+  for (int i = 0; i < 3; i++)
+    for (int Jj = 0; Jj < 3; Jj++)
+      {
+        double s = 0;
+        for (int M = 0; M < 3; M++)
+          s += F[i * 3 + M] * S[M * 3 + Jj];        /* P = F S */
+        P[i * 3 + Jj] = s;
+      }
+  if (!A)
+    return;
+  for (int i = 0; i < 3; i++)
+    for (int Jj = 0; Jj < 3; Jj++)
+      for (int k = 0; k < 3; k++)
+        for (int L = 0; L < 3; L++)
+          {
+            /* F_iM C_MJNL F_kN with C = lam d_MJ d_NL + mu (d_MN d_JL +
+             * d_ML d_JN): lam F_iJ F_kL + mu ((F F^T)_ik d_JL + F_iL F_kJ) */
+            double FFt = F[i * 3] * F[k * 3] + F[i * 3 + 1] * F[k * 3 + 1]
+                         + F[i * 3 + 2] * F[k * 3 + 2];
+            A[((i * 3 + Jj) * 3 + k) * 3 + L]
+              = (i == k ? S[Jj * 3 + L] : 0.0)
+                + lam * F[i * 3 + Jj] * F[k * 3 + L]
+                + mu * ((Jj == L ? FFt : 0.0) + F[i * 3 + L] * F[k * 3 + Jj]);
+          }
+}
+
+/* lac_hyper_stress: P(F) and A(F) of a law (lac_hyper.h).
+ *   returns LAC_SUCCESS, LAC_EINVAL (material), LAC_ESING (det F <= 0) */
+int
+lac_hyper_stress (lac_law law, double E, double nu, const double *F,
+                  double *P, double *A)
+{
+  double lam, mu, Fi[9];
+  int status = lac_hyper_lame (E, nu, &lam, &mu);
+  if (status)
+    return status;
+  double J = inverse3 (F, Fi);
+  if (!(J > 0))
+    LAC_ERROR (LAC_ESING, "det F = %g <= 0: the material is turned inside"
+               " out", J);
+  if (law == LAC_LAW_NEO_HOOKEAN)
+    neo_hookean (lam, mu, F, Fi, J, P, A);
+  else
+    svk (lam, mu, F, P, A);
+  return LAC_SUCCESS;
+}
+
+/* ---- kinematics at one point -------------------------------------------- */
+
+
+static int
+quad_degree (const lac_hyper *h, const lac_refelem *re)
+{
+  if (h->degree > 0)
+    return h->degree;
+  return 2 * re->order + (h->model == LAC_AXISYMMETRIC ? 2 : 0);
+}
+
+/* One point of a cell: the reference map, the weight w (dV, times 2 pi R
+ * axisymmetric) and F.  ue: element displacements (nen*dim). */
+typedef struct point
+{
+  lac_map mp;
+  double w;
+  double hoop;        /* 1 / R (axisymmetric), 0 otherwise                */
+  double F[9];
+} point;
+
+static int
+point_eval (const lac_hyper *h, const lac_refelem *re, int dim,
+            const double *xe, const double *ue, const double *xi, double wq,
+            point *pt)
+{
+  int status = lac_map_cell (re, dim, xe, xi, &pt->mp);
+  if (status)
+    return status;
+  pt->w = wq * pt->mp.detJ;
+  pt->hoop = 0;
+  memset (pt->F, 0, sizeof pt->F);
+  pt->F[0] = pt->F[4] = pt->F[8] = 1.0;
+  for (int a = 0; a < re->nnodes; a++)
+    for (int i = 0; i < dim; i++)
+      for (int J = 0; J < dim; J++)                   /* F = I + grad_X u */
+        pt->F[i * 3 + J] += ue[a * dim + i] * pt->mp.dNdx[a * dim + J];
+  if (h->model == LAC_AXISYMMETRIC)
+    {
+      double R = pt->mp.x[0];
+      if (!(R > 0))
+        LAC_ERROR (LAC_EINVAL, "R = %g <= 0 at a quadrature point; an "
+                   "axisymmetric mesh must lie in r >= 0", R);
+      pt->hoop = 1.0 / R;
+      pt->w *= lac_model_weight (LAC_AXISYMMETRIC, pt->mp.x);   /* 2 pi R */
+      for (int a = 0; a < re->nnodes; a++)            /* F_tt = 1 + u_r/R */
+        pt->F[8] += ue[a * dim] * pt->mp.N[a] * pt->hoop;
+    }
+  return LAC_SUCCESS;
+}
+
+/* Non-zero entries of dF^(a,i): index pQ = p*3+Q and value; returns their
+ * number (dim, or dim + 1 for the axisymmetric r component). */
+static int
+variation (const point *pt, int dim, int a, int i, int *idx, double *val)
+{
+  int n = 0;
+  for (int Q = 0; Q < dim; Q++)
+    {
+      idx[n] = i * 3 + Q;
+      val[n++] = pt->mp.dNdx[a * dim + Q];
+    }
+  if (pt->hoop > 0 && i == 0)
+    {
+      idx[n] = 8;
+      val[n++] = pt->mp.N[a] * pt->hoop;
+    }
+  return n;
+}
+
+/* fe += w P : dF, Ke += w dF : A : dF at one point (two passes). */
+static void
+point_add (const point *pt, int nen, int dim, const double *P,
+           const double *A, double *fe, double *Ke, double *T)
+{
+  int nc = nen * dim, idx[4], n;
+  double val[4];
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < dim; i++)
+      {
+        int r = a * dim + i;
+        n = variation (pt, dim, a, i, idx, val);
+        double f = 0;
+        for (int t = 0; t < n; t++)
+          f += P[idx[t]] * val[t];
+        if (fe)
+          fe[r] += pt->w * f;                         /* fe += w P : dF */
+        if (!Ke)
+          continue;
+        for (int kL = 0; kL < 9; kL++)                /* T = dF : A */
+          {
+            double s = 0;
+            for (int t = 0; t < n; t++)
+              s += val[t] * A[idx[t] * 9 + kL];
+            T[r * 9 + kL] = s;
+          }
+      }
+  if (!Ke)
+    return;
+  for (int b = 0; b < nen; b++)
+    for (int k = 0; k < dim; k++)
+      {
+        int col = b * dim + k;
+        n = variation (pt, dim, b, k, idx, val);
+        for (int r = 0; r <= col; r++)                /* Ke += w T : dF */
+          {
+            double s = 0;
+            for (int t = 0; t < n; t++)
+              s += T[r * 9 + idx[t]] * val[t];
+            Ke[r * nc + col] += pt->w * s;
+          }
+      }
+}
+
+/* ---- cells -------------------------------------------------------------- */
+
+static int
+check_hyper (const lac_mesh *m, const lac_hyper *h)
+{
+  if (!m || !h || !h->E || !h->nu)
+    LAC_ERROR (LAC_EINVAL, "mesh or material is NULL");
+  if (lac_model_dim (h->model) != m->dim)
+    LAC_ERROR (LAC_EINVAL, "model %s needs a %dD mesh, the mesh is %dD",
+               lac_model_name (h->model), lac_model_dim (h->model), m->dim);
+  return LAC_SUCCESS;
+}
+
+/* Element displacements ue[a*dim+i] of cell c. */
+static void
+gather (const lac_mesh *m, size_t c, int nen, const double *u, double *ue)
+{
+  const int *conn = m->conn + m->ptr[c];
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < m->dim; i++)
+      ue[a * m->dim + i]
+        = u ? u[(size_t) m->dim * (size_t) conn[a] + (size_t) i] : 0.0;
+}
+
+/* Cell c with a rule cache; fe, Ke accumulated (not zeroed); T scratch of
+ * LAC_MAX_NODES*3*9 doubles. */
+static int
+cell_eval (const lac_mesh *m, const lac_hyper *h, size_t c, const double *u,
+           lac_quad_cache *qc, double *fe, double *Ke, double *T)
+{
+  int dim = m->dim, status;
+  double xe[LAC_MAX_NODES * 3], ue[LAC_MAX_NODES * 3], P[9], A[81];
+  point pt;
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  if (!re || re->dim != dim)
+    LAC_ERROR (LAC_EINVAL, "cell %zu (tag %zu) is not a %dD cell", c,
+               m->cell_tag ? m->cell_tag[c] : c, dim);
+  lac_law law = h->law ? (lac_law) h->law[c] : LAC_LAW_NEO_HOOKEAN;
+  const lac_quad *q = lac_quad_cache_get (qc, re->shape, quad_degree (h, re));
+  if (!q)
+    return LAC_ENOMEM;
+  int nen = re->nnodes, nc = nen * dim;
+  lac_mesh_cell_coords (m, c, xe);
+  gather (m, c, nen, u, ue);
+  for (int p = 0; p < q->n; p++)
+    {
+      status = point_eval (h, re, dim, xe, ue, q->xi + p * dim, q->w[p], &pt);
+      if (status == LAC_ESING)
+        LAC_ERROR (status, "cell %zu (tag %zu, %s): det J = %g <= 0 at "
+                   "quadrature point %d of the reference cell", c,
+                   m->cell_tag ? m->cell_tag[c] : c, re->name, pt.mp.detJ, p);
+      if (status)
+        return status;
+      status = lac_hyper_stress (law, h->E[c], h->nu[c], pt.F, P,
+                                 Ke ? A : NULL);
+      if (status)
+        LAC_ERROR (status, "cell %zu (tag %zu, %s), quadrature point %d: %s",
+                   c, m->cell_tag ? m->cell_tag[c] : c, re->name, p,
+                   lac_error_message ());
+      point_add (&pt, nen, dim, P, A, fe, Ke, T);
+    }
+  if (Ke)
+    for (int i = 0; i < nc; i++)                      /* symmetric lower part */
+      for (int j = 0; j < i; j++)
+        Ke[i * nc + j] = Ke[j * nc + i];
+  return LAC_SUCCESS;
+}
+
+/* lac_hyper_cell: fe += F_int, Ke = K_T of cell c at u (lac_hyper.h).
+ *   Ke is overwritten (its upper part accumulated, then mirrored). */
+int
+lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
+                const double *u, double *fe, double *Ke)
+{
+  lac_quad_cache qc;
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  if (c >= m->ncells)
+    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells)", c, m->ncells);
+  double *T = lac_malloc (LAC_MAX_NODES * 3 * 9 * sizeof *T);
+  if (!T)
+    LAC_ERROR (LAC_ENOMEM, "tangent scratch");
+  memset (&qc, 0, sizeof qc);
+  if (Ke)
+    {
+      int nc = (int) (m->ptr[c + 1] - m->ptr[c]) * m->dim;
+      memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
+    }
+  status = cell_eval (m, h, c, u, &qc, fe, Ke, T);
+  lac_quad_cache_free (&qc);
+  lac_free (T);
+  return status;
+}
+
+/* Global dofs of cell c. */
+static int
+cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
+{
+  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < m->dim; i++)
+      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
+                             + (size_t) i;
+  return nen * m->dim;
+}
+
+/* Position of entry (row, col) in the pattern of K; -1 if absent. */
+static long
+csc_find (const lac_csc *K, size_t row, size_t col)
+{
+  int lo = K->p[col], hi = K->p[col + 1] - 1;
+  while (lo <= hi)
+    {
+      int mid = (lo + hi) / 2;
+      if ((size_t) K->i[mid] == row)
+        return mid;
+      if ((size_t) K->i[mid] < row)
+        lo = mid + 1;
+      else
+        hi = mid - 1;
+    }
+  return -1;
+}
+
+/* The loop over cells shared by both assemblies: K into triplets (T) or
+ * into a CSC pattern (C); any of Fint, Tk, Kc may be NULL. */
+static int
+assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
+          double *Fint, lac_triplet *Tk, lac_csc *Kc)
+{
+  lac_quad_cache qc;
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  size_t ndof = (size_t) m->dim * m->nnodes, ncmax = LAC_MAX_NODES * 3;
+  if ((Tk && (Tk->nrow != ndof || Tk->ncol != ndof))
+      || (Kc && (Kc->nrow != ndof || Kc->ncol != ndof)))
+    LAC_ERROR (LAC_EBADLEN, "K is not %zu x %zu (the mesh's dofs)", ndof, ndof);
+  int wantK = Tk || Kc;
+  double *Ke = lac_malloc (ncmax * ncmax * sizeof *Ke);
+  double *T = lac_malloc (ncmax * 9 * sizeof *T);
+  double fe[LAC_MAX_NODES * 3];
+  size_t dofs[LAC_MAX_NODES * 3];
+  if (!Ke || !T)
+    status = LAC_ERRMSG (LAC_ENOMEM, "element matrix of %zu^2 entries", ncmax);
+  memset (&qc, 0, sizeof qc);
+  if (Kc && !status)
+    memset (Kc->x, 0, (size_t) Kc->p[ndof] * sizeof *Kc->x);
+  for (size_t c = 0; c < m->ncells && !status; c++)
+    {
+      if (!(h->E[c] > 0.0))
+        continue;
+      int nc = cell_dofs (m, c, dofs);
+      memset (fe, 0, (size_t) nc * sizeof *fe);
+      if (wantK)
+        memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
+      status = cell_eval (m, h, c, u, &qc, fe, wantK ? Ke : NULL, T);
+      if (status)
+        break;
+      if (Fint)
+        for (int r = 0; r < nc; r++)
+          Fint[dofs[r]] += fe[r];                     /* Fint += fe */
+      if (Tk)
+        status = lac_triplet_add_block (Tk, (size_t) nc, dofs, (size_t) nc,
+                                        dofs, Ke);    /* K += Ke */
+      for (int j = 0; Kc && j < nc && !status; j++)
+        for (int r = 0; r < nc; r++)
+          {
+            long p = csc_find (Kc, dofs[r], dofs[j]);
+            if (p < 0)
+              {
+                status = LAC_ERRMSG (LAC_EINVAL, "entry (%zu, %zu) of cell %zu"
+                                     " is not in the pattern of K", dofs[r],
+                                     dofs[j], c);
+                break;
+              }
+            Kc->x[p] += Ke[r * nc + j];
+          }
+    }
+  lac_quad_cache_free (&qc);
+  lac_free (Ke);
+  lac_free (T);
+  return status;
+}
+
+int
+lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
+                    double *Fint, lac_triplet *K)
+{
+  return assemble (m, h, u, Fint, K, NULL);
+}
+
+int
+lac_hyper_assemble_csc (const lac_mesh *m, const lac_hyper *h,
+                        const double *u, double *Fint, lac_csc *K)
+{
+  if (!K)
+    LAC_ERROR (LAC_EINVAL, "K is NULL");
+  return assemble (m, h, u, Fint, NULL, K);
+}
+
+/* ---- Cauchy stress ------------------------------------------------------ */
+
+/* sigma = P F^T / J in Voigt order (lac_material.h). */
+static void
+cauchy (lac_model model, const double *F, const double *P, double *s)
+{
+  double Fi[9], sg[9];
+  double J = inverse3 (F, Fi);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      {
+        double t = 0;
+        for (int K = 0; K < 3; K++)
+          t += P[i * 3 + K] * F[j * 3 + K];           /* P F^T */
+        sg[i * 3 + j] = t / J;
+      }
+  s[0] = sg[0];
+  s[1] = sg[4];
+  s[2] = sg[8];
+  s[3] = sg[1];
+  if (model == LAC_SOLID3D)
+    {
+      s[4] = sg[5];
+      s[5] = sg[2];
+    }
+}
+
+static int
+cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u, size_t c,
+           const double *xi, double *s)
+{
+  int dim = m->dim;
+  double xe[LAC_MAX_NODES * 3], ue[LAC_MAX_NODES * 3], P[9];
+  point pt;
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  if (!re || re->dim != dim)
+    LAC_ERROR (LAC_EINVAL, "cell %zu is not a %dD cell", c, dim);
+  lac_mesh_cell_coords (m, c, xe);
+  gather (m, c, re->nnodes, u, ue);
+  int status = point_eval (h, re, dim, xe, ue, xi, 1.0, &pt);
+  if (status == LAC_EINVAL && h->model == LAC_AXISYMMETRIC)
+    {
+      /* on the axis: F_tt -> F_rr (the limit of u_r / R) */
+      lac_error_clear ();
+      pt.F[8] = pt.F[0];
+      status = LAC_SUCCESS;
+    }
+  if (status)
+    LAC_ERROR (status, "cell %zu (%s): det J = %g <= 0 at the point", c,
+               re->name, pt.mp.detJ);
+  lac_law law = h->law ? (lac_law) h->law[c] : LAC_LAW_NEO_HOOKEAN;
+  status = lac_hyper_stress (law, h->E[c], h->nu[c], pt.F, P, NULL);
+  if (status)
+    LAC_ERROR (status, "cell %zu: %s", c, lac_error_message ());
+  cauchy (h->model, pt.F, P, s);
+  return LAC_SUCCESS;
+}
+
+int
+lac_hyper_cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u,
+                     size_t c, const double *xi, double *s)
+{
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  if (!u || !xi || !s || c >= m->ncells)
+    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells) or NULL "
+               "argument", c, m->ncells);
+  return cauchy_at (m, h, u, c, xi, s);
+}
+
+typedef struct hyper_ctx
+{
+  const lac_hyper *h;
+  const double *u;
+} hyper_ctx;
+
+static int
+hyper_stress (const lac_mesh *m, size_t c, const double *xi, void *ctx,
+              double *s)
+{
+  const hyper_ctx *q = ctx;
+  return cauchy_at (m, q->h, q->u, c, xi, s);
+}
+
+int
+lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
+                        const double *u, const char *cells, double *sigma,
+                        double *vm)
+{
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  if (!u || !sigma)
+    LAC_ERROR (LAC_EINVAL, "displacement or output is NULL");
+  hyper_ctx q = { h, u };
+  return lac_post_nodal_average (m, h->model, h->E, cells, hyper_stress, &q,
+                                 sigma, vm);
+}

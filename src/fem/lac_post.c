@@ -1,0 +1,343 @@
+/* lac_post.c -- post-processing: stresses and errors        [LAC (2)] [LAC §5]
+ *
+ * Stresses sigma = A eps(u_h)  [LAC (2)] evaluated from the gradient of the
+ * discrete displacement inside a cell, their nodal averages and the von
+ * Mises stress; the L2 error and the H1-seminorm error of u_h against an
+ * exact solution, the quantities of the convergence studies [LAC §3.2]
+ * [LAC §5].
+ *
+ * Axisymmetric model (x = r, y = z): the hoop strain is u_r / r; on the
+ * axis (r = 0, where u_r = 0 for a regular field) it is replaced by its
+ * limit du_r/dr.  Norms are the norms of the solid of revolution, i.e. the
+ * integrals carry the weight 2 pi r:
+ *   ||v||_0^2 = int |v|^2 2 pi r dr dz,
+ *   |v|_1^2   = int (|grad_(r,z) v|^2 + (v_r / r)^2) 2 pi r dr dz,
+ * the second being the 3D H1 seminorm of the revolved vector field (the
+ * hoop term (v_r/r)^2 is the only non-zero part of the gradient the (r,z)
+ * gradient does not show).  Plane strain: norms over the section (per
+ * unit thickness).
+ *
+ * Error quadrature: degree 2*order + 2 of the cell (+1 in the axisymmetric
+ * model for the weight r), exact for the polynomial part of |u - u_h|^2 on
+ * affine cells; on curved cells and for non-polynomial exact fields it is an
+ * approximation, far below the discretization error.
+ */
+#include "fem/lac_post.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "fem/lac_quadrature.h"
+#include "fem/lac_spaces.h"
+#include "base/lac_status.h"
+
+
+/* Largest extent of the bounding box of a cell (for relative tolerances). */
+static double
+cell_diameter (int nen, int dim, const double *xe)
+{
+  double diam = 0.0;
+  for (int k = 0; k < dim; k++)
+    {
+      double lo = xe[k], hi = xe[k];
+      for (int a = 1; a < nen; a++)
+        {
+          lo = fmin (lo, xe[a * dim + k]);
+          hi = fmax (hi, xe[a * dim + k]);
+        }
+      diam = fmax (diam, hi - lo);
+    }
+  return diam;
+}
+
+/* Displacement and its gradient at a mapped point of a cell:
+ *   uh[i] = sum_a N_a u_{a,i},  gh[i*dim + k] = sum_a u_{a,i} dN_a/dx_k. */
+static void
+interp (const lac_mesh *m, size_t c, int nen, const lac_map *mp,
+        const double *u, double *uh, double *gh)
+{
+  int dim = m->dim;
+  const int *conn = m->conn + m->ptr[c];
+  memset (uh, 0, (size_t) dim * sizeof *uh);
+  memset (gh, 0, (size_t) (dim * dim) * sizeof *gh);
+  for (int a = 0; a < nen; a++)
+    {
+      const double *ua = u + (size_t) dim * (size_t) conn[a];
+      for (int i = 0; i < dim; i++)
+        {
+          uh[i] += mp->N[a] * ua[i];                          /* u_h */
+          for (int k = 0; k < dim; k++)
+            gh[i * dim + k] += ua[i] * mp->dNdx[a * dim + k]; /* grad u_h */
+        }
+    }
+}
+
+/* Voigt strain (engineering shears) from the displacement and its gradient.
+ * hoop: the axisymmetric eps_tt (ignored otherwise). */
+static void
+strain (lac_model model, const double *g, double hoop, double *e)
+{
+  if (model == LAC_SOLID3D)
+    {
+      e[0] = g[0];               /* eps_xx */
+      e[1] = g[4];               /* eps_yy */
+      e[2] = g[8];               /* eps_zz */
+      e[3] = g[1] + g[3];        /* gamma_xy */
+      e[4] = g[5] + g[7];        /* gamma_yz */
+      e[5] = g[6] + g[2];        /* gamma_zx */
+    }
+  else
+    {
+      e[0] = g[0];               /* eps_xx (rr) */
+      e[1] = g[3];               /* eps_yy (zz) */
+      e[2] = model == LAC_AXISYMMETRIC ? hoop : 0.0;  /* eps_tt or eps_zz = 0 */
+      e[3] = g[1] + g[2];        /* gamma_xy (rz) */
+    }
+}
+
+/* Stress at reference point xi of cell c (no argument checks). */
+static int
+stress_at (const lac_mesh *m, const lac_elastic *mat, const double *u,
+           size_t c, const double *xi, double *s)
+{
+  int dim = m->dim, ns = lac_model_nstress (mat->model);
+  double xe[LAC_MAX_NODES * 3], D[36], uh[3], gh[9], e[6];
+  lac_map mp;
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  if (!re || re->dim != dim)
+    LAC_ERROR (LAC_EINVAL, "cell %zu is not a %dD cell", c, dim);
+  int status = lac_material_D (mat->model, mat->E[c], mat->nu[c], D);
+  if (status)
+    LAC_ERROR (status, "cell %zu: E = %g, nu = %g is not a valid material",
+               c, mat->E[c], mat->nu[c]);
+  lac_mesh_cell_coords (m, c, xe);
+  status = lac_map_cell (re, dim, xe, xi, &mp);
+  if (status)
+    LAC_ERROR (status, "cell %zu (%s): det J = %g <= 0 at the point", c,
+               re->name, mp.detJ);
+  interp (m, c, re->nnodes, &mp, u, uh, gh);
+  double hoop = 0.0;
+  if (mat->model == LAC_AXISYMMETRIC)
+    {
+      double r = mp.x[0];
+      if (fabs (r) <= 1e-12 * cell_diameter (re->nnodes, dim, xe))
+        hoop = gh[0];                 /* on the axis: u_r/r -> du_r/dr */
+      else
+        hoop = uh[0] / r;             /* eps_tt = u_r / r */
+    }
+  strain (mat->model, gh, hoop, e);
+  for (int i = 0; i < ns; i++)        /* s = D eps  [LAC (2)] */
+    {
+      s[i] = 0.0;
+      for (int k = 0; k < ns; k++)
+        s[i] += D[i * ns + k] * e[k];
+    }
+  return LAC_SUCCESS;
+}
+
+/* Common checks of the stress routines. */
+static int
+check_args (const lac_mesh *m, const lac_elastic *mat, const double *u)
+{
+  if (!m || !mat || !u || !mat->E || !mat->nu)
+    LAC_ERROR (LAC_EINVAL, "mesh, material or displacement is NULL");
+  if (lac_model_dim (mat->model) != m->dim)
+    LAC_ERROR (LAC_EINVAL, "model %s needs a %dD mesh, the mesh is %dD",
+               lac_model_name (mat->model), lac_model_dim (mat->model), m->dim);
+  return LAC_SUCCESS;
+}
+
+/* lac_post_stress_at: s = D eps(u_h)(x(xi)) in cell c  [LAC (2)].
+ *   [in]  m, mat, u (dim*nnodes), c, xi (reference coordinates)
+ *   [out] s   lac_model_nstress values (plane strain: s[2] = sigma_zz)
+ *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING (det J <= 0) */
+int
+lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
+                    const double *u, size_t c, const double *xi, double *s)
+{
+  int status = check_args (m, mat, u);
+  if (status)
+    return status;
+  if (c >= m->ncells || !xi || !s)
+    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells) or NULL"
+               " argument", c, m->ncells);
+  return stress_at (m, mat, u, c, xi, s);
+}
+
+/* lac_post_stress_nodal: sigma at every node, the unweighted mean of the
+ * values of the cells (with E[c] > 0, and cells[c] != 0 if cells is given)
+ * that contain the node; vm = von Mises of the mean (may be NULL).
+ *   [out] sigma  nnodes*ns, vm  nnodes
+ *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
+/* lac_post_nodal_average: sigma at the nodes = the mean over the cells
+ * sharing a node (cells[c] != 0, E[c] > 0) of the cell's stress there,
+ * evaluated by f; vm (may be NULL) its von Mises value.  Shared by the
+ * linear (below) and hyperelastic (lac_hyper.c) recoveries. */
+int
+lac_post_nodal_average (const lac_mesh *m, lac_model model, const double *E,
+                        const char *cells, lac_cell_stress *f, void *ctx,
+                        double *sigma, double *vm)
+{
+  int ns = lac_model_nstress (model), status = LAC_SUCCESS;
+  double s[6];
+  unsigned *count = lac_calloc (m->nnodes, sizeof *count);
+  if (!count)
+    LAC_ERROR (LAC_ENOMEM, "counters for %zu nodes", m->nnodes);
+  memset (sigma, 0, m->nnodes * (size_t) ns * sizeof *sigma);
+  for (size_t c = 0; c < m->ncells && !status; c++)
+    {
+      if ((cells && !cells[c]) || !(E[c] > 0.0))
+        continue;
+      const lac_refelem *re = lac_refelem_get (m->type[c]);
+      if (!re)
+        {
+          status = LAC_ERRMSG (LAC_EINVAL, "cell %zu has an unknown type", c);
+          break;
+        }
+      const int *conn = m->conn + m->ptr[c];
+      for (int a = 0; a < re->nnodes && !status; a++)
+        {
+          status = f (m, c, re->xi + a * re->dim, ctx, s);
+          for (int k = 0; k < ns && !status; k++)
+            sigma[(size_t) conn[a] * (size_t) ns + (size_t) k] += s[k];
+          count[conn[a]]++;
+        }
+    }
+  for (size_t a = 0; a < m->nnodes && !status; a++)
+    {
+      if (count[a] > 0)
+        for (int k = 0; k < ns; k++)
+          sigma[a * (size_t) ns + (size_t) k] /= count[a];   /* mean */
+      if (vm)
+        vm[a] = lac_von_mises (model, sigma + a * (size_t) ns);
+    }
+  lac_free (count);
+  return status;
+}
+
+typedef struct linear_ctx
+{
+  const lac_elastic *mat;
+  const double *u;
+} linear_ctx;
+
+static int
+linear_stress (const lac_mesh *m, size_t c, const double *xi, void *ctx,
+               double *s)
+{
+  const linear_ctx *l = ctx;
+  return stress_at (m, l->mat, l->u, c, xi, s);
+}
+
+int
+lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
+                       const double *u, const char *cells, double *sigma,
+                       double *vm)
+{
+  int status = check_args (m, mat, u);
+  if (status)
+    return status;
+  if (!sigma)
+    LAC_ERROR (LAC_EINVAL, "output sigma is NULL");
+  linear_ctx l = { mat, u };
+  return lac_post_nodal_average (m, mat->model, mat->E, cells, linear_stress,
+                                 &l, sigma, vm);
+}
+
+/* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,
+ * with l2_exact = ||u||_0, h1_exact = |u|_1 (norms as in the file header:
+ * weight 2 pi r and the hoop term in the axisymmetric model).
+ *   [in]  m, model, u (dim*nnodes), exact(x, ctx, out[dim]), grad(x, ctx,
+ *         out[dim*dim]) (grad may be NULL if h1 and h1_exact are NULL)
+ *   [out] l2, h1, l2_exact, h1_exact (each may be NULL)
+ *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
+int
+lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
+                 lac_field *exact, lac_field_grad *grad, void *ctx,
+                 double *l2, double *h1, double *l2_exact, double *h1_exact)
+{
+  if (!m || !u || !exact)
+    LAC_ERROR (LAC_EINVAL, "mesh, displacement or exact field is NULL");
+  if (lac_model_dim (model) != m->dim)
+    LAC_ERROR (LAC_EINVAL, "model %s needs a %dD mesh, the mesh is %dD",
+               lac_model_name (model), lac_model_dim (model), m->dim);
+  if (!grad && (h1 || h1_exact))
+    LAC_ERROR (LAC_EINVAL, "H1 errors asked for but the gradient is NULL");
+  int dim = m->dim, status = LAC_SUCCESS, axi = model == LAC_AXISYMMETRIC;
+  double el2 = 0, eh1 = 0, nl2 = 0, nh1 = 0;
+  double xe[LAC_MAX_NODES * 3], uh[3], gh[9], ue[3], ge[9];
+  lac_quad *q = NULL;
+  int qshape = -1, qdeg = -1;
+  lac_map mp;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      const lac_refelem *re = lac_refelem_get (m->type[c]);
+      if (!re || re->dim != dim)
+        {
+          status = LAC_ERRMSG (LAC_EINVAL, "cell %zu is not a %dD cell", c,
+                               dim);
+          break;
+        }
+      int deg = 2 * re->order + 2 + axi;
+      if ((int) re->shape != qshape || deg != qdeg)
+        {
+          lac_quad_free (q);
+          q = lac_quad_alloc (re->shape, deg);
+          if (!q)
+            {
+              status = LAC_ENOMEM;   /* message set by lac_quad_alloc */
+              break;
+            }
+          qshape = (int) re->shape;
+          qdeg = deg;
+        }
+      lac_mesh_cell_coords (m, c, xe);
+      for (int p = 0; p < q->n; p++)
+        {
+          status = lac_map_cell (re, dim, xe, q->xi + p * dim, &mp);
+          if (status)
+            break;
+          double w = q->w[p] * mp.detJ * lac_model_weight (model, mp.x);
+          interp (m, c, re->nnodes, &mp, u, uh, gh);
+          exact (mp.x, ctx, ue);
+          for (int i = 0; i < dim; i++)
+            {
+              el2 += w * (ue[i] - uh[i]) * (ue[i] - uh[i]);  /* |u - u_h|^2 */
+              nl2 += w * ue[i] * ue[i];                      /* |u|^2 */
+            }
+          if (!grad)
+            continue;
+          grad (mp.x, ctx, ge);
+          for (int k = 0; k < dim * dim; k++)
+            {
+              eh1 += w * (ge[k] - gh[k]) * (ge[k] - gh[k]); /* |grad e|^2 */
+              nh1 += w * ge[k] * ge[k];
+            }
+          if (axi)
+            {
+              double r = mp.x[0];
+              double d = (ue[0] - uh[0]) / r;                /* hoop term */
+              eh1 += w * d * d;
+              nh1 += w * (ue[0] / r) * (ue[0] / r);
+            }
+        }
+      if (status)
+        {
+          status = LAC_ERRMSG (status, "cell %zu (%s): det J <= 0", c,
+                               re->name);
+          break;
+        }
+    }
+  lac_quad_free (q);
+  if (status)
+    return status;
+  if (l2)
+    *l2 = sqrt (el2);
+  if (h1)
+    *h1 = sqrt (eh1);
+  if (l2_exact)
+    *l2_exact = sqrt (nl2);
+  if (h1_exact)
+    *h1_exact = sqrt (nh1);
+  return LAC_SUCCESS;
+}

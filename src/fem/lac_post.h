@@ -1,0 +1,48 @@
+/* lac_post.h -- post-processing: stresses and errors
+ *
+ * Stresses sigma = A eps(u_h) at the quadrature points, averaged at the
+ * nodes (unweighted mean over the cells sharing a node), von Mises;
+ * L2 and H1-seminorm errors of u_h against an exact solution; the
+ * displacement at a point.  Components as in lac_material.h.
+ */
+#ifndef LAC_POST_H
+#define LAC_POST_H
+
+#include "fem/lac_assembly.h"
+
+/* Stress at reference point xi of cell c: s[ns]. */
+int lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
+                        const double *u, size_t c, const double *xi,
+                        double *s);
+
+/* Nodal averages: sigma[nnodes*ns], vm[nnodes] (vm may be NULL).  Nodes
+ * in no cell get zeros; cells with E <= 0 are skipped.  If cells != NULL only cells with cells[c] != 0
+ * contribute (per-body averages keep interface jumps). */
+int lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
+                           const double *u, const char *cells,
+                           double *sigma, double *vm);
+
+/* The stress s[ns] of cell c at reference point xi, by some law. */
+typedef int lac_cell_stress (const lac_mesh *m, size_t c, const double *xi,
+                             void *ctx, double *s);
+
+/* Nodal averages of the stress f gives (cells with cells[c] != 0 and
+ * E[c] > 0; cells may be NULL): sigma[nnodes*ns], vm[nnodes] (may be
+ * NULL).  lac_post_stress_nodal is this with the linear law. */
+int lac_post_nodal_average (const lac_mesh *m, lac_model model,
+                            const double *E, const char *cells,
+                            lac_cell_stress *f, void *ctx, double *sigma,
+                            double *vm);
+
+/* Errors over all cells: l2 = ||u - u_h||_0, h1 = |u - u_h|_1 (seminorm),
+ * also the norms of the exact solution (for relative errors; any output
+ * pointer may be NULL).  Quadrature exact to degree 2*order + 2 of the
+ * reference element (curved cells: an approximation).  Axisymmetric: the
+ * weight 2 pi r, the H1 seminorm includes the hoop term (u_r/r)^2, and the
+ * quadrature degree is one higher. */
+int lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
+                     lac_field *exact, lac_field_grad *grad, void *ctx,
+                     double *l2, double *h1, double *l2_exact,
+                     double *h1_exact);
+
+#endif /* LAC_POST_H */

@@ -1,0 +1,262 @@
+/* lac_mesh_gmsh.c -- reading meshes through the gmsh C API          [LAC §2]
+ *
+ * lac_mesh_read opens a .msh file (formats 2.2 and 4.1) or a .geo file
+ * (meshed here, options from lac_mesh_opts) with gmsh, copies nodes, cells
+ * and physical groups into a lac_mesh, and finalizes gmsh: the mesh owes
+ * nothing to gmsh afterwards.  This file holds the gmsh session (options,
+ * opening, meshing) and the driver; the copy is done by
+ * lac_mesh_gmsh_cells.c (nodes and cells: tags -> 0-based indices) and
+ * lac_mesh_gmsh_groups.c (physical groups), through
+ * lac_mesh_gmsh_internal.h.
+ *
+ *   - inverted cells are flipped or rejected (opts->flip_inverted);
+ *   - size, order, serendipity and recombine apply to .geo files only; a
+ *     .msh file is read as it is.
+ *
+ * gmsh 4.8 notes (see the project's dependency notes): gmshOpen on a missing
+ * file reports no error, so existence is checked first; the number `level'
+ * reaches the .geo as a command-line "-setnumber level N" passed to
+ * gmshInitialize (works with DefineConstant[] and with Exists()); such
+ * numbers persist in the gmsh process, so level is always set, never left
+ * over; Mesh.Algorithm 8 crashes gmsh 4.8 and is replaced by 6; a parse
+ * error thrown as an exception poisons later parses (see open_file).
+ */
+#include "io/lac_mesh_gmsh.h"
+
+#include <gmshc.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/lac_mem.h"
+#include "io/lac_mesh_gmsh_internal.h"
+#include "base/lac_status.h"
+
+enum { KIND_MSH, KIND_GEO };
+
+static void
+reader_free (lac_gmsh_reader *R)
+{
+  lac_free (R->tag);
+  lac_free (R->index);
+  lac_free (R->coord);
+  lac_free (R->ent_tag);
+  lac_free (R->ent_first);
+  lac_free (R->slot);
+}
+
+/* Put the file name in front of the message a lac_mesh_* call stored. */
+int
+lac_gmsh_with_path (const lac_gmsh_reader *R, int status)
+{
+  char msg[768];
+  if (!status)
+    return status;
+  snprintf (msg, sizeof msg, "%s", lac_error_message ());
+  return READ_ERR (status, "'%s': %s", R->path, msg);
+}
+
+/* Set the message for a failed gmsh call, with gmsh's last error. */
+int
+lac_gmsh_fail (const lac_gmsh_reader *R, int status, const char *what)
+{
+  char *e = NULL;
+  int ierr = 0;
+  gmshLoggerGetLastError (&e, &ierr);
+  status = READ_ERR (status, "'%s': %s: %s", R->path, what,
+                     !ierr && e && *e ? e : "gmsh gives no details");
+  gmshFree (e);
+  return status;
+}
+
+static int
+set_option (const lac_gmsh_reader *R, const char *name, double value)
+{
+  int ierr = 0;
+  gmshOptionSetNumber (name, value, &ierr);
+  if (ierr)
+    return lac_gmsh_fail (R, LAC_EDEP, name);
+  return LAC_SUCCESS;
+}
+
+/* ---------------------------------------------------------------------- */
+/* meshing a .geo                                                          */
+/* ---------------------------------------------------------------------- */
+
+/* Generate the mesh of the highest dimension with the options of opts. */
+static int
+mesh_geo (lac_gmsh_reader *R)
+{
+  const lac_mesh_opts *o = R->opts;
+  double alg = 6;
+  int ierr = 0, dim, status = LAC_SUCCESS;
+
+  dim = gmshModelGetDimension (&ierr);
+  if (ierr)
+    return lac_gmsh_fail (R, LAC_EDEP, "cannot get the model dimension");
+  if (dim < 2)
+    return READ_ERR (LAC_EINVAL, "'%s': the geometry has no surface or volume "
+                     "(dimension %d)", R->path, dim);
+  if (o->size < 0 || o->order < 0 || o->order > 2)
+    return READ_ERR (LAC_EINVAL, "'%s': size %g or order %d out of range "
+                     "(size >= 0, order 0, 1 or 2)", R->path, o->size,
+                     o->order);
+  if (o->size > 0)
+    status = set_option (R, "Mesh.MeshSizeFactor", o->size);
+  if (!status && o->recombine)
+    status = set_option (R, "Mesh.RecombineAll", 1);
+  if (!status && o->recombine)
+    status = set_option (R, "Mesh.RecombinationAlgorithm", 1);   /* blossom */
+  if (!status && o->serendipity)
+    status = set_option (R, "Mesh.SecondOrderIncomplete", 1);
+  gmshOptionGetNumber ("Mesh.Algorithm", &alg, &ierr);
+  if (!status && !ierr && alg == 8)   /* crashes gmsh 4.8.4: use the default */
+    status = set_option (R, "Mesh.Algorithm", 6);
+  if (status)
+    return status;
+  gmshModelMeshGenerate (dim, &ierr);
+  if (ierr)
+    return lac_gmsh_fail (R, LAC_EDEP, "meshing failed");
+  if (o->order > 0)
+    {
+      gmshModelMeshSetOrder (o->order, &ierr);
+      if (ierr)
+        return lac_gmsh_fail (R, LAC_EDEP, "cannot set the element order");
+    }
+  return LAC_SUCCESS;
+}
+
+/* ---------------------------------------------------------------------- */
+/* the reader                                                              */
+/* ---------------------------------------------------------------------- */
+
+/* gmshOpen, with its errors taken from the logger.  A parse error thrown
+ * as an exception (General.AbortOnError = 2, the API default) leaves the
+ * .geo parser of gmsh 4.8 in a state that breaks every later parse in the
+ * process, even after gmshFinalize/gmshInitialize; with AbortOnError = 0
+ * the parser ends normally and the errors are logged. */
+static int
+open_file (const lac_gmsh_reader *R, int kind)
+{
+  char **log = NULL;
+  const char *first = NULL;
+  size_t nlog = 0;
+  int ierr = 0, ierr_log = 0, status;
+
+  status = set_option (R, "General.AbortOnError", 0);
+  if (status)
+    return status;
+  gmshLoggerStart (&ierr);
+  if (ierr)
+    return lac_gmsh_fail (R, LAC_EDEP, "cannot start the gmsh logger");
+  gmshOpen (R->path, &ierr);
+  gmshLoggerGet (&log, &nlog, &ierr_log);
+  for (size_t i = 0; i < nlog && !first; i++)
+    if (strncmp (log[i], "Error: ", 7) == 0)
+      first = log[i] + 7;
+  if (first)
+    status = READ_ERR (LAC_EIO, "'%s': not a valid %s file: %s", R->path,
+                       kind == KIND_GEO ? ".geo" : "mesh", first);
+  else if (ierr || ierr_log)
+    status = lac_gmsh_fail (R, LAC_EIO, kind == KIND_GEO
+                                    ? "not a valid .geo file"
+                                    : "not a valid mesh file");
+  for (size_t i = 0; i < nlog; i++)
+    gmshFree (log[i]);
+  gmshFree (log);
+  gmshLoggerStop (&ierr);
+  if (!status)
+    status = set_option (R, "General.AbortOnError", 2);
+  return status;
+}
+
+/* Open (and mesh) the file, copy nodes, cells and groups into *out. */
+static int
+read_model (lac_gmsh_reader *R, int kind, lac_mesh **out)
+{
+  int status;
+  lac_mesh *m = NULL;
+
+  status = set_option (R, "General.Terminal", 0);
+  if (!status)
+    status = set_option (R, "General.Verbosity", 1);   /* errors, logged */
+  if (!status)
+    status = open_file (R, kind);
+  if (!status && kind == KIND_GEO)
+    status = mesh_geo (R);
+  if (!status)
+    status = lac_gmsh_read_nodes (R);
+  if (!status)
+    status = lac_gmsh_top_dimension (R, &R->tdim);
+  if (!status && R->tdim < 2)
+    status = READ_ERR (LAC_EINVAL, "'%s': no 2D or 3D elements (expected a "
+                       "mesh of surfaces or volumes)", R->path);
+  if (!status)
+    status = lac_gmsh_read_cells (R, &m);
+  if (!status)
+    status = lac_gmsh_with_path (R, lac_mesh_check_orientation (m,
+                                                       R->opts->flip_inverted,
+                                                       NULL));
+  if (!status)
+    status = lac_gmsh_read_groups (R, m);
+  if (status)
+    lac_mesh_free (m);
+  else
+    *out = m;
+  return status;
+}
+
+/* lac_mesh_read: read a .msh (2.2, 4.1) or mesh a .geo through gmsh.
+ *   [in]  path  the file; its extension says which
+ *   [in]  opts  meshing options (NULL: all zero)
+ *   [out] out   the mesh (caller frees), NULL on failure
+ *   returns LAC_SUCCESS, LAC_EIO (missing or unreadable file), LAC_EINVAL
+ *   (unsupported elements, inverted cells, groups that do not fit),
+ *   LAC_EDEP (gmsh failed), LAC_ENOMEM */
+int
+lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
+{
+  static const lac_mesh_opts none;
+  lac_gmsh_reader R = { 0 };
+  const char *ext;
+  char a0[] = "lac", a1[] = "-setnumber", a2[] = "level", a3[32];
+  char *argv[] = { a0, a1, a2, a3, NULL };
+  FILE *f;
+  int kind, ierr = 0, status;
+
+  if (!out)
+    return READ_ERR (LAC_EINVAL, "no output pointer");
+  *out = NULL;
+  if (!path)
+    return READ_ERR (LAC_EINVAL, "no file name");
+  ext = strrchr (path, '.');
+  if (ext && strcmp (ext, ".geo") == 0)
+    kind = KIND_GEO;
+  else if (ext && strcmp (ext, ".msh") == 0)
+    kind = KIND_MSH;
+  else
+    return READ_ERR (LAC_EINVAL, "'%s': expected a .msh or .geo file", path);
+  f = fopen (path, "r");                 /* gmshOpen is silent if missing */
+  if (!f)
+    return READ_ERR (LAC_EIO, "cannot open '%s'", path);
+  fclose (f);
+  R.path = path;
+  R.opts = opts ? opts : &none;
+  /* "-setnumber level N" defines `level' for the .geo parser; gmsh keeps
+   * such numbers for the whole process, so it is always given. */
+  snprintf (a3, sizeof a3, "%d", R.opts->level);
+  gmshInitialize (4, argv, 0, &ierr);
+  if (ierr)
+    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize", path);
+  else
+    status = read_model (&R, kind, out);
+  gmshFinalize (&ierr);
+  if (ierr && !status)
+    {
+      lac_mesh_free (*out);
+      *out = NULL;
+      status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to finalize", path);
+    }
+  reader_free (&R);
+  return status;
+}

@@ -1,0 +1,578 @@
+/* lac_scene.c -- scene files: tables, sections, the public functions
+ *
+ * Reading a scene (see lac_scene.h) takes four steps:
+ *   1. capture: inih splits the text into (section, key, value) entries
+ *      (lac_scene_ini.c);
+ *   2. overrides: --set KEY=VALUE replaces or adds entries (ibid.);
+ *   3. build: headers and entries, in file order, are checked against the
+ *      section and key tables below and stored in typed structs (ibid.);
+ *   4. finish: defaults, required keys, conflicts, model-dependent keys
+ *      (lac_scene_check.c).
+ * The first error stops the run with a one-line message naming the line.
+ *
+ * This file holds what the steps share: the section and key tables, the
+ * lookup and creation of sections, the messages; and the public
+ * functions: lac_scene_read, lac_scene_free and the queries.
+ */
+#include "io/lac_scene_internal.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "contact/lac_contact.h"
+#include "fem/lac_exact.h"
+#include "linalg/lac_linalg.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+/* ---- tables ----------------------------------------------------------- */
+
+const char *const lac_scene_model_names[] =
+  { "plane_strain", "axisymmetric", "3d", NULL };      /* lac_model order */
+static const char *const solver_names[] =
+  { "dense", "umfpack", "cholmod", NULL };   /* lac_solver_kind order */
+const char *const lac_scene_element_names[] =
+  { "tri3", "tri6", "quad4", "quad8", "quad9",
+    "tet4", "tet10", "hex8", "hex20", "hex27", NULL };
+static const char *const inverted_names[] = { "flip", "reject", NULL };
+static const char *const symmetry_names[] = { "x", "y", "z", "r", NULL };
+static const char *const law_names[] = { "linear", "neo_hookean", NULL };
+
+/* element name -> type, dimension, order, recombine, serendipity */
+const lac_scene_element_spec lac_scene_elements[LAC_SCENE_NELEMENTS] = {
+  { LAC_TRI3, 2, 1, 0, 0 }, { LAC_TRI6, 2, 2, 0, 0 },
+  { LAC_QUAD4, 2, 1, 1, 0 }, { LAC_QUAD8, 2, 2, 1, 1 },
+  { LAC_QUAD9, 2, 2, 1, 0 }, { LAC_TET4, 3, 1, 0, 0 },
+  { LAC_TET10, 3, 2, 0, 0 }, { LAC_HEX8, 3, 1, 1, 0 },
+  { LAC_HEX20, 3, 2, 1, 1 }, { LAC_HEX27, 3, 2, 1, 0 },
+};
+
+#define F(T, f) offsetof (T, f)
+#define STR(T, f) { #f, K_STR, F (T, f), 0, NULL, 0, 0, 0, 0, "text" }
+#define NUM(T, f, lo, hi, open, ex) \
+  { #f, K_NUM, F (T, f), 0, NULL, 0, lo, hi, open, ex }
+#define INT(T, f, lo, hi, ex) \
+  { #f, K_INT, F (T, f), 0, NULL, 0, lo, hi, 0, ex }
+#define BOOL(T, f) { #f, K_BOOL, F (T, f), 0, NULL, 0, 0, 0, 0, "yes or no" }
+#define ENUM(T, f, names) \
+  { #f, K_ENUM, F (T, f), 0, names, sizeof names[0], 0, 0, 0, NULL }
+#define VEC(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
+                       "2 or 3 numbers" }
+#define VEC12(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
+                         "1 or 2 numbers" }
+
+static const key_spec scene_keys[] = {
+  STR (lac_scene_main, title),
+  ENUM (lac_scene_main, model, lac_scene_model_names),
+  ENUM (lac_scene_main, element, lac_scene_element_names),
+  ENUM (lac_scene_main, solver, solver_names),
+  STR (lac_scene_main, out),
+  BOOL (lac_scene_main, large_deformation),
+};
+static const key_spec mesh_keys[] = {
+  STR (lac_scene_mesh, file),
+  NUM (lac_scene_mesh, size, 0, HUGE_VAL, 1, "a number > 0"),
+  INT (lac_scene_mesh, order, 1, 2, "1 or 2"),
+  INT (lac_scene_mesh, level, 0, 12, "an integer in 0..12"),
+  BOOL (lac_scene_mesh, recombine),
+  ENUM (lac_scene_mesh, inverted, inverted_names),
+};
+static const key_spec material_keys[] = {
+  STR (lac_scene_material, group),
+  NUM (lac_scene_material, E, 0, HUGE_VAL, 1, "a number > 0"),
+  NUM (lac_scene_material, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
+  ENUM (lac_scene_material, law, law_names),
+};
+static const key_spec dirichlet_keys[] = {
+  STR (lac_scene_dirichlet, group),
+  NUM (lac_scene_dirichlet, ux, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  NUM (lac_scene_dirichlet, uy, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  NUM (lac_scene_dirichlet, uz, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  NUM (lac_scene_dirichlet, ur, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  BOOL (lac_scene_dirichlet, clamp),
+  ENUM (lac_scene_dirichlet, symmetry, symmetry_names),
+  BOOL (lac_scene_dirichlet, exact),
+  BOOL (lac_scene_dirichlet, ramp),
+};
+static const char *const load_exact_names[] =
+  { "none", "traction", "tangential", "force", NULL };
+static const key_spec load_keys[] = {
+  STR (lac_scene_load, group),
+  NUM (lac_scene_load, pressure, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  VEC (lac_scene_load, traction, ntraction),
+  VEC (lac_scene_load, force, nforce),
+  ENUM (lac_scene_load, exact, load_exact_names),
+};
+static const key_spec exact_keys[] = {
+  { "solution", K_ENUM, F (lac_scene_exact, solution), 0,    /* lac_exact.h */
+    &lac_exact_table[0].name, sizeof lac_exact_table[0], 0, 0, 0, NULL },
+  NUM (lac_scene_exact, a, 0, HUGE_VAL, 1, "a number > 0"),
+  NUM (lac_scene_exact, b, 0, HUGE_VAL, 1, "a number > 0"),
+  NUM (lac_scene_exact, p, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  NUM (lac_scene_exact, E, 0, HUGE_VAL, 1, "a number > 0"),
+  NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
+};
+static const char *const obstacle_names[] = { "none", "graph", NULL };
+static const char *const method_names[] = { "lac", "p0", "nts", NULL };
+static const key_spec contact_keys[] = {
+  STR (lac_scene_contact, slave),
+  STR (lac_scene_contact, master),
+  ENUM (lac_scene_contact, obstacle, obstacle_names),
+  NUM (lac_scene_contact, height, -HUGE_VAL, HUGE_VAL, 0, "a number"),
+  VEC12 (lac_scene_contact, curvature, ncurvature),
+  VEC12 (lac_scene_contact, center, ncenter),
+  NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
+  ENUM (lac_scene_contact, method, method_names),
+};
+static const key_spec steps_keys[] = {
+  INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),
+  NUM (lac_scene_steps, start, 0, 1, 2, "a number in [0, 1)"),
+  NUM (lac_scene_steps, tol, 0, HUGE_VAL, 1, "a number > 0"),
+  INT (lac_scene_steps, maxit, 1, 1000, "an integer in 1..1000"),
+  STR (lac_scene_steps, monitor),
+  STR (lac_scene_steps, curve),
+  INT (lac_scene_steps, vtu_every, 0, 100000, "an integer in 0..100000"),
+};
+static const key_spec output_keys[] = {
+  BOOL (lac_scene_output, vtu),
+  BOOL (lac_scene_output, csv),
+  BOOL (lac_scene_output, matrix),
+};
+
+#define NK(a) ((int) (sizeof a / sizeof a[0]))
+const section_spec lac_scene_sections[NSEC] = {
+  { "scene", 0, scene_keys, NK (scene_keys) },
+  { "mesh", 0, mesh_keys, NK (mesh_keys) },
+  { "material", 1, material_keys, NK (material_keys) },
+  { "dirichlet", 1, dirichlet_keys, NK (dirichlet_keys) },
+  { "load", 1, load_keys, NK (load_keys) },
+  { "exact", 0, exact_keys, NK (exact_keys) },
+  { "output", 0, output_keys, NK (output_keys) },
+  { "contact", 1, contact_keys, NK (contact_keys) },
+  { "steps", 0, steps_keys, NK (steps_keys) },
+};
+
+/* ---- sections: lookup and creation ------------------------------------ */
+
+int
+lac_scene_section_kind (const char *type)
+{
+  for (int k = 0; k < NSEC; k++)
+    if (strcmp (lac_scene_sections[k].name, type) == 0)
+      return k;
+  return -1;
+}
+
+int
+lac_scene_split_section (const char *sec, char *buf, size_t size,
+                         const char **name)
+{
+  char *sp;
+  snprintf (buf, size, "%s", sec);
+  sp = strchr (buf, ' ');
+  *name = "";
+  if (sp)
+    {
+      *sp = '\0';
+      *name = sp + 1;
+    }
+  return lac_scene_section_kind (buf);
+}
+
+static void
+set_defaults (int kind, lac_scene_section *s)
+{
+  switch (kind)
+    {
+    case SEC_SCENE:
+      {
+        lac_scene_main *m = (lac_scene_main *) s;
+        m->model = LAC_PLANE_STRAIN;
+        m->element = LAC_ELEM_NONE;
+        m->solver = LAC_SOLVER_CHOLMOD;
+        break;
+      }
+    case SEC_MESH:
+      {
+        lac_scene_mesh *m = (lac_scene_mesh *) s;
+        m->size = 1;
+        m->recombine = -1;
+        break;
+      }
+    case SEC_MATERIAL:
+      ((lac_scene_material *) s)->E = ((lac_scene_material *) s)->nu = NAN;
+      break;
+    case SEC_EXACT:
+      ((lac_scene_exact *) s)->solution = LAC_EXACT_NONE;
+      break;
+    case SEC_OUTPUT:
+      ((lac_scene_output *) s)->vtu = ((lac_scene_output *) s)->csv = 1;
+      break;
+    case SEC_CONTACT:
+      ((lac_scene_contact *) s)->epsilon = LAC_EPSILON_DEFAULT;
+      break;
+    case SEC_DIRICHLET:
+      ((lac_scene_dirichlet *) s)->ramp = 1;
+      break;
+    case SEC_STEPS:
+      {
+        lac_scene_steps *t = (lac_scene_steps *) s;
+        t->n = 1;
+        t->tol = 1e-8;
+        t->maxit = 25;
+        break;
+      }
+    default:
+      break;
+    }
+  s->kind = kind;
+}
+
+static lac_scene_section *
+singleton (lac_scene *sc, int kind)
+{
+  switch (kind)
+    {
+    case SEC_SCENE: return &sc->scene.sec;
+    case SEC_MESH: return &sc->mesh.sec;
+    case SEC_EXACT: return &sc->exact.sec;
+    case SEC_OUTPUT: return &sc->output.sec;
+    case SEC_STEPS: return &sc->steps.sec;
+    default: return NULL;
+    }
+}
+
+/* Named sections: count, k-th, and one more (zeroed) at the end. */
+static size_t
+named_count (const lac_scene *sc, int kind)
+{
+  return kind == SEC_MATERIAL ? sc->nmaterial
+         : kind == SEC_DIRICHLET ? sc->ndirichlet
+         : kind == SEC_CONTACT ? sc->ncontact : sc->nload;
+}
+
+static lac_scene_section *
+named_at (lac_scene *sc, int kind, size_t k)
+{
+  return kind == SEC_MATERIAL ? &sc->material[k].sec
+         : kind == SEC_DIRICHLET ? &sc->dirichlet[k].sec
+         : kind == SEC_CONTACT ? &sc->contact[k].sec : &sc->load[k].sec;
+}
+
+#define GROW(arr, n)                                                    \
+  do {                                                                  \
+    void *p_ = lac_realloc ((arr), ((n) + 1) * sizeof *(arr));          \
+    if (!p_)                                                            \
+      return NULL;                                                      \
+    (arr) = p_;                                                         \
+    memset (&(arr)[(n)], 0, sizeof *(arr));                             \
+    s = &(arr)[(n)++].sec;                                              \
+  } while (0)
+
+static lac_scene_section *
+named_grow (lac_scene *sc, int kind)
+{
+  lac_scene_section *s;
+  if (kind == SEC_MATERIAL)
+    GROW (sc->material, sc->nmaterial);
+  else if (kind == SEC_DIRICHLET)
+    GROW (sc->dirichlet, sc->ndirichlet);
+  else if (kind == SEC_CONTACT)
+    GROW (sc->contact, sc->ncontact);
+  else
+    GROW (sc->load, sc->nload);
+  return s;
+}
+
+lac_scene_section *
+lac_scene_section_find (lac_scene *sc, int kind, const char *name)
+{
+  if (!lac_scene_sections[kind].named)
+    {
+      lac_scene_section *s = singleton (sc, kind);
+      return s->line ? s : NULL;
+    }
+  for (size_t k = 0; k < named_count (sc, kind); k++)
+    if (strcmp (named_at (sc, kind, k)->name, name) == 0)
+      return named_at (sc, kind, k);
+  return NULL;
+}
+
+lac_scene_section *
+lac_scene_section_new (lac_scene *sc, int kind, const char *name, int line)
+{
+  lac_scene_section *s;
+  if (!lac_scene_sections[kind].named)
+    {
+      s = singleton (sc, kind);
+      s->line = line;
+      return s;
+    }
+  if (!(s = named_grow (sc, kind)))
+    return NULL;
+  set_defaults (kind, s);
+  s->line = line;
+  s->name = lac_strdup (name);   /* freed with the scene even if NULL */
+  return s->name ? s : NULL;
+}
+
+int
+lac_scene_key_index (int kind, const char *key)
+{
+  for (int k = 0; k < lac_scene_sections[kind].nkeys; k++)
+    if (strcmp (lac_scene_sections[kind].keys[k].name, key) == 0)
+      return k;
+  return -1;
+}
+
+void
+lac_scene_join_names (char *buf, size_t size, const char *const *names,
+                      size_t n, size_t stride)
+{
+  size_t len = 0;
+  buf[0] = '\0';
+  for (size_t k = 0; k < n; k++)
+    {
+      const char *s = *(const char *const *) ((const char *) names
+                                              + k * stride);
+      int w = snprintf (buf + len, size - len, "%s%s", k ? ", " : "", s);
+      if (w < 0 || (size_t) w >= size - len)
+        break;
+      len += (size_t) w;
+    }
+}
+
+void
+lac_scene_section_list (char *buf, size_t size)
+{
+  size_t len = 0;
+  for (int k = 0; k < NSEC && len < size; k++)
+    {
+      const section_spec *sp = &lac_scene_sections[k];
+      int w = snprintf (buf + len, size - len, "%s%s%s", k ? ", " : "",
+                        sp->name, sp->named ? " NAME" : "");
+      if (w < 0)
+        break;
+      len += (size_t) w;
+    }
+}
+
+/* ---- public ----------------------------------------------------------- */
+
+static int
+set_names (lac_scene *sc, const char *path)
+{
+  const char *slash = strrchr (path, '/'), *base = slash ? slash + 1 : path;
+  size_t n = strlen (base);
+  sc->path = lac_strdup (path);
+  if (!slash)
+    sc->dir = lac_strdup (".");
+  else if (slash == path)
+    sc->dir = lac_strdup ("/");
+  else if ((sc->dir = lac_malloc ((size_t) (slash - path) + 1)) != NULL)
+    {
+      memcpy (sc->dir, path, (size_t) (slash - path));
+      sc->dir[slash - path] = '\0';
+    }
+  if (n > 6 && strcmp (base + n - 6, ".scene") == 0)
+    n -= 6;
+  if ((sc->basename = lac_malloc (n + 1)) != NULL)
+    {
+      memcpy (sc->basename, base, n);
+      sc->basename[n] = '\0';
+    }
+  if (!sc->path || !sc->dir || !sc->basename)
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  return LAC_SUCCESS;
+}
+
+int
+lac_scene_read_string (const char *text, const char *path, size_t nset,
+                       const char *const *set, lac_scene **out)
+{
+  lac_scene *sc;
+  int status;
+  *out = NULL;
+  if (!(sc = lac_calloc (1, sizeof *sc)))
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  set_defaults (SEC_SCENE, &sc->scene.sec);
+  set_defaults (SEC_MESH, &sc->mesh.sec);
+  set_defaults (SEC_EXACT, &sc->exact.sec);
+  set_defaults (SEC_OUTPUT, &sc->output.sec);
+  set_defaults (SEC_STEPS, &sc->steps.sec);
+  status = set_names (sc, path);
+  if (!status)
+    status = lac_scene_parse (sc, text, path, nset, set);    /* steps 1-3 */
+  if (!status)
+    status = lac_scene_finish (sc);                          /* step 4 */
+  if (status)
+    lac_scene_free (sc);
+  else
+    *out = sc;
+  return status;
+}
+
+int
+lac_scene_read (const char *path, size_t nset, const char *const *set,
+                lac_scene **out)
+{
+  FILE *f;
+  char *text = NULL, *p;
+  size_t len = 0, cap = 0, n;
+  int status;
+  *out = NULL;
+  if (!(f = fopen (path, "r")))
+    return lac_error_set (LAC_EIO, path, "cannot open scene file (%s)",
+                          strerror (errno));
+  do
+    {
+      if (cap - len < 4096)
+        {
+          cap = cap ? 2 * cap : 8192;
+          if (!(p = lac_realloc (text, cap)))
+            {
+              lac_free (text);
+              fclose (f);
+              LAC_ERROR (LAC_ENOMEM, "out of memory reading %s", path);
+            }
+          text = p;
+        }
+      n = fread (text + len, 1, cap - len - 1, f);
+      len += n;
+    }
+  while (n > 0);
+  status = ferror (f) ? errno : 0;
+  fclose (f);
+  text[len] = '\0';
+  if (status)
+    status = lac_error_set (LAC_EIO, path, "cannot read scene file (%s)",
+                            strerror (status));
+  else
+    status = lac_scene_read_string (text, path, nset, set, out);
+  lac_free (text);
+  return status;
+}
+
+static void
+section_free (lac_scene_section *s)
+{
+  const section_spec *sp = &lac_scene_sections[s->kind];
+  for (int k = 0; k < sp->nkeys; k++)
+    {
+      lac_free (s->key_raw[k]);
+      if (sp->keys[k].type == K_STR)
+        lac_free (*(char **) ((char *) s + sp->keys[k].off));
+    }
+  lac_free (s->name);
+}
+
+void
+lac_scene_free (lac_scene *sc)
+{
+  if (!sc)
+    return;
+  section_free (&sc->scene.sec);
+  section_free (&sc->mesh.sec);
+  section_free (&sc->exact.sec);
+  section_free (&sc->output.sec);
+  section_free (&sc->steps.sec);
+  lac_free (sc->mesh.path);
+  for (size_t k = 0; k < sc->nmaterial; k++)
+    section_free (&sc->material[k].sec);
+  for (size_t k = 0; k < sc->ndirichlet; k++)
+    section_free (&sc->dirichlet[k].sec);
+  for (size_t k = 0; k < sc->nload; k++)
+    section_free (&sc->load[k].sec);
+  for (size_t k = 0; k < sc->ncontact; k++)
+    section_free (&sc->contact[k].sec);
+  lac_free (sc->material);
+  lac_free (sc->dirichlet);
+  lac_free (sc->load);
+  lac_free (sc->contact);
+  lac_free (sc->path);
+  lac_free (sc->dir);
+  lac_free (sc->basename);
+  lac_free (sc);
+}
+
+/* ---- messages and queries -------------------------------------------- */
+
+int
+lac_scene_where_error (const char *path, int line, int status,
+                       const char *fmt, ...)
+{
+  char where[512], msg[768];
+  va_list ap;
+  if (line > 0)
+    snprintf (where, sizeof where, "%s:%d", path, line);
+  else
+    snprintf (where, sizeof where, "%s",
+              line == LAC_SCENE_FROM_SET ? "--set" : path);
+  va_start (ap, fmt);
+  vsnprintf (msg, sizeof msg, fmt, ap);
+  va_end (ap);
+  return lac_error_set (status, where, "%s", msg);
+}
+
+int
+lac_scene_key_line (const lac_scene_section *s, const char *key)
+{
+  int k = lac_scene_key_index (s->kind, key);
+  return k < 0 ? 0 : s->key_line[k];
+}
+
+int
+lac_scene_error (const lac_scene *sc, const lac_scene_section *s,
+                 const char *key, int status, const char *fmt, ...)
+{
+  char label[300] = "", keypart[400] = "", msg[600];
+  int k = (s && key) ? lac_scene_key_index (s->kind, key) : -1;
+  int line = (k >= 0) ? s->key_line[k] : 0;
+  va_list ap;
+  if (s && s->name)
+    snprintf (label, sizeof label, "[%s %s]", lac_scene_sections[s->kind].name,
+              s->name);
+  else if (s)
+    snprintf (label, sizeof label, "[%s]", lac_scene_sections[s->kind].name);
+  if (k >= 0 && line != 0)
+    snprintf (keypart, sizeof keypart, " %s = '%s'", key,
+              s->key_raw[k] ? s->key_raw[k] : "");
+  else if (key)
+    snprintf (keypart, sizeof keypart, " %s", key);
+  if (line == 0 && s)
+    line = s->line;
+  va_start (ap, fmt);
+  vsnprintf (msg, sizeof msg, fmt, ap);
+  va_end (ap);
+  return lac_scene_where_error (sc->path, line, status, "%s%s: %s", label,
+                                keypart, msg);
+}
+
+const char *
+lac_scene_element_name (int element)
+{
+  for (int k = 0; k < LAC_SCENE_NELEMENTS; k++)
+    if ((int) lac_scene_elements[k].type == element)
+      return lac_scene_element_names[k];
+  return "any";
+}
+
+const char *
+lac_scene_exact_name (int solution)
+{
+  return lac_exact_name (solution);
+}
+
+int
+lac_scene_component (lac_model model, const char *key)
+{
+  static const char *const keys[3][3] = {
+    { "ux", "uy", NULL }, { "ur", "uz", NULL }, { "ux", "uy", "uz" } };
+  for (int c = 0; c < 3; c++)
+    if (keys[model][c] && strcmp (keys[model][c], key) == 0)
+      return c;
+  return -1;
+}

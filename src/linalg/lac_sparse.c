@@ -1,0 +1,319 @@
+/* lac_sparse.c -- triplets, compressed sparse columns, Matrix Market dump
+ *
+ * A triplet list collects (i, j, x) entries in any order, duplicates
+ * allowed (element matrices are added entry by entry).  lac_csc_from_triplet
+ * compresses it in O(nnz + nrow + ncol) time: bucket the entries by row,
+ * sum the duplicates of each row with a marker array, then transpose, which
+ * leaves the row indices of every column sorted.  This is CSparse's
+ * cs_compress + cs_dupl + cs_transpose, arranged so that only one
+ * transpose is needed.
+ *
+ * References: T. A. Davis, Direct Methods for Sparse Linear Systems, SIAM
+ * 2006, chapter 2 (CSparse).  Matrix Market exchange format,
+ * https://math.nist.gov/MatrixMarket/formats.html
+ */
+#include "linalg/lac_linalg.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdint.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+/* ---- triplets --------------------------------------------------------- */
+
+lac_triplet *
+lac_triplet_alloc (size_t nrow, size_t ncol, size_t cap)
+{
+  lac_triplet *T;
+  if (nrow > INT_MAX || ncol > INT_MAX)
+    LAC_ERROR_NULL (LAC_EINVAL, "%zu x %zu matrix: sizes above INT_MAX are "
+                    "not supported (int indices)", nrow, ncol);
+  if (cap < 16)
+    cap = 16;
+  T = lac_calloc (1, sizeof *T);
+  if (!T)
+    LAC_ERROR_NULL (LAC_ENOMEM, "triplet header");
+  T->nrow = nrow;
+  T->ncol = ncol;
+  T->cap = cap;
+  T->i = lac_malloc (cap * sizeof *T->i);
+  T->j = lac_malloc (cap * sizeof *T->j);
+  T->x = lac_malloc (cap * sizeof *T->x);
+  if (!T->i || !T->j || !T->x)
+    {
+      lac_triplet_free (T);
+      LAC_ERROR_NULL (LAC_ENOMEM, "triplet arrays for %zu entries", cap);
+    }
+  return T;
+}
+
+void
+lac_triplet_free (lac_triplet *T)
+{
+  if (!T)
+    return;
+  lac_free (T->i);
+  lac_free (T->j);
+  lac_free (T->x);
+  lac_free (T);
+}
+
+/* Make room for at least `need` entries (capacity grows geometrically). */
+static int
+triplet_reserve (lac_triplet *T, size_t need)
+{
+  size_t cap = T->cap;
+  int *i, *j;
+  double *x;
+  if (need <= cap)
+    return LAC_SUCCESS;
+  while (cap < need)
+    cap += cap / 2 + 16;                     /* x 1.5: less waste than x 2 */
+  i = lac_realloc (T->i, cap * sizeof *i);
+  if (i)
+    T->i = i;
+  j = lac_realloc (T->j, cap * sizeof *j);
+  if (j)
+    T->j = j;
+  x = lac_realloc (T->x, cap * sizeof *x);
+  if (x)
+    T->x = x;
+  if (!i || !j || !x)         /* arrays stay valid with the old capacity */
+    LAC_ERROR (LAC_ENOMEM, "growing triplets from %zu to %zu entries",
+               T->cap, cap);
+  T->cap = cap;
+  return LAC_SUCCESS;
+}
+
+int
+lac_triplet_add (lac_triplet *T, size_t i, size_t j, double x)
+{
+  int status;
+  if (i >= T->nrow || j >= T->ncol)
+    LAC_ERROR (LAC_EINVAL, "entry (%zu, %zu) outside the %zu x %zu matrix",
+               i, j, T->nrow, T->ncol);
+  if ((status = triplet_reserve (T, T->nz + 1)))
+    return status;
+  T->i[T->nz] = (int) i;
+  T->j[T->nz] = (int) j;
+  T->x[T->nz] = x;
+  T->nz++;
+  return LAC_SUCCESS;
+}
+
+int
+lac_triplet_add_block (lac_triplet *T, size_t nr, const size_t *rows,
+                       size_t nc, const size_t *cols, const double *B)
+{
+  int status;
+  for (size_t a = 0; a < nr; a++)
+    if (rows[a] >= T->nrow)
+      LAC_ERROR (LAC_EINVAL, "block row %zu: index %zu outside the %zu rows",
+                 a, rows[a], T->nrow);
+  for (size_t b = 0; b < nc; b++)
+    if (cols[b] >= T->ncol)
+      LAC_ERROR (LAC_EINVAL, "block column %zu: index %zu outside the %zu "
+                 "columns", b, cols[b], T->ncol);
+  if ((status = triplet_reserve (T, T->nz + nr * nc)))
+    return status;
+  for (size_t a = 0; a < nr; a++)
+    for (size_t b = 0; b < nc; b++)
+      {
+        T->i[T->nz] = (int) rows[a];        /* T(rows[a], cols[b]) += B_ab */
+        T->j[T->nz] = (int) cols[b];
+        T->x[T->nz] = B[a * nc + b];
+        T->nz++;
+      }
+  return LAC_SUCCESS;
+}
+
+/* ---- compressed sparse columns ----------------------------------------- */
+
+lac_csc *
+lac_csc_alloc (size_t nrow, size_t ncol, size_t nnz)
+{
+  lac_csc *A;
+  if (nrow > INT_MAX || ncol > INT_MAX || nnz > INT_MAX)
+    LAC_ERROR_NULL (LAC_EINVAL, "%zu x %zu matrix with %zu entries: sizes "
+                    "above INT_MAX are not supported (int indices)",
+                    nrow, ncol, nnz);
+  A = lac_calloc (1, sizeof *A);
+  if (!A)
+    LAC_ERROR_NULL (LAC_ENOMEM, "CSC header");
+  A->nrow = nrow;
+  A->ncol = ncol;
+  A->p = lac_calloc (ncol + 1, sizeof *A->p);
+  A->i = lac_malloc (nnz * sizeof *A->i);
+  A->x = lac_malloc (nnz * sizeof *A->x);
+  if (!A->p || !A->i || !A->x)
+    {
+      lac_csc_free (A);
+      LAC_ERROR_NULL (LAC_ENOMEM, "CSC arrays, %zu columns, %zu entries",
+                      ncol, nnz);
+    }
+  return A;
+}
+
+void
+lac_csc_free (lac_csc *A)
+{
+  if (!A)
+    return;
+  lac_free (A->p);
+  lac_free (A->i);
+  lac_free (A->x);
+  lac_free (A);
+}
+
+/* p[0..n] = cumulative sum of c[0..n-1]; c is overwritten with a copy of
+ * p[0..n-1] (the next free slot of each bucket).  cs_cumsum. */
+static size_t
+cumsum (int *p, size_t *c, size_t n)
+{
+  size_t nz = 0;
+  for (size_t k = 0; k < n; k++)
+    {
+      p[k] = (int) nz;
+      nz += c[k];
+      c[k] = (size_t) p[k];
+    }
+  p[n] = (int) nz;
+  return nz;
+}
+
+/* Give back the unused tail of A's arrays (a failed shrink is harmless). */
+static void
+shrink (lac_csc *A, size_t nnz)
+{
+  int *i = lac_realloc (A->i, nnz * sizeof *i);
+  double *x = lac_realloc (A->x, nnz * sizeof *x);
+  if (i)
+    A->i = i;
+  if (x)
+    A->x = x;
+}
+
+/* R = rows of T (CSC of T^T), duplicates summed, column order unsorted. */
+static lac_csc *
+compress_rows (const lac_triplet *T)
+{
+  size_t *w = lac_calloc (T->nrow > T->ncol ? T->nrow : T->ncol, sizeof *w);
+  lac_csc *R = lac_csc_alloc (T->ncol, T->nrow, T->nz);
+  size_t nz = 0;
+  if (!w || !R)
+    goto fail;
+  /* Step 1: bucket the entries by row (counting sort)  [cs_compress] */
+  for (size_t k = 0; k < T->nz; k++)
+    w[T->i[k]]++;
+  cumsum (R->p, w, T->nrow);
+  for (size_t k = 0; k < T->nz; k++)
+    {
+      size_t q = w[T->i[k]]++;
+      R->i[q] = T->j[k];
+      R->x[q] = T->x[k];
+    }
+  /* Step 2: sum duplicates; w[j] = where column j sits in the current row,
+   * or a value below the row's start if not seen yet  [cs_dupl] */
+  for (size_t j = 0; j < T->ncol; j++)
+    w[j] = SIZE_MAX;
+  for (size_t r = 0; r < T->nrow; r++)
+    {
+      size_t start = nz;
+      for (size_t q = (size_t) R->p[r]; q < (size_t) R->p[r + 1]; q++)
+        {
+          size_t j = (size_t) R->i[q];
+          if (w[j] != SIZE_MAX && w[j] >= start)
+            R->x[w[j]] += R->x[q];                     /* R(j, r) += x */
+          else
+            {
+              w[j] = nz;
+              R->i[nz] = (int) j;
+              R->x[nz++] = R->x[q];
+            }
+        }
+      R->p[r] = (int) start;
+    }
+  R->p[T->nrow] = (int) nz;
+  lac_free (w);
+  shrink (R, nz);
+  return R;
+fail:
+  lac_free (w);
+  lac_csc_free (R);
+  LAC_ERROR_NULL (LAC_ENOMEM, "compressing %zu triplets of a %zu x %zu "
+                  "matrix", T->nz, T->nrow, T->ncol);
+}
+
+lac_csc *
+lac_csc_from_triplet (const lac_triplet *T)
+{
+  lac_csc *R, *A;
+  if (!T)
+    LAC_ERROR_NULL (LAC_EINVAL, "no triplets");
+  R = compress_rows (T);
+  if (!R)
+    return NULL;
+  A = lac_csc_transpose (R);               /* sorts the rows of each column */
+  lac_csc_free (R);
+  return A;
+}
+
+int
+lac_csc_matvec (const lac_csc *A, const double *x, double *y)
+{
+  for (size_t r = 0; r < A->nrow; r++)
+    y[r] = 0;
+  for (size_t j = 0; j < A->ncol; j++)
+    for (int q = A->p[j]; q < A->p[j + 1]; q++)
+      y[A->i[q]] += A->x[q] * x[j];                    /* y += A(:,j) x_j */
+  return LAC_SUCCESS;
+}
+
+lac_csc *
+lac_csc_transpose (const lac_csc *A)
+{
+  size_t nnz = (size_t) A->p[A->ncol];
+  size_t *w = lac_calloc (A->nrow, sizeof *w);
+  lac_csc *C = lac_csc_alloc (A->ncol, A->nrow, nnz);
+  if (!w || !C)
+    {
+      lac_free (w);
+      lac_csc_free (C);
+      LAC_ERROR_NULL (LAC_ENOMEM, "transpose of a %zu x %zu matrix with %zu "
+                      "entries", A->nrow, A->ncol, nnz);
+    }
+  for (size_t q = 0; q < nnz; q++)
+    w[A->i[q]]++;                                      /* row counts */
+  cumsum (C->p, w, A->nrow);
+  for (size_t j = 0; j < A->ncol; j++)
+    for (int q = A->p[j]; q < A->p[j + 1]; q++)
+      {
+        size_t r = w[A->i[q]]++;                       /* C(j, i) = A(i, j) */
+        C->i[r] = (int) j;
+        C->x[r] = A->x[q];
+      }
+  lac_free (w);
+  return C;
+}
+
+int
+lac_csc_write_mm (const lac_csc *A, const char *path)
+{
+  FILE *f = fopen (path, "w");
+  int ok;
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot open '%s' for writing: %s", path,
+               strerror (errno));
+  ok = fprintf (f, "%%%%MatrixMarket matrix coordinate real general\n"
+                "%zu %zu %d\n", A->nrow, A->ncol, A->p[A->ncol]) > 0;
+  for (size_t j = 0; ok && j < A->ncol; j++)
+    for (int q = A->p[j]; ok && q < A->p[j + 1]; q++)
+      ok = fprintf (f, "%d %zu %.17g\n", A->i[q] + 1, j + 1, A->x[q]) > 0;
+  if (fclose (f) != 0)
+    ok = 0;
+  if (!ok)
+    LAC_ERROR (LAC_EIO, "writing '%s' failed: %s", path, strerror (errno));
+  return LAC_SUCCESS;
+}

@@ -1,0 +1,749 @@
+/* lac_nonlinear.c -- load steps and the generalized Newton loop
+ *                                             [LAC §4.5, Alg. 1; §5.4]
+ *
+ * See lac_nonlinear.h for the algorithm.  The file follows it: set-up
+ * (fixed dofs, the pattern of K_T), the contact data on the current
+ * coordinates, the statuses, the residual, one solve, and the step driver
+ * with its halvings.
+ */
+#include "solve/lac_nonlinear.h"
+
+#include <math.h>
+#include <string.h>
+#include <time.h>
+#include "base/lac_mem.h"
+#include "solve/lac_newton.h"
+#include "base/lac_status.h"
+
+#define HALVINGS 5        /* corrections halved when a cell turns inside out */
+
+static double
+seconds (void)
+{
+  struct timespec t;
+  clock_gettime (CLOCK_MONOTONIC, &t);
+  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
+}
+
+void
+lac_nl_opts_init (lac_nl_opts *o)
+{
+  memset (o, 0, sizeof *o);
+  o->kind = LAC_SOLVER_UMFPACK;
+  o->maxit = 25;
+  o->tol = 1e-8;
+  o->rho = 0;
+  o->max_cuts = 4;
+  lac_pairing_opts_init (&o->popts);
+  o->popts.degree_nonaffine = 8;   /* see lac_nonlinear.h */
+}
+
+void
+lac_nl_free (lac_nl *s)
+{
+  if (!s)
+    return;
+  lac_free (s->U);
+  lac_free (s->lambda);
+  lac_free (s->active);
+  lac_pairing_free (s->pairing);
+  lac_contact_free (s->contact);
+  lac_free (s->x);
+  lac_free (s->steps);
+  lac_free (s->iters);
+  lac_free (s->fixed);
+  lac_free (s->g1);
+  lac_free (s->g0);
+  lac_csc_free (s->K);
+  lac_solver_free (s->solver);
+  lac_free (s->r);
+  lac_free (s->Fint);
+  lac_free (s->dU);
+  lac_free (s->U_save);
+  lac_free (s->lambda_save);
+  lac_free (s->active_save);
+  lac_free (s);
+}
+
+/* The pattern of K_T: every entry of every cell block (value 1). */
+static lac_csc *
+pattern (const lac_mesh *m, const lac_hyper *h)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes, dofs[LAC_MAX_NODES * 3];
+  size_t ncmax = LAC_MAX_NODES * 3;
+  double *ones = lac_malloc (ncmax * ncmax * sizeof *ones);
+  lac_triplet *T = lac_triplet_alloc (ndof, ndof, 0);
+  lac_csc *K = NULL;
+  int status = ones && T ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t q = 0; ones && q < ncmax * ncmax; q++)
+    ones[q] = 1.0;
+  for (size_t c = 0; c < m->ncells && !status; c++)
+    {
+      if (!(h->E[c] > 0))
+        continue;
+      size_t nen = m->ptr[c + 1] - m->ptr[c];
+      for (size_t a = 0; a < nen; a++)
+        for (int i = 0; i < m->dim; i++)
+          dofs[a * (size_t) m->dim + (size_t) i]
+            = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a] + (size_t) i;
+      size_t nc = nen * (size_t) m->dim;
+      status = lac_triplet_add_block (T, nc, dofs, nc, dofs, ones);
+    }
+  if (!status)
+    K = lac_csc_from_triplet (T);
+  else if (status == LAC_ENOMEM)
+    LAC_ERRMSG (LAC_ENOMEM, "pattern of K_T for %zu dofs", ndof);
+  lac_triplet_free (T);
+  lac_free (ones);
+  return K;
+}
+
+/* Fixed dofs: fixed[dof], g1 (ramped value at t = 1), g0 (constant). */
+static int
+set_fixed (lac_nl *s)
+{
+  const lac_dirichlet *d = s->prob.dir;
+  for (size_t j = 0; d && j < d->n; j++)
+    {
+      size_t k = d->dof[j];
+      if (k >= s->ndof)
+        LAC_ERROR (LAC_EBADLEN, "fixed dof %zu out of range (%zu dofs)", k,
+                   s->ndof);
+      int ramp = !s->prob.ramp || s->prob.ramp[j];
+      s->fixed[k] = 1;                                /* later entries win */
+      s->g1[k] = ramp ? d->val[j] : 0.0;
+      s->g0[k] = ramp ? 0.0 : d->val[j];
+    }
+  return LAC_SUCCESS;
+}
+
+lac_nl *
+lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
+{
+  if (!p || !p->mesh || !p->mat || !p->dir)
+    LAC_ERROR_NULL (LAC_EINVAL, "incomplete nonlinear problem (mesh, "
+                    "material and Dirichlet data are needed)");
+  if (p->M && !p->master && !p->obstacle)
+    LAC_ERROR_NULL (LAC_EINVAL, "contact without a master surface or an "
+                    "obstacle");
+  lac_nl *s = lac_calloc (1, sizeof *s);
+  if (!s)
+    LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace");
+  s->prob = *p;
+  if (opts)
+    s->opts = *opts;
+  else
+    lac_nl_opts_init (&s->opts);
+  if (s->opts.maxit <= 0)
+    s->opts.maxit = 25;
+  if (!(s->opts.tol > 0))
+    s->opts.tol = 1e-8;
+  if (s->opts.max_cuts == 0)
+    s->opts.max_cuts = 4;
+  if (!(s->prob.epsilon > 0))
+    s->prob.epsilon = LAC_EPSILON_DEFAULT;
+  s->opts.popts.allow_empty = 1;
+  const lac_mesh *m = p->mesh;
+  s->ndof = (size_t) m->dim * m->nnodes;
+  s->nmacro = p->M ? p->M->n : 0;
+  size_t n = s->ndof, nm = s->nmacro ? s->nmacro : 1;
+  s->U = lac_calloc (n, sizeof *s->U);
+  s->x = lac_malloc (n * sizeof *s->x);
+  s->fixed = lac_calloc (n, 1);
+  s->g1 = lac_calloc (n, sizeof *s->g1);
+  s->g0 = lac_calloc (n, sizeof *s->g0);
+  s->r = lac_calloc (n, sizeof *s->r);
+  s->Fint = lac_calloc (n, sizeof *s->Fint);
+  s->dU = lac_calloc (n, sizeof *s->dU);
+  s->U_save = lac_calloc (n, sizeof *s->U_save);
+  s->lambda = lac_calloc (nm, sizeof *s->lambda);
+  s->lambda_save = lac_calloc (nm, sizeof *s->lambda_save);
+  s->active = lac_calloc (nm, 1);
+  s->active_save = lac_calloc (nm, 1);
+  if (!s->U || !s->x || !s->fixed || !s->g1 || !s->g0 || !s->r || !s->Fint
+      || !s->dU || !s->U_save || !s->lambda || !s->lambda_save || !s->active
+      || !s->active_save)
+    {
+      lac_nl_free (s);
+      LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace for %zu dofs", n);
+    }
+  s->cur = *m;                       /* shallow: only x differs */
+  s->cur.x = s->x;
+  memcpy (s->x, m->x, n * sizeof *s->x);
+  s->first = 1;
+  if (set_fixed (s) || !(s->K = pattern (m, p->mat)))
+    {
+      lac_nl_free (s);
+      return NULL;
+    }
+  return s;
+}
+
+/* ---- records ------------------------------------------------------------ */
+
+static int
+push_iter (lac_nl *s, const lac_nl_iter *r)
+{
+  if (s->niters == s->capiters)
+    {
+      size_t cap = s->capiters ? 2 * s->capiters : 64;
+      lac_nl_iter *h = lac_realloc (s->iters, cap * sizeof *h);
+      if (!h)
+        LAC_ERROR (LAC_ENOMEM, "iteration records");
+      s->iters = h;
+      s->capiters = cap;
+    }
+  s->iters[s->niters++] = *r;
+  return LAC_SUCCESS;
+}
+
+static int
+push_step (lac_nl *s, const lac_nl_step *r)
+{
+  if (s->nsteps == s->capsteps)
+    {
+      size_t cap = s->capsteps ? 2 * s->capsteps : 32;
+      lac_nl_step *h = lac_realloc (s->steps, cap * sizeof *h);
+      if (!h)
+        LAC_ERROR (LAC_ENOMEM, "step records");
+      s->steps = h;
+      s->capsteps = cap;
+    }
+  s->steps[s->nsteps++] = *r;
+  return LAC_SUCCESS;
+}
+
+size_t
+lac_nl_nactive (const lac_nl *s)
+{
+  size_t n = 0;
+  for (size_t m = 0; m < s->nmacro; m++)
+    n += s->active[m] != 0;
+  return n;
+}
+
+double
+lac_nl_contact_force (const lac_nl *s)
+{
+  double f = 0;
+  const lac_contact *c = s->contact;
+  for (size_t i = 0; c && i < c->k; i++)
+    f += s->lambda[c->macro[i]] * c->area[i];
+  return f;
+}
+
+/* ---- steps 1 and 2: F_int, K_T, contact data on the current coordinates - */
+
+/* Step 2 [LAC Alg. 1, line 25]: pairing of the slave sub-facets with the
+ * master on x = X + U, then admissibility, C and the mean gaps.  No pair or
+ * no admissible macro-element is not an error: no constraint (k = 0). */
+static int
+contact_update (lac_nl *s)
+{
+  const lac_nl_problem *p = &s->prob;
+  const lac_macro *M = p->M;
+  int status;
+  lac_pairing_free (s->pairing);
+  lac_contact_free (s->contact);
+  s->pairing = NULL;
+  s->contact = NULL;
+  for (size_t j = 0; j < s->ndof; j++)
+    s->x[j] = p->mesh->x[j] + s->U[j];                /* x = X + U */
+  lac_pairing_facets S = { &s->cur, M->ptr[M->n], M->cell, M->face };
+  lac_pairing_facets Mf;
+  double t0 = seconds ();
+  if (p->master)
+    {
+      Mf = *p->master;
+      Mf.mesh = &s->cur;
+      status = lac_pairing_build (&S, &Mf, &s->opts.popts, &s->pairing);
+    }
+  else
+    status = lac_obstacle_pairing (&S, p->obstacle, s->opts.popts.degree,
+                                   &s->pairing);
+  s->npairings++;
+  if (!status)
+    status = lac_contact_build (&s->cur, p->mat->model, M, s->pairing,
+                                p->master ? &Mf : NULL, p->epsilon,
+                                &s->contact);
+  s->time_pairing += seconds () - t0;
+  if (status == LAC_EADMISS)                          /* nothing in reach */
+    {
+      lac_error_clear ();
+      s->contact = NULL;
+      return LAC_SUCCESS;
+    }
+  return status;
+}
+
+/* Step 1, with the halvings of a correction that turned a cell inside
+ * out (U -= dU/2, dU /= 2). */
+static int
+assemble (lac_nl *s)
+{
+  int status = LAC_ESING;
+  for (int h = 0; h <= HALVINGS && status == LAC_ESING; h++)
+    {
+      if (h > 0)
+        {
+          if (s->it == 0)
+            break;                  /* nothing to halve: a bad start */
+          for (size_t j = 0; j < s->ndof; j++)
+            {
+              s->dU[j] *= 0.5;
+              s->U[j] -= s->dU[j];
+            }
+          lac_error_clear ();
+        }
+      double t0 = seconds ();
+      memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
+      status = lac_hyper_assemble_csc (s->prob.mesh, s->prob.mat, s->U,
+                                       s->Fint, s->K);
+      s->time_assemble += seconds () - t0;
+    }
+  return status;
+}
+
+/* ---- steps 3 and 4: statuses, residual ---------------------------------- */
+
+/* rho of multiplier i (lac_nonlinear.h). */
+static double
+rho_of (const lac_nl *s, size_t i, double Eref)
+{
+  if (s->opts.rho > 0)
+    return s->opts.rho;
+  double a = s->contact->area[i];
+  if (!(a > 0))
+    return 1.0;
+  int dim = s->prob.mesh->dim;
+  double h = dim == 3 ? sqrt (a) : a;
+  return Eref / (h * a);
+}
+
+static double
+e_ref (const lac_nl *s)
+{
+  double E = HUGE_VAL;
+  for (size_t c = 0; c < s->prob.mesh->ncells; c++)
+    if (s->prob.mat->E[c] > 0)
+      E = fmin (E, s->prob.mat->E[c]);
+  return E < HUGE_VAL ? E : 1.0;
+}
+
+/* Step 3: the statuses of the macro-elements from lambda and the mean
+ * gaps G at the current U (before this iteration's Dirichlet increments
+ * are moved in); non-admissible ones are inactive with lambda = 0 (their
+ * pressure is lost: the residual shows it).  Returns the number of
+ * changes; *pen = the largest penetration of an active one (a mean gap,
+ * a length). */
+static size_t
+update_status (lac_nl *s, double *pen)
+{
+  const lac_contact *c = s->contact;
+  double Eref = e_ref (s), lmax = 0;
+  size_t changed = 0;
+  *pen = 0;
+  for (size_t m = 0; m < s->nmacro; m++)
+    lmax = fmax (lmax, fabs (s->lambda[m]));
+  for (size_t m = 0; m < s->nmacro; m++)
+    {
+      long i = c ? c->mult[m] : -1;
+      char a = 0;
+      if (i >= 0)
+        {
+          double d = c->G[i];
+          double scale = fabs (d);
+          for (int q = c->C->p[i]; q < c->C->p[i + 1]; q++)
+            scale += fabs (c->C->x[q] * s->U[c->C->i[q]]);
+          if (fabs (d) <= 1e-12 * scale)
+            d = 0;                                    /* roundoff: touching */
+          double lam = fabs (s->lambda[m]) <= 1e-12 * lmax ? 0 : s->lambda[m];
+          double rho = rho_of (s, (size_t) i, Eref);
+          a = s->first ? d <= 0
+                       : lam + rho * d < 0;          /* [LAC Alg. 1, l. 28] */
+          if (a && c->area[i] > 0)
+            *pen = fmax (*pen, -d / c->area[i]);
+        }
+      changed += a != s->active[m];
+      s->active[m] = a;
+      if (!a)
+        s->lambda[m] = 0;
+    }
+  return changed;
+}
+
+/* Step 4: |r + C lambda| / scale with r = t F - F_int (kept in s->r, the
+ * right-hand side of the solve) on the free dofs (the reactions on the
+ * fixed dofs are not residuals).  s->dU is the scratch (the last
+ * correction is not needed any more). */
+static double
+residual (lac_nl *s)
+{
+  size_t n = s->ndof;
+  double nr = 0, nfi = 0, nf = 0, ncl = 0, *w = s->dU;
+  const lac_contact *c = s->contact;
+  for (size_t j = 0; j < n; j++)
+    {
+      double f = s->prob.F ? s->t * s->prob.F[j] : 0.0;
+      s->r[j] = f - s->Fint[j];                       /* r = t F - F_int */
+      w[j] = s->r[j];
+      nfi += s->Fint[j] * s->Fint[j];
+      nf += f * f;
+    }
+  for (size_t i = 0; c && i < c->k; i++)
+    {
+      double lam = s->lambda[c->macro[i]];
+      for (int q = c->C->p[i]; q < c->C->p[i + 1]; q++)
+        {
+          double v = c->C->x[q] * lam;
+          w[c->C->i[q]] += v;                         /* + C lambda */
+          ncl += v * v;
+        }
+    }
+  for (size_t j = 0; j < n; j++)
+    if (!s->fixed[j])
+      nr += w[j] * w[j];
+  double scale = fmax (fmax (sqrt (nfi), sqrt (nf)), fmax (sqrt (ncl),
+                                                         s->fref));
+  return scale > 0 ? sqrt (nr) / scale : sqrt (nr);
+}
+
+/* Gap residual of the active macro-elements: max |d_m| / (|T^m cap
+ * Gamma_C| h_m), a mean gap in units of the macro-element size. */
+static double
+gap_residual (const lac_nl *s)
+{
+  const lac_contact *c = s->contact;
+  double g = 0;
+  int dim = s->prob.mesh->dim;
+  for (size_t i = 0; c && i < c->k; i++)
+    {
+      double a = c->area[i];
+      if (!s->active[c->macro[i]] || !(a > 0))
+        continue;
+      double h = dim == 3 ? sqrt (a) : a;
+      g = fmax (g, fabs (c->G[i]) / (a * h));
+    }
+  return g;
+}
+
+/* ---- step 5: one solve -------------------------------------------------- */
+
+/* The Dirichlet increments of the current iteration: dof, value. */
+static int
+increments (const lac_nl *s, lac_dirichlet *inc)
+{
+  for (size_t j = 0; j < s->ndof; j++)
+    if (s->fixed[j])
+      {
+        if (inc->n == inc->cap)
+          {
+            size_t cap = inc->cap ? 2 * inc->cap : 64;
+            size_t *d = lac_realloc (inc->dof, cap * sizeof *d);
+            if (d)
+              inc->dof = d;
+            double *v = lac_realloc (inc->val, cap * sizeof *v);
+            if (v)
+              inc->val = v;
+            if (!d || !v)
+              LAC_ERROR (LAC_ENOMEM, "Dirichlet increments");
+            inc->cap = cap;
+          }
+        inc->dof[inc->n] = j;
+        inc->val[inc->n++] = s->t * s->g1[j] + s->g0[j] - s->U[j];
+      }
+  return LAC_SUCCESS;
+}
+
+/* The solver kept for K_T (s->solver) if `kind` is that of the options;
+ * NULL for another kind (the umfpack fallback of a step where K_T is not
+ * SPD), which gets a solver of its own per solve. */
+static lac_solver *
+kept_solver (lac_nl *s, lac_solver_kind kind)
+{
+  if (kind != s->opts.kind)
+    return NULL;
+  if (!s->solver)
+    s->solver = lac_solver_alloc (kind);
+  return s->solver;
+}
+
+/* K_T dU = r without contact. */
+static int
+solve_plain (lac_nl *s, lac_solver_kind kind)
+{
+  lac_solver *kept = kept_solver (s, kind);
+  lac_solver *so = kept ? kept : lac_solver_alloc (kind);
+  int status = !so ? LAC_ENOMEM
+               : kept ? lac_solver_refactor (so, s->K)  /* same pattern */
+               : lac_solver_factor (so, s->K);
+  if (!status)
+    status = lac_solver_solve (so, s->r, s->dU);
+  if (!kept)
+    lac_solver_free (so);
+  return status;
+}
+
+/* The saddle system of step 5 through one iteration of lac_newton, with
+ * the columns of the active multipliers only (all admissible ones if
+ * `all`): the inactive ones have lambda = 0 and no equation, and leaving
+ * them out saves their columns of K^-1 C in the Schur path. */
+static int
+solve_contact (lac_nl *s, lac_solver_kind kind, int all)
+{
+  const lac_contact *c = s->contact;
+  const lac_csc *C = c->C;
+  size_t na = 0, nnz = 0, n = s->ndof;
+  for (size_t i = 0; i < c->k; i++)
+    if (all || s->active[c->macro[i]])
+      na++, nnz += (size_t) (C->p[i + 1] - C->p[i]);
+  if (na == 0)
+    return solve_plain (s, kind);
+  lac_csc *CA = lac_csc_alloc (n, na, nnz);
+  double *GA = lac_malloc (na * sizeof *GA);
+  size_t *idx = lac_malloc (na * sizeof *idx);
+  lac_newton *nw = lac_newton_alloc (kind, n, na);
+  int status = CA && GA && idx && nw ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t i = 0, a = 0, q = 0; !status && i < c->k; i++)
+    if (all || s->active[c->macro[i]])
+      {
+        for (int p = C->p[i]; p < C->p[i + 1]; p++, q++)  /* C_A(:,a) */
+          {
+            CA->i[q] = C->i[p];
+            CA->x[q] = C->x[p];
+          }
+        CA->p[a + 1] = (int) q;
+        GA[a] = c->G[i];
+        idx[a++] = i;
+      }
+  lac_contact_system sys = { s->K, s->r, CA, GA, NULL };
+  if (!status && kind == LAC_SOLVER_CHOLMOD)   /* Schur path: K_T kept */
+    lac_newton_share_solver (nw, kept_solver (s, kind));
+  if (!status)
+    status = lac_newton_set (nw, &sys);
+  if (!status)
+    {
+      memset (nw->active, 1, na);                      /* all of C_A */
+      status = lac_newton_iterate (nw);
+    }
+  if (!status)
+    {
+      memcpy (s->dU, nw->U, n * sizeof *s->dU);
+      for (size_t a = 0; a < na; a++)                  /* total lambda */
+        {
+          s->lambda[c->macro[idx[a]]] = nw->lambda[a];
+          s->active[c->macro[idx[a]]] = 1;
+        }
+    }
+  lac_newton_free (nw);
+  lac_csc_free (CA);
+  lac_free (GA);
+  lac_free (idx);
+  return status;
+}
+
+/* Admissible multipliers left inactive by step 3? */
+static int
+some_inactive (const lac_nl *s)
+{
+  const lac_contact *c = s->contact;
+  for (size_t i = 0; c && i < c->k; i++)
+    if (!s->active[c->macro[i]])
+      return 1;
+  return 0;
+}
+
+/* Step 5: Dirichlet increments into K_T, r and G, solve, U += dU. */
+static int
+solve (lac_nl *s)
+{
+  lac_dirichlet inc = { 0, 0, NULL, NULL };
+  int status = increments (s, &inc);
+  if (!status)
+    status = lac_dirichlet_apply (&inc, s->K, s->r);
+  if (!status && s->it == 0)
+    {
+      /* the force the step's increments put on the free dofs: the scale
+       * of the residual when every force vanishes (a rigid motion) */
+      double nr = 0;
+      for (size_t j = 0; j < s->ndof; j++)
+        if (!s->fixed[j])
+          nr += s->r[j] * s->r[j];
+      s->fref = sqrt (nr);
+    }
+  if (!status && s->contact)
+    status = lac_contact_apply_dirichlet (s->contact, inc.n, inc.dof, inc.val);
+  lac_solver_kind kind = s->opts.kind;
+  if (kind == LAC_SOLVER_CHOLMOD && s->cholmod_failed)
+    kind = LAC_SOLVER_UMFPACK;
+  double t0 = seconds ();
+  if (!status)
+    status = s->contact ? solve_contact (s, kind, 0) : solve_plain (s, kind);
+  if (status == LAC_ESING && kind == LAC_SOLVER_CHOLMOD)
+    {
+      lac_error_clear ();         /* K_T not positive definite: umfpack */
+      s->cholmod_failed = 1;
+      kind = LAC_SOLVER_UMFPACK;
+      status = s->contact ? solve_contact (s, kind, 0) : solve_plain (s, kind);
+    }
+  if (status == LAC_ESING && some_inactive (s))
+    {
+      /* a body held by contact alone cannot move with its multipliers
+       * inactive: solve with all of them, step 3 releases the ones in
+       * tension at the next iteration (as lac_newton's restart) */
+      lac_error_clear ();
+      status = solve_contact (s, kind, 1);
+    }
+  s->time_solve += seconds () - t0;
+  lac_free (inc.dof);
+  lac_free (inc.val);
+  if (status)
+    return status;
+  if (s->contact)                 /* inactive after the solve: lambda = 0 */
+    for (size_t m = 0; m < s->nmacro; m++)
+      if (!s->active[m])
+        s->lambda[m] = 0;
+  double nu = 0, ndu = 0;
+  for (size_t j = 0; j < s->ndof; j++)
+    {
+      s->U[j] += s->dU[j];                             /* U += dU */
+      nu += s->U[j] * s->U[j];
+      ndu += s->dU[j] * s->dU[j];
+    }
+  s->last_du = nu > 0 ? sqrt (ndu / nu) : sqrt (ndu);
+  return LAC_SUCCESS;
+}
+
+/* ---- the loop ----------------------------------------------------------- */
+
+int
+lac_nl_begin (lac_nl *s, double t)
+{
+  if (!s)
+    LAC_ERROR (LAC_EINVAL, "NULL workspace");
+  s->t = t;
+  s->it = 0;
+  s->converged = 0;
+  s->last_du = 0;
+  s->fref = 0;
+  s->cholmod_failed = 0;      /* try cholmod again in every step */
+  return LAC_SUCCESS;
+}
+
+int
+lac_nl_iterate (lac_nl *s)
+{
+  lac_nl_iter rec = { 0 };
+  double pen = 0;
+  int status;
+  if (s->converged)
+    return LAC_SUCCESS;
+  /* Steps 1-2 */
+  if ((status = assemble (s)))
+    return status;
+  if (s->prob.M && (status = contact_update (s)))
+    return status;
+  /* Step 4's residual uses the lambda of the last solve and the new C */
+  rec.residual = residual (s);
+  /* Step 3 on the current mean gaps (the Dirichlet increments are moved
+   * into G by solve() only) */
+  rec.nchanged = update_status (s, &pen);
+  rec.step = (int) s->nsteps + 1;
+  rec.iter = s->it + 1;
+  rec.k = s->contact ? s->contact->k : 0;
+  rec.nactive = lac_nl_nactive (s);
+  rec.max_penetration = pen;
+  s->residual = rec.residual;
+  if (s->it > 0 && rec.nchanged == 0 && rec.residual <= s->opts.tol
+      && gap_residual (s) <= s->opts.tol)
+    {
+      s->converged = 1;                 /* nothing solved, no record */
+      return LAC_SUCCESS;
+    }
+  if (s->it >= s->opts.maxit)
+    LAC_ERROR (LAC_EMAXITER, "load factor %g: no convergence in %d Newton "
+               "iterations (residual %.3e, %zu statuses changed)", s->t,
+               s->opts.maxit, rec.residual, rec.nchanged);
+  /* Step 5 */
+  if ((status = solve (s)))
+    return status;
+  s->first = 0;
+  s->it++;
+  rec.du = s->last_du;
+  status = push_iter (s, &rec);
+  return status ? status : LAC_CONTINUE;
+}
+
+/* The Newton loop to load factor t, no halving. */
+static int
+solve_to (lac_nl *s, double t)
+{
+  int status = lac_nl_begin (s, t);
+  while (status == LAC_SUCCESS || status == LAC_CONTINUE)
+    {
+      status = lac_nl_iterate (s);
+      if (status == LAC_SUCCESS)
+        break;
+    }
+  return status;
+}
+
+static void
+save_state (lac_nl *s)
+{
+  memcpy (s->U_save, s->U, s->ndof * sizeof *s->U);
+  memcpy (s->lambda_save, s->lambda, s->nmacro * sizeof *s->lambda);
+  memcpy (s->active_save, s->active, s->nmacro);
+}
+
+static void
+restore_state (lac_nl *s)
+{
+  memcpy (s->U, s->U_save, s->ndof * sizeof *s->U);
+  memcpy (s->lambda, s->lambda_save, s->nmacro * sizeof *s->lambda);
+  memcpy (s->active, s->active_save, s->nmacro);
+}
+
+/* lac_nl_step_to: the step from the last converged load factor to t, cut
+ * into halves (recursively, opts.max_cuts halvings in all) when Newton
+ * fails (no convergence, or a cell inside out).  Appends a step record. */
+int
+lac_nl_step_to (lac_nl *s, double t)
+{
+  lac_nl_step rec = { 0 };
+  double target[64];
+  int ntarget = 0, cuts = 0, status = LAC_SUCCESS, iters = 0;
+  target[ntarget++] = t;
+  while (ntarget > 0)
+    {
+      double tt = target[ntarget - 1];
+      save_state (s);
+      int first = s->first;
+      status = solve_to (s, tt);
+      iters += s->it;
+      if (status == LAC_SUCCESS)
+        {
+          s->t_prev = tt;
+          ntarget--;
+          continue;
+        }
+      if ((status != LAC_EMAXITER && status != LAC_ESING)
+          || s->opts.max_cuts < 0 || cuts >= s->opts.max_cuts
+          || ntarget >= 64)
+        break;
+      restore_state (s);
+      s->first = first;
+      lac_error_clear ();
+      target[ntarget++] = 0.5 * (s->t_prev + tt);     /* a half step first */
+      cuts++;
+    }
+  rec.t = status == LAC_SUCCESS ? t : s->t_prev;
+  rec.iters = iters;
+  rec.cuts = cuts;
+  rec.residual = s->residual;
+  rec.k = s->contact ? s->contact->k : 0;
+  rec.nactive = lac_nl_nactive (s);
+  rec.status = status;
+  int st2 = push_step (s, &rec);
+  return status ? status : st2;
+}

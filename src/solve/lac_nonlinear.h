@@ -1,0 +1,218 @@
+/* lac_nonlinear.h -- load steps and one generalized Newton loop for
+ *                    contact, material and geometric nonlinearity
+ *                                             [LAC §4.5, Alg. 1; §5.4]
+ *
+ * [LAC §4.5] solves every nonlinearity with ONE Newton loop: the contact
+ * statuses, the hyperelastic material and the large displacements are
+ * updated together, and the pairing (hence C and the mean gaps) is
+ * recomputed on the current configuration at every iteration
+ * [LAC Alg. 1, line 25].  The macro-mesh is built once, on the reference
+ * mesh [LAC Remark 3]; only the pairing moves.
+ *
+ * The load is applied in steps: at load factor t in (0, 1] the Dirichlet
+ * values are t * g (entries flagged "ramp") or g (the others) and the
+ * external load is t * F.  In each step, iteration k at the current
+ * displacement U (x = X + U):
+ *
+ *   1. internal force F_int(U) and tangent K_T(U) (lac_hyper.h);
+ *   2. pairing of the slave sub-facets with the master on the CURRENT
+ *      coordinates; admissibility, C(U) and the current mean gaps
+ *      d(U) = int_{T^m cap Gamma_C} g(U) dGamma           [LAC (16)-(18)];
+ *   3. statuses [LAC Alg. 1, lines 26-33]: macro-element m is active iff
+ *      lambda_m + rho_m d_m < 0 (lac_newton.h's convention: lambda <= 0
+ *      compression, d >= 0 open); in the first iteration of the whole
+ *      run, active iff d_m <= 0 [LAC Alg. 1, lines 2-8];
+ *   4. convergence: no status changed, the out-of-balance force
+ *        r = t F - F_int(U) + C lambda      (free dofs)
+ *      is below tol * max(|F_int|, |t F|, |C lambda|, |r_0|), with r_0
+ *      the right-hand side of the step's first solve on the free dofs
+ *      (the force of the imposed increments: the scale left when all
+ *      forces vanish, in a rigid motion), and the mean gaps of the active
+ *      macro-elements are below tol * h_m |T^m cap Gamma_C| -> the step
+ *      is done (at least one solve per step);
+ *   5. otherwise solve, with C_A the columns of the active multipliers,
+ *        [ K_T    -C_A ] [ dU       ]   [ t F - F_int(U)   ]
+ *        [ -C_A^T   0  ] [ lambda_A ] = [ -d_A(U)          ]
+ *      (Dirichlet dofs: dU = their remaining increment; lambda is the
+ *      TOTAL multiplier, not an increment; the geometry is frozen: no
+ *      derivative of the normals or of the pairing -- the "generalized"
+ *      Newton method) and set U += dU, lambda = lambda_A (0 elsewhere).
+ * The saddle system is solved by lac_newton.h (one iteration of it, the
+ * statuses being those of step 3).  Without any admissible macro-element
+ * (bodies apart) step 5 is K_T dU = t F - F_int(U).
+ *
+ * Convergence.  Quadratic where the statuses have settled and the contact
+ * pressure is small against the stiffness.  The frozen geometry leaves
+ * out lambda dC/dU (the stretch and rotation of n dGamma under the
+ * pressure, and the motion of the master points): the convergence turns
+ * linear when |lambda| / E is large (t433: a block compressed by 40 %,
+ * |lambda| / E = 0.6, diverges; by 20 % it converges in 3 solves), and a
+ * late step of the ring takes 10 iterations or so.
+ *
+ * rho_m = E_ref / (h_m |T^m cap Gamma_C|), h_m = |T^m cap Gamma_C|^(1/(dim-1)),
+ * E_ref the smallest Young modulus: rho_m d_m is then a pressure, the
+ * stiffness of a layer of depth h_m pushed in by the mean gap d_m / |T^m|.
+ *
+ * Robustness: if an update turns a cell inside out (det F <= 0 at a
+ * quadrature point), the correction is halved (up to 5 times); if a step
+ * does not converge in maxit iterations, it is restarted from the state
+ * of its beginning as two half steps (up to opts.max_cuts halvings).
+ *
+ * Usage (INITIALIZE / ITERATE / TEST; the loop over steps and any
+ * printing belong to the caller):
+ *   lac_nl *s = lac_nl_alloc (&problem, &opts);
+ *   for (each load factor t)
+ *     { status = lac_nl_step_to (s, t);   (the Newton loop of one step)
+ *       report s->steps[s->nsteps - 1], s->U, s->lambda ... }
+ *   lac_nl_free (s);
+ * or, iteration by iteration: lac_nl_begin (s, t); while ((st =
+ * lac_nl_iterate (s)) == LAC_CONTINUE) { report s->iters[s->niters-1] }.
+ *
+ * Ownership: the problem's data are borrowed and must outlive the
+ * workspace; the workspace owns U, the multipliers, the statuses, the
+ * last pairing and contact data, and the records.
+ */
+#ifndef LAC_NONLINEAR_H
+#define LAC_NONLINEAR_H
+
+#include <stddef.h>
+#include "fem/lac_assembly.h"
+#include "contact/lac_contact.h"
+#include "fem/lac_hyper.h"
+#include "linalg/lac_linalg.h"
+#include "contact/lac_macromesh.h"
+#include "contact/lac_obstacle.h"
+#include "contact/lac_pairing.h"
+
+/* The problem (everything borrowed). */
+typedef struct lac_nl_problem
+{
+  const lac_mesh *mesh;          /* the reference mesh (after the macro-mesh
+                                    refinement)                            */
+  const lac_hyper *mat;          /* material per cell                      */
+  const double *F;               /* ndof: external load at t = 1, or NULL  */
+  const lac_dirichlet *dir;      /* fixed dofs and their values at t = 1   */
+  const char *ramp;              /* dir->n flags: 1 value * t, 0 value; NULL:
+                                    every value is ramped                  */
+  /* contact (M == NULL: none) */
+  const lac_macro *M;            /* macro-mesh of the slave surface        */
+  const lac_pairing_facets *master; /* master facets of `mesh`, or NULL    */
+  const lac_obstacle *obstacle;  /* rigid master when master == NULL       */
+  double epsilon;                /* [LAC Def. 1]; 0: LAC_EPSILON_DEFAULT   */
+} lac_nl_problem;
+
+typedef struct lac_nl_opts
+{
+  lac_solver_kind kind;  /* umfpack (default), dense, cholmod (the Schur
+                            path of lac_newton.h, about twice as fast on
+                            the ring; falls back to umfpack for the rest
+                            of a step where K_T is not positive definite) */
+  int maxit;             /* Newton iterations per step (0: 25)              */
+  double tol;            /* relative tolerance of step 4 (0: 1e-8)          */
+  double rho;            /* > 0: rho_m = rho for all m; 0: the default above */
+  int max_cuts;          /* step halvings allowed (0: 4; < 0: none)         */
+  lac_pairing_opts popts;  /* pairing options (allow_empty is forced);
+                            degree_nonaffine = 8 instead of 18: deformed
+                            facets are all non-affine, and with 100 points
+                            per triangle the pairing and C cost a quarter
+                            of a hex20 ring run; 8 changes the ring's
+                            displacements by < 1e-3 mm.  The cost: C and
+                            the gaps are exact to ~1e-9 only (trapezoids,
+                            curved facets), which is the floor of the
+                            residual; 0 restores lac_pairing's exact rule
+                            (t433 does, for its 1e-10 tolerance)        */
+} lac_nl_opts;
+
+void lac_nl_opts_init (lac_nl_opts *o);   /* the defaults above */
+
+/* One Newton iteration. */
+typedef struct lac_nl_iter
+{
+  int step;              /* 1, 2, ... (step records index + 1)             */
+  int iter;              /* 1, 2, ... within the step                       */
+  size_t k;              /* admissible multipliers (paired macro-elements)  */
+  size_t nactive;        /* active ones                                     */
+  size_t nchanged;       /* statuses changed by step 3                      */
+  double residual;       /* |r| / scale (step 4) at the start of the
+                            iteration, before its solve                    */
+  double du;             /* |dU| / max(|U|, tiny) of the solve (0: none)    */
+  double max_penetration;/* max over active m of -d_m / |T^m cap Gamma_C|  */
+} lac_nl_iter;
+
+/* One load step (converged or not). */
+typedef struct lac_nl_step
+{
+  double t;              /* load factor reached                             */
+  int iters;             /* Newton iterations (solves), all sub-steps        */
+  int cuts;              /* halvings needed                                 */
+  double residual;       /* final relative residual (the check that ended
+                            the step)                                      */
+  size_t k, nactive;     /* multipliers and active ones at the end          */
+  int status;            /* LAC_SUCCESS or the error                        */
+} lac_nl_step;
+
+typedef struct lac_nl
+{
+  lac_nl_problem prob;   /* copy of the problem (pointers borrowed)         */
+  lac_nl_opts opts;
+  size_t ndof, nmacro;
+  double *U;             /* owned, ndof: total displacement                 */
+  double *lambda;        /* owned, nmacro: multiplier of macro-element m
+                            (0 if not admissible or inactive)              */
+  char *active;          /* owned, nmacro: status of macro-element m        */
+  lac_pairing *pairing;  /* owned: the last pairing (current coordinates)   */
+  lac_contact *contact;  /* owned: the last C, mean gaps (Dirichlet moved
+                            in), built on the current coordinates          */
+  double *x;             /* owned, nnodes*dim: current coordinates X + U    */
+  double t, t_prev;      /* load factors: current step, last converged      */
+  int converged;         /* the current step converged                      */
+  double residual;       /* relative residual at the last evaluation        */
+  size_t nsteps, capsteps;
+  lac_nl_step *steps;    /* owned, nsteps records                           */
+  size_t niters, capiters;
+  lac_nl_iter *iters;    /* owned, niters records (all steps)               */
+  double time_assemble;  /* seconds, cumulated: F_int and K_T,            */
+  double time_pairing;   /*   pairing, admissibility, C and mean gaps,    */
+  double time_solve;     /*   saddle-point solves                         */
+  size_t npairings;      /* pairings computed                               */
+  /* internals */
+  lac_mesh cur;          /* shallow copy of *mesh with x = the array above  */
+  char *fixed;           /* owned, ndof: dof fixed                          */
+  double *g1, *g0;       /* owned, ndof: value at t = 1 (ramped), constant  */
+  lac_csc *K;            /* owned: K_T (pattern kept between iterations)    */
+  lac_solver *solver;    /* owned: the solver of K_T for opts.kind, kept
+                            between iterations: the ordering and symbolic
+                            analysis are made once (lac_solver_refactor)   */
+  double *r, *Fint, *dU; /* owned, ndof                                     */
+  double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
+  char *active_save;
+  int first;             /* no iteration done yet in the whole run          */
+  int it;                /* iterations in the current (sub)step             */
+  double last_du;        /* |dU| / |U| of the last solve                    */
+  double fref;           /* |r| on the free dofs in the step's first solve,
+                            Dirichlet increments included (a floor of the
+                            residual's scale)                              */
+  int cholmod_failed;    /* K_T was not SPD in this step: umfpack for the
+                            rest of the step                               */
+} lac_nl;
+
+lac_nl *lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts);
+void lac_nl_free (lac_nl *s);                  /* NULL allowed */
+
+/* Start a step to load factor t (> the last converged one). */
+int lac_nl_begin (lac_nl *s, double t);
+/* One pass of steps 1-5 above: LAC_SUCCESS when step 4 finds the step
+ * converged (nothing solved), LAC_CONTINUE after a solve, an error status
+ * otherwise (LAC_EMAXITER after opts.maxit solves). */
+int lac_nl_iterate (lac_nl *s);
+/* A whole step to load factor t, with the halvings of the header; appends
+ * a step record. */
+int lac_nl_step_to (lac_nl *s, double t);
+
+/* query */
+size_t lac_nl_nactive (const lac_nl *s);
+/* Contact force on the slave side per macro-element is lambda[m] times
+ * |T^m cap Gamma_C|; this is the sum over the active ones (<= 0). */
+double lac_nl_contact_force (const lac_nl *s);
+
+#endif /* LAC_NONLINEAR_H */
