@@ -76,10 +76,13 @@ precise_time (const lac_run *r, const char *key)
     return r->time_refine;
   if (strcmp (key, "time_pairing") == 0)
     return r->time_pairing;
+  lac_strategy_counts c;
+  if (r->newton)
+    lac_strategy_get_counts (r->newton->strategy, &c);
   if (strcmp (key, "time_factor_K") == 0 && r->newton)
-    return r->newton->time_setup;
+    return c.time_factor;
   if (strcmp (key, "time_active_set") == 0 && r->newton)
-    return r->newton->time_solve;
+    return c.time_solve;
   return -1;
 }
 

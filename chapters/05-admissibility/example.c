@@ -5,7 +5,7 @@
  * Sample runs:  build/ch57/chapters/05-admissibility           (quad8, L = 37)
  *               build/ch57/chapters/05-admissibility --elem quad4
  *               build/ch57/chapters/05-admissibility --master 31.5
- *               build/ch57/chapters/05-admissibility --mat dense
+ *               build/ch57/chapters/05-admissibility --strategy dense
  * Description:  Two plane-strain blocks, the upper (slave) one 50 wide, the
  *               lower (master) one only L = 37 wide: the contact zone
  *               Gamma_C = [0, L] cuts a macro-element of the slave surface.
@@ -74,11 +74,11 @@ macro_range (const lac_mesh *m, const lac_macro *M, size_t k, double *x0,
  * the columns of `all` (built with a small epsilon). */
 static void
 press (const lac_csc *K, const double *F, const lac_contact *c,
-       const lac_contact *all, lac_solver_kind kind, double *lambda_m,
+       const lac_contact *all, lac_strategy_kind kind, double *lambda_m,
        double *gap_m)
 {
   size_t n = K->nrow;
-  lac_contact_system sys = { K, F, c->C, c->G, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
   lac_newton *s = lac_newton_alloc (kind, n, c->k);
   check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
   check_status (lac_newton_solve (s, &sys, 20, 1e-10), "lac_newton_solve");
@@ -103,7 +103,7 @@ main (int argc, char **argv)
 {
   lac_elem_type type = LAC_QUAD8;
   double Lm = 37.0;
-  lac_solver_kind kind = LAC_SOLVER_UMFPACK;
+  lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   for (int k = 1; k < argc; k++)
     {
       if (!strcmp (argv[k], "--elem") && k + 1 < argc
@@ -112,14 +112,14 @@ main (int argc, char **argv)
       else if (!strcmp (argv[k], "--master") && k + 1 < argc
                && atof (argv[k + 1]) > 0 && atof (argv[k + 1]) <= 50)
         Lm = atof (argv[++k]);
-      else if (!strcmp (argv[k], "--mat") && k + 1 < argc
-               && (!strcmp (argv[k + 1], "dense")
-                   || !strcmp (argv[k + 1], "umfpack")))
-        kind = (lac_solver_kind) lac_solver_kind_from_name (argv[++k]);
+      else if (!strcmp (argv[k], "--strategy") && k + 1 < argc
+               && lac_strategy_from_name (argv[k + 1]) > 0
+               && strcmp (argv[k + 1], "schur") != 0)
+        kind = (lac_strategy_kind) lac_strategy_from_name (argv[++k]);
       else
         {
           fprintf (stderr, "usage: ex05 [--elem quad8|quad4] [--master L]"
-                   " [--mat dense|umfpack]   (0 < L <= 50)\n");
+                   " [--strategy dense|saddle|augmented]   (0 < L <= 50)\n");
           return 2;
         }
     }
@@ -276,7 +276,7 @@ main (int argc, char **argv)
   press (K, F, c, c, kind, l1, g1);
   press (K, F, c2, c, kind, l2, g2);
   printf ("4. pressed by p = 25 (%s): lambda_m and mean gap d_m/|T^m cap Gamma_C|\n",
-          lac_solver_kind_name (kind));
+          lac_strategy_name (kind));
   printf ("    m   epsilon = %-4g            epsilon = %-4g\n",
           LAC_EPSILON_DEFAULT, eps2);
   for (size_t k = 0; k < M->n; k++)

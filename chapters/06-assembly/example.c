@@ -5,7 +5,7 @@
  *               (plain `make` builds it as build/chapters/06-assembly)
  * Sample runs:  build/ch57/chapters/06-assembly                 (flat, gap 0.5)
  *               build/ch57/chapters/06-assembly --slope 0.01    (gap 0.5 + 0.01 x)
- *               build/ch57/chapters/06-assembly --mat dense
+ *               build/ch57/chapters/06-assembly --strategy dense
  * Description:  The smallest two-body problem that shows every term: a
  *               lower block [0,30] x [0,10] of 3 quad4 (the master), an
  *               upper block [0,30] x [10.5,20.5] of 4 quad4 (the slave),
@@ -51,19 +51,19 @@ int
 main (int argc, char **argv)
 {
   double slope = 0.0, g0 = 0.5, rise = 0.8, p = 1.0;
-  lac_solver_kind kind = LAC_SOLVER_UMFPACK;
+  lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   for (int k = 1; k < argc; k++)
     {
       if (!strcmp (argv[k], "--slope") && k + 1 < argc
           && fabs (atof (argv[k + 1])) <= 0.015)
         slope = atof (argv[++k]);
-      else if (!strcmp (argv[k], "--mat") && k + 1 < argc
-               && (!strcmp (argv[k + 1], "dense")
-                   || !strcmp (argv[k + 1], "umfpack")))
-        kind = (lac_solver_kind) lac_solver_kind_from_name (argv[++k]);
+      else if (!strcmp (argv[k], "--strategy") && k + 1 < argc
+               && lac_strategy_from_name (argv[k + 1]) > 0
+               && strcmp (argv[k + 1], "schur") != 0)
+        kind = (lac_strategy_kind) lac_strategy_from_name (argv[++k]);
       else
         {
-          fprintf (stderr, "usage: ex06 [--slope b] [--mat dense|umfpack]"
+          fprintf (stderr, "usage: ex06 [--slope b] [--strategy dense|saddle|augmented]"
                    "   (|b| <= 0.015)\n");
           return 2;
         }
@@ -213,12 +213,12 @@ main (int argc, char **argv)
   check_status (lac_assembly_pressure (m, mat.model, lac_mesh_group (m, "up.ymax"),
                                        p, F), "lac_assembly_pressure");
   check_status (lac_dirichlet_apply (D, K, F), "lac_dirichlet_apply");
-  lac_contact_system sys = { K, F, c->C, c->G, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
   lac_newton *s = lac_newton_alloc (kind, ndof, c->k);
   check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
   check_status (lac_newton_solve (s, &sys, 10, 1e-10), "lac_newton_solve");
   printf ("5. pressed by p = %g (%s, iterations: %zu): lambda =", p,
-          lac_solver_kind_name (kind), s->nhist);
+          lac_strategy_name (kind), s->nhist);
   for (size_t i = 0; i < c->k; i++)
     printf (" %.12f", s->lambda[i]);
   printf ("\n   mean gaps d = G - C^T U:");

@@ -4,8 +4,8 @@
  * Build:        make B=build/ch57 build/ch57/chapters/07-newton
  *               (plain `make` builds it as build/chapters/07-newton)
  * Sample runs:  build/ch57/chapters/07-newton                 (UMFPACK)
- *               build/ch57/chapters/07-newton --mat dense
- *               build/ch57/chapters/07-newton --mat cholmod   (part 1 refused)
+ *               build/ch57/chapters/07-newton --strategy dense
+ *               build/ch57/chapters/07-newton --strategy schur   (part 1 refused)
  * Description:  Part 1: a block [0,50] x [50,100] (quad8) rests on a lower
  *               block [0,50] x [0,50]; a pressure on the LEFT half of its
  *               top tilts it, so the right part of the interface opens.
@@ -89,7 +89,7 @@ macro_range (const lac_mesh *m, const lac_macro *M, size_t k, double *x0,
 static void
 run (lac_newton *s, const lac_contact_system *sys, int maxit)
 {
-  check_status (lac_newton_set (s, sys), "lac_newton_set");
+  check_status (lac_newton_set (s, sys, NULL), "lac_newton_set");
   printf ("   it  active set used  #act  #chg  residual       ncp  max pen.\n");
   printf ("    0  %-15s  (initial: active iff G_i <= 0)\n", statuses (s));
   int st = LAC_CONTINUE;
@@ -110,7 +110,7 @@ run (lac_newton *s, const lac_contact_system *sys, int maxit)
 
 // @sect Part 1: a tilted block
 static void
-tilted_block (lac_solver_kind kind)
+tilted_block (lac_strategy_kind kind)
 {
   /* 1. Two quad8 blocks stacked, meshed independently (8 x 4 below, 10 x 4
    *    above), E = 2000, nu = 0.3, plane strain.  The slave is the bottom
@@ -192,22 +192,23 @@ tilted_block (lac_solver_kind kind)
   check_status (lac_contact_apply_dirichlet (c, D->n, D->dof, D->val),
                 "lac_contact_apply_dirichlet");
   printf ("1. tilted block: %zu dofs, %zu multipliers, p = 25 on x < 25, %s\n",
-          ndof, c->k, lac_solver_kind_name (kind));
+          ndof, c->k, lac_strategy_name (kind));
 
   /* 4. The loop.  G = 0 (the blocks touch), so every macro-element starts
    *    active.  Each iteration solves the saddle system for the current
    *    active set A (identity rows lambda_i = 0 for the others), then
    *    updates the statuses: active iff lambda_i + d_i < 0. */
-  lac_contact_system sys = { K, F, c->C, c->G, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
   lac_newton *s = lac_newton_alloc (kind, ndof, c->k);
   check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
-  if (kind == LAC_SOLVER_CHOLMOD)
+  if (kind == LAC_STRATEGY_SCHUR)
     {
-      /* The Schur path factorizes K alone: singular here (the upper block
-       * has no vertical support but the contact). */
-      int st = lac_newton_set (s, &sys);
-      printf ("   cholmod refused, as it must: %s\n",
-              st ? lac_error_message () : "(no error?)");
+      /* The Schur strategy factorizes K alone: singular here (the upper
+       * block has no vertical support but the contact, one free rigid
+       * motion), and it is refused before anything is factorized. */
+      lac_strategy_kind k1 = lac_strategy_choose (kind, ndof, c->k, 1);
+      printf ("   schur refused, as it must: %s\n",
+              k1 == LAC_NSTRATEGIES ? lac_error_message () : "(no error?)");
     }
   else
     {
@@ -279,10 +280,10 @@ spring_chain (void)
   double F[N];
   for (int j = 0; j < N; j++)
     F[j] = j == 0 ? 0.0 : 1.0;
-  lac_contact_system sys = { K, F, C, gap, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_SOLVER_CHOLMOD, N, KC);
+  lac_contact_system sys = { K, F, C, gap, NULL, 0, NULL, NULL };
+  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SCHUR, N, KC);
   check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
-  printf ("2. spring chain, %d dofs, obstacles at dofs 3 6 9 12, cholmod\n", N);
+  printf ("2. spring chain, %d dofs, obstacles at dofs 3 6 9 12, schur\n", N);
   run (s, &sys, 20);
   printf ("   lambda =");
   for (int i = 0; i < KC; i++)
@@ -299,15 +300,15 @@ spring_chain (void)
 int
 main (int argc, char **argv)
 {
-  lac_solver_kind kind = LAC_SOLVER_UMFPACK;
+  lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   for (int k = 1; k < argc; k++)
     {
-      if (!strcmp (argv[k], "--mat") && k + 1 < argc
-          && lac_solver_kind_from_name (argv[k + 1]) >= 0)
-        kind = (lac_solver_kind) lac_solver_kind_from_name (argv[++k]);
+      if (!strcmp (argv[k], "--strategy") && k + 1 < argc
+          && lac_strategy_from_name (argv[k + 1]) > 0)
+        kind = (lac_strategy_kind) lac_strategy_from_name (argv[++k]);
       else
         {
-          fprintf (stderr, "usage: ex07 [--mat dense|umfpack|cholmod]\n");
+          fprintf (stderr, "usage: ex07 [--strategy dense|saddle|schur|augmented]\n");
           return 2;
         }
     }

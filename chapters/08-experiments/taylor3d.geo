@@ -3,8 +3,12 @@
 // Two cubes meshed independently (no shared nodes): the lower one with
 // nl = 4 + 3*level cells per edge, the upper one with nu = 3 + 2*level, so
 // the interface meshes do not match, their nodes coincide only on the cube
-// edges and the mesh-size ratio is >= 4/3.  Structured (transfinite):
-// tetrahedra (6 per small cube), or hexahedra with recombination.
+// edges and the mesh-size ratio is >= 4/3.  Given a number n (the scene's
+// [mesh] numbers = n:28, or gmsh -setnumber n 28), the cubes have n and
+// n - 1 cells per edge instead, whatever the level: the sizes of the
+// benchmarks (n = 10, 20, 28, 35: about 7k, 52k, 139k and 269k dofs with
+// hex8).  Structured (transfinite): tetrahedra (6 per small cube), or
+// hexahedra with recombination.
 //
 // Physical groups: lower, upper (volumes); lower_bottom (z = 0);
 // lower_x0, upper_x0 (x = 0) and lower_y0, upper_y0 (y = 0), the symmetry
@@ -17,6 +21,10 @@ EndIf
 L = 50;
 nl = 4 + 3 * level;
 nu = 3 + 2 * level;
+If (Exists(n))
+  nl = n;
+  nu = n - 1;
+EndIf
 
 Box(1) = {0, 0, 0, L, L, L};
 Box(2) = {0, 0, L, L, L, L};

@@ -51,6 +51,17 @@ void lac_csc_free (lac_csc *A);
 int lac_csc_matvec (const lac_csc *A, const double *x, double *y); /* y = A x */
 lac_csc *lac_csc_transpose (const lac_csc *A);
 int lac_csc_write_mm (const lac_csc *A, const char *path);  /* Matrix Market */
+/* The augmented matrix K + C W C^T of the contact solves [LAC (17)]:
+ * the pattern of K + C C^T with the values of K (zeros elsewhere), made
+ * once; then A = K + C diag(w) C^T in that pattern (w_i = 0: column i
+ * left out), the pattern unchanged so that a factorization can keep its
+ * analysis (lac_solver_refactor). */
+/* A checksum of the order and pattern of A (FNV-1a over p and i): equal
+ * patterns, equal sums; used to reuse an analysis made for a pattern. */
+unsigned long long lac_csc_pattern_hash (const lac_csc *A);
+lac_csc *lac_csc_augment_pattern (const lac_csc *K, const lac_csc *C);
+int lac_csc_augment (lac_csc *A, const lac_csc *K, const lac_csc *C,
+                     const double *w);
 
 typedef enum
 {

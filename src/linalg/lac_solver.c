@@ -605,21 +605,6 @@ rcond_check (lac_solver *s, const lac_csc *A)
 
 /* ---- the interface ------------------------------------------------------ */
 
-/* FNV-1a over the order and the pattern of A: lac_solver_refactor reuses
- * an analysis only for the pattern it was made for. */
-static unsigned long long
-pattern_hash (const lac_csc *A)
-{
-  unsigned long long h = 1469598103934665603ull;
-  size_t nnz = (size_t) A->p[A->ncol];
-  h = (h ^ A->ncol) * 1099511628211ull;
-  for (size_t j = 0; j <= A->ncol; j++)
-    h = (h ^ (unsigned long long) A->p[j]) * 1099511628211ull;
-  for (size_t q = 0; q < nnz; q++)
-    h = (h ^ (unsigned long long) A->i[q]) * 1099511628211ull;
-  return h;
-}
-
 static int
 factor (lac_solver *s, const lac_csc *A, int reuse)
 {
@@ -634,7 +619,7 @@ factor (lac_solver *s, const lac_csc *A, int reuse)
     LAC_ERROR (LAC_EINVAL, "empty matrix (n = 0)");
   if (reuse && s->kind != LAC_SOLVER_DENSE)
     {
-      hash = pattern_hash (A);
+      hash = lac_csc_pattern_hash (A);
       reuse = s->sym_n == A->ncol && s->sym_nnz_A == (size_t) A->p[A->ncol]
               && s->sym_hash == hash;
     }
@@ -657,7 +642,7 @@ factor (lac_solver *s, const lac_csc *A, int reuse)
     {
       s->sym_n = A->ncol;
       s->sym_nnz_A = (size_t) A->p[A->ncol];
-      s->sym_hash = hash ? hash : pattern_hash (A);
+      s->sym_hash = hash ? hash : lac_csc_pattern_hash (A);
       s->info.analysis_reused = reuse;
     }
   return status;

@@ -298,6 +298,98 @@ lac_csc_transpose (const lac_csc *A)
   return C;
 }
 
+/* FNV-1a over the order and the pattern (p, i) of A. */
+unsigned long long
+lac_csc_pattern_hash (const lac_csc *A)
+{
+  unsigned long long h = 1469598103934665603ull;
+  size_t nnz = (size_t) A->p[A->ncol];
+  h = (h ^ A->nrow) * 1099511628211ull;
+  h = (h ^ A->ncol) * 1099511628211ull;
+  for (size_t j = 0; j <= A->ncol; j++)
+    h = (h ^ (unsigned long long) A->p[j]) * 1099511628211ull;
+  for (size_t q = 0; q < nnz; q++)
+    h = (h ^ (unsigned long long) A->i[q]) * 1099511628211ull;
+  return h;
+}
+
+/* ---- K + C W C^T ------------------------------------------------------ */
+
+lac_csc *
+lac_csc_augment_pattern (const lac_csc *K, const lac_csc *C)
+{
+  size_t nz = (size_t) K->p[K->ncol];
+  lac_triplet *T;
+  lac_csc *A = NULL;
+  int status = LAC_SUCCESS;
+  if (K->nrow != K->ncol || C->nrow != K->ncol)
+    LAC_ERROR_NULL (LAC_EBADLEN, "K is %zu x %zu and C %zu x %zu", K->nrow,
+                    K->ncol, C->nrow, C->ncol);
+  for (size_t i = 0; i < C->ncol; i++)
+    {
+      size_t m = (size_t) (C->p[i + 1] - C->p[i]);
+      nz += m * m;                             /* entries of c_i c_i^T */
+    }
+  if (!(T = lac_triplet_alloc (K->nrow, K->ncol, nz)))
+    return NULL;
+  for (size_t j = 0; !status && j < K->ncol; j++)        /* K */
+    for (int q = K->p[j]; !status && q < K->p[j + 1]; q++)
+      status = lac_triplet_add (T, (size_t) K->i[q], j, K->x[q]);
+  for (size_t i = 0; !status && i < C->ncol; i++)        /* 0 * c_i c_i^T */
+    for (int a = C->p[i]; !status && a < C->p[i + 1]; a++)
+      for (int b = C->p[i]; !status && b < C->p[i + 1]; b++)
+        status = lac_triplet_add (T, (size_t) C->i[a], (size_t) C->i[b], 0.0);
+  if (!status)
+    A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  return A;
+}
+
+/* Position of row r in column j of A (rows sorted), -1 if absent. */
+static int
+find_entry (const lac_csc *A, size_t j, int r)
+{
+  int lo = A->p[j], hi = A->p[j + 1] - 1;
+  while (lo <= hi)
+    {
+      int mid = lo + (hi - lo) / 2;
+      if (A->i[mid] == r)
+        return mid;
+      if (A->i[mid] < r)
+        lo = mid + 1;
+      else
+        hi = mid - 1;
+    }
+  return -1;
+}
+
+int
+lac_csc_augment (lac_csc *A, const lac_csc *K, const lac_csc *C,
+                 const double *w)
+{
+  memset (A->x, 0, (size_t) A->p[A->ncol] * sizeof *A->x);
+  for (size_t j = 0; j < K->ncol; j++)                   /* A = K */
+    for (int q = K->p[j]; q < K->p[j + 1]; q++)
+      {
+        int e = find_entry (A, j, K->i[q]);
+        if (e < 0)
+          LAC_ERROR (LAC_EINVAL, "K(%d,%zu) is outside the augmented "
+                     "pattern", K->i[q], j);
+        A->x[e] += K->x[q];
+      }
+  for (size_t i = 0; i < C->ncol; i++)                   /* + w_i c_i c_i^T */
+    for (int b = C->p[i]; w[i] != 0 && b < C->p[i + 1]; b++)
+      for (int a = C->p[i]; a < C->p[i + 1]; a++)
+        {
+          int e = find_entry (A, (size_t) C->i[b], C->i[a]);
+          if (e < 0)
+            LAC_ERROR (LAC_EINVAL, "column %zu of C is outside the augmented"
+                       " pattern", i);
+          A->x[e] += w[i] * C->x[a] * C->x[b];
+        }
+  return LAC_SUCCESS;
+}
+
 int
 lac_csc_write_mm (const lac_csc *A, const char *path)
 {

@@ -150,41 +150,33 @@ lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d)
   return lac_contact_apply_dirichlet (r->contact, d->n, d->dof, d->val);
 }
 
-/* Solve stage: the active set [LAC Alg. 1].  CHOLMOD needs K positive
- * definite (Schur complement); a body held by contact alone makes K
- * singular, and the saddle-point system is then solved with UMFPACK. */
+/* Solve stage: the active set [LAC Alg. 1], (*) solved by the strategy
+ * chosen from the problem (solve/lac_strategy.h). */
 int
 lac_run_contact_solve (lac_run *r)
 {
-  lac_solver_kind kind = (lac_solver_kind) r->scene->scene.solver;
-  lac_contact_system sys = { r->K, r->b, r->contact->C, r->contact->G, NULL };
+  lac_contact_system sys = { r->K, r->b, r->contact->C, r->contact->G, NULL,
+                             0, NULL, NULL };
+  lac_strategy_kind kind = lac_strategy_choose (LAC_STRATEGY_AUTO, r->ndof,
+                                                r->contact->k, sys.nfree);
   int status;
+  if (kind == LAC_NSTRATEGIES)
+    return LAC_EINVAL;
   r->newton = lac_newton_alloc (kind, r->ndof, r->contact->k);
   if (!r->newton)
     return LAC_ENOMEM;
   status = lac_newton_solve (r->newton, &sys, NEWTON_MAXIT, NEWTON_TOL);
-  if (status == LAC_ESING && kind == LAC_SOLVER_CHOLMOD
-      && r->newton->nhist == 0)
-    {
-      lac_newton_free (r->newton);
-      r->fallback = "K is not positive definite (a body held by contact "
-                    "alone): saddle-point system with umfpack";
-      r->newton = lac_newton_alloc (LAC_SOLVER_UMFPACK, r->ndof,
-                                    r->contact->k);
-      if (!r->newton)
-        return LAC_ENOMEM;
-      status = lac_newton_solve (r->newton, &sys, NEWTON_MAXIT, NEWTON_TOL);
-    }
   if (status)
     return status;
+  r->fallback = lac_strategy_fallback (r->newton->strategy);
   if (!(r->u = lac_malloc (r->ndof * sizeof *r->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", r->ndof);
   memcpy (r->u, r->newton->U, r->ndof * sizeof *r->u);
   snprintf (r->progress, sizeof r->progress, "%s, active set: %zu "
             "iteration%s, %zu of %zu multipliers active",
-            r->fallback ? "umfpack" : r->solver_name, r->newton->nhist,
-            r->newton->nhist > 1 ? "s" : "", lac_newton_nactive (r->newton),
-            r->contact->k);
+            lac_strategy_name (lac_strategy_kind_of (r->newton->strategy)),
+            r->newton->nhist, r->newton->nhist > 1 ? "s" : "",
+            lac_newton_nactive (r->newton), r->contact->k);
   return LAC_SUCCESS;
 }
 

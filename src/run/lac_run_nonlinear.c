@@ -291,7 +291,9 @@ nl_setup (lac_run *r)
     }
   lac_nl_opts o;
   lac_nl_opts_init (&o);
-  o.kind = (lac_solver_kind) sc->scene.solver;
+  o.kind = sc->scene.solver == LAC_SOLVER_DENSE ? LAC_STRATEGY_DENSE
+           : sc->scene.solver == LAC_SOLVER_CHOLMOD ? LAC_STRATEGY_SCHUR
+           : LAC_STRATEGY_SADDLE;
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
   if (!(nl->s = lac_nl_alloc (p, &o)))

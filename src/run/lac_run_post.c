@@ -263,15 +263,17 @@ lac_run_stage_output (lac_run *r)
   int status = r->opts.timings ? lac_run_stage_timings (r) : LAC_SUCCESS;
   if (r->opts.timings && r->contact && !status)     /* parts of the stages */
     {
+      lac_strategy_counts sc;
+      lac_strategy_get_counts (r->newton->strategy, &sc);
       if ((status = lac_run_summary_add (r, "time_refine", "%.3f",
                                          r->time_refine))
           || (status = lac_run_summary_add (r, "time_pairing", "%.3f",
                                             r->time_pairing))
           || (status = lac_run_summary_add (r, "time_factor_K", "%.3f",
-                                            r->newton->time_setup)))
+                                            sc.time_factor)))
         return status;
       status = lac_run_summary_add (r, "time_active_set", "%.3f",
-                                    r->newton->time_solve);
+                                    sc.time_solve);
     }
   if (status || r->opts.no_output)
     {

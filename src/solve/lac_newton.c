@@ -1,15 +1,9 @@
 /* lac_newton.c -- primal-dual active set for the LAC saddle system
  *                                                    [LAC §4.5, (18), Alg. 1]
  *
- * See lac_newton.h for the sign convention.  Two ways to solve one
- * iteration of [LAC Alg. 1, line 21] for a fixed active set A:
- *
- *   saddle (umfpack, dense)   assemble [K -C_A; -C_A^T 0] with identity rows
- *                             for the inactive multipliers and factorize it;
- *   schur  (cholmod)          with K = L L^T factorized once in set():
- *                               U0 = K^{-1} F,  S = C^T K^{-1} C  (k x k),
- *                               S_AA lambda_A = G_A - C_A^T U0,
- *                               U = K^{-1} (F + C_A lambda_A).
+ * See lac_newton.h.  One iteration: (*) for the statuses by the strategy
+ * (solve/lac_strategy.c), d = G - C^T U, the statuses by the rule of
+ * solve/lac_complementarity.c, the cycle safeguard, a history record.
  *
  * References: M. Hintermüller, K. Ito, K. Kunisch, The primal-dual active
  * set strategy as a semismooth Newton method, SIAM J. Optim. 13 (2002);
@@ -18,13 +12,12 @@
 #include "solve/lac_newton.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <gsl/gsl_linalg.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
-
-#define SCHUR_BLOCK 64   /* columns of K^{-1} C computed at a time */
+#include "solve/lac_complementarity.h"
 
 static double
 seconds (void)
@@ -35,23 +28,22 @@ seconds (void)
 }
 
 lac_newton *
-lac_newton_alloc (lac_solver_kind kind, size_t n, size_t k)
+lac_newton_alloc (lac_strategy_kind kind, size_t n, size_t k)
 {
   lac_newton *s = lac_calloc (1, sizeof *s);
+  size_t k1 = k ? k : 1;
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "newton workspace");
   s->kind = kind;
   s->n = n;
   s->k = k;
-  s->U = lac_calloc (n, sizeof *s->U);
-  s->lambda = lac_calloc (k, sizeof *s->lambda);
-  s->d = lac_calloc (k, sizeof *s->d);
-  s->active = lac_calloc (k, 1);
-  /* work: n+k (saddle rhs/solution) twice, or U0 (n) + k*k Schur + k*3 */
-  size_t nw = kind == LAC_SOLVER_CHOLMOD ? 2 * n + k * k + 3 * k
-                                         : 2 * (n + k);
-  s->work = lac_calloc (nw, sizeof *s->work);
-  if (!s->U || !s->lambda || !s->d || !s->active || !s->work)
+  s->U = lac_calloc (n ? n : 1, sizeof *s->U);
+  s->lambda = lac_calloc (k1, sizeof *s->lambda);
+  s->d = lac_calloc (k1, sizeof *s->d);
+  s->active = lac_calloc (k1, 1);
+  s->work = lac_calloc (3 * k1, sizeof *s->work);
+  s->strategy = lac_strategy_alloc (kind);
+  if (!s->U || !s->lambda || !s->d || !s->active || !s->work || !s->strategy)
     {
       lac_newton_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "newton workspace for n = %zu, k = %zu", n, k);
@@ -70,15 +62,9 @@ lac_newton_free (lac_newton *s)
   lac_free (s->active);
   lac_free (s->work);
   lac_free (s->hist);
-  lac_solver_free (s->solver);
-  lac_csc_free (s->Ct);
+  lac_free (s->seen);
+  lac_strategy_free (s->strategy);
   lac_free (s);
-}
-
-void
-lac_newton_share_solver (lac_newton *s, lac_solver *so)
-{
-  s->shared = so;
 }
 
 size_t
@@ -90,19 +76,8 @@ lac_newton_nactive (const lac_newton *s)
   return m;
 }
 
-/* d = G - C^T U, using the stored C^T (rows = multipliers). */
-static void
-mean_gaps (const lac_newton *s)
-{
-  const lac_csc *Ct = s->Ct;   /* C^T is k x n; its CSC columns are dofs */
-  for (size_t i = 0; i < s->k; i++)
-    s->d[i] = s->sys->G[i];
-  for (size_t r = 0; r < s->n; r++)
-    for (int p = Ct->p[r]; p < Ct->p[r + 1]; p++)
-      s->d[Ct->i[p]] -= Ct->x[p] * s->U[r];                /* d -= C^T U */
-}
-
-/* Scale of the mean gap i, for deciding that it is zero up to roundoff. */
+/* Scale of the mean gap i (what d_i was computed from), for deciding that
+ * it is zero up to roundoff. */
 static double
 gap_scale (const lac_newton *s, size_t i)
 {
@@ -119,296 +94,14 @@ rho_of (const lac_newton *s, size_t i)
   return s->sys->rho ? s->sys->rho[i] : 1.0;
 }
 
-/* The factorization of K on the Schur path: the shared solver if one was
- * given (lac_newton_share_solver), the own one otherwise. */
-static lac_solver *
-k_solver (const lac_newton *s)
+/* FNV-1a checksum of the statuses. */
+static unsigned long long
+status_hash (const char *active, size_t k)
 {
-  return s->shared ? s->shared : s->solver;
-}
-
-/* Schur path, set-up: factorize K, U0 = K^{-1} F and the dense
- * S = C^T K^{-1} C (k x k, row-major), SCHUR_BLOCK columns at a time. */
-static int
-schur_setup (lac_newton *s)
-{
-  const lac_contact_system *sys = s->sys;
-  size_t n = s->n, k = s->k;
-  double *U0 = s->work, *S = s->work + 2 * n;
-  double *B = NULL, *X = NULL;
-  int status;
-
-  if (s->shared)          /* K = L L^T, the analysis of the last K kept */
-    status = lac_solver_refactor (s->shared, sys->K);
-  else
-    {
-      lac_solver_free (s->solver);
-      s->solver = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
-      if (!s->solver)
-        return LAC_ENOMEM;
-      status = lac_solver_factor (s->solver, sys->K);      /* K = L L^T */
-    }
-  if (status)
-    return status;
-  status = lac_solver_solve (k_solver (s), sys->F, U0);    /* U0 = K^{-1} F */
-  if (status)
-    return status;
-  B = lac_malloc (n * SCHUR_BLOCK * sizeof *B);
-  X = lac_malloc (n * SCHUR_BLOCK * sizeof *X);
-  if (!B || !X)
-    {
-      status = LAC_ERRMSG (LAC_ENOMEM, "Schur complement blocks (n = %zu)", n);
-      goto done;
-    }
-  for (size_t j0 = 0; j0 < k; j0 += SCHUR_BLOCK)
-    {
-      size_t nb = k - j0 < SCHUR_BLOCK ? k - j0 : SCHUR_BLOCK;
-      memset (B, 0, n * nb * sizeof *B);
-      for (size_t j = 0; j < nb; j++)                      /* B = C(:, block) */
-        for (int p = sys->C->p[j0 + j]; p < sys->C->p[j0 + j + 1]; p++)
-          B[j * n + sys->C->i[p]] = sys->C->x[p];
-      status = lac_solver_solve_many (k_solver (s), nb, B, X); /* X = K^-1 B */
-      if (status)
-        goto done;
-      for (size_t i = 0; i < k; i++)                       /* S(i,block) = C_i^T X */
-        for (size_t j = 0; j < nb; j++)
-          {
-            double sum = 0;
-            for (int p = sys->C->p[i]; p < sys->C->p[i + 1]; p++)
-              sum += sys->C->x[p] * X[j * n + sys->C->i[p]];
-            S[i * k + j0 + j] = sum;
-          }
-    }
-done:
-  lac_free (B);
-  lac_free (X);
-  return status;
-}
-
-/* Schur path, one iteration: S_AA lambda_A = G_A - C_A^T U0, then
- * U = K^{-1} (F + C_A lambda_A). */
-static int
-schur_iterate (lac_newton *s)
-{
-  const lac_contact_system *sys = s->sys;
-  size_t n = s->n, k = s->k, m = 0;
-  double *U0 = s->work, *rhs = s->work + n, *S = s->work + 2 * n;
-  int status = LAC_SUCCESS;
-
-  size_t *A = lac_malloc ((k ? k : 1) * sizeof *A);
-  if (!A)
-    return LAC_ERRMSG (LAC_ENOMEM, "active set of %zu", k);
+  unsigned long long h = 1469598103934665603ull;
   for (size_t i = 0; i < k; i++)
-    {
-      s->lambda[i] = 0;
-      if (s->active[i])
-        A[m++] = i;
-    }
-  if (m > 0)
-    {
-      gsl_matrix *SAA = gsl_matrix_alloc (m, m);
-      gsl_vector *b = gsl_vector_alloc (m), *x = gsl_vector_alloc (m);
-      if (!SAA || !b || !x)
-        status = LAC_ERRMSG (LAC_ENOMEM, "Schur matrix %zu x %zu", m, m);
-      for (size_t a = 0; !status && a < m; a++)
-        {
-          double cu = 0;
-          for (int p = sys->C->p[A[a]]; p < sys->C->p[A[a] + 1]; p++)
-            cu += sys->C->x[p] * U0[sys->C->i[p]];
-          gsl_vector_set (b, a, sys->G[A[a]] - cu);        /* G_A - C_A^T U0 */
-          for (size_t c = 0; c < m; c++)
-            gsl_matrix_set (SAA, a, c, S[A[a] * k + A[c]]);
-        }
-      if (!status && gsl_linalg_cholesky_decomp1 (SAA))
-        status = LAC_ERRMSG (LAC_ESING, "the Schur complement C_A^T K^-1 C_A "
-                             "of the %zu active multipliers is not positive "
-                             "definite: the contact constraints are linearly "
-                             "dependent (inf-sup condition [LAC (10)])", m);
-      if (!status && gsl_linalg_cholesky_solve (SAA, b, x))
-        status = LAC_ERRMSG (LAC_ESING, "Schur solve failed");
-      for (size_t a = 0; !status && a < m; a++)
-        s->lambda[A[a]] = gsl_vector_get (x, a);
-      gsl_matrix_free (SAA);
-      gsl_vector_free (b);
-      gsl_vector_free (x);
-    }
-  if (!status)
-    {
-      memcpy (rhs, sys->F, n * sizeof *rhs);
-      for (size_t a = 0; a < m; a++)                       /* F + C_A lambda_A */
-        for (int p = sys->C->p[A[a]]; p < sys->C->p[A[a] + 1]; p++)
-          rhs[sys->C->i[p]] += sys->C->x[p] * s->lambda[A[a]];
-      status = lac_solver_solve (k_solver (s), rhs, s->U);
-    }
-  lac_free (A);
-  return status;
-}
-
-/* Saddle path, scaling: a symmetric diagonal scaling D of the saddle
- * matrix, D = diag(K)^{-1/2} on the displacements and, on multiplier i,
- * 1 / max_r |D_r C_ri|.  Without it a partly covered macro-element (its
- * column of C scales with the covered fraction delta) or a contrast of
- * Young's moduli between the bodies would make the matrix look singular
- * to the solvers' condition test although the problem is well posed. */
-static void
-saddle_scaling (const lac_newton *s, double *D)
-{
-  const lac_csc *K = s->sys->K, *C = s->sys->C;
-  for (size_t j = 0; j < s->n; j++)
-    {
-      double kjj = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        if ((size_t) K->i[p] == j)
-          kjj = fabs (K->x[p]);
-      D[j] = kjj > 0 ? 1 / sqrt (kjj) : 1.0;
-    }
-  for (size_t i = 0; i < s->k; i++)
-    {
-      double cmax = 0;
-      for (int p = C->p[i]; p < C->p[i + 1]; p++)
-        cmax = fmax (cmax, fabs (D[C->i[p]] * C->x[p]));
-      D[s->n + i] = s->active[i] && cmax > 0 ? 1 / cmax : 1.0;
-    }
-}
-
-/* Saddle path: the matrix D A D of [LAC Alg. 1, line 21] for the current
- * statuses, with identity rows for inactive multipliers (line 17). */
-static lac_csc *
-saddle_matrix (const lac_newton *s, const double *D)
-{
-  const lac_csc *K = s->sys->K, *C = s->sys->C;
-  size_t n = s->n, k = s->k;
-  size_t nnzC = (size_t) C->p[k];
-  lac_triplet *T = lac_triplet_alloc (n + k, n + k,
-                                      (size_t) K->p[n] + 2 * nnzC + k);
-  lac_csc *A = NULL;
-  int status = T ? LAC_SUCCESS : LAC_ENOMEM;
-
-  for (size_t j = 0; !status && j < n; j++)                /* D K D */
-    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
-      status = lac_triplet_add (T, (size_t) K->i[p], j,
-                                D[K->i[p]] * K->x[p] * D[j]);
-  for (size_t i = 0; !status && i < k; i++)
-    {
-      if (!s->active[i])
-        {
-          status = lac_triplet_add (T, n + i, n + i, 1.0); /* lambda_i = 0 */
-          continue;
-        }
-      for (int p = C->p[i]; !status && p < C->p[i + 1]; p++)
-        {
-          double c = -D[C->i[p]] * C->x[p] * D[n + i];     /* -D C D */
-          status = lac_triplet_add (T, (size_t) C->i[p], n + i, c);
-          if (!status)
-            status = lac_triplet_add (T, n + i, (size_t) C->i[p], c);
-        }
-    }
-  if (!status)
-    A = lac_csc_from_triplet (T);
-  lac_triplet_free (T);
-  return A;
-}
-
-static int
-saddle_iterate (lac_newton *s)
-{
-  size_t n = s->n, k = s->k;
-  double *rhs = s->work, *sol = s->work + n + k;
-  double *D = lac_malloc ((n + k) * sizeof *D);
-  int status;
-  if (!D)
-    return LAC_ERRMSG (LAC_ENOMEM, "saddle scaling of %zu unknowns", n + k);
-  saddle_scaling (s, D);
-  lac_csc *A = saddle_matrix (s, D);
-  if (!A)
-    {
-      lac_free (D);
-      return LAC_ENOMEM;
-    }
-  for (size_t j = 0; j < n; j++)                          /* D [F; -G_A; 0] */
-    rhs[j] = D[j] * s->sys->F[j];
-  for (size_t i = 0; i < k; i++)
-    rhs[n + i] = s->active[i] ? -D[n + i] * s->sys->G[i] : 0.0;
-  lac_solver_free (s->solver);
-  s->solver = lac_solver_alloc (s->kind);
-  status = s->solver ? lac_solver_factor (s->solver, A) : LAC_ENOMEM;
-  if (status == LAC_ESING)
-    status = LAC_ERRMSG (LAC_ESING, "the saddle-point system with %zu active "
-                         "multipliers is singular: check the Dirichlet "
-                         "conditions and the inf-sup condition [LAC (10)] (%s)",
-                         lac_newton_nactive (s), lac_error_message ());
-  if (!status)
-    status = lac_solver_solve (s->solver, rhs, sol);
-  if (!status)
-    {
-      for (size_t j = 0; j < n; j++)
-        s->U[j] = D[j] * sol[j];                          /* x = D y */
-      for (size_t i = 0; i < k; i++)
-        s->lambda[i] = D[n + i] * sol[n + i];
-    }
-  lac_csc_free (A);
-  lac_free (D);
-  return status;
-}
-
-/* Residuals of the current iterate for the history record. */
-static void
-record (lac_newton *s, lac_newton_record *r)
-{
-  const lac_contact_system *sys = s->sys;
-  size_t n = s->n;
-  double *res = s->work + (s->kind == LAC_SOLVER_CHOLMOD ? n : 0);
-  double nF = 0, nr = 0, nU = 0, lmax = 0, ncp = 0, pen = 0;
-
-  lac_csc_matvec (sys->K, s->U, res);                      /* res = K U */
-  for (size_t i = 0; i < s->k; i++)
-    for (int p = sys->C->p[i]; p < sys->C->p[i + 1]; p++)
-      res[sys->C->i[p]] -= sys->C->x[p] * s->lambda[i];  /* - C lambda */
-  for (size_t j = 0; j < n; j++)
-    {
-      res[j] -= sys->F[j];                                /* - F */
-      nr = fmax (nr, fabs (res[j]));
-      nF = fmax (nF, fabs (sys->F[j]));
-      nU = fmax (nU, fabs (s->U[j]));
-    }
-  for (size_t i = 0; i < s->k; i++)
-    {
-      double a = s->lambda[i] + rho_of (s, i) * s->d[i];
-      double A = s->lambda[i] - (a < 0 ? a : 0);          /* A_i(U, lambda) */
-      double csum = 0;
-      for (int p = sys->C->p[i]; p < sys->C->p[i + 1]; p++)
-        csum += fabs (sys->C->x[p]);
-      lmax = fmax (lmax, fabs (s->lambda[i]));
-      ncp = fmax (ncp, fabs (A));
-      if (csum > 0)
-        pen = fmax (pen, -s->d[i] / csum);
-    }
-  /* normwise backward error (infinity norms): independent of the units
-   * and of the contrast of the stiffnesses */
-  double scale = s->normK * nU + s->normC * lmax + nF;
-  r->residual = nr / (scale > 0 ? scale : 1e-300);
-  r->ncp = ncp / (lmax > 0 ? lmax : 1.0);
-  r->max_penetration = pen;
-}
-
-/* Status update [LAC Alg. 1, lines 26-33]: active iff lambda + rho d < 0,
- * with values below roundoff treated as zero. */
-static size_t
-update_status (lac_newton *s)
-{
-  double lmax = 0;
-  size_t changed = 0;
-  for (size_t i = 0; i < s->k; i++)
-    lmax = fmax (lmax, fabs (s->lambda[i]));
-  for (size_t i = 0; i < s->k; i++)
-    {
-      double lam = fabs (s->lambda[i]) <= 1e-12 * lmax ? 0 : s->lambda[i];
-      double d = fabs (s->d[i]) <= 1e-12 * gap_scale (s, i) ? 0 : s->d[i];
-      char a = lam + rho_of (s, i) * d < 0;
-      changed += a != s->active[i];
-      s->active[i] = a;
-    }
-  return changed;
+    h = (h ^ (unsigned long long) (active[i] != 0)) * 1099511628211ull;
+  return h;
 }
 
 static int
@@ -418,9 +111,13 @@ push_record (lac_newton *s, const lac_newton_record *r)
     {
       size_t cap = s->caphist ? 2 * s->caphist : 16;
       lac_newton_record *h = lac_realloc (s->hist, cap * sizeof *h);
-      if (!h)
+      unsigned long long *q = h ? lac_realloc (s->seen, (cap + 1)
+                                               * sizeof *q) : NULL;
+      if (h)
+        s->hist = h;
+      if (!q)
         LAC_ERROR (LAC_ENOMEM, "newton history");
-      s->hist = h;
+      s->seen = q;
       s->caphist = cap;
     }
   s->hist[s->nhist++] = *r;
@@ -428,8 +125,11 @@ push_record (lac_newton *s, const lac_newton_record *r)
 }
 
 int
-lac_newton_set (lac_newton *s, const lac_contact_system *sys)
+lac_newton_set (lac_newton *s, const lac_contact_system *sys,
+                const char *active0)
 {
+  double normK;
+  int status;
   if (!sys || !sys->K || !sys->F || !sys->C || !sys->G)
     LAC_ERROR (LAC_EINVAL, "incomplete contact system");
   if (sys->K->nrow != s->n || sys->K->ncol != s->n || sys->C->nrow != s->n
@@ -438,76 +138,159 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys)
                sys->K->nrow, sys->K->ncol, sys->C->nrow, sys->C->ncol, s->n, s->k);
   s->sys = sys;
   s->nhist = 0;
-  s->normK = s->normC = 0;
-  for (size_t j = 0; j < s->n; j++)       /* ||K||_inf = max column sum */
-    {
-      double sum = 0;
-      for (int p = sys->K->p[j]; p < sys->K->p[j + 1]; p++)
-        sum += fabs (sys->K->x[p]);
-      s->normK = fmax (s->normK, sum);
-    }
   s->restarted = 0;
   memset (s->U, 0, s->n * sizeof *s->U);
   memset (s->lambda, 0, s->k * sizeof *s->lambda);
-  lac_csc_free (s->Ct);
-  s->Ct = lac_csc_transpose (sys->C);
-  if (!s->Ct)
-    return LAC_ENOMEM;
-  for (size_t r = 0; r < s->n; r++)       /* ||C||_inf = max row sum */
-    {
-      double sum = 0;
-      for (int p = s->Ct->p[r]; p < s->Ct->p[r + 1]; p++)
-        sum += fabs (s->Ct->x[p]);
-      s->normC = fmax (s->normC, sum);
-    }
-  /* Initial status [LAC Alg. 1, lines 2-8]: closed or penetrating -> active */
+  lac_system_norms (sys, &normK, &s->normC);
+  /* Initial statuses [LAC Alg. 1, lines 2-8]: closed or penetrating */
   for (size_t i = 0; i < s->k; i++)
     {
-      s->active[i] = sys->G[i] <= 0;     /* G is rounded by its producer */
+      s->active[i] = active0 ? active0[i] != 0 : sys->G[i] <= 0;
       s->d[i] = sys->G[i];
     }
-  s->time_setup = s->time_solve = 0;
-  if (s->kind != LAC_SOLVER_CHOLMOD)
-    return LAC_SUCCESS;
-  double t0 = seconds ();
-  int status = schur_setup (s);
-  s->time_setup = seconds () - t0;
+  if (sys->nfree > 0 && lac_system_check_held (sys, s->active))
+    {
+      lac_error_clear ();       /* a body held by contact alone: all on */
+      memset (s->active, 1, s->k);
+      s->restarted = 1;
+    }
+  if (!s->seen && !(s->seen = lac_malloc (sizeof *s->seen)))
+    LAC_ERROR (LAC_ENOMEM, "newton history");
+  s->seen[0] = status_hash (s->active, s->k);
+  status = lac_strategy_set (s->strategy, sys);
   return status;
+}
+
+/* Was this set of statuses used by an earlier iteration? */
+static int
+seen_before (const lac_newton *s, unsigned long long h)
+{
+  for (size_t j = 0; j <= s->nhist; j++)
+    if (s->seen[j] == h)
+      return 1;
+  return 0;
+}
+
+static int
+cmp_violation (const void *a, const void *b)
+{
+  const double *x = a, *y = b;                 /* pairs (|A_i|, i) */
+  return x[0] < y[0] ? 1 : x[0] > y[0] ? -1 : 0;
+}
+
+/* Steps 26-33: the statuses by the rule; the changes in want[].  If the
+ * new statuses were tried before (a cycle), keep only the most violated
+ * half of the changes, again while the result was tried before. */
+static size_t
+update_status (lac_newton *s, int *damped)
+{
+  double lmax = lac_complementarity_lmax (s->k, s->lambda);
+  double *pair = s->work;                      /* (|A_i|, i) of changes */
+  size_t nch = 0;
+  char *want = (char *) (s->work + 2 * s->k);  /* k flags in k doubles */
+  *damped = 0;
+  for (size_t i = 0; i < s->k; i++)
+    {
+      double sc = gap_scale (s, i), rho = rho_of (s, i);
+      want[i] = (char) lac_complementarity_active (s->lambda[i], s->d[i],
+                                                   rho, lmax, sc);
+      if (want[i] != s->active[i])
+        {
+          pair[2 * nch] = lac_complementarity_residual (s->lambda[i],
+                                                        s->d[i], rho, lmax,
+                                                        sc);
+          pair[2 * nch++ + 1] = (double) i;
+        }
+    }
+  if (nch == 0 || !seen_before (s, status_hash (want, s->k)))
+    {
+      memcpy (s->active, want, s->k);
+      return nch;
+    }
+  qsort (pair, nch, 2 * sizeof *pair, cmp_violation);
+  *damped = 1;
+  for (size_t keep = nch / 2 > 0 ? nch / 2 : 1;; keep = keep / 2 > 0
+       ? keep / 2 : 1)
+    {
+      memcpy (want, s->active, s->k);
+      for (size_t c = 0; c < keep; c++)
+        {
+          size_t i = (size_t) pair[2 * c + 1];
+          want[i] = !s->active[i];
+        }
+      if (keep == 1 || !seen_before (s, status_hash (want, s->k)))
+        {
+          memcpy (s->active, want, s->k);
+          return keep;
+        }
+    }
+}
+
+/* Residuals of the current iterate for the history record. */
+static void
+record (lac_newton *s, lac_newton_record *r)
+{
+  const lac_csc *C = s->sys->C;
+  double lmax = lac_complementarity_lmax (s->k, s->lambda), ncp = 0, pen = 0;
+  lac_strategy_counts c;
+  lac_strategy_get_counts (s->strategy, &c);
+  r->residual = c.backward_error;
+  for (size_t i = 0; i < s->k; i++)
+    {
+      double csum = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        csum += fabs (C->x[p]);
+      ncp = fmax (ncp, lac_complementarity_residual (s->lambda[i], s->d[i],
+                                                     rho_of (s, i), lmax,
+                                                     gap_scale (s, i)));
+      if (csum > 0)
+        pen = fmax (pen, -s->d[i] / csum);
+    }
+  r->ncp = ncp / (lmax > 0 ? lmax : 1.0);
+  r->max_penetration = pen;
 }
 
 int
 lac_newton_iterate (lac_newton *s)
 {
-  lac_newton_record r = { 0 };
-  int status;
+  lac_newton_record r;
+  lac_strategy_counts c0, c1;
+  double t0 = seconds ();
+  int status, damped;
   if (!s->sys)
     LAC_ERROR (LAC_EINVAL, "lac_newton_set was not called");
+  memset (&r, 0, sizeof r);
   r.iter = (int) s->nhist + 1;
   r.nactive = lac_newton_nactive (s);
-  double t0 = seconds ();
-  /* Step 21: solve the saddle system for the current active set */
-  status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
-                                         : saddle_iterate (s);
+  lac_strategy_get_counts (s->strategy, &c0);
+  /* Step 21: solve (*) for the current statuses, from the last iterate */
+  status = lac_strategy_solve (s->strategy, s->active, s->U, s->lambda);
   if (status == LAC_ESING && s->nhist == 0 && r.nactive < s->k)
     {
-      /* A body held by contact alone cannot start with open gaps: its
-       * stiffness alone is singular.  Start again from every multiplier
-       * active; the status update releases those in tension. */
+      /* A body held by contact alone that the system did not declare
+       * (no N): its stiffness alone is singular; start again from every
+       * multiplier active, the rule releases those in tension. */
+      lac_error_clear ();
       memset (s->active, 1, s->k);
       s->restarted = 1;
       r.nactive = s->k;
-      status = s->kind == LAC_SOLVER_CHOLMOD ? schur_iterate (s)
-                                             : saddle_iterate (s);
+      status = lac_strategy_solve (s->strategy, s->active, s->U, s->lambda);
     }
-  s->time_solve += seconds () - t0;
   if (status)
     return status;
-  mean_gaps (s);                                          /* d = G - C^T U */
-  /* Steps 26-33: new statuses */
-  s->changed = update_status (s);
-  r.nchanged = s->changed;
+  lac_strategy_get_counts (s->strategy, &c1);
+  r.cg_iterations = c1.iterations - c0.iterations;
+  r.factorizations = c1.factorizations - c0.factorizations;
+  lac_system_gaps (s->sys, s->U, s->d);                    /* d = G - C^T U */
   record (s, &r);
-  return push_record (s, &r);
+  s->changed = update_status (s, &damped);                 /* steps 26-33 */
+  r.nchanged = s->changed;
+  r.damped = damped;
+  r.seconds = seconds () - t0;
+  if ((status = push_record (s, &r)))
+    return status;
+  s->seen[s->nhist] = status_hash (s->active, s->k);
+  return LAC_SUCCESS;
 }
 
 int
@@ -522,10 +305,20 @@ lac_newton_test (const lac_newton *s, double tol)
 }
 
 int
+lac_newton_maxiter_error (const lac_newton *s, int maxit)
+{
+  LAC_ERROR (LAC_EMAXITER, "the active set did not settle in %d iterations:"
+             " the last one changed %zu status%s (%zu of %zu multipliers "
+             "active); raise [contact] max_iterations or load in steps",
+             maxit, s->changed, s->changed == 1 ? "" : "es",
+             lac_newton_nactive (s), s->k);
+}
+
+int
 lac_newton_solve (lac_newton *s, const lac_contact_system *sys, int maxit,
                   double tol)
 {
-  int status = lac_newton_set (s, sys);
+  int status = lac_newton_set (s, sys, NULL);
   for (int it = 0; !status && it < maxit; it++)
     {
       status = lac_newton_iterate (s);
@@ -536,7 +329,5 @@ lac_newton_solve (lac_newton *s, const lac_contact_system *sys, int maxit,
     }
   if (status)
     return status;
-  LAC_ERROR (LAC_EMAXITER, "the active set did not settle in %d iterations "
-             "(last: %zu active, %zu changed)", maxit, lac_newton_nactive (s),
-             s->changed);
+  return lac_newton_maxiter_error (s, maxit);
 }

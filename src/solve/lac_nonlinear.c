@@ -12,7 +12,8 @@
 #include <string.h>
 #include <time.h>
 #include "base/lac_mem.h"
-#include "solve/lac_newton.h"
+#include "solve/lac_complementarity.h"
+#include "solve/lac_strategy.h"
 #include "base/lac_status.h"
 
 #define HALVINGS 5        /* corrections halved when a cell turns inside out */
@@ -29,7 +30,7 @@ void
 lac_nl_opts_init (lac_nl_opts *o)
 {
   memset (o, 0, sizeof *o);
-  o->kind = LAC_SOLVER_UMFPACK;
+  o->kind = LAC_STRATEGY_SADDLE;
   o->maxit = 25;
   o->tol = 1e-8;
   o->rho = 0;
@@ -56,6 +57,9 @@ lac_nl_free (lac_nl *s)
   lac_free (s->g0);
   lac_csc_free (s->K);
   lac_solver_free (s->solver);
+  lac_strategy_free (s->strategy);
+  lac_free (s->klam);
+  lac_free (s->kact);
   lac_free (s->r);
   lac_free (s->Fint);
   lac_free (s->dU);
@@ -340,11 +344,10 @@ static size_t
 update_status (lac_nl *s, double *pen)
 {
   const lac_contact *c = s->contact;
-  double Eref = e_ref (s), lmax = 0;
+  double Eref = e_ref (s);
+  double lmax = lac_complementarity_lmax (s->nmacro, s->lambda);
   size_t changed = 0;
   *pen = 0;
-  for (size_t m = 0; m < s->nmacro; m++)
-    lmax = fmax (lmax, fabs (s->lambda[m]));
   for (size_t m = 0; m < s->nmacro; m++)
     {
       long i = c ? c->mult[m] : -1;
@@ -357,10 +360,10 @@ update_status (lac_nl *s, double *pen)
             scale += fabs (c->C->x[q] * s->U[c->C->i[q]]);
           if (fabs (d) <= 1e-12 * scale)
             d = 0;                                    /* roundoff: touching */
-          double lam = fabs (s->lambda[m]) <= 1e-12 * lmax ? 0 : s->lambda[m];
           double rho = rho_of (s, (size_t) i, Eref);
-          a = s->first ? d <= 0
-                       : lam + rho * d < 0;          /* [LAC Alg. 1, l. 28] */
+          a = s->first ? d <= 0                       /* [LAC Alg. 1, l. 2-8] */
+                       : (char) lac_complementarity_active (s->lambda[m], d,
+                                                            rho, lmax, scale);
           if (a && c->area[i] > 0)
             *pen = fmax (*pen, -d / c->area[i]);
         }
@@ -455,102 +458,74 @@ increments (const lac_nl *s, lac_dirichlet *inc)
   return LAC_SUCCESS;
 }
 
-/* The solver kept for K_T (s->solver) if `kind` is that of the options;
- * NULL for another kind (the umfpack fallback of a step where K_T is not
- * SPD), which gets a solver of its own per solve. */
-static lac_solver *
-kept_solver (lac_nl *s, lac_solver_kind kind)
+/* K_T dU = r without contact (no admissible macro-element): CHOLMOD or
+ * UMFPACK as the strategy, the analysis of K_T kept. */
+static int
+solve_plain (lac_nl *s)
 {
-  if (kind != s->opts.kind)
-    return NULL;
-  if (!s->solver)
-    s->solver = lac_solver_alloc (kind);
-  return s->solver;
+  int status;
+  lac_solver_kind kind = s->opts.kind == LAC_STRATEGY_DENSE
+    ? LAC_SOLVER_DENSE : s->opts.kind == LAC_STRATEGY_SADDLE
+    ? LAC_SOLVER_UMFPACK : LAC_SOLVER_CHOLMOD;
+  if (!s->solver && !(s->solver = lac_solver_alloc (kind)))
+    return LAC_ENOMEM;
+  status = lac_solver_refactor (s->solver, s->K);      /* same pattern */
+  if (status == LAC_ESING && kind == LAC_SOLVER_CHOLMOD)
+    {
+      lac_error_clear ();             /* K_T not positive definite: LU */
+      lac_solver_free (s->solver);
+      if (!(s->solver = lac_solver_alloc (LAC_SOLVER_UMFPACK)))
+        return LAC_ENOMEM;
+      status = lac_solver_refactor (s->solver, s->K);
+    }
+  return status ? status : lac_solver_solve (s->solver, s->r, s->dU);
 }
 
-/* K_T dU = r without contact. */
+/* The saddle system of step 5 by the strategy (solve/lac_strategy.h),
+ * kept between iterations (its analyses made once): the statuses and
+ * the multipliers of the admissible macro-elements, the total lambda as
+ * the unknown, the last one as the start.  If the statuses do not hold a
+ * body held by contact alone, every admissible one is active in this
+ * solve (step 3 releases those in tension at the next iteration). */
 static int
-solve_plain (lac_nl *s, lac_solver_kind kind)
-{
-  lac_solver *kept = kept_solver (s, kind);
-  lac_solver *so = kept ? kept : lac_solver_alloc (kind);
-  int status = !so ? LAC_ENOMEM
-               : kept ? lac_solver_refactor (so, s->K)  /* same pattern */
-               : lac_solver_factor (so, s->K);
-  if (!status)
-    status = lac_solver_solve (so, s->r, s->dU);
-  if (!kept)
-    lac_solver_free (so);
-  return status;
-}
-
-/* The saddle system of step 5 through one iteration of lac_newton, with
- * the columns of the active multipliers only (all admissible ones if
- * `all`): the inactive ones have lambda = 0 and no equation, and leaving
- * them out saves their columns of K^-1 C in the Schur path. */
-static int
-solve_contact (lac_nl *s, lac_solver_kind kind, int all)
+solve_contact (lac_nl *s)
 {
   const lac_contact *c = s->contact;
-  const lac_csc *C = c->C;
-  size_t na = 0, nnz = 0, n = s->ndof;
-  for (size_t i = 0; i < c->k; i++)
-    if (all || s->active[c->macro[i]])
-      na++, nnz += (size_t) (C->p[i + 1] - C->p[i]);
-  if (na == 0)
-    return solve_plain (s, kind);
-  lac_csc *CA = lac_csc_alloc (n, na, nnz);
-  double *GA = lac_malloc (na * sizeof *GA);
-  size_t *idx = lac_malloc (na * sizeof *idx);
-  lac_newton *nw = lac_newton_alloc (kind, n, na);
-  int status = CA && GA && idx && nw ? LAC_SUCCESS : LAC_ENOMEM;
-  for (size_t i = 0, a = 0, q = 0; !status && i < c->k; i++)
-    if (all || s->active[c->macro[i]])
-      {
-        for (int p = C->p[i]; p < C->p[i + 1]; p++, q++)  /* C_A(:,a) */
-          {
-            CA->i[q] = C->i[p];
-            CA->x[q] = C->x[p];
-          }
-        CA->p[a + 1] = (int) q;
-        GA[a] = c->G[i];
-        idx[a++] = i;
-      }
-  lac_contact_system sys = { s->K, s->r, CA, GA, NULL };
-  if (!status && kind == LAC_SOLVER_CHOLMOD)   /* Schur path: K_T kept */
-    lac_newton_share_solver (nw, kept_solver (s, kind));
-  if (!status)
-    status = lac_newton_set (nw, &sys);
-  if (!status)
+  size_t k = c->k;
+  if (!s->strategy && !(s->strategy = lac_strategy_alloc (s->opts.kind)))
+    return LAC_ENOMEM;
+  if (k > s->kcap)
     {
-      memset (nw->active, 1, na);                      /* all of C_A */
-      status = lac_newton_iterate (nw);
+      lac_free (s->klam);
+      lac_free (s->kact);
+      s->klam = lac_malloc (k * sizeof *s->klam);
+      s->kact = lac_malloc (k);
+      if (!s->klam || !s->kact)
+        LAC_ERROR (LAC_ENOMEM, "%zu multipliers", k);
+      s->kcap = k;
     }
-  if (!status)
+  for (size_t i = 0; i < k; i++)
     {
-      memcpy (s->dU, nw->U, n * sizeof *s->dU);
-      for (size_t a = 0; a < na; a++)                  /* total lambda */
-        {
-          s->lambda[c->macro[idx[a]]] = nw->lambda[a];
-          s->active[c->macro[idx[a]]] = 1;
-        }
+      s->kact[i] = s->active[c->macro[i]];
+      s->klam[i] = s->kact[i] ? s->lambda[c->macro[i]] : 0.0;
     }
-  lac_newton_free (nw);
-  lac_csc_free (CA);
-  lac_free (GA);
-  lac_free (idx);
+  lac_contact_system sys = { s->K, s->r, c->C, c->G, NULL, s->prob.nfree,
+                             s->prob.N, s->prob.N_what };
+  if (sys.nfree > 0 && lac_system_check_held (&sys, s->kact))
+    {
+      lac_error_clear ();
+      memset (s->kact, 1, k);
+    }
+  memset (s->dU, 0, s->ndof * sizeof *s->dU);
+  int status = lac_strategy_set (s->strategy, &sys);
+  if (!status)
+    status = lac_strategy_solve (s->strategy, s->kact, s->dU, s->klam);
+  for (size_t i = 0; !status && i < k; i++)             /* total lambda */
+    {
+      s->lambda[c->macro[i]] = s->klam[i];
+      s->active[c->macro[i]] = s->kact[i];
+    }
   return status;
-}
-
-/* Admissible multipliers left inactive by step 3? */
-static int
-some_inactive (const lac_nl *s)
-{
-  const lac_contact *c = s->contact;
-  for (size_t i = 0; c && i < c->k; i++)
-    if (!s->active[c->macro[i]])
-      return 1;
-  return 0;
 }
 
 /* Step 5: Dirichlet increments into K_T, r and G, solve, U += dU. */
@@ -573,27 +548,10 @@ solve (lac_nl *s)
     }
   if (!status && s->contact)
     status = lac_contact_apply_dirichlet (s->contact, inc.n, inc.dof, inc.val);
-  lac_solver_kind kind = s->opts.kind;
-  if (kind == LAC_SOLVER_CHOLMOD && s->cholmod_failed)
-    kind = LAC_SOLVER_UMFPACK;
   double t0 = seconds ();
   if (!status)
-    status = s->contact ? solve_contact (s, kind, 0) : solve_plain (s, kind);
-  if (status == LAC_ESING && kind == LAC_SOLVER_CHOLMOD)
-    {
-      lac_error_clear ();         /* K_T not positive definite: umfpack */
-      s->cholmod_failed = 1;
-      kind = LAC_SOLVER_UMFPACK;
-      status = s->contact ? solve_contact (s, kind, 0) : solve_plain (s, kind);
-    }
-  if (status == LAC_ESING && some_inactive (s))
-    {
-      /* a body held by contact alone cannot move with its multipliers
-       * inactive: solve with all of them, step 3 releases the ones in
-       * tension at the next iteration (as lac_newton's restart) */
-      lac_error_clear ();
-      status = solve_contact (s, kind, 1);
-    }
+    status = s->contact && s->contact->k > 0 ? solve_contact (s)
+                                             : solve_plain (s);
   s->time_solve += seconds () - t0;
   lac_free (inc.dof);
   lac_free (inc.val);
@@ -626,7 +584,11 @@ lac_nl_begin (lac_nl *s, double t)
   s->converged = 0;
   s->last_du = 0;
   s->fref = 0;
-  s->cholmod_failed = 0;      /* try cholmod again in every step */
+  if (s->strategy && lac_strategy_fallback (s->strategy))
+    {
+      lac_strategy_free (s->strategy);   /* try Cholesky again in every */
+      s->strategy = NULL;                /* step after a fallback       */
+    }
   return LAC_SUCCESS;
 }
 

@@ -37,9 +37,13 @@
  *      TOTAL multiplier, not an increment; the geometry is frozen: no
  *      derivative of the normals or of the pairing -- the "generalized"
  *      Newton method) and set U += dU, lambda = lambda_A (0 elsewhere).
- * The saddle system is solved by lac_newton.h (one iteration of it, the
- * statuses being those of step 3).  Without any admissible macro-element
- * (bodies apart) step 5 is K_T dU = t F - F_int(U).
+ * The saddle system is solved by the strategy of solve/lac_strategy.h
+ * (the statuses being those of step 3, the last multipliers the start),
+ * kept from iteration to iteration so that its orderings and symbolic
+ * analyses are made once; the statuses follow the rule of
+ * solve/lac_complementarity.h, the rule of the linear active set.
+ * Without any admissible macro-element (bodies apart) step 5 is
+ * K_T dU = t F - F_int(U).
  *
  * Convergence.  Quadratic where the statuses have settled and the contact
  * pressure is small against the stiffness.  The frozen geometry leaves
@@ -80,6 +84,7 @@
 #include "contact/lac_contact.h"
 #include "fem/lac_hyper.h"
 #include "linalg/lac_linalg.h"
+#include "solve/lac_strategy.h"
 #include "contact/lac_macromesh.h"
 #include "contact/lac_obstacle.h"
 #include "contact/lac_pairing.h"
@@ -99,14 +104,19 @@ typedef struct lac_nl_problem
   const lac_pairing_facets *master; /* master facets of `mesh`, or NULL    */
   const lac_obstacle *obstacle;  /* rigid master when master == NULL       */
   double epsilon;                /* [LAC Def. 1]; 0: LAC_EPSILON_DEFAULT   */
+  /* bodies held by contact alone (solve/lac_system.h), or nfree = 0 */
+  size_t nfree;
+  const double *N;               /* ndof x nfree: their rigid motions      */
+  const char *const *N_what;     /* nfree descriptions, or NULL            */
 } lac_nl_problem;
 
 typedef struct lac_nl_opts
 {
-  lac_solver_kind kind;  /* umfpack (default), dense, cholmod (the Schur
-                            path of lac_newton.h, about twice as fast on
-                            the ring; falls back to umfpack for the rest
-                            of a step where K_T is not positive definite) */
+  lac_strategy_kind kind; /* how the saddle system is solved
+                            (solve/lac_strategy.h; saddle by default): a
+                            Cholesky strategy falls back to saddle for the
+                            rest of a step where K_T is not positive
+                            definite                                       */
   int maxit;             /* Newton iterations per step (0: 25)              */
   double tol;            /* relative tolerance of step 4 (0: 1e-8)          */
   double rho;            /* > 0: rho_m = rho for all m; 0: the default above */
@@ -180,9 +190,13 @@ typedef struct lac_nl
   char *fixed;           /* owned, ndof: dof fixed                          */
   double *g1, *g0;       /* owned, ndof: value at t = 1 (ramped), constant  */
   lac_csc *K;            /* owned: K_T (pattern kept between iterations)    */
-  lac_solver *solver;    /* owned: the solver of K_T for opts.kind, kept
+  lac_solver *solver;    /* owned: the solver of K_T without contact, kept
                             between iterations: the ordering and symbolic
                             analysis are made once (lac_solver_refactor)   */
+  lac_strategy *strategy; /* owned: the saddle solves, kept likewise        */
+  double *klam;          /* owned, kcap: lambda per multiplier            */
+  char *kact;            /* owned, kcap: statuses per multiplier          */
+  size_t kcap;
   double *r, *Fint, *dU; /* owned, ndof                                     */
   double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
   char *active_save;
@@ -192,8 +206,6 @@ typedef struct lac_nl
   double fref;           /* |r| on the free dofs in the step's first solve,
                             Dirichlet increments included (a floor of the
                             residual's scale)                              */
-  int cholmod_failed;    /* K_T was not SPD in this step: umfpack for the
-                            rest of the step                               */
 } lac_nl;
 
 lac_nl *lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts);

@@ -315,8 +315,8 @@ press (double eps, double *force, double *gap3)
   lac_dirichlet_apply (D, K, F);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
   lac_contact_apply_dirichlet (all, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_SOLVER_UMFPACK, ndof, c->k);
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
   st = lac_newton_solve (s, &sys, 20, 1e-10);
   check_status (st, LAC_SUCCESS, "ex3 press: newton at epsilon = %g", eps);
   if (!st)

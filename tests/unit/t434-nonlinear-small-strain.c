@@ -71,13 +71,13 @@ limit (lac_elem_type type)
   check_status (lac_contact_build (m, model, M, P, NULL, LAC_EPSILON_DEFAULT, &c),
                 LAC_SUCCESS, "contact");
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL };
-  lac_newton *lin = lac_newton_alloc (LAC_SOLVER_UMFPACK, ndof, c->k);
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_newton *lin = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
   check_status (lac_newton_solve (lin, &sys, 30, 1e-10), LAC_SUCCESS, "linear");
 
   /* 2. the nonlinear loop */
   lac_hyper h = { model, E, nu, NULL, 0 };
-  lac_nl_problem prob = { m, &h, NULL, D, NULL, M, NULL, &ob, 0 };
+  lac_nl_problem prob = { m, &h, NULL, D, NULL, M, NULL, &ob, 0, 0, NULL, NULL };
   lac_nl *s = lac_nl_alloc (&prob, NULL);
   check_status (lac_nl_step_to (s, 1.0), LAC_SUCCESS, "%s nonlinear", re->name);
 

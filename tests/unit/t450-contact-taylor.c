@@ -101,8 +101,8 @@ taylor (lac_elem_type type, int swap)
       lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
       check_int ((long) c->k, (long) M->n, "%s/%d: every macro-element admissible", tn, swap);
       /* 5. the active set */
-      lac_contact_system sys = { K, F, c->C, c->G, NULL };
-      lac_newton *s = lac_newton_alloc (LAC_SOLVER_UMFPACK, ndof, c->k);
+      lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+      lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
       st = lac_newton_solve (s, &sys, 10, 1e-10);
       check_status (st, LAC_SUCCESS, "%s/%d newton", tn, swap);
       check_true (s->nhist <= 3, "%s/%d: %zu active-set iterations", tn, swap, s->nhist);

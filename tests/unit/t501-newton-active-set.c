@@ -60,15 +60,15 @@ main (void)
   lac_csc *K, *C;
   double F[N], G[KC], Uref[N], Lref[KC];
   build (&K, F, &C, G);
-  lac_contact_system sys = { K, F, C, G, NULL };
-  const lac_solver_kind kinds[3] = { LAC_SOLVER_DENSE, LAC_SOLVER_UMFPACK,
-                                     LAC_SOLVER_CHOLMOD };
-  for (int b = 0; b < 3; b++)
+  lac_contact_system sys = { K, F, C, G, NULL, 0, NULL, NULL };
+  const lac_strategy_kind kinds[4] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_SADDLE,
+                                          LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED };
+  for (int b = 0; b < 4; b++)
     {
       lac_newton *s = lac_newton_alloc (kinds[b], N, KC);
       int st = lac_newton_solve (s, &sys, 20, 1e-10);
-      check_status (st, LAC_SUCCESS, "%s: solve", lac_solver_kind_name (kinds[b]));
-      check_true (s->nhist <= 6, "%s: %zu iterations", lac_solver_kind_name (kinds[b]), s->nhist);
+      check_status (st, LAC_SUCCESS, "%s: solve", lac_strategy_name (kinds[b]));
+      check_true (s->nhist <= 6, "%s: %zu iterations", lac_strategy_name (kinds[b]), s->nhist);
       /* KKT conditions */
       double r[N];
       lac_csc_matvec (K, s->U, r);
@@ -78,15 +78,15 @@ main (void)
       double rmax = 0;
       for (int j = 0; j < N; j++)
         rmax = fmax (rmax, fabs (r[j] - F[j]));
-      check_abs (rmax, 0, 1e-10, "%s: K U - C lambda = F", lac_solver_kind_name (kinds[b]));
+      check_abs (rmax, 0, 1e-10, "%s: K U - C lambda = F", lac_strategy_name (kinds[b]));
       for (int i = 0; i < KC; i++)
         {
-          check_true (s->d[i] >= -1e-12, "%s: d_%d = %g >= 0", lac_solver_kind_name (kinds[b]), i, s->d[i]);
-          check_true (s->lambda[i] <= 1e-12, "%s: lambda_%d = %g <= 0", lac_solver_kind_name (kinds[b]), i, s->lambda[i]);
-          check_abs (s->lambda[i] * s->d[i], 0, 1e-10, "%s: complementarity %d", lac_solver_kind_name (kinds[b]), i);
+          check_true (s->d[i] >= -1e-12, "%s: d_%d = %g >= 0", lac_strategy_name (kinds[b]), i, s->d[i]);
+          check_true (s->lambda[i] <= 1e-12, "%s: lambda_%d = %g <= 0", lac_strategy_name (kinds[b]), i, s->lambda[i]);
+          check_abs (s->lambda[i] * s->d[i], 0, 1e-10, "%s: complementarity %d", lac_strategy_name (kinds[b]), i);
         }
       /* the nearest binding obstacle (dof 12, gap 0.3) must be active */
-      check_true (s->active[1] && s->lambda[1] < 0, "%s: obstacle at dof 12 active", lac_solver_kind_name (kinds[b]));
+      check_true (s->active[1] && s->lambda[1] < 0, "%s: obstacle at dof 12 active", lac_strategy_name (kinds[b]));
       if (b == 0)
         {
           for (int j = 0; j < N; j++) Uref[j] = s->U[j];
@@ -95,17 +95,17 @@ main (void)
       else
         {
           for (int j = 0; j < N; j++)
-            check_abs (s->U[j], Uref[j], 1e-10 * (1 + fabs (Uref[j])), "%s: U[%d] vs dense", lac_solver_kind_name (kinds[b]), j);
+            check_abs (s->U[j], Uref[j], 1e-10 * (1 + fabs (Uref[j])), "%s: U[%d] vs dense", lac_strategy_name (kinds[b]), j);
           for (int i = 0; i < KC; i++)
-            check_abs (s->lambda[i], Lref[i], 1e-10 * (1 + fabs (Lref[i])), "%s: lambda[%d] vs dense", lac_solver_kind_name (kinds[b]), i);
+            check_abs (s->lambda[i], Lref[i], 1e-10 * (1 + fabs (Lref[i])), "%s: lambda[%d] vs dense", lac_strategy_name (kinds[b]), i);
         }
       lac_newton_free (s);
     }
   /* no contact at all: gaps far away -> no multiplier active, U = K^{-1} F */
   double Gfar[KC];
   for (int i = 0; i < KC; i++) Gfar[i] = 1e6;
-  lac_contact_system far = { K, F, C, Gfar, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_SOLVER_UMFPACK, N, KC);
+  lac_contact_system far = { K, F, C, Gfar, NULL, 0, NULL, NULL };
+  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, N, KC);
   check_status (lac_newton_solve (s, &far, 10, 1e-10), LAC_SUCCESS, "no contact");
   check_int ((long) lac_newton_nactive (s), 0, "no contact: active set empty");
   check_int ((long) s->nhist, 1, "no contact: one iteration");
@@ -117,8 +117,8 @@ main (void)
   lac_csc *C2 = lac_csc_from_triplet (T);
   lac_triplet_free (T);
   double G2[2] = { 0.1, 0.1 };
-  lac_contact_system dup = { K, F, C2, G2, NULL };
-  s = lac_newton_alloc (LAC_SOLVER_CHOLMOD, N, 2);
+  lac_contact_system dup = { K, F, C2, G2, NULL, 0, NULL, NULL };
+  s = lac_newton_alloc (LAC_STRATEGY_SCHUR, N, 2);
   check_status (lac_newton_solve (s, &dup, 10, 1e-10), LAC_ESING, "dependent constraints");
   check_message ("linearly dependent", "dependent constraints message");
   lac_newton_free (s);

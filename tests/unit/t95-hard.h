@@ -80,7 +80,8 @@ typedef struct hard_spec
   int maxit;              /* active-set iterations allowed (0: 10)        */
   int robust;             /* pairing option                               */
   int allow_empty;        /* pairing option                               */
-  const char *solver;     /* "dense" | "umfpack" | "cholmod" (NULL: umfpack) */
+  const char *solver;     /* a strategy: "dense" | "schur" | "augmented" |
+                             "saddle" (NULL: saddle) */
   int show_rcond;         /* the table's status says "ok, rcond R"         */
 } hard_spec;
 
@@ -257,19 +258,19 @@ hard_run (const hard_spec *sp, hard *h)
                                          h->D->val)))
     return hard_fail (h, "contact", st);
   /* 6. the active set */
-  lac_contact_system sys = { h->K, h->F, h->c->C, h->c->G, NULL };
-  lac_solver_kind kind = LAC_SOLVER_UMFPACK;
+  lac_contact_system sys = { h->K, h->F, h->c->C, h->c->G, NULL, 0, NULL, NULL };
+  lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   if (sp->solver)
-    kind = (lac_solver_kind) lac_solver_kind_from_name (sp->solver);
+    kind = (lac_strategy_kind) lac_strategy_from_name (sp->solver);
   h->s = lac_newton_alloc (kind, h->ndof, h->c->k);
   if (!h->s)
     return hard_fail (h, "newton", LAC_ENOMEM);
   st = lac_newton_solve (h->s, &sys, sp->maxit > 0 ? sp->maxit : 10, 1e-10);
   if (st)
     return hard_fail (h, "newton", st);
-  lac_solver_info info;
-  if (h->s->solver && !lac_solver_get_info (h->s->solver, &info))
-    h->rcond = info.rcond;
+  lac_strategy_counts counts;
+  lac_strategy_get_counts (h->s->strategy, &counts);
+  h->rcond = counts.rcond;
   h->seconds = hard_now () - t0;
   return LAC_SUCCESS;
 }

@@ -1,0 +1,42 @@
+/* lac_complementarity.c -- the status rule (see lac_complementarity.h)
+ *                                        [LAC (18), Alg. 1, lines 26-33]
+ */
+#include "solve/lac_complementarity.h"
+
+#include <math.h>
+
+#define ROUNDING 1e-12
+
+double
+lac_complementarity_lmax (size_t k, const double *lambda)
+{
+  double m = 0;
+  for (size_t i = 0; i < k; i++)
+    m = fmax (m, fabs (lambda[i]));
+  return m;
+}
+
+/* lambda + rho d with the values at the level of rounding set to 0. */
+static double
+test_value (double lambda, double d, double rho, double lmax, double dscale)
+{
+  double lam = fabs (lambda) <= ROUNDING * lmax ? 0.0 : lambda;
+  double gap = fabs (d) <= ROUNDING * dscale ? 0.0 : d;
+  return lam + rho * gap;
+}
+
+int
+lac_complementarity_active (double lambda, double d, double rho, double lmax,
+                            double dscale)
+{
+  return test_value (lambda, d, rho, lmax, dscale) < 0;   /* [Alg. 1, l. 28] */
+}
+
+double
+lac_complementarity_residual (double lambda, double d, double rho,
+                              double lmax, double dscale)
+{
+  double a = test_value (lambda, d, rho, lmax, dscale);
+  double lam = fabs (lambda) <= ROUNDING * lmax ? 0.0 : lambda;
+  return fabs (lam - (a < 0 ? a : 0.0));          /* lambda - min(0, .) */
+}

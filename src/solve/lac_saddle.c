@@ -1,0 +1,209 @@
+/* lac_saddle.c -- LU of the whole saddle-point system (see lac_saddle.h)
+ *                                                 [LAC (17), Alg. 1 l. 21]
+ *
+ * D A D y = D b, x = D y with the symmetric scaling D of saddle_scaling;
+ * A has a fixed pattern: K, every column of C and its transpose, and the
+ * diagonal of the multiplier block (1 for inactive multipliers, an
+ * explicit 0 for the active ones).
+ */
+#include "solve/lac_saddle.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+struct lac_saddle
+{
+  lac_solver_kind kind;
+  const lac_contact_system *sys;   /* borrowed                            */
+  size_t n, k;
+  lac_solver *solver;              /* owned: the factors of D A D          */
+  char *factored_for;              /* owned, k: statuses of the factors    */
+  int have_factor;
+  double *D;                       /* owned, n + k: the scaling            */
+  double *work;                    /* owned, 2 (n + k)                     */
+  int factorizations, analyses;
+  double rcond;                    /* of the last factorization           */
+};
+
+lac_saddle *
+lac_saddle_alloc (lac_solver_kind kind)
+{
+  lac_saddle *s = lac_calloc (1, sizeof *s);
+  if (!s)
+    LAC_ERROR_NULL (LAC_ENOMEM, "saddle-point solver");
+  s->kind = kind;
+  if (!(s->solver = lac_solver_alloc (kind)))
+    {
+      lac_free (s);
+      return NULL;
+    }
+  return s;
+}
+
+void
+lac_saddle_free (lac_saddle *s)
+{
+  if (!s)
+    return;
+  lac_solver_free (s->solver);
+  lac_free (s->factored_for);
+  lac_free (s->D);
+  lac_free (s->work);
+  lac_free (s);
+}
+
+int
+lac_saddle_set (lac_saddle *s, const lac_contact_system *sys)
+{
+  size_t n = sys->K->ncol, k = sys->C->ncol;
+  if (s->n != n || s->k != k || !s->D)
+    {
+      lac_free (s->factored_for);
+      lac_free (s->D);
+      lac_free (s->work);
+      s->factored_for = lac_calloc (k ? k : 1, 1);
+      s->D = lac_malloc ((n + k) * sizeof *s->D);
+      s->work = lac_malloc (2 * (n + k) * sizeof *s->work);
+      if (!s->factored_for || !s->D || !s->work)
+        LAC_ERROR (LAC_ENOMEM, "saddle-point system of %zu unknowns", n + k);
+    }
+  s->sys = sys;
+  s->n = n;
+  s->k = k;
+  s->have_factor = 0;               /* new numbers: factorize again */
+  return LAC_SUCCESS;
+}
+
+/* The scaling D: diag(K)^-1/2 on the displacements and, on multiplier i,
+ * 1 / max_r |D_r C_ri|.  Without it a partly covered macro-element (its
+ * column of C scales with the covered fraction delta) or a contrast of
+ * Young's moduli between the bodies would make the matrix look singular
+ * to the solvers' condition test although the problem is well posed. */
+static void
+saddle_scaling (const lac_saddle *s, const char *active)
+{
+  const lac_csc *K = s->sys->K, *C = s->sys->C;
+  double *D = s->D;
+  for (size_t j = 0; j < s->n; j++)
+    {
+      double kjj = 0;
+      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+        if ((size_t) K->i[p] == j)
+          kjj = fabs (K->x[p]);
+      D[j] = kjj > 0 ? 1 / sqrt (kjj) : 1.0;
+    }
+  for (size_t i = 0; i < s->k; i++)
+    {
+      double cmax = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        cmax = fmax (cmax, fabs (D[C->i[p]] * C->x[p]));
+      D[s->n + i] = active[i] && cmax > 0 ? 1 / cmax : 1.0;
+    }
+}
+
+/* D A D for the statuses `active` [LAC Alg. 1, lines 13-21], in the
+ * fixed pattern of the header. */
+static lac_csc *
+saddle_matrix (const lac_saddle *s, const char *active)
+{
+  const lac_csc *K = s->sys->K, *C = s->sys->C;
+  const double *D = s->D;
+  size_t n = s->n, k = s->k, nnzC = (size_t) C->p[k];
+  lac_triplet *T = lac_triplet_alloc (n + k, n + k,
+                                      (size_t) K->p[n] + 2 * nnzC + k);
+  lac_csc *A = NULL;
+  int status = T ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t j = 0; !status && j < n; j++)                /* D K D */
+    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
+      status = lac_triplet_add (T, (size_t) K->i[p], j,
+                                D[K->i[p]] * K->x[p] * D[j]);
+  for (size_t i = 0; !status && i < k; i++)
+    {
+      status = lac_triplet_add (T, n + i, n + i, active[i] ? 0.0 : 1.0);
+      for (int p = C->p[i]; !status && p < C->p[i + 1]; p++)
+        {
+          double c = active[i] ? -D[C->i[p]] * C->x[p] * D[n + i] : 0.0;
+          status = lac_triplet_add (T, (size_t) C->i[p], n + i, c);
+          if (!status)
+            status = lac_triplet_add (T, n + i, (size_t) C->i[p], c);
+        }
+    }
+  if (!status)
+    A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  return A;
+}
+
+static int
+factorize (lac_saddle *s, const char *active)
+{
+  lac_csc *A;
+  lac_solver_info info;
+  int status;
+  saddle_scaling (s, active);
+  if (!(A = saddle_matrix (s, active)))
+    return LAC_ENOMEM;
+  status = lac_solver_refactor (s->solver, A);
+  lac_csc_free (A);
+  if (status == LAC_ESING)
+    {
+      size_t na = 0;
+      for (size_t i = 0; i < s->k; i++)
+        na += active[i] != 0;
+      return LAC_ERRMSG (LAC_ESING, "the saddle-point system with %zu active"
+                         " multipliers is singular: check the Dirichlet "
+                         "conditions and the inf-sup condition [LAC (10)] "
+                         "(%s)", na, lac_error_message ());
+    }
+  if (status)
+    return status;
+  s->factorizations++;
+  if (lac_solver_get_info (s->solver, &info) == LAC_SUCCESS
+      && !info.analysis_reused)
+    s->analyses++;
+  if (lac_solver_get_info (s->solver, &info) == LAC_SUCCESS)
+    s->rcond = info.rcond;
+  memcpy (s->factored_for, active, s->k);
+  s->have_factor = 1;
+  return LAC_SUCCESS;
+}
+
+int
+lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
+                  const double *g, double *U, double *lambda)
+{
+  size_t n = s->n, k = s->k;
+  double *rhs = s->work, *sol = s->work + n + k;
+  const double *D = s->D;
+  int status = LAC_SUCCESS;
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_saddle_set was not called");
+  if (!s->have_factor || memcmp (active, s->factored_for, k) != 0)
+    status = factorize (s, active);
+  if (status)
+    return status;
+  f = f ? f : s->sys->F;
+  g = g ? g : s->sys->G;
+  for (size_t j = 0; j < n; j++)                        /* D [F; -G_A; 0] */
+    rhs[j] = D[j] * f[j];
+  for (size_t i = 0; i < k; i++)
+    rhs[n + i] = active[i] ? -D[n + i] * g[i] : 0.0;
+  if ((status = lac_solver_solve (s->solver, rhs, sol)))
+    return status;
+  for (size_t j = 0; j < n; j++)
+    U[j] = D[j] * sol[j];                               /* x = D y */
+  for (size_t i = 0; i < k; i++)
+    lambda[i] = active[i] ? D[n + i] * sol[n + i] : 0.0;
+  return LAC_SUCCESS;
+}
+
+void
+lac_saddle_counts (const lac_saddle *s, int *factorizations, int *analyses,
+                   double *rcond)
+{
+  *factorizations = s->factorizations;
+  *analyses = s->analyses;
+  *rcond = s->rcond;
+}

@@ -1,0 +1,214 @@
+/* lac_schur.c -- multipliers through the Schur complement of K
+ *                (see lac_schur.h)                [LAC (17), Alg. 1 l. 21]
+ */
+#include "solve/lac_schur.h"
+
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_linalg.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+struct lac_schur
+{
+  const lac_contact_system *sys;   /* borrowed                            */
+  size_t n, k;
+  lac_solver *chol;                /* owned: K = L L^T                    */
+  double *S;                       /* owned, k x k: S(j, i) at S[i k + j] */
+  char *have;                      /* owned, k: column i of S computed    */
+  double *x;                       /* owned, n: scratch                   */
+  lac_solve_counts counts;
+};
+
+lac_schur *
+lac_schur_alloc (void)
+{
+  lac_schur *s = lac_calloc (1, sizeof *s);
+  if (!s)
+    LAC_ERROR_NULL (LAC_ENOMEM, "Schur-complement solver");
+  if (!(s->chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD)))
+    {
+      lac_free (s);
+      return NULL;
+    }
+  return s;
+}
+
+static void
+free_arrays (lac_schur *s)
+{
+  lac_free (s->S);
+  lac_free (s->have);
+  lac_free (s->x);
+  s->S = s->x = NULL;
+  s->have = NULL;
+}
+
+void
+lac_schur_free (lac_schur *s)
+{
+  if (!s)
+    return;
+  free_arrays (s);
+  lac_solver_free (s->chol);
+  lac_free (s);
+}
+
+void
+lac_schur_get_counts (const lac_schur *s, lac_solve_counts *c)
+{
+  *c = s->counts;
+}
+
+int
+lac_schur_set (lac_schur *s, const lac_contact_system *sys)
+{
+  size_t n = sys->K->ncol, k = sys->C->ncol;
+  lac_solver_info info;
+  int status;
+  if (!s->x || s->n != n || s->k != k)
+    {
+      free_arrays (s);
+      s->S = lac_malloc ((k ? k * k : 1) * sizeof *s->S);
+      s->have = lac_malloc (k ? k : 1);
+      s->x = lac_malloc (n * sizeof *s->x);
+      if (!s->S || !s->have || !s->x)
+        LAC_ERROR (LAC_ENOMEM, "Schur complement of %zu multipliers", k);
+      s->n = n;
+      s->k = k;
+    }
+  s->sys = sys;
+  memset (s->have, 0, k);
+  if ((status = lac_solver_refactor (s->chol, sys->K)))    /* K = L L^T */
+    return status;
+  s->counts.factorizations++;
+  s->counts.solves += 2;                  /* the condition estimate's */
+  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS
+      && !info.analysis_reused)
+    s->counts.analyses++;
+  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS)
+    s->counts.rcond = info.rcond;
+  return LAC_SUCCESS;
+}
+
+/* Columns idx[0..nb) of S: X = K^{-1} C(:, idx) in one block solve, then
+ * S(j, i) = c_j^T X(:, i) for every j. */
+static int
+schur_block (lac_schur *s, const size_t *idx, size_t nb)
+{
+  const lac_csc *C = s->sys->C;
+  size_t n = s->n;
+  double *B = lac_calloc (n * nb, sizeof *B), *X = lac_malloc (n * nb
+                                                               * sizeof *X);
+  int status = B && X ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "Schur block of %zu columns", nb);
+  for (size_t b = 0; !status && b < nb; b++)            /* B = C(:, idx) */
+    for (int p = C->p[idx[b]]; p < C->p[idx[b] + 1]; p++)
+      B[b * n + (size_t) C->i[p]] = C->x[p];
+  if (!status)
+    status = lac_solver_solve_many (s->chol, nb, B, X);   /* X = K^-1 B */
+  for (size_t b = 0; !status && b < nb; b++)
+    {
+      for (size_t j = 0; j < s->k; j++)                  /* S(:,i) = C^T X */
+        {
+          double sum = 0;
+          for (int p = C->p[j]; p < C->p[j + 1]; p++)
+            sum += C->x[p] * X[b * n + (size_t) C->i[p]];
+          s->S[idx[b] * s->k + j] = sum;
+        }
+      s->have[idx[b]] = 1;
+    }
+  if (!status)
+    s->counts.solves += (int) nb;
+  lac_free (B);
+  lac_free (X);
+  return status;
+}
+
+/* The columns of S that the active multipliers need and do not have. */
+static int
+schur_columns (lac_schur *s, const char *active)
+{
+  size_t idx[LAC_SCHUR_BLOCK], nb = 0;
+  int status = LAC_SUCCESS;
+  for (size_t i = 0; !status && i < s->k; i++)
+    {
+      if (active[i] && !s->have[i])
+        idx[nb++] = i;
+      if (nb == LAC_SCHUR_BLOCK || (nb > 0 && i + 1 == s->k))
+        {
+          status = schur_block (s, idx, nb);
+          nb = 0;
+        }
+    }
+  return status;
+}
+
+/* lambda_A = S_AA^{-1} b_A (dense Cholesky), A = the active ones. */
+static int
+schur_multipliers (lac_schur *s, const char *active, const double *b,
+                   double *lambda)
+{
+  size_t m = 0, *A = lac_malloc ((s->k ? s->k : 1) * sizeof *A);
+  int status = A ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t i = 0; A && i < s->k; i++)
+    if (active[i])
+      A[m++] = i;
+  gsl_matrix *SAA = m ? gsl_matrix_alloc (m, m) : NULL;
+  gsl_vector *x = m ? gsl_vector_alloc (m) : NULL;
+  if (m && (!SAA || !x))
+    status = LAC_ERRMSG (LAC_ENOMEM, "Schur matrix %zu x %zu", m, m);
+  for (size_t a = 0; !status && a < m; a++)
+    {
+      gsl_vector_set (x, a, b[A[a]]);
+      for (size_t c = 0; c < m; c++)
+        gsl_matrix_set (SAA, a, c, s->S[A[c] * s->k + A[a]]);
+    }
+  if (!status && m && gsl_linalg_cholesky_decomp1 (SAA))
+    status = LAC_ERRMSG (LAC_ESING, "the Schur complement C_A^T K^-1 C_A "
+                         "of the %zu active multipliers is not positive "
+                         "definite: the contact constraints are linearly "
+                         "dependent (inf-sup condition [LAC (10)])", m);
+  if (!status && m)
+    gsl_linalg_cholesky_svx (SAA, x);
+  for (size_t i = 0; !status && i < s->k; i++)
+    lambda[i] = 0;
+  for (size_t a = 0; !status && a < m; a++)
+    lambda[A[a]] = gsl_vector_get (x, a);
+  gsl_matrix_free (SAA);
+  gsl_vector_free (x);
+  lac_free (A);
+  return status;
+}
+
+int
+lac_schur_solve (lac_schur *s, const char *active, const double *f,
+                 const double *g, double *U, double *lambda)
+{
+  const lac_csc *C;
+  int status;
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_schur_set was not called");
+  C = s->sys->C;
+  f = f ? f : s->sys->F;
+  g = g ? g : s->sys->G;
+  if ((status = schur_columns (s, active))
+      || (status = lac_solver_solve (s->chol, f, U)))   /* U_0 = K^-1 f */
+    return status;
+  s->counts.solves++;
+  for (size_t i = 0; i < s->k; i++)                    /* g - C^T U_0 */
+    {
+      double cu = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        cu += C->x[p] * U[C->i[p]];
+      lambda[i] = g[i] - cu;
+    }
+  if ((status = schur_multipliers (s, active, lambda, lambda)))
+    return status;
+  memcpy (s->x, f, s->n * sizeof *s->x);               /* f + C_A lambda_A */
+  for (size_t i = 0; i < s->k; i++)
+    for (int p = C->p[i]; active[i] && p < C->p[i + 1]; p++)
+      s->x[C->i[p]] += C->x[p] * lambda[i];
+  s->counts.solves++;
+  return lac_solver_solve (s->chol, s->x, U);          /* U = K^-1 (.) */
+}

@@ -1,0 +1,288 @@
+/* lac_strategy.c -- solve the LAC system for a given active set
+ *                   (see lac_strategy.h)          [LAC (17), Alg. 1 l. 21]
+ *
+ * The choice of the strategy, the dispatch to solve/lac_saddle.c (dense,
+ * saddle) or solve/lac_schur.c (schur, augmented), the check that the
+ * active multipliers hold the bodies held by contact alone, the
+ * refinement of every solve, and the fallback to the LU of the whole
+ * system when a Cholesky factorization fails.
+ */
+#include "solve/lac_strategy.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "solve/lac_saddle.h"
+#include "solve/lac_augmented.h"
+#include "solve/lac_schur.h"
+
+#define CG_RTOL 1e-10     /* relative residual of the conjugate gradients */
+#define CG_RTOL_REFINE 1e-6  /* ... in a refinement step (a correction) */
+#define MAX_REFINE 3
+
+struct lac_strategy
+{
+  lac_strategy_kind kind;          /* in use (saddle after a fallback)    */
+  const lac_contact_system *sys;   /* borrowed                            */
+  lac_saddle *saddle;              /* owned: dense, saddle, fallback      */
+  lac_schur *schur;                /* owned: schur                        */
+  lac_augmented *aug;              /* owned: augmented                    */
+  double *r, *g, *dU, *dl;         /* owned: residuals and corrections    */
+  size_t n, k;
+  char fallback[512];              /* why the fallback happened, or ""    */
+  lac_strategy_counts counts;
+  lac_solve_counts before;         /* counts of a Cholesky solver replaced
+                                      by saddle                           */
+};
+
+static const char *const names[LAC_NSTRATEGIES] =
+  { "auto", "dense", "schur", "augmented", "saddle" };
+
+static double
+seconds (void)
+{
+  struct timespec t;
+  clock_gettime (CLOCK_MONOTONIC, &t);
+  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
+}
+
+int
+lac_strategy_from_name (const char *name)
+{
+  for (int k = 0; name && k < LAC_NSTRATEGIES; k++)
+    if (strcmp (name, names[k]) == 0)
+      return k;
+  return -1;
+}
+
+const char *
+lac_strategy_name (lac_strategy_kind kind)
+{
+  return (unsigned) kind < LAC_NSTRATEGIES ? names[kind] : "unknown";
+}
+
+lac_strategy_kind
+lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
+                     size_t nfree)
+{
+  if (want == LAC_STRATEGY_SCHUR && nfree > 0)
+    {
+      lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy schur "
+                     "needs every body held by its Dirichlet conditions (K "
+                     "positive definite); %zu rigid motion%s held by contact "
+                     "alone: use augmented, saddle or dense", nfree,
+                     nfree == 1 ? " is" : "s are");
+      return LAC_NSTRATEGIES;
+    }
+  if (want != LAC_STRATEGY_AUTO)
+    return want;
+  return n + k <= LAC_STRATEGY_DENSE_MAX ? LAC_STRATEGY_DENSE
+                                        : LAC_STRATEGY_AUGMENTED;
+}
+
+static int fall_back (lac_strategy *s);
+
+/* ---- alloc / set / free ------------------------------------------------- */
+
+lac_strategy *
+lac_strategy_alloc (lac_strategy_kind kind)
+{
+  lac_strategy *s;
+  if (kind <= LAC_STRATEGY_AUTO || kind >= LAC_NSTRATEGIES)
+    LAC_ERROR_NULL (LAC_EINVAL, "strategy %d: choose one first "
+                    "(lac_strategy_choose)", (int) kind);
+  if (!(s = lac_calloc (1, sizeof *s)))
+    LAC_ERROR_NULL (LAC_ENOMEM, "strategy");
+  s->kind = kind;
+  if (kind == LAC_STRATEGY_DENSE || kind == LAC_STRATEGY_SADDLE)
+    s->saddle = lac_saddle_alloc (kind == LAC_STRATEGY_DENSE
+                                  ? LAC_SOLVER_DENSE : LAC_SOLVER_UMFPACK);
+  else if (kind == LAC_STRATEGY_SCHUR)
+    s->schur = lac_schur_alloc ();
+  else
+    s->aug = lac_augmented_alloc (LAC_AUGMENT_OMEGA);
+  if (!s->saddle && !s->schur && !s->aug)
+    {
+      lac_free (s);
+      return NULL;
+    }
+  return s;
+}
+
+static void
+free_work (lac_strategy *s)
+{
+  lac_free (s->r);
+  lac_free (s->g);
+  lac_free (s->dU);
+  lac_free (s->dl);
+  s->r = s->g = s->dU = s->dl = NULL;
+}
+
+void
+lac_strategy_free (lac_strategy *s)
+{
+  if (!s)
+    return;
+  free_work (s);
+  lac_saddle_free (s->saddle);
+  lac_schur_free (s->schur);
+  lac_augmented_free (s->aug);
+  lac_free (s);
+}
+
+int
+lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
+{
+  size_t n = sys->K->ncol, k = sys->C->ncol;
+  double t0 = seconds ();
+  int status;
+  if (!s->r || s->n != n || s->k != k)
+    {
+      free_work (s);
+      s->r = lac_malloc (n * sizeof *s->r);
+      s->dU = lac_malloc (n * sizeof *s->dU);
+      s->g = lac_malloc ((k ? k : 1) * sizeof *s->g);
+      s->dl = lac_malloc ((k ? k : 1) * sizeof *s->dl);
+      if (!s->r || !s->dU || !s->g || !s->dl)
+        LAC_ERROR (LAC_ENOMEM, "strategy work arrays, n = %zu", n);
+      s->n = n;
+      s->k = k;
+    }
+  s->sys = sys;
+  status = s->saddle ? lac_saddle_set (s->saddle, sys)
+           : s->schur ? lac_schur_set (s->schur, sys)
+           : lac_augmented_set (s->aug, sys);
+  s->counts.time_factor += seconds () - t0;
+  return status;
+}
+
+/* ---- solve -------------------------------------------------------------- */
+
+/* One solve of (*) with right-hand sides f, g (NULL: F, G); rtol: the
+ * conjugate gradients' tolerance (augmented). */
+static int
+solve_once (lac_strategy *s, const char *active, const double *f,
+            const double *g, double rtol, double *U, double *lambda)
+{
+  if (s->saddle)
+    return lac_saddle_solve (s->saddle, active, f, g, U, lambda);
+  if (s->schur)
+    return lac_schur_solve (s->schur, active, f, g, U, lambda);
+  return lac_augmented_solve (s->aug, active, f, g, rtol, U, lambda);
+}
+
+/* The factorization of K_W failed although the bodies are held: go on
+ * with the LU of the whole system. */
+static int
+fall_back (lac_strategy *s)
+{
+  snprintf (s->fallback, sizeof s->fallback, "%s: %s; the LU of the "
+            "saddle-point system (saddle) from now on",
+            names[s->kind], lac_error_message ());
+  lac_error_clear ();
+  if (s->schur)
+    lac_schur_get_counts (s->schur, &s->before);
+  else
+    lac_augmented_get_counts (s->aug, &s->before);
+  lac_schur_free (s->schur);
+  lac_augmented_free (s->aug);
+  s->schur = NULL;
+  s->aug = NULL;
+  s->kind = LAC_STRATEGY_SADDLE;
+  if (!(s->saddle = lac_saddle_alloc (LAC_SOLVER_UMFPACK)))
+    return LAC_ENOMEM;
+  return lac_saddle_set (s->saddle, s->sys);
+}
+
+/* Up to MAX_REFINE steps of iterative refinement on the residual of (*):
+ * U += dU, lambda += dlambda while the backward error decreases. */
+static int
+refine (lac_strategy *s, const char *active, double *U, double *lambda)
+{
+  double be = lac_system_residual (s->sys, active, U, lambda, s->r, s->g);
+  for (int step = 0; step < MAX_REFINE && be > LAC_STRATEGY_TOL; step++)
+    {
+      double bnew;
+      int status;
+      memset (s->dU, 0, s->n * sizeof *s->dU);
+      memset (s->dl, 0, s->k * sizeof *s->dl);
+      if ((status = solve_once (s, active, s->r, s->g, CG_RTOL_REFINE,
+                                s->dU, s->dl)))
+        return status;
+      for (size_t j = 0; j < s->n; j++)
+        s->dU[j] += U[j];                         /* trial U + dU */
+      for (size_t i = 0; i < s->k; i++)
+        s->dl[i] += lambda[i];
+      bnew = lac_system_residual (s->sys, active, s->dU, s->dl, s->r, s->g);
+      s->counts.refinements++;
+      if (!(bnew < be))
+        break;                                    /* no better: keep U */
+      memcpy (U, s->dU, s->n * sizeof *U);
+      memcpy (lambda, s->dl, s->k * sizeof *lambda);
+      be = bnew;
+    }
+  s->counts.backward_error = be;
+  return LAC_SUCCESS;
+}
+
+int
+lac_strategy_solve (lac_strategy *s, const char *active, double *U,
+                    double *lambda)
+{
+  double t0 = seconds ();
+  int status;
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_strategy_set was not called");
+  if ((status = lac_system_check_held (s->sys, active)))
+    return status;
+  s->counts.solves++;
+  status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
+  if (status == LAC_ESING && s->aug && lac_augmented_factor_failed (s->aug))
+    {
+      if (!(status = fall_back (s)))
+        status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
+    }
+  if (!status)
+    status = refine (s, active, U, lambda);
+  s->counts.time_solve += seconds () - t0;
+  return status;
+}
+
+lac_strategy_kind
+lac_strategy_kind_of (const lac_strategy *s)
+{
+  return s->kind;
+}
+
+const char *
+lac_strategy_fallback (const lac_strategy *s)
+{
+  return s->fallback[0] ? s->fallback : NULL;
+}
+
+void
+lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
+{
+  lac_solve_counts sc = s->before;
+  *c = s->counts;
+  if (s->schur)
+    lac_schur_get_counts (s->schur, &sc);
+  if (s->aug)
+    lac_augmented_get_counts (s->aug, &sc);
+  c->substitutions = sc.solves;
+  c->iterations = sc.iterations;
+  c->factorizations = sc.factorizations;
+  c->analyses = sc.analyses;
+  c->rcond = sc.rcond;
+  if (s->saddle)
+    {
+      int f, a;
+      lac_saddle_counts (s->saddle, &f, &a, &c->rcond);
+      c->factorizations += f;
+      c->analyses += a;
+    }
+}

@@ -1,0 +1,108 @@
+/* lac_strategy.h -- solve the LAC system for a given active set
+ *                                                 [LAC (17), Alg. 1 l. 21]
+ *
+ * Every iteration of Algorithm 1 -- of the linear active set
+ * (solve/lac_newton.h) as of the large-deformation Newton loop
+ * (solve/lac_nonlinear.h) -- solves the saddle-point system (*) of
+ * solve/lac_system.h for the statuses of the moment.  How is chosen once
+ * per scene, from the problem:
+ *
+ *   dense      (d) GSL's LU of the whole system: classroom sizes, matrices
+ *                  a student can print (solve/lac_saddle.h);
+ *   schur      (a) every body held by its Dirichlet conditions: K = L L^T
+ *                  once, the multipliers by conjugate gradients on
+ *                  C_A^T K^{-1} C_A (solve/lac_schur.h);
+ *   augmented  (b) the Cholesky factor of K + C_A W C_A^T, positive
+ *                  definite as soon as the active multipliers hold the
+ *                  bodies (also those held by contact alone), the
+ *                  multipliers by conjugate gradients in about ten
+ *                  iterations (solve/lac_schur.h);
+ *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
+ *                  fallback and the reference (solve/lac_saddle.h).
+ *
+ * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, augmented
+ * otherwise (chapter 07 has the measurements behind the rule: (a) needs 80
+ * to more than 100 products with K^{-1} per active set on 3D meshes where
+ * (b) needs 10 and a factorization).  Bodies held by contact alone are
+ * known before anything is factorized (the system's N); (a) is refused
+ * for them, and before (b) factorizes, lac_system_check_held says whether
+ * the active multipliers hold them (else a message naming the body and
+ * its free motion, never NaN).  If the factorization of K + C_A W C_A^T
+ * fails all the same (a large-deformation tangent past a limit point),
+ * the strategy falls back to (c) for the rest of its life and says so
+ * (lac_strategy_fallback); (a) reports a K that is not positive definite
+ * as an error (LAC_ESING), its caller having said every body was held.
+ *
+ * After the solve, the residual of (*) is computed in full and up to
+ * three steps of iterative refinement (the same solver on the residual,
+ * conjugate gradients to 1e-6 only) bring the backward error to
+ * LAC_STRATEGY_TOL where they can: without them the augmented strategy
+ * leaves errors of a few 1e-12 on lambda (K_W's condition number is
+ * omega times K's), with one of them the Taylor patch tests are exact to
+ * 1e-14.
+ *
+ * Usage:
+ *   lac_strategy *s = lac_strategy_alloc (kind);
+ *   lac_strategy_set (s, &sys);          (new numbers: set again)
+ *   lac_strategy_solve (s, active, U, lambda);   (U, lambda: warm start)
+ *   lac_strategy_free (s);
+ * Ownership: the system is borrowed from set until the next set or free.
+ */
+#ifndef LAC_STRATEGY_H
+#define LAC_STRATEGY_H
+
+#include <stddef.h>
+#include "solve/lac_system.h"
+
+typedef enum
+{
+  LAC_STRATEGY_AUTO, LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
+  LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_NSTRATEGIES
+} lac_strategy_kind;
+
+#define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
+#define LAC_STRATEGY_TOL 1e-16       /* backward error aimed at          */
+
+/* "auto" | "dense" | "schur" | "augmented" | "saddle" -> kind, -1 if
+ * unknown; and back. */
+int lac_strategy_from_name (const char *name);
+const char *lac_strategy_name (lac_strategy_kind kind);
+/* The strategy for a system of n displacements, k multipliers and nfree
+ * rigid motions left free by the Dirichlet conditions, asked for `want`
+ * (auto: the rule above).  LAC_NSTRATEGIES with a message if `want`
+ * cannot solve such a system (schur with nfree > 0). */
+lac_strategy_kind lac_strategy_choose (lac_strategy_kind want, size_t n,
+                                       size_t k, size_t nfree);
+
+typedef struct lac_strategy lac_strategy;     /* opaque */
+
+typedef struct lac_strategy_counts
+{
+  int solves;          /* solves of (*) asked for                          */
+  int factorizations;  /* numeric factorizations                           */
+  int analyses;        /* symbolic analyses (orderings)                    */
+  int substitutions;   /* forward and back substitutions (schur, augmented) */
+  int iterations;      /* conjugate-gradient iterations                    */
+  int refinements;     /* refinement steps                                 */
+  double backward_error; /* of the last solve, after refinement            */
+  double rcond;        /* condition estimate of the last factorization     */
+  double time_factor;  /* seconds in set and in factorizations            */
+  double time_solve;   /* seconds in all solves                           */
+} lac_strategy_counts;
+
+/* kind: a concrete one (from lac_strategy_choose), not auto. */
+lac_strategy *lac_strategy_alloc (lac_strategy_kind kind);
+void lac_strategy_free (lac_strategy *s);      /* NULL allowed */
+int lac_strategy_set (lac_strategy *s, const lac_contact_system *sys);
+/* U, lambda of (*) for the statuses `active` (1: in contact); on entry
+ * they are the start (warm start of the conjugate gradients), on return
+ * the solution, lambda_i = 0 where inactive. */
+int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
+                        double *lambda);
+/* The strategy in use (the fallback once it happened). */
+lac_strategy_kind lac_strategy_kind_of (const lac_strategy *s);
+/* Why the strategy fell back to saddle, NULL if it did not. */
+const char *lac_strategy_fallback (const lac_strategy *s);
+void lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c);
+
+#endif /* LAC_STRATEGY_H */

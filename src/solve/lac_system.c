@@ -1,0 +1,163 @@
+/* lac_system.c -- the LAC system of one active set (see lac_system.h)
+ *                                                 [LAC (17), (18), Alg. 1]
+ */
+#include "solve/lac_system.h"
+
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_eigen.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+static int
+is_active (const char *active, size_t i)
+{
+  return !active || active[i];
+}
+
+void
+lac_system_gaps (const lac_contact_system *sys, const double *U, double *d)
+{
+  const lac_csc *C = sys->C;
+  for (size_t i = 0; i < C->ncol; i++)
+    {
+      double cu = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        cu += C->x[p] * U[C->i[p]];
+      d[i] = sys->G[i] - cu;                               /* d = G - C^T U */
+    }
+}
+
+void
+lac_system_norms (const lac_contact_system *sys, double *normK,
+                  double *normC)
+{
+  const lac_csc *K = sys->K, *C = sys->C;
+  double *row = lac_calloc (K->nrow ? K->nrow : 1, sizeof *row);
+  *normK = *normC = 0;
+  if (!row)
+    return;
+  for (size_t j = 0; j < K->ncol; j++)          /* K symmetric: columns */
+    {
+      double sum = 0;
+      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+        sum += fabs (K->x[p]);
+      *normK = fmax (*normK, sum);
+    }
+  for (size_t i = 0; i < C->ncol; i++)          /* row sums of C */
+    for (int p = C->p[i]; p < C->p[i + 1]; p++)
+      row[C->i[p]] += fabs (C->x[p]);
+  for (size_t r = 0; r < C->nrow; r++)
+    *normC = fmax (*normC, row[r]);
+  lac_free (row);
+}
+
+static double
+norm_inf (size_t n, const double *x)
+{
+  double m = 0;
+  for (size_t i = 0; i < n; i++)
+    m = fmax (m, fabs (x[i]));
+  return m;
+}
+
+double
+lac_system_residual (const lac_contact_system *sys, const char *active,
+                     const double *U, const double *lambda, double *r,
+                     double *g)
+{
+  const lac_csc *K = sys->K, *C = sys->C;
+  size_t n = K->ncol, k = C->ncol;
+  double normK, normC, scale;
+  lac_csc_matvec (K, U, r);
+  for (size_t j = 0; j < n; j++)
+    r[j] = sys->F[j] - r[j];                               /* F - K U */
+  for (size_t i = 0; i < k; i++)
+    {
+      double cu = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        {
+          if (is_active (active, i))
+            r[C->i[p]] += C->x[p] * lambda[i];             /* + C_A lambda_A */
+          cu += C->x[p] * U[C->i[p]];
+        }
+      g[i] = is_active (active, i) ? sys->G[i] - cu : 0.0; /* G_A - C_A^T U */
+    }
+  lac_system_norms (sys, &normK, &normC);
+  scale = normK * norm_inf (n, U) + normC * norm_inf (k, lambda)
+          + norm_inf (n, sys->F) + norm_inf (k, sys->G);
+  return fmax (norm_inf (n, r), norm_inf (k, g)) / (scale > 0 ? scale
+                                                    : 1e-300);
+}
+
+/* H = M^T M, M = C_A^T N (k x nfree), and the scale of each motion over
+ * all of C (Hall_jj = sum_i (c_i^T N_j)^2). */
+static void
+held_gram (const lac_contact_system *sys, const char *active, double *H,
+           double *Hall)
+{
+  const lac_csc *C = sys->C;
+  size_t n = C->nrow, m = sys->nfree;
+  double v[64];
+  memset (H, 0, m * m * sizeof *H);
+  memset (Hall, 0, m * sizeof *Hall);
+  for (size_t i = 0; i < C->ncol; i++)
+    {
+      for (size_t a = 0; a < m; a++)                   /* v = N^T c_i */
+        {
+          v[a] = 0;
+          for (int p = C->p[i]; p < C->p[i + 1]; p++)
+            v[a] += sys->N[a * n + (size_t) C->i[p]] * C->x[p];
+          Hall[a] += v[a] * v[a];
+        }
+      for (size_t a = 0; is_active (active, i) && a < m; a++)
+        for (size_t b = 0; b < m; b++)
+          H[a * m + b] += v[a] * v[b];
+    }
+}
+
+int
+lac_system_check_held (const lac_contact_system *sys, const char *active)
+{
+  size_t m = sys->nfree, na = 0, worst = 0;
+  double H[64], Hall[8], hmax = 0;
+  if (m == 0)
+    return LAC_SUCCESS;
+  if (m > 8)
+    LAC_ERROR (LAC_EINVAL, "%zu free rigid motions: at most 8 (bodies held "
+               "by contact alone)", m);
+  for (size_t i = 0; i < sys->C->ncol; i++)
+    na += is_active (active, i) != 0;
+  held_gram (sys, active, H, Hall);
+  for (size_t a = 0; a < m; a++)
+    hmax = fmax (hmax, Hall[a]);
+  gsl_matrix_view A = gsl_matrix_view_array (H, m, m);
+  gsl_vector *ev = gsl_vector_alloc (m);
+  gsl_matrix *V = gsl_matrix_alloc (m, m);
+  gsl_eigen_symmv_workspace *w = gsl_eigen_symmv_alloc (m);
+  int status = !ev || !V || !w || gsl_eigen_symmv (&A.matrix, ev, V, w)
+               ? LAC_ERRMSG (LAC_ENOMEM, "rank test of C_A^T N") : 0;
+  size_t kmin = 0;
+  for (size_t a = 1; !status && a < m; a++)
+    if (gsl_vector_get (ev, a) < gsl_vector_get (ev, kmin))
+      kmin = a;
+  if (!status && !(gsl_vector_get (ev, kmin) > 1e-12 * hmax))
+    {
+      for (size_t a = 1; a < m; a++)          /* largest part of the mode */
+        if (fabs (gsl_matrix_get (V, a, kmin))
+            > fabs (gsl_matrix_get (V, worst, kmin)))
+          worst = a;
+      status = LAC_ERRMSG (LAC_ESING, "%s is held by contact alone, and the "
+                           "%zu active multiplier%s of %zu leave%s it free "
+                           "(a load pulls it off the contact surface, or "
+                           "the contact cannot hold it)",
+                           sys->N_what && sys->N_what[worst]
+                           ? sys->N_what[worst] : "a rigid motion", na,
+                           na == 1 ? "" : "s", sys->C->ncol,
+                           na == 1 ? "s" : "");
+    }
+  gsl_eigen_symmv_free (w);
+  gsl_matrix_free (V);
+  gsl_vector_free (ev);
+  return status;
+}

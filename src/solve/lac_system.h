@@ -1,0 +1,87 @@
+/* lac_system.h -- the LAC system of one active set and its residuals
+ *                                                 [LAC (17), (18), Alg. 1]
+ *
+ * THE SIGN CONVENTION (written once, used everywhere in lac):
+ *
+ *   lambda_i <= 0          the contact pressure of macro-element i
+ *                          (compression is negative, lambda = sigma_N [LAC (6)])
+ *   (C^T U)_i              = int_{T^m_i cap Gamma_C} [u_N] dGamma, the mean
+ *                          normal jump, [u_N] = (u^S - u^M) . n^S, positive
+ *                          when the slave moves into the master
+ *   G_i                    = int_{T^m_i cap Gamma_C} g0 dGamma, the mean
+ *                          initial gap, positive when open        [LAC (18)]
+ *   d_i = G_i - (C^T U)_i  the mean gap after deformation, >= 0 when there
+ *                          is no (mean) interpenetration
+ *
+ *   equilibrium      K U - C lambda = F                      [LAC (8), (17)]
+ *   contact          d >= 0,  lambda <= 0,  lambda_i d_i = 0  [LAC (18)]
+ *
+ * C has one column per admissible macro-element: C(:,i) = C^S - C^M in the
+ * paper's blocks [LAC (16)-(17)], with C^M entering with a minus sign
+ * because n^M = -n^S.  For a fixed active set A (the statuses, 1 = in
+ * contact) Algorithm 1 solves, at its line 21, the saddle-point system
+ *
+ *   [ K      -C_A ] [ U        ]   [  F   ]
+ *   [ -C_A^T   0  ] [ lambda_A ] = [ -G_A ],   lambda_I = 0.          (*)
+ *
+ * The system also carries what the strategies need to know about K
+ * (solve/lac_strategy.h): N, a basis of the rigid motions that the
+ * Dirichlet conditions leave free (bodies held by contact alone), each
+ * with a description for the messages.  K is positive definite iff N is
+ * empty; K + C_A W C_A^T is iff C_A^T N has full column rank, i.e. the
+ * active multipliers hold every such body.
+ *
+ * Ownership: everything in lac_contact_system is borrowed.
+ */
+#ifndef LAC_SYSTEM_H
+#define LAC_SYSTEM_H
+
+#include <stddef.h>
+#include "linalg/lac_linalg.h"
+
+typedef struct lac_contact_system
+{
+  const lac_csc *K;    /* borrowed, n x n, Dirichlet applied (symmetric)  */
+  const double *F;     /* borrowed, n                                     */
+  const lac_csc *C;    /* borrowed, n x k, rows of fixed dofs are zero     */
+  const double *G;     /* borrowed, k, mean gaps (fixed dofs moved in);
+                          values that are zero up to roundoff must be 0   */
+  const double *rho;   /* borrowed, k, scaling of the status test; NULL: 1 */
+  size_t nfree;        /* free rigid motions (0: every body held)         */
+  const double *N;     /* borrowed, n x nfree, column after column        */
+  const char *const *N_what;  /* borrowed, nfree: "body 'upper':
+                          translation along z", or NULL                    */
+} lac_contact_system;
+
+/* What the Cholesky-based solvers of (*) did (solve/lac_schur.h,
+ * solve/lac_augmented.h). */
+typedef struct lac_solve_counts
+{
+  int factorizations;  /* numeric factorizations                         */
+  int analyses;        /* orderings and symbolic analyses                */
+  int solves;          /* forward and back substitutions                 */
+  int iterations;      /* conjugate-gradient iterations, all solves      */
+  double rcond;        /* condition estimate of the last factorization   */
+} lac_solve_counts;
+
+/* Residuals of (U, lambda) for the active set `active` (NULL: all):
+ *   r = F - K U + C_A lambda_A   (n),   g = G_A - C_A^T U   (k; 0 on I).
+ * Returns the normwise backward error of (*) in infinity norms,
+ *   max(||r||, ||g||) / (||K|| ||U|| + ||C|| ||lambda|| + ||F|| + ||G||),
+ * whatever the units and the contrast of the stiffnesses. */
+double lac_system_residual (const lac_contact_system *sys, const char *active,
+                            const double *U, const double *lambda,
+                            double *r, double *g);
+/* ||K||_inf and ||C||_inf (max row sums). */
+void lac_system_norms (const lac_contact_system *sys, double *normK,
+                       double *normC);
+/* d = G - C^T U (k). */
+void lac_system_gaps (const lac_contact_system *sys, const double *U,
+                      double *d);
+/* Do the active multipliers hold the bodies held by contact alone?
+ * LAC_SUCCESS if C_A^T N has full column rank; otherwise LAC_ESING with a
+ * message naming the free motion (N_what) that no active multiplier
+ * touches, and the number of active multipliers. */
+int lac_system_check_held (const lac_contact_system *sys, const char *active);
+
+#endif /* LAC_SYSTEM_H */
