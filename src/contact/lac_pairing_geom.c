@@ -16,12 +16,12 @@
  * References: I. E. Sutherland, G. W. Hodgman, "Reentrant polygon
  * clipping", CACM 17 (1974).
  */
-#include "contact/lac_pairing.h"
+#include "contact/lac_pairing_geom.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "contact/lac_pairing_internal.h"
+#include "contact/lac_pairing_project.h"
 #include "base/lac_status.h"
 #include "base/lac_vec.h"
 

@@ -14,13 +14,12 @@
  * References: J. Nocedal, S. J. Wright, Numerical Optimization, 2nd ed.,
  * §3.1 (backtracking line search), §10.3 (Gauss-Newton).
  */
-#include "contact/lac_pairing.h"
+#include "contact/lac_pairing_project.h"
 
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
-#include "contact/lac_pairing_internal.h"
 #include "base/lac_status.h"
 #include "base/lac_vec.h"
 
@@ -88,7 +87,7 @@ solve_small (int n, const double *A, const double *b, double *y)
   return 1;
 }
 
-/* lac_pairing_face_diameter: the length scale of residuals (internal). */
+/* lac_pairing_face_diameter: the length scale of residuals. */
 double
 lac_pairing_face_diameter (const lac_refelem *re, int sdim, const double *xe)
 {
