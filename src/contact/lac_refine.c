@@ -88,7 +88,7 @@
  * References: code_aster, CREA_MAILLAGE / DECOUPE_LAC (as summarized in
  * the project's paper notes, NOTES.md).
  */
-#include "contact/lac_macromesh.h"
+#include "contact/lac_refine.h"
 
 #include <math.h>
 #include <string.h>
