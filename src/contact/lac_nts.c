@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 #include "contact/lac_contact.h"
+#include "contact/lac_contact_facet.h"
 #include "contact/lac_pairing_project.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
