@@ -26,7 +26,7 @@
  * factored once by UMFPACK; s = max|A| / max|C| balances the blocks.
  * The start vector is a fixed pseudo-random one (reproducible runs).
  */
-#include "contact/lac_infsup_internal.h"
+#include "contact/lac_infsup_lanczos.h"
 
 #include <math.h>
 #include <string.h>
@@ -271,10 +271,7 @@ lac_infsup_sparse (const lac_csc *A, const lac_csc *C, const lac_csc *M,
                              "eigenvector)", lac_error_message ());
       goto done;
     }
-  if ((status = lanczos_run (&L, M, o, r)))
-    goto done;
-  lac_infsup_normalize (M, r, L.rhs);
-  r->path = LAC_INFSUP_SPARSE;
+  status = lanczos_run (&L, M, o, r);
 done:
   lac_free (L.rhs);
   lac_free (L.a);
