@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "fem/lac_assembly.h"
+#include "contact/lac_assembly_lac.h"
 #include "contact/lac_contact.h"
 #include "contact/lac_infsup.h"
 #include "base/lac_mem.h"

@@ -14,8 +14,10 @@
  * over T^m cap Gamma_C [LAC Remark 1].  A
  * macro-element with no paired point (delta = 0) is never admissible.
  */
+#include "contact/lac_admissibility.h"
+
 #include <math.h>
-#include "contact/lac_contact.h"
+#include "contact/lac_contact_facet.h"
 #include "base/lac_mem.h"
 #include "fem/lac_quadrature.h"
 #include "base/lac_status.h"

@@ -6,6 +6,8 @@
 #include "contact/lac_contact.h"
 
 #include <math.h>
+#include "contact/lac_admissibility.h"
+#include "contact/lac_assembly_lac.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 

@@ -24,6 +24,12 @@
  * the hex20 six-hexahedra cut), so fully covered macro-elements are always
  * admissible [LAC Def. 1, remark after it]; a test checks it.
  *
+ * Files.  lac_contact.c: lac_contact_build, which runs the two items, and
+ * the other functions below; lac_admissibility.[ch]: item 1;
+ * lac_assembly_lac.[ch]: item 2; lac_contact_types.h: the struct lac_contact
+ * that they fill; lac_contact_facet.[ch]: the map of one facet at a point,
+ * which they evaluate; lac_nts.c: lac_contact_build_nts.
+ *
  * Ownership: lac_contact_alloc/lac_contact_free; the struct owns its arrays
  * and refers to the mesh, macro-mesh and pairing by indices only.
  */
@@ -32,31 +38,13 @@
 
 #include <stddef.h>
 #include "linalg/lac_linalg.h"
+#include "contact/lac_contact_facet.h"
+#include "contact/lac_contact_types.h"
 #include "contact/lac_macromesh.h"
 #include "fem/lac_material.h"
 #include "contact/lac_pairing.h"
 
 #define LAC_EPSILON_DEFAULT 1e-2
-
-typedef struct lac_contact
-{
-  size_t nmacro;      /* macro-elements of T^M                             */
-  double *meas;       /* owned, nmacro: |T^m| (2 pi r weighted if axisym.)  */
-  double *covered;    /* owned, nmacro: |T^m cap Gamma_C|                   */
-  size_t *inode;      /* owned, nmacro: the interior node x_{m*+1} used, the
-                         one of largest int over T^m cap Gamma_C [LAC Remark 1] */
-  double *phiint;     /* owned, nmacro: int_{T^m cap Gamma_C} phi_{m*+1}    */
-  double *crit;       /* owned, nmacro: phiint / sqrt(covered meas)         */
-  char *admissible;   /* owned, nmacro                                     */
-  long *mult;         /* owned, nmacro: multiplier index of T^m, -1 if none */
-  size_t k;           /* number of multipliers = admissible macro-elements  */
-  size_t *macro;      /* owned, k: macro-element of multiplier i            */
-  lac_csc *C;         /* owned, ndof x k                     [LAC (16)-(17)] */
-  double *G;          /* owned, k: mean initial gaps           [LAC (18)]    */
-  double *area;       /* owned, k: |T^m cap Gamma_C| = M^LAC_ii [LAC (16)]   */
-  double *xpt, *npt;  /* owned, 3k, node-to-segment only (else NULL): the
-                         collocation point and unit normal of multiplier i */
-} lac_contact;
 
 /* Items 1 and 2 above.  The pairing's slave list must be the sub-facets of
  * M in order (cell = M->cell, face = M->face); master facets are given by
@@ -97,26 +85,5 @@ int lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
 /* The multiplier of the macro-element owning slave sub-facet j (-1: none). */
 long lac_contact_mult_of_subfacet (const lac_contact *c, const lac_macro *M,
                                    size_t j);
-
-
-
-/* ---- stages, called by lac_contact_build (exposed for tests) ---------- */
-
-/* Item 1, [LAC Def. 1]: meas, covered, phiint, crit, admissible, mult,
- * k, macro of c (which must have nmacro = M->n and those arrays allocated). */
-int lac_admissibility_compute (lac_contact *c, const lac_mesh *mesh,
-                               lac_model model, const lac_macro *M,
-                               const lac_pairing *P, double epsilon);
-
-/* Item 2, [LAC (16)-(18)]: C, G and area of c for its k multipliers. */
-int lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
-                      const lac_macro *M, const lac_pairing *P,
-                      const lac_pairing_facets *master);
-
-/* Geometry of one facet (cell, face) of a mesh at reference point xi:
- * fills m (x, N, unit outward normal, detJ) and the facet's global nodes
- * (returns their number, or a negative status). */
-int lac_contact_facet_eval (const lac_mesh *mesh, size_t cell, int face,
-                            const double *xi, int *nodes, lac_map *m);
 
 #endif /* LAC_CONTACT_H */

@@ -13,13 +13,13 @@
  * handler off, so its status is checked here.
  */
 #include "contact/lac_infsup.h"
-#include "contact/lac_infsup_internal.h"
 
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_matrix.h>
+#include "contact/lac_infsup_lanczos.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -47,13 +47,14 @@ lac_infsup_path_name (lac_infsup_path p)
          : "auto";
 }
 
-/* ---- helpers shared with lac_infsup_lanczos.c ------------------------ */
+/* ---- the eigenvector of both paths ----------------------------------- */
 
 /* Scale mu to mu^T M mu = 1 with its largest entry positive; set imax,
  * the first index whose |mu_i| is within 1e-6 of the largest (symmetric
- * patterns have ties, which the two paths must break the same way). */
-void
-lac_infsup_normalize (const lac_csc *M, lac_infsup *r, double *work)
+ * patterns have ties, which the two paths must break the same way).
+ * work: k doubles. */
+static void
+normalize (const lac_csc *M, lac_infsup *r, double *work)
 {
   double nrm = 0, big = 0;
   lac_csc_matvec (M, r->mu, work);                   /* work = M mu */
@@ -174,9 +175,10 @@ dense_eigen (const double *S, const lac_csc *M, lac_infsup *r)
   return status;
 }
 
-int
-lac_infsup_dense (lac_solver *sA, const lac_csc *C, const lac_csc *M,
-                  lac_infsup *r)
+/* The dense path: sA holds the CHOLMOD factor of A. */
+static int
+dense_path (lac_solver *sA, const lac_csc *C, const lac_csc *M,
+            lac_infsup *r)
 {
   size_t k = C->ncol;
   double *S = lac_malloc (k * k * sizeof *S), *work = lac_malloc (k * sizeof
@@ -191,12 +193,34 @@ lac_infsup_dense (lac_solver *sA, const lac_csc *C, const lac_csc *M,
   if (!(status = form_S (sA, C, S))                   /* S = C^T A^-1 C */
       && !(status = dense_eigen (S, M, r)))           /* S mu = lam M mu */
     {
-      lac_infsup_normalize (M, r, work);
+      normalize (M, r, work);
       r->residual = dense_residual (S, M, r, work);
       r->path = LAC_INFSUP_DENSE;
     }
   lac_free (work);
   lac_free (S);
+  return status;
+}
+
+/* ---- sparse path ------------------------------------------------------ */
+
+/* The sparse path (lac_infsup_lanczos.c), then the eigenvector's
+ * normalization. */
+static int
+sparse_path (const lac_csc *A, const lac_csc *C, const lac_csc *M,
+             const lac_infsup_opts *o, lac_infsup *r)
+{
+  double *work = lac_malloc (r->k * sizeof *work);
+  int status;
+  if (!work)
+    LAC_ERROR (LAC_ENOMEM, "normalization of %zu multipliers", r->k);
+  status = lac_infsup_sparse (A, C, M, o, r);
+  if (!status)
+    {
+      normalize (M, r, work);
+      r->path = LAC_INFSUP_SPARSE;
+    }
+  lac_free (work);
   return status;
 }
 
@@ -270,9 +294,9 @@ lac_infsup_estimate (const lac_csc *A, const lac_csc *C, const lac_csc *M,
   /* Step 2: the smallest eigenpair of S mu = lambda M mu. */
   if (o.path == LAC_INFSUP_DENSE
       || (o.path == LAC_INFSUP_AUTO && r->k <= LAC_INFSUP_DENSE_KMAX))
-    status = lac_infsup_dense (sA, C, M, r);
+    status = dense_path (sA, C, M, r);
   else
-    status = lac_infsup_sparse (A, C, M, &o, r);
+    status = sparse_path (A, C, M, &o, r);
   if (!status)
     r->beta = sqrt (fmax (r->lambda_min, 0.0));       /* beta_h [LAC (10)] */
 done:

@@ -94,6 +94,11 @@
  * apart), S is singular and beta_h = 0: the dense path returns
  * lambda_min ~ 0, the sparse path LAC_ESING with a message.
  *
+ * Files.  lac_infsup.c: the driver lac_infsup_estimate and the dense path;
+ * lac_infsup_lanczos.[ch]: the sparse path; lac_infsup_gram.c: the
+ * matrices A and M (declared here); lac_infsup_types.h: the options and
+ * the result, which the driver and the sparse path share.
+ *
  * Ownership: inputs are borrowed; lac_infsup_estimate returns a result
  * owned by the caller (lac_infsup_free); lac_infsup_gram_h1 and
  * lac_infsup_norm_lac return CSC matrices freed with lac_csc_free.
@@ -109,17 +114,11 @@
 
 #include <stddef.h>
 #include "contact/lac_contact.h"
+#include "contact/lac_infsup_types.h"
 #include "linalg/lac_linalg.h"
 #include "contact/lac_macromesh.h"
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
-
-typedef enum
-{
-  LAC_INFSUP_AUTO = 0,   /* dense if k <= LAC_INFSUP_DENSE_KMAX, else sparse */
-  LAC_INFSUP_DENSE,
-  LAC_INFSUP_SPARSE
-} lac_infsup_path;
 
 typedef enum
 {
@@ -129,31 +128,6 @@ typedef enum
 
 #define LAC_INFSUP_DENSE_KMAX 1000  /* AUTO: largest k for the dense path    */
 #define LAC_INFSUP_BLOCK 32         /* dense: right-hand sides per solve    */
-
-typedef struct lac_infsup_opts
-{
-  lac_infsup_path path;  /* AUTO                                            */
-  double tol;            /* sparse: relative Ritz residual (1e-10)          */
-  size_t maxit;          /* sparse: Lanczos steps at most (500)             */
-} lac_infsup_opts;
-
-typedef struct lac_infsup
-{
-  size_t n, k;          /* dofs (rows of C), multipliers (columns of C)     */
-  lac_infsup_path path; /* the path used (DENSE or SPARSE)                  */
-  double beta;          /* beta_h = sqrt(max(lambda_min, 0))     [LAC (10)] */
-  double lambda_min;    /* smallest eigenvalue of S mu = lambda M mu        */
-  double lambda_2;      /* the next one (dense; sparse: the next Ritz value,
-                           NAN if not available)                            */
-  double lambda_max;    /* largest (dense only; NAN for sparse)             */
-  double *mu;           /* owned, k: its eigenvector, mu^T M mu = 1,
-                           mu[imax] > 0                                     */
-  size_t imax;          /* argmax_i |mu_i| (the first within 1e-6 of the
-                           largest): the least stable multiplier            */
-  size_t iterations;    /* sparse: Lanczos steps; dense: 0                  */
-  double residual;      /* ||S mu - lambda M mu||_2 / (lambda ||M mu||_2)
-                           (dense: computed with S; sparse: the Ritz bound) */
-} lac_infsup;
 
 /* construct / destroy */
 void lac_infsup_opts_init (lac_infsup_opts *o);

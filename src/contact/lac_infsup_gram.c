@@ -19,6 +19,7 @@
 #include "base/lac_mem.h"
 #include "fem/lac_quadrature.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 
 /* One rule per shape, allocated on first use. */
@@ -202,7 +203,7 @@ lac_infsup_macro_diameter (const lac_mesh *mesh, const lac_macro *Mm,
   int nodes[LAC_MAX_FACE_NODES * 8];
   int n = 0, dim = mesh->dim;
   lac_elem_type ft;
-  double d2 = 0;
+  double d = 0;
   if (m >= Mm->n)
     return 0.0;
   for (size_t j = Mm->ptr[m]; j < Mm->ptr[m + 1]; j++)
@@ -215,16 +216,13 @@ lac_infsup_macro_diameter (const lac_mesh *mesh, const lac_macro *Mm,
           for (int b = 0; b < n; b++)               /* against those seen */
             {
               const double *xb = mesh->x + (size_t) nodes[b] * (size_t) dim;
-              double s = 0;
-              for (int k = 0; k < dim; k++)
-                s += (xa[k] - xb[k]) * (xa[k] - xb[k]);
-              d2 = fmax (d2, s);
+              d = fmax (d, lac_vec_dist (dim, xa, xb));
             }
           if (n < (int) (sizeof nodes / sizeof *nodes))
             nodes[n++] = f[a];
         }
     }
-  return sqrt (d2);
+  return d;
 }
 
 int

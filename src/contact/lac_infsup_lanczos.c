@@ -26,7 +26,7 @@
  * factored once by UMFPACK; s = max|A| / max|C| balances the blocks.
  * The start vector is a fixed pseudo-random one (reproducible runs).
  */
-#include "contact/lac_infsup_internal.h"
+#include "contact/lac_infsup_lanczos.h"
 
 #include <math.h>
 #include <string.h>
@@ -35,6 +35,7 @@
 #include <gsl/gsl_matrix.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 #define CHECK_EVERY 5        /* Ritz values every this many steps, or every
                                 j/10 steps beyond 50 (the O(j^3) eigensolve
@@ -77,15 +78,6 @@ saddle (const lac_csc *A, const lac_csc *C, double s)
     }
   lac_csc_free (Ct);
   return Z;
-}
-
-static double
-dot (size_t k, const double *x, const double *y)
-{
-  double s = 0;
-  for (size_t i = 0; i < k; i++)
-    s += x[i] * y[i];
-  return s;
 }
 
 /* The largest two Ritz values of T_j (a, b; order j) and the last
@@ -151,7 +143,7 @@ reorthogonalize (size_t k, size_t j, const double *Q, const double *MQ,
   for (int pass = 0; pass < 2; pass++)
     for (size_t i = 0; i <= j; i++)
       {
-        double c = dot (k, MQ + i * k, w);            /* <q_i, w>_M */
+        double c = lac_vec_dot (k, MQ + i * k, w);    /* <q_i, w>_M */
         for (size_t l = 0; l < k; l++)
           w[l] -= c * Q[i * k + l];
         h[i] += c;
@@ -185,7 +177,7 @@ lanczos_run (lanczos *L, const lac_csc *M, const lac_infsup_opts *o,
       L->Q[i] = 2.0 * (double) seed / 2147483647.0 - 1.0;
     }
   lac_csc_matvec (M, L->Q, L->MQ);
-  double nq = sqrt (dot (k, L->Q, L->MQ));
+  double nq = sqrt (lac_vec_dot (k, L->Q, L->MQ));
   for (size_t i = 0; i < k; i++)
     L->Q[i] /= nq, L->MQ[i] /= nq;
   for (size_t j = 0; j < L->m; j++)
@@ -199,7 +191,7 @@ lanczos_run (lanczos *L, const lac_csc *M, const lac_infsup_opts *o,
       reorthogonalize (k, j, L->Q, L->MQ, w, L->h);
       L->a[j] = L->h[j];                            /* a_j = <q_j, T q_j>_M */
       lac_csc_matvec (M, w, Mw);
-      L->b[j] = sqrt (fmax (dot (k, w, Mw), 0.0));    /* b_j = ||w||_M */
+      L->b[j] = sqrt (fmax (lac_vec_dot (k, w, Mw), 0.0)); /* b_j = ||w||_M */
       /* Step 3: the top Ritz pair of T_j and its residual b_j |y_j|. */
       int last = j + 1 == L->m;
       size_t every = j + 1 < 50 ? CHECK_EVERY : (j + 1) / 10;
@@ -279,10 +271,7 @@ lac_infsup_sparse (const lac_csc *A, const lac_csc *C, const lac_csc *M,
                              "eigenvector)", lac_error_message ());
       goto done;
     }
-  if ((status = lanczos_run (&L, M, o, r)))
-    goto done;
-  lac_infsup_normalize (M, r, L.rhs);
-  r->path = LAC_INFSUP_SPARSE;
+  status = lanczos_run (&L, M, o, r);
 done:
   lac_free (L.rhs);
   lac_free (L.a);

@@ -3,7 +3,9 @@
  *
  * Builds T^M in four steps (conventions and ownership in lac_macromesh.h);
  * this file holds steps 1 and 3 and the public functions, step 2 is in
- * lac_macromesh_gather.c and step 4 in lac_macromesh_nodes.c:
+ * lac_macromesh_gather.c, one refinement round in lac_refine.c and step 4
+ * in lac_macromesh_nodes.c; the macro-elements under construction are a
+ * lac_macro_list (lac_macro_list.c):
  *
  *   1. check the slave group: it exists, is a non-empty facet group, lists
  *      no facet twice, and every facet is on the boundary (a cut would
@@ -35,24 +37,16 @@
  */
 #include "contact/lac_macromesh.h"
 
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact/lac_macromesh_internal.h"
+#include "contact/lac_macro_list.h"
+#include "contact/lac_macromesh_gather.h"
+#include "contact/lac_macromesh_nodes.h"
+#include "contact/lac_refine.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
-
-static void
-mlist_clear (mlist *L)
-{
-  lac_free (L->ptr);
-  lac_free (L->cell);
-  lac_free (L->face);
-  lac_free (L->pending);
-  memset (L, 0, sizeof *L);
-}
 
 /* ---- step 1: the slave group ------------------------------------------- */
 
@@ -97,37 +91,37 @@ classify (const lac_mesh *m, const lac_group *G, size_t e,
   int hex_cut = opts ? opts->hex_cut : LAC_MACRO_HEX_DEFAULT;
 
   if (G->cell[e] >= m->ncells)
-    MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu out of range",
-              e, G->name, G->cell[e]);
+    LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu out of "
+                     "range", e, G->name, G->cell[e]);
   re = lac_refelem_get (m->type[G->cell[e]]);
   if (!re || re->dim != m->dim || G->face[e] < 0 || G->face[e] >= re->nfaces)
-    MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu (tag %zu) has "
-              "no face %d", e, G->name, G->cell[e],
-              m->cell_tag[G->cell[e]], G->face[e]);
+    LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': cell %zu (tag "
+                     "%zu) has no face %d", e, G->name, G->cell[e],
+                     m->cell_tag[G->cell[e]], G->face[e]);
   rf = lac_refelem_get (re->face_type[G->face[e]]);
   switch (rf->type)
     {
     case LAC_SEG2:                           /* tri3, quad4 */
-      *kind = opts && opts->cut_2d ? CUT : GATHER;
+      *kind = opts && opts->cut_2d ? LAC_MACRO_CUT : LAC_MACRO_GATHER;
       return LAC_SUCCESS;
     case LAC_SEG3: case LAC_QUAD9:           /* mid / centre node exists */
-      *kind = KEEP;
+      *kind = LAC_MACRO_KEEP;
       return LAC_SUCCESS;
     case LAC_TRI3: case LAC_QUAD4: case LAC_TRI6:
-      *kind = CUT;
+      *kind = LAC_MACRO_CUT;
       return LAC_SUCCESS;
     case LAC_QUAD8:
       if (hex_cut == LAC_MACRO_HEX_PYRAMIDS)
-        MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': a %s cannot be cut "
-                  "into pyramids (its quad8 face would need pyramid13 "
-                  "cells, which lac does not have); use LAC_MACRO_HEX_SIX",
-                  e, G->name, re->name);
-      *kind = CUT;
+        LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': a %s cannot "
+                         "be cut into pyramids (its quad8 face would need "
+                         "pyramid13 cells, which lac does not have); use "
+                         "LAC_MACRO_HEX_SIX", e, G->name, re->name);
+      *kind = LAC_MACRO_CUT;
       return LAC_SUCCESS;
     default:
-      MM_ERROR (LAC_EINVAL, "facet %zu of group '%s': %s faces of %s cells "
-                "cannot be made into macro-elements", e, G->name, rf->name,
-                re->name);
+      LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': %s faces of %s "
+                       "cells cannot be made into macro-elements", e,
+                       G->name, rf->name, re->name);
     }
 }
 
@@ -141,7 +135,7 @@ check_boundary (const lac_mesh *m, const lac_group *G)
   int status = LAC_SUCCESS;
 
   if (!key)
-    MM_ERROR (LAC_ENOMEM, "keys of %zu slave facets", G->n);
+    LAC_MACRO_ERROR (LAC_ENOMEM, "keys of %zu slave facets", G->n);
   for (size_t e = 0; e < G->n; e++)
     {
       make_key (m, G->cell[e], G->face[e], &key[e]);
@@ -153,15 +147,17 @@ check_boundary (const lac_mesh *m, const lac_group *G)
       {
         size_t a = key[e - 1].e, b = key[e].e;
         if (G->cell[a] == G->cell[b])
-          status = MM_ERRMSG (LAC_EINVAL, "group '%s' lists facet (cell %zu, "
-                              "face %d) twice (entries %zu and %zu)",
-                              G->name, G->cell[a], G->face[a], a, b);
+          status = LAC_MACRO_ERRMSG (LAC_EINVAL, "group '%s' lists facet "
+                                     "(cell %zu, face %d) twice (entries %zu "
+                                     "and %zu)", G->name, G->cell[a],
+                                     G->face[a], a, b);
         else
-          status = MM_ERRMSG (LAC_EINVAL, "group '%s': facet %zu (cell %zu) "
-                              "and facet %zu (cell %zu) are the same face, "
-                              "interior to the mesh; a contact boundary "
-                              "must lie on the boundary", G->name, a,
-                              G->cell[a], b, G->cell[b]);
+          status = LAC_MACRO_ERRMSG (LAC_EINVAL, "group '%s': facet %zu "
+                                     "(cell %zu) and facet %zu (cell %zu) are "
+                                     "the same face, interior to the mesh; a "
+                                     "contact boundary must lie on the "
+                                     "boundary", G->name, a, G->cell[a], b,
+                                     G->cell[b]);
       }
   for (size_t c = 0; c < m->ncells && !status; c++)
     {
@@ -173,12 +169,13 @@ check_boundary (const lac_mesh *m, const lac_group *G)
           make_key (m, c, f, &k);
           hit = bsearch (&k, key, G->n, sizeof *key, cmp_fkey);
           if (hit && !(G->cell[hit->e] == c && G->face[hit->e] == f))
-            status = MM_ERRMSG (LAC_EINVAL, "facet %zu of group '%s' (cell "
-                                "%zu, face %d) is shared with cell %zu "
-                                "(tag %zu): it is interior, a contact "
-                                "boundary must lie on the boundary", hit->e,
-                                G->name, G->cell[hit->e], G->face[hit->e],
-                                c, m->cell_tag[c]);
+            status = LAC_MACRO_ERRMSG (LAC_EINVAL, "facet %zu of group '%s' "
+                                       "(cell %zu, face %d) is shared with "
+                                       "cell %zu (tag %zu): it is interior, "
+                                       "a contact boundary must lie on the "
+                                       "boundary", hit->e, G->name,
+                                       G->cell[hit->e], G->face[hit->e], c,
+                                       m->cell_tag[c]);
         }
     }
   lac_free (key);
@@ -187,53 +184,10 @@ check_boundary (const lac_mesh *m, const lac_group *G)
 
 /* ---- step 3: refinement rounds ----------------------------------------- */
 
-/* Facet lists of L through the map of one round. */
-static int
-remap_macros (mlist *L, const lac_refine_map *map)
-{
-  size_t n = 0, *cell, *ptr = L->ptr;
-  int *face;
-
-  for (size_t j = 0; j < ptr[L->n]; j++)
-    {
-      size_t q = L->cell[j] * LAC_MAX_FACES + (size_t) L->face[j];
-      n += map->fptr[q + 1] - map->fptr[q];
-    }
-  cell = lac_malloc (n * sizeof *cell);
-  face = lac_malloc (n * sizeof *face);
-  if (!cell || !face)
-    {
-      lac_free (cell);
-      lac_free (face);
-      MM_ERROR (LAC_ENOMEM, "macro-element facets (%zu)", n);
-    }
-  n = 0;
-  for (size_t k = 0; k < L->n; k++)
-    {
-      size_t j0 = ptr[k], j1 = ptr[k + 1];
-      ptr[k] = n;
-      for (size_t j = j0; j < j1; j++)
-        {
-          size_t q = L->cell[j] * LAC_MAX_FACES + (size_t) L->face[j];
-          for (size_t p = map->fptr[q]; p < map->fptr[q + 1]; p++, n++)
-            {
-              cell[n] = map->fcell[p];
-              face[n] = map->fface[p];
-            }
-        }
-    }
-  ptr[L->n] = n;
-  lac_free (L->cell);
-  lac_free (L->face);
-  L->cell = cell;
-  L->face = face;
-  return LAC_SUCCESS;
-}
-
 /* Cut the pending facets, at most one per cell and round  [LAC §4.4]. *cur
  * is replaced by each new mesh; meshes other than `orig` are freed. */
 static int
-refine_rounds (lac_mesh **cur, const lac_mesh *orig, mlist *L,
+refine_rounds (lac_mesh **cur, const lac_mesh *orig, lac_macro_list *L,
                const lac_macro_opts *opts, lac_macro *M)
 {
   int status = LAC_SUCCESS;
@@ -251,7 +205,7 @@ refine_rounds (lac_mesh **cur, const lac_mesh *orig, mlist *L,
         break;
       cut = lac_malloc (m->ncells * sizeof *cut);
       if (!cut)
-        MM_ERROR (LAC_ENOMEM, "refinement round %d", M->nrounds + 1);
+        LAC_MACRO_ERROR (LAC_ENOMEM, "refinement round %d", M->nrounds + 1);
       for (size_t c = 0; c < m->ncells; c++)
         cut[c] = -1;
       for (size_t k = 0; k < L->n; k++)
@@ -267,7 +221,7 @@ refine_rounds (lac_mesh **cur, const lac_mesh *orig, mlist *L,
       status = lac_refine_cut (m, cut, opts, &next, &map);
       lac_free (cut);
       if (!status)
-        status = remap_macros (L, map);
+        status = lac_macro_list_remap (L, map);
       lac_refine_map_free (map);
       if (status)
         {
@@ -310,21 +264,21 @@ slave_group (const lac_mesh *m, const char *slave, const lac_group **G)
       char msg[768];
       const char *p = strstr (lac_error_message (), ": ");
       snprintf (msg, sizeof msg, "%s", p ? p + 2 : lac_error_message ());
-      MM_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
+      LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
     }
   if ((*G)->dim != m->dim - 1)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension %d; it "
-              "must be a group of boundary facets (dimension %d)", slave,
-              (*G)->dim, m->dim - 1);
+    LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension "
+                     "%d; it must be a group of boundary facets (dimension "
+                     "%d)", slave, (*G)->dim, m->dim - 1);
   if ((*G)->n == 0)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is empty", slave);
+    LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group '%s' is empty", slave);
   return LAC_SUCCESS;
 }
 
 /* Step 4 of lac_macromesh_build: measures and interior nodes of the
  * macro-elements L on mesh m; the facet lists are then moved into M. */
 static int
-fill_macro (const lac_mesh *m, mlist *L, lac_macro *M)
+fill_macro (const lac_mesh *m, lac_macro_list *L, lac_macro *M)
 {
   int status;
   M->n = L->n;
@@ -332,8 +286,8 @@ fill_macro (const lac_mesh *m, mlist *L, lac_macro *M)
   M->meas = lac_malloc (L->n * sizeof *M->meas);
   M->phi = lac_malloc (L->n * sizeof *M->phi);
   if (!M->inode || !M->meas || !M->phi)
-    MM_ERROR (LAC_ENOMEM, "macro-mesh of %zu elements", L->n);
-  status = lac_macromesh_finish (m, L, M);
+    LAC_MACRO_ERROR (LAC_ENOMEM, "macro-mesh of %zu elements", L->n);
+  status = lac_macromesh_finish (m, L, M->inode, M->meas, M->phi);
   if (status)
     return status;
   M->ptr = L->ptr;
@@ -360,20 +314,20 @@ lac_macromesh_build (lac_mesh **mesh, const char *slave,
   lac_mesh *cur = NULL;
   const lac_group *G;
   unsigned char *kind = NULL;
-  mlist L = { 0 };
+  lac_macro_list L = { 0 };
   lac_macro *M = NULL;
   int status = LAC_SUCCESS;
 
   if (!out)
-    MM_ERROR (LAC_EINVAL, "no output pointer");
+    LAC_MACRO_ERROR (LAC_EINVAL, "no output pointer");
   *out = NULL;
   if (!mesh || !*mesh || !slave)
-    MM_ERROR (LAC_EINVAL, "no mesh or no slave group name");
+    LAC_MACRO_ERROR (LAC_EINVAL, "no mesh or no slave group name");
   if (opts && (opts->hex_cut < LAC_MACRO_HEX_DEFAULT
                || opts->hex_cut > LAC_MACRO_HEX_SIX
                || (opts->cut_2d != 0 && opts->cut_2d != 1)))
-    MM_ERROR (LAC_EINVAL, "options hex_cut = %d, cut_2d = %d out of range",
-              opts->hex_cut, opts->cut_2d);
+    LAC_MACRO_ERROR (LAC_EINVAL, "options hex_cut = %d, cut_2d = %d out of "
+                     "range", opts->hex_cut, opts->cut_2d);
   cur = *mesh;
 
   /* Step 1: the slave group. */
@@ -384,7 +338,7 @@ lac_macromesh_build (lac_mesh **mesh, const char *slave,
   M = lac_calloc (1, sizeof *M);
   if (!kind || !M)
     {
-      status = MM_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu facets", G->n);
+      status = LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu facets", G->n);
       goto done;
     }
   for (size_t e = 0; e < G->n && !status; e++)
@@ -404,7 +358,7 @@ lac_macromesh_build (lac_mesh **mesh, const char *slave,
 
 done:
   lac_free (kind);
-  mlist_clear (&L);
+  lac_macro_list_free (&L);
   if (status)
     {
       if (cur != *mesh)
@@ -425,17 +379,17 @@ done:
  * slave facet, nothing gathered or refined (the P0 multipliers of [LAC
  * §4.2], which violate Hypothesis 1 for linear elements: used only to
  * compare with LAC).  inode = (size_t) -1 where the facet has no interior
- * node; meas = |T^s|, phi = 0. */
+ * node; meas = phi = 0. */
 int
 lac_macromesh_trace (const lac_mesh *mesh, const char *slave, lac_macro **out)
 {
   const lac_group *G = mesh ? lac_mesh_group (mesh, slave) : NULL;
   *out = NULL;
   if (!G)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' not found", slave);
+    LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group '%s' not found", slave);
   if (G->dim != mesh->dim - 1 || G->n == 0)
-    MM_ERROR (LAC_EINVAL, "slave contact group '%s' is not a non-empty "
-              "group of boundary facets", slave);
+    LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group '%s' is not a non-empty "
+                     "group of boundary facets", slave);
   lac_macro *M = lac_calloc (1, sizeof *M);
   size_t n = G->n;
   if (M)
@@ -452,7 +406,7 @@ lac_macromesh_trace (const lac_mesh *mesh, const char *slave, lac_macro **out)
       || !M->phi)
     {
       lac_macromesh_free (M);
-      MM_ERROR (LAC_ENOMEM, "trace macro-mesh of %zu facets", n);
+      LAC_MACRO_ERROR (LAC_ENOMEM, "trace macro-mesh of %zu facets", n);
     }
   M->ptr[0] = 0;
   for (size_t e = 0; e < n; e++)
@@ -460,10 +414,25 @@ lac_macromesh_trace (const lac_mesh *mesh, const char *slave, lac_macro **out)
       M->ptr[e + 1] = e + 1;
       M->cell[e] = G->cell[e];
       M->face[e] = G->face[e];
-      size_t in[MAXPATCH];
-      M->inode[e] = lac_macromesh_interior (mesh, M, e, in, MAXPATCH) > 0
+      size_t in[LAC_MACRO_MAXPATCH];
+      M->inode[e] = lac_macromesh_interior (mesh, M, e, in,
+                                            LAC_MACRO_MAXPATCH) > 0
                     ? in[0] : (size_t) -1;
     }
   *out = M;
   return LAC_SUCCESS;
+}
+
+/* lac_macromesh_interior: the interior nodes of the patch of sub-facets of
+ * T^m (lac_macromesh_nodes.c). */
+size_t
+lac_macromesh_interior (const lac_mesh *mesh, const lac_macro *M, size_t m,
+                        size_t *nodes, size_t nmax)
+{
+  if (!mesh || !M || m >= M->n)
+    return 0;
+  return lac_macromesh_patch_interior (mesh, M->cell + M->ptr[m],
+                                       M->face + M->ptr[m],
+                                       M->ptr[m + 1] - M->ptr[m], nodes,
+                                       nmax);
 }

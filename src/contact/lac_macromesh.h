@@ -66,7 +66,14 @@
  * frees the old one) only on success; the lac_macro it returns owns all its
  * arrays and is freed with lac_macromesh_free.  It refers to the mesh by
  * cell and node indices only, so it is valid for the mesh returned with it.
- * lac_refine_map is owned likewise (lac_refine_map_free).
+ *
+ * Files.  lac_macromesh.c: the driver (steps 1 and 3: the slave group, the
+ * refinement rounds) and this header; lac_macromesh_gather.[ch]: step 2,
+ * the first macro-elements (2D segments gathered along their chains);
+ * lac_refine.[ch]: one refinement round, the templates and their options
+ * (lac_macro_opts); lac_macromesh_nodes.[ch]: step 4, measures and interior
+ * nodes; lac_macro_list.[ch]: the macro-elements under construction, which
+ * the steps pass on.
  *
  * References: M. Abbas, G. Drouet, P. Hild, The Local Average Contact (LAC)
  * method, 2018 (Hypothesis 1, §4.4); code_aster's CREA_MAILLAGE /
@@ -78,21 +85,7 @@
 
 #include <stddef.h>
 #include "fem/lac_mesh.h"
-
-/* How to cut a hexahedron on a quadrangular slave face. */
-enum
-{
-  LAC_MACRO_HEX_DEFAULT = 0,  /* hex8 -> 5 pyr5, hex20 -> 6 hex20          */
-  LAC_MACRO_HEX_PYRAMIDS,     /* hex8 -> 5 pyr5; hex20: error (no pyr13)  */
-  LAC_MACRO_HEX_SIX           /* hex8 -> 6 hex8, hex20 -> 6 hex20           */
-};
-
-typedef struct lac_macro_opts
-{
-  int hex_cut;   /* LAC_MACRO_HEX_*                                        */
-  int cut_2d;    /* 2D linear: 0 gather segments (default), 1 cut the cell
-                    of every seg2 facet (tri3 -> 2 tri3, quad4 -> 3 tri3)  */
-} lac_macro_opts;
+#include "contact/lac_refine.h"
 
 typedef struct lac_macro
 {
@@ -109,19 +102,6 @@ typedef struct lac_macro
   size_t nnew;     /* nodes added                                           */
   int nrounds;     /* refinement rounds (0: nothing refined)                */
 } lac_macro;
-
-/* The sub-cells and face pieces of one refinement round.  Old cell c became
- * new cells cptr[c] .. cptr[c+1]-1; face g of old cell c became the pieces
- * (fcell[j], fface[j]) for j from fptr[q] to fptr[q+1]-1, q = c*LAC_MAX_FACES
- * + g (one piece for a face that was not cut, none for g >= nfaces). */
-typedef struct lac_refine_map
-{
-  size_t ncells;   /* cells before the round                               */
-  size_t *cptr;    /* owned, ncells+1                                       */
-  size_t *fptr;    /* owned, ncells*LAC_MAX_FACES+1                         */
-  size_t *fcell;   /* owned, fptr[ncells*LAC_MAX_FACES]                     */
-  int *fface;      /* owned, likewise                                       */
-} lac_refine_map;
 
 /* construct / destroy */
 
@@ -142,14 +122,6 @@ void lac_macromesh_free (lac_macro *M);          /* NULL allowed */
  * phi are left 0 (lac_admissibility computes the measures). */
 int lac_macromesh_trace (const lac_mesh *mesh, const char *slave,
                          lac_macro **out);
-
-/* One refinement round (lac_refine.c): cut face cut[c] of every cell with
- * cut[c] >= 0 with the templates above; returns the new mesh (all groups
- * remapped) and the map old -> new.  opts may be NULL. */
-int lac_refine_cut (const lac_mesh *m, const int *cut,
-                    const lac_macro_opts *opts, lac_mesh **out,
-                    lac_refine_map **map);
-void lac_refine_map_free (lac_refine_map *map);  /* NULL allowed */
 
 /* query */
 

@@ -13,28 +13,12 @@
  * to have its cell cut at the segment's midpoint (step 3).  Chains break
  * at junctions: a node where other than two segments meet.
  */
-#include "contact/lac_macromesh.h"
+#include "contact/lac_macromesh_gather.h"
 
 #include <stdint.h>
 
-#include "contact/lac_macromesh_internal.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
-
-/* Append the macro-element of the facets e[0..n-1] of G. */
-static void
-push_macro (mlist *L, const lac_group *G, const size_t *e, size_t n,
-            int pending)
-{
-  size_t j = L->ptr[L->n];
-  for (size_t i = 0; i < n; i++, j++)
-    {
-      L->cell[j] = G->cell[e[i]];
-      L->face[j] = G->face[e[i]];
-    }
-  L->pending[L->n] = (unsigned char) pending;
-  L->ptr[++L->n] = j;
-}
 
 /* The other end of segment e (ends end[2e], end[2e+1]) than node v. */
 static size_t
@@ -56,18 +40,19 @@ next_seg (const size_t *deg, const size_t *inc, size_t e, size_t v)
 /* Split a chain of k segments into macro-elements of 2 (the last of 3 if k
  * is odd); a lone segment is left to be cut  [LAC §4.4, item 1]. */
 static void
-push_chain (mlist *L, const lac_group *G, const size_t *chain, size_t k)
+push_chain (lac_macro_list *L, const lac_group *G, const size_t *chain,
+            size_t k)
 {
   size_t i = 0;
   if (k == 1)
     {
-      push_macro (L, G, chain, 1, 1);
+      lac_macro_list_push (L, G, chain, 1, 1);
       return;
     }
   for (; i + 3 != k && i < k; i += 2)
-    push_macro (L, G, chain + i, 2, 0);
+    lac_macro_list_push (L, G, chain + i, 2, 0);
   if (i < k)
-    push_macro (L, G, chain + i, 3, 0);
+    lac_macro_list_push (L, G, chain + i, 3, 0);
 }
 
 /* Incidence of the segments to be gathered (end nodes only): end[2e],
@@ -79,7 +64,7 @@ segment_incidence (const lac_mesh *m, const lac_group *G,
                    size_t *inc)
 {
   for (size_t e = 0; e < G->n; e++)
-    if (kind[e] == GATHER)
+    if (kind[e] == LAC_MACRO_GATHER)
       {
         int nodes[LAC_MAX_FACE_NODES];
         lac_mesh_facet_nodes (m, G->cell[e], G->face[e], nodes, NULL);
@@ -129,34 +114,30 @@ walk_chain (size_t e, const size_t *end, const size_t *deg,
  * facet appears)  [LAC §4.4, item 1]. */
 int
 lac_macromesh_start (const lac_mesh *m, const lac_group *G,
-                     const unsigned char *kind, mlist *L)
+                     const unsigned char *kind, lac_macro_list *L)
 {
   size_t n = G->n, *end = NULL, *deg = NULL, *inc = NULL, *chain = NULL;
   unsigned char *seen = NULL;
-  int status = LAC_SUCCESS;
+  int status = lac_macro_list_init (L, n);
 
-  L->ptr = lac_malloc ((n + 1) * sizeof *L->ptr);
-  L->cell = lac_malloc (n * sizeof *L->cell);
-  L->face = lac_malloc (n * sizeof *L->face);
-  L->pending = lac_malloc (n * sizeof *L->pending);
+  if (status)
+    return status;
   end = lac_malloc (2 * n * sizeof *end);
   deg = lac_calloc (m->nnodes, sizeof *deg);
   inc = lac_malloc (2 * m->nnodes * sizeof *inc);
   chain = lac_malloc (n * sizeof *chain);
   seen = lac_calloc (n, sizeof *seen);
-  if (!L->ptr || !L->cell || !L->face || !L->pending || !end || !deg || !inc
-      || !chain || !seen)
+  if (!end || !deg || !inc || !chain || !seen)
     {
-      status = MM_ERRMSG (LAC_ENOMEM, "macro-elements of %zu facets", n);
+      status = LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-elements of %zu facets",
+                                 n);
       goto done;
     }
-  L->n = 0;
-  L->ptr[0] = 0;
   segment_incidence (m, G, kind, end, deg, inc);
   for (size_t e = 0; e < n; e++)
     {
-      if (kind[e] != GATHER)
-        push_macro (L, G, &e, 1, kind[e] == CUT);
+      if (kind[e] != LAC_MACRO_GATHER)
+        lac_macro_list_push (L, G, &e, 1, kind[e] == LAC_MACRO_CUT);
       else if (!seen[e])
         push_chain (L, G, chain, walk_chain (e, end, deg, inc, seen, chain));
     }

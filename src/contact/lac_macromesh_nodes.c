@@ -1,9 +1,9 @@
 /* lac_macromesh_nodes.c -- measures and interior nodes of T^M
  *                                      [LAC §4.4, Remark 1, Definition 1]
  *
- * Step 4 of lac_macromesh_build (lac_macromesh.c), and the public
- * lac_macromesh_interior.  For each macro-element T^m (a patch of
- * sub-facets of the refined mesh):
+ * Step 4 of lac_macromesh_build (lac_macromesh.c), and the interior nodes
+ * of a patch behind the public lac_macromesh_interior.  For each
+ * macro-element T^m (a patch of sub-facets of the refined mesh):
  *
  *   - its measure |T^m| and the integrals int_{T^m} phi_i of the nodal
  *     basis functions of its nodes (Gauss rules of order 6 on the
@@ -14,13 +14,12 @@
  *   - the designated one x_{m*+1}: the interior node of largest integral,
  *     lowest index on ties [LAC Remark 1].
  */
-#include "contact/lac_macromesh.h"
+#include "contact/lac_macromesh_nodes.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "contact/lac_macromesh_internal.h"
 #include "base/lac_mem.h"
 #include "fem/lac_quadrature.h"
 #include "base/lac_status.h"
@@ -30,9 +29,9 @@
 /* Nodes and edges of a patch under examination. */
 typedef struct patch
 {
-  int fn[MAXSUBF][LAC_MAX_FACE_NODES];    /* nodes of each sub-facet      */
-  size_t ekey[MAXSUBF * 4][2];            /* edges: sorted end nodes      */
-  int ecount[MAXSUBF * 4], ne;            /* sub-facets having each edge  */
+  int fn[LAC_MACRO_MAXSUBF][LAC_MAX_FACE_NODES]; /* nodes of each sub-facet */
+  size_t ekey[LAC_MACRO_MAXSUBF * 4][2];         /* edges: sorted end nodes */
+  int ecount[LAC_MACRO_MAXSUBF * 4], ne;         /* sub-facets per edge     */
 } patch;
 
 /* The sorted end nodes (a, b) of edge e of a sub-facet of type rf with
@@ -135,7 +134,7 @@ patch_nodes (const lac_mesh *m, const size_t *cell, const int *face,
   patch P;
   size_t nn = 0;
 
-  if (nsub > MAXSUBF)
+  if (nsub > LAC_MACRO_MAXSUBF)
     return 0;
   for (size_t j = 0; j < nsub; j++)
     {
@@ -165,7 +164,7 @@ static const size_t NONE = SIZE_MAX, SEVERAL = SIZE_MAX - 1;
 /* owner[i]: the macro-element whose facets hold node i, SEVERAL if more
  * than one, NONE if none. */
 static void
-node_owners (const lac_mesh *m, const mlist *L, size_t *owner)
+node_owners (const lac_mesh *m, const lac_macro_list *L, size_t *owner)
 {
   for (size_t i = 0; i < m->nnodes; i++)
     owner[i] = NONE;
@@ -185,7 +184,7 @@ node_owners (const lac_mesh *m, const mlist *L, size_t *owner)
 /* |T^k| = sum int 1 and int_{T^k} phi_i = sum int N_a (i = node a) over the
  * sub-facets of T^k, whose nn nodes are node[]; integ[i] for node[i]. */
 static int
-macro_integrals (const lac_mesh *m, const mlist *L, size_t k,
+macro_integrals (const lac_mesh *m, const lac_macro_list *L, size_t k,
                  lac_quad *const *rule, const size_t *node, size_t nn,
                  double *integ, double *meas)
 {
@@ -251,7 +250,8 @@ designated_node (size_t k, const size_t *node, const int *inter,
 
 /* lac_macromesh_finish: meas, inode, phi of every macro-element. */
 int
-lac_macromesh_finish (const lac_mesh *m, const mlist *L, lac_macro *M)
+lac_macromesh_finish (const lac_mesh *m, const lac_macro_list *L,
+                      size_t *inode, double *meas, double *phi)
 {
   lac_quad *rule[3] = { NULL, NULL, NULL };
   size_t *owner = lac_malloc (m->nnodes * sizeof *owner);
@@ -262,37 +262,38 @@ lac_macromesh_finish (const lac_mesh *m, const mlist *L, lac_macro *M)
   rule[QUAD] = lac_quad_alloc (LAC_SHAPE_QUAD, 6);
   if (!owner || !rule[LINE] || !rule[TRI] || !rule[QUAD])
     {
-      status = MM_ERRMSG (LAC_ENOMEM, "quadrature for macro-elements");
+      status = LAC_MACRO_ERRMSG (LAC_ENOMEM, "quadrature for macro-elements");
       goto done;
     }
   node_owners (m, L, owner);
   for (size_t k = 0; k < L->n && !status; k++)
     {
-      size_t node[MAXPATCH], nsub = L->ptr[k + 1] - L->ptr[k], nn, best;
-      int inter[MAXPATCH];
-      double integ[MAXPATCH], meas;
+      size_t node[LAC_MACRO_MAXPATCH], nsub = L->ptr[k + 1] - L->ptr[k];
+      size_t nn, best;
+      int inter[LAC_MACRO_MAXPATCH];
+      double integ[LAC_MACRO_MAXPATCH], mk;
 
       nn = patch_nodes (m, L->cell + L->ptr[k], L->face + L->ptr[k], nsub,
                         node, inter);
       if (nn == 0)
         {
-          status = MM_ERRMSG (LAC_ESANITY, "macro-element %zu: %zu "
-                              "sub-facets, bad or too many", k, nsub);
+          status = LAC_MACRO_ERRMSG (LAC_ESANITY, "macro-element %zu: %zu "
+                                     "sub-facets, bad or too many", k, nsub);
           break;
         }
-      status = macro_integrals (m, L, k, rule, node, nn, integ, &meas);
+      status = macro_integrals (m, L, k, rule, node, nn, integ, &mk);
       if (status)
         break;
       if (!designated_node (k, node, inter, integ, nn, owner, &best))
         {
-          status = MM_ERRMSG (LAC_ESANITY, "macro-element %zu (cell %zu, "
-                              "face %d) has no interior node", k,
-                              L->cell[L->ptr[k]], L->face[L->ptr[k]]);
+          status = LAC_MACRO_ERRMSG (LAC_ESANITY, "macro-element %zu (cell "
+                                     "%zu, face %d) has no interior node", k,
+                                     L->cell[L->ptr[k]], L->face[L->ptr[k]]);
           break;
         }
-      M->inode[k] = node[best];
-      M->phi[k] = integ[best];
-      M->meas[k] = meas;
+      inode[k] = node[best];
+      phi[k] = integ[best];
+      meas[k] = mk;
     }
 done:
   lac_free (owner);
@@ -310,18 +311,16 @@ cmp_size (const void *a, const void *b)
   return x < y ? -1 : x > y;
 }
 
-/* lac_macromesh_interior: the interior nodes of T^m, sorted. */
+/* lac_macromesh_patch_interior: the interior nodes of a patch, sorted. */
 size_t
-lac_macromesh_interior (const lac_mesh *mesh, const lac_macro *M, size_t m,
-                        size_t *nodes, size_t nmax)
+lac_macromesh_patch_interior (const lac_mesh *m, const size_t *cell,
+                              const int *face, size_t nsub, size_t *nodes,
+                              size_t nmax)
 {
-  size_t node[MAXPATCH], nn, count = 0;
-  int inter[MAXPATCH];
+  size_t node[LAC_MACRO_MAXPATCH], nn, count = 0;
+  int inter[LAC_MACRO_MAXPATCH];
 
-  if (!mesh || !M || m >= M->n)
-    return 0;
-  nn = patch_nodes (mesh, M->cell + M->ptr[m], M->face + M->ptr[m],
-                    M->ptr[m + 1] - M->ptr[m], node, inter);
+  nn = patch_nodes (m, cell, face, nsub, node, inter);
   for (size_t i = 0; i < nn; i++)
     if (inter[i])
       node[count++] = node[i];

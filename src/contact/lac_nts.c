@@ -9,8 +9,11 @@
 #include <math.h>
 #include <string.h>
 #include "contact/lac_contact.h"
+#include "contact/lac_contact_facet.h"
+#include "contact/lac_pairing_project.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 /* Geometry of one slave node: tributary weight, nodal normal, position. */
 typedef struct nts_node
@@ -62,11 +65,9 @@ slave_nodes (const lac_mesh *mesh, lac_model model, const lac_macro *M,
     }
   for (size_t a = 0; a < nn; a++)
     {
-      double s = 0;
-      for (int c = 0; c < dim; c++)
-        s += v[a].n[c] * v[a].n[c];
-      for (int c = 0; c < dim && s > 0; c++)
-        v[a].n[c] /= sqrt (s);                        /* unit nodal normal */
+      double l = lac_vec_norm (dim, v[a].n);
+      for (int c = 0; c < dim && l > 0; c++)
+        v[a].n[c] /= l;                               /* unit nodal normal */
     }
   *out = v;
   *nout = nn;

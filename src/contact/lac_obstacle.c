@@ -5,7 +5,7 @@
 
 #include <math.h>
 #include <string.h>
-#include "contact/lac_contact.h"
+#include "contact/lac_contact_facet.h"
 #include "base/lac_mem.h"
 #include "fem/lac_quadrature.h"
 #include "base/lac_status.h"

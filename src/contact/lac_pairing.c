@@ -13,14 +13,16 @@
  * (costly) projections once.
  */
 #include "contact/lac_pairing.h"
-#include "contact/lac_pairing_search.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "contact/lac_pairing_geom.h"
+#include "contact/lac_pairing_search.h"
 #include "base/lac_mem.h"
+#include "fem/lac_quadrature.h"
 #include "base/lac_status.h"
 
 /* ---- the result (pass 2) ------------------------------------------------ */

@@ -56,6 +56,13 @@
  * linearised facets, which still tile each slave facet, and the measures
  * integrate the exact surface element.
  *
+ * Files.  lac_pairing.c: the driver and the result (this header);
+ * lac_pairing_search.[ch]: which pairs overlap (pass 1);
+ * lac_pairing_geom.[ch]: the geometry of one pair (chart, overlap,
+ * points); lac_pairing_project.[ch]: the projection onto a face map;
+ * lac_pairing_types.h: the facet lists and options that the driver and
+ * the search share.
+ *
  * Ownership.  The facet lists and meshes are borrowed during
  * lac_pairing_build only; the lac_pairing it returns owns all its arrays and
  * keeps no pointer to the input (free it with lac_pairing_free).
@@ -70,43 +77,7 @@
 
 #include <stddef.h>
 #include "fem/lac_mesh.h"
-#include "fem/lac_quadrature.h"
-#include "fem/lac_spaces.h"
-
-/* One side of the contact: facets of a mesh (everything borrowed). */
-typedef struct lac_pairing_facets
-{
-  const lac_mesh *mesh;  /* borrowed                                      */
-  size_t n;              /* number of facets                              */
-  const size_t *cell;    /* borrowed, n: the cell owning facet i          */
-  const int *face;       /* borrowed, n: its local face                   */
-} lac_pairing_facets;
-
-/* Options; lac_pairing_opts_init sets the defaults shown. */
-typedef struct lac_pairing_opts
-{
-  int degree;        /* exact degree of the rule on each integration cell;
-                        0: 5 in 2D (3 Gauss points), 4 in 3D (6 points)   */
-  int degree_nonaffine; /* 0: degree + 14.  The degree for the pairs with
-                        a quadrangle that is not a parallelogram (trapezoids
-                        of a refined hex20 face, unstructured or curved
-                        quads): in their charts phi^S or phi^M are not
-                        polynomials and no rule is exact.  Taylor patch
-                        test, hex20 (t450), error in sigma with degree 4 and
-                        degree_nonaffine 4, 14, 16, 18: 3e-4, 2e-11, 5e-13,
-                        3e-14.  Cost: 100 points per triangle instead of 6
-                        (12 times the pairing time on a mesh of distorted
-                        quads, bench_pairing)                             */
-  double dist_rel;   /* 1.0: max normal gap, in facet diameters (the
-                        larger of the pair) ...                           */
-  double dist_abs;   /* 0.0: ... plus this absolute length                */
-  double facing;     /* 0.0: a pair needs -n_s.n_m > facing (n at the
-                        facet centres); < -1 accepts every orientation    */
-  int robust;        /* 0: advancing front; 1: every slave facet tests all
-                        master facets the bucket grid puts near it        */
-  int allow_empty;   /* 0: no pair at all is an error (LAC_EINVAL);
-                        1: an empty pairing is a valid result             */
-} lac_pairing_opts;
+#include "contact/lac_pairing_types.h"
 
 /* The result.  Points of slave facet s are p = ptr[s] .. ptr[s+1]-1, grouped
  * by pair; pairs of slave facet s are q = pair_ptr[s] .. pair_ptr[s+1]-1,
@@ -155,94 +126,5 @@ void lac_pairing_free (lac_pairing *P);                /* NULL allowed */
 
 /* query */
 double lac_pairing_total (const lac_pairing *P);   /* sum of covered[s] */
-
-/* ---- geometry kernels (lac_pairing_geom.c, lac_pairing_project.c) ---- */
-
-/* Projection onto a face map x = X(xi) (re: a seg/tri/quad face element,
- * sdim = re->dim + 1, xe: its nodes).  With dir != NULL, solve
- *   X(xi) = x + t dir                         (projection along dir)
- * by Newton's method with line search in (xi, t); with dir == NULL, find
- * the closest point, (X(xi) - x).dX/dxi_k = 0 (Gauss-Newton), and return
- * t = (x - X(xi)).n(xi).  xi is the starting point on input.
- * Returns LAC_SUCCESS, LAC_EMAXITER (no convergence, or xi left the
- * neighbourhood |xi| <= 100 of the reference cell), LAC_ESING (dir tangent
- * to the face, or degenerate face); never loops more than 50 iterations. */
-int lac_pairing_project (const lac_refelem *re, int sdim, const double *xe,
-                         const double *x, const double *dir, double *xi,
-                         double *t);
-
-/* Sutherland-Hodgman: clip the polygon q (n = 3 or 4 points of a plane,
- * either orientation) against the convex counter-clockwise polygon c
- * (nc = 3 or 4 points).  out holds up to LAC_PAIRING_MAXPOLY points;
- * returns their number (0: empty). */
-#define LAC_PAIRING_MAXPOLY 16
-int lac_pairing_clip (int nc, const double *c, int n, const double *q,
-                      double *out);
-
-/* Signed area of the polygon q (n points; > 0 counter-clockwise). */
-double lac_pairing_polygon_area (int n, const double *q);
-
-/* The geometry of one facet, gathered once per test.  In 3D its chart is
- * the plane x = o + z_1 e_1 + z_2 e_2 on which overlaps are computed: the
- * affine map of the linearised triangle (chart = reference coordinates),
- * or the plane tangent to the bilinear map of a quadrangle at its centre
- * (chart = reference coordinates for a parallelogram). */
-typedef struct lac_pairing_facet
-{
-  const lac_refelem *re;    /* the facet element (seg3, tri6, quad9, ...)  */
-  const lac_refelem *lin;   /* its linear counterpart (seg2, tri3, quad4)  */
-  int sdim;                 /* space dimension, 2 or 3                     */
-  double xe[LAC_MAX_FACE_NODES * 3]; /* node coordinates in re's order;
-                               the first lin->nnodes are the vertices      */
-  double c[3];              /* centre (vertex average)                     */
-  double n[3];              /* unit normal of the linearised facet at its
-                               reference centre                            */
-  double h;                 /* diameter: largest distance between vertices */
-  double o[3], e[6];        /* 3D chart: origin, e_1 = e[0..2], e_2 = e[3..5] */
-  double g[3];              /* inverse Gram matrix of e_1, e_2 (g11 g12 g22) */
-  int nz;                   /* 3D: the vertices projected to the chart,    */
-  double z[8];              /*   counter-clockwise (the chart polygon)     */
-  int affine;               /* 1: chart coordinates = reference ones       */
-} lac_pairing_facet;
-
-/* Fill f from a facet type and its nodes (xe: nnodes*sdim).  Returns
- * LAC_EINVAL for a type that is not a facet of an sdim-D cell, LAC_ESING
- * for a degenerate facet or a non-convex quadrangle. */
-int lac_pairing_facet_set (lac_pairing_facet *f, lac_elem_type type,
-                           int sdim, const double *xe);
-
-/* Outcome of lac_pairing_overlap. */
-enum
-{
-  LAC_PAIRING_OVERLAP = 0,   /* a non-empty overlap, within reach          */
-  LAC_PAIRING_DISJOINT,      /* empty (or of measure ~1e-14 |T^s|)          */
-  LAC_PAIRING_NOT_FACING,    /* -n_s.n_m <= facing                          */
-  LAC_PAIRING_TOO_FAR        /* normal gap at the overlap centroid > dmax   */
-};
-
-/* The overlap of master facet m with slave facet s, computed on the
- * linearised facets: in 2D the interval poly[0] < poly[1] of the slave's
- * reference segment [-1,1] (*np = 2); in 3D a counter-clockwise polygon of
- * the slave's chart, inside its chart polygon (*np >= 3 points, at most
- * LAC_PAIRING_MAXPOLY).  Returns one of the LAC_PAIRING_* outcomes. */
-int lac_pairing_overlap (const lac_pairing_facet *s,
-                         const lac_pairing_facet *m, double dmax,
-                         double facing, double *poly, int *np);
-
-/* Integration points on an overlap (poly, np from lac_pairing_overlap):
- * `sub` is the rule put on each piece (line in 2D, triangle in 3D), `full`
- * the slave cell's own rule (reference coordinates), used when the
- * overlap is the whole facet.
- * Writes *npts = lac_pairing_npoints (...) points to xs, xm
- * (npts*(sdim-1)), w and gap (npts).  Returns LAC_SUCCESS, or the
- * status of a failed projection onto m / of a degenerate slave map. */
-int lac_pairing_npoints (const lac_pairing_facet *s, int np,
-                         const double *poly, const lac_quad *sub,
-                         const lac_quad *full);   /* how many it writes */
-int lac_pairing_points (const lac_pairing_facet *s,
-                        const lac_pairing_facet *m, int np,
-                        const double *poly, const lac_quad *sub,
-                        const lac_quad *full, double *xs, double *xm,
-                        double *w, double *gap, int *npts);
 
 #endif /* LAC_PAIRING_H */

@@ -16,36 +16,18 @@
  * References: I. E. Sutherland, G. W. Hodgman, "Reentrant polygon
  * clipping", CACM 17 (1974).
  */
-#include "contact/lac_pairing.h"
+#include "contact/lac_pairing_geom.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "contact/lac_pairing_internal.h"
+#include "contact/lac_pairing_project.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 #define EMPTY_TOL 1e-14      /* overlap measure / reference measure       */
 #define FULL_TOL 1e-13       /* 1 - overlap measure / reference measure    */
 #define SNAP_TOL 1e-12       /* snap to the reference cell's lines         */
-
-/* ---- small helpers ------------------------------------------------------ */
-
-static double
-dot (int n, const double *a, const double *b)
-{
-  double s = 0;
-  for (int i = 0; i < n; i++)
-    s += a[i] * b[i];
-  return s;
-}
-
-static void
-cross (const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* ---- polygons ----------------------------------------------------------- */
 
@@ -144,7 +126,7 @@ static void
 chart_coords (const lac_pairing_facet *f, const double *P, double *z)
 {
   double r[3] = { P[0] - f->o[0], P[1] - f->o[1], P[2] - f->o[2] };
-  double r1 = dot (3, r, f->e), r2 = dot (3, r, f->e + 3);
+  double r1 = lac_vec_dot (3, r, f->e), r2 = lac_vec_dot (3, r, f->e + 3);
   z[0] = f->g[0] * r1 + f->g[1] * r2;
   z[1] = f->g[1] * r1 + f->g[2] * r2;
 }
@@ -173,8 +155,10 @@ chart_set (lac_pairing_facet *f)
         f->e[i] = (v[3 + i] + v[6 + i] - v[i] - v[9 + i]) / 4;
         f->e[3 + i] = (v[6 + i] + v[9 + i] - v[i] - v[3 + i]) / 4;
       }
-  double g11 = dot (3, f->e, f->e), g12 = dot (3, f->e, f->e + 3);
-  double g22 = dot (3, f->e + 3, f->e + 3), det = g11 * g22 - g12 * g12;
+  double g11 = lac_vec_dot (3, f->e, f->e);
+  double g12 = lac_vec_dot (3, f->e, f->e + 3);
+  double g22 = lac_vec_dot (3, f->e + 3, f->e + 3);
+  double det = g11 * g22 - g12 * g12;
   if (!(det > 1e-24 * g11 * g22))
     return LAC_ESING;
   f->g[0] = g22 / det, f->g[1] = -g12 / det, f->g[2] = g11 / det;
@@ -245,9 +229,9 @@ lac_pairing_facet_set (lac_pairing_facet *f, lac_elem_type type, int sdim,
           e1[i] = v[i1 * 3 + i] - v[i];
           e2[i] = v[i2 * 3 + i] - v[j * 3 + i];
         }
-      cross (e1, e2, n);
+      lac_vec_cross (e1, e2, n);
     }
-  double nn = sqrt (dot (3, n, n));
+  double nn = lac_vec_norm (3, n);
   if (!(f->h > 0) || !(nn > 1e-12 * pow (f->h, sdim - 1)))
     LAC_ERROR (LAC_ESING, "degenerate %s facet (diameter %g, normal %g)",
                re->name, f->h, nn);
@@ -319,18 +303,19 @@ lac_pairing_overlap (const lac_pairing_facet *s, const lac_pairing_facet *m,
 {
   int sdim = s->sdim, nvm = m->lin->nnodes;
   double q[2 * 4], c[2] = { 0, 0 }, X[3];
-  double cosn = dot (sdim, s->n, m->n);
+  double cosn = lac_vec_dot (sdim, s->n, m->n);
   *np = 0;
   if (!(-cosn > facing))                                     /* step 1 */
     return LAC_PAIRING_NOT_FACING;
   if (sdim == 2)                                              /* step 2 */
     {
       const double *A = s->xe;
-      double e[2] = { s->xe[2] - A[0], s->xe[3] - A[1] }, ee = dot (2, e, e);
+      double e[2] = { s->xe[2] - A[0], s->xe[3] - A[1] };
+      double ee = lac_vec_dot (2, e, e);
       for (int a = 0; a < 2; a++)
         {
           double r[2] = { m->xe[2 * a] - A[0], m->xe[2 * a + 1] - A[1] };
-          q[a] = -1 + 2 * dot (2, r, e) / ee;
+          q[a] = -1 + 2 * lac_vec_dot (2, r, e) / ee;
           for (int v = -1; v <= 1; v += 2)
             if (fabs (q[a] - v) <= SNAP_TOL)
               q[a] = v;

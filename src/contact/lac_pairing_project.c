@@ -14,37 +14,18 @@
  * References: J. Nocedal, S. J. Wright, Numerical Optimization, 2nd ed.,
  * §3.1 (backtracking line search), §10.3 (Gauss-Newton).
  */
-#include "contact/lac_pairing.h"
+#include "contact/lac_pairing_project.h"
 
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
-#include "contact/lac_pairing_internal.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 #define PROJ_MAXITER 50      /* Newton iterations, then LAC_EMAXITER      */
 #define PROJ_MAXHALF 30      /* step halvings of the line search          */
 #define PROJ_XIMAX 100.0     /* |xi| beyond this: the iteration diverged   */
-
-/* ---- small helpers ------------------------------------------------------ */
-
-static double
-dot (int n, const double *a, const double *b)
-{
-  double s = 0;
-  for (int i = 0; i < n; i++)
-    s += a[i] * b[i];
-  return s;
-}
-
-static void
-cross (const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* X(xi) and J[i*d + k] = dX_i/dxi_k of the face map with nodes xe. */
 static void
@@ -94,32 +75,26 @@ solve_small (int n, const double *A, const double *b, double *y)
     }
   double c0[3] = { A[0], A[3], A[6] }, c1[3] = { A[1], A[4], A[7] };
   double c2[3] = { A[2], A[5], A[8] }, t[3];
-  cross (c1, c2, t);
-  double det = dot (3, c0, t);
+  lac_vec_cross (c1, c2, t);
+  double det = lac_vec_dot (3, c0, t);
   if (!(fabs (det) > 1e-12 * cn))
     return 0;
-  y[0] = dot (3, b, t) / det;                   /* Cramer: det[b c1 c2] */
-  cross (b, c2, t);
-  y[1] = dot (3, c0, t) / det;                  /* det[c0 b c2]         */
-  cross (c1, b, t);
-  y[2] = dot (3, c0, t) / det;                  /* det[c0 c1 b]         */
+  y[0] = lac_vec_dot (3, b, t) / det;           /* Cramer: det[b c1 c2] */
+  lac_vec_cross (b, c2, t);
+  y[1] = lac_vec_dot (3, c0, t) / det;          /* det[c0 b c2]         */
+  lac_vec_cross (c1, b, t);
+  y[2] = lac_vec_dot (3, c0, t) / det;          /* det[c0 c1 b]         */
   return 1;
 }
 
-/* lac_pairing_face_diameter: the length scale of residuals (internal). */
+/* lac_pairing_face_diameter: the length scale of residuals. */
 double
 lac_pairing_face_diameter (const lac_refelem *re, int sdim, const double *xe)
 {
   double h = 0;
   for (int a = 0; a < re->nvertices; a++)
     for (int b = a + 1; b < re->nvertices; b++)
-      {
-        double s = 0;
-        for (int i = 0; i < sdim; i++)
-          s += (xe[a * sdim + i] - xe[b * sdim + i])
-            * (xe[a * sdim + i] - xe[b * sdim + i]);
-        h = fmax (h, sqrt (s));
-      }
+      h = fmax (h, lac_vec_dist (sdim, xe + a * sdim, xe + b * sdim));
   return h;
 }
 
@@ -141,7 +116,7 @@ proj_residual (const lac_refelem *re, int sdim, const double *xe,
     {
       for (int i = 0; i < sdim; i++)
         F[i] = X[i] - x[i] - t * dir[i];
-      *merit = 0.5 * dot (sdim, F, F);
+      *merit = 0.5 * lac_vec_dot (sdim, F, F);
       return sqrt (2 * *merit);
     }
   double s = 0, r2 = 0;
@@ -171,7 +146,7 @@ proj_slope (int sdim, int d, const double *x, const double *dir,
 {
   double sl = 0;
   if (dir)
-    return -dot (sdim, F, F);
+    return -lac_vec_dot (sdim, F, F);
   for (int k = 0; k < d; k++)
     for (int i = 0; i < sdim; i++)
       sl += (X[i] - x[i]) * J[i * d + k] * dy[k];
@@ -267,9 +242,9 @@ proj_distance (int sdim, const double *x, const double *X, const double *J)
   else
     {
       double t1[3] = { J[0], J[2], J[4] }, t2[3] = { J[1], J[3], J[5] };
-      cross (t1, t2, n);
+      lac_vec_cross (t1, t2, n);
     }
-  double nn = sqrt (dot (sdim, n, n)), s = 0;
+  double nn = lac_vec_norm (sdim, n), s = 0;
   for (int i = 0; i < sdim; i++)
     s += (x[i] - X[i]) * n[i];
   return nn > 0 ? s / nn : 0;
@@ -321,7 +296,7 @@ lac_pairing_project (const lac_refelem *re, int sdim, const double *xe,
   if (dir)
     {
       face_eval (re, sdim, xe, xi, X, J);
-      double dd = dot (sdim, dir, dir);
+      double dd = lac_vec_dot (sdim, dir, dir);
       if (!(dd > 0))
         LAC_ERROR (LAC_EINVAL, "projection direction is zero");
       for (int i = 0; i < sdim; i++)

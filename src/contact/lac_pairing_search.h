@@ -1,9 +1,10 @@
-/* lac_pairing_search.h -- internal: the search of the pairing  [LAC §4.6]
+/* lac_pairing_search.h -- the search of the pairing: pass 1    [LAC §4.6]
  *
- * Shared by lac_pairing.c (the driver and the result) and
- * lac_pairing_search.c (the facet lists, their adjacency, the bucket grid
- * and the advancing front).  Not part of the public interface: only
- * lac_pairing*.c include it.
+ * Which (slave, master) pairs overlap (lac_pairing_search.c: the facet
+ * lists, their adjacency, the bucket grid and the advancing front).  The
+ * driver lac_pairing_build (lac_pairing.c) runs it, then computes the
+ * points of the pairs it found, reading the two sides and the facets in
+ * work of a lac_pairing_search.
  *
  * Ownership: a lac_pairing_search owns every array it points to
  * (lac_pairing_search_free), and borrows the facet lists, their meshes and
@@ -15,7 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "contact/lac_pairing.h"
+#include "contact/lac_pairing_geom.h"
+#include "contact/lac_pairing_types.h"
 
 #define LAC_PAIRING_NONE SIZE_MAX
 

@@ -88,13 +88,14 @@
  * References: code_aster, CREA_MAILLAGE / DECOUPE_LAC (as summarized in
  * the project's paper notes, NOTES.md).
  */
-#include "contact/lac_macromesh.h"
+#include "contact/lac_refine.h"
 
 #include <math.h>
 #include <string.h>
 
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 /* Messages from the static helpers carry the public function's name. */
 #define RF_ERRMSG(status, ...) \
@@ -226,12 +227,8 @@ on_face (const lac_refelem *rp, int g, const double *q)
   if (rp->dim == 2)
     n[0] = -a[1], n[1] = a[0];
   else
-    {
-      n[0] = a[1] * b[2] - a[2] * b[1];
-      n[1] = a[2] * b[0] - a[0] * b[2];
-      n[2] = a[0] * b[1] - a[1] * b[0];
-    }
-  len = sqrt (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    lac_vec_cross (a, b, n);
+  len = lac_vec_norm (3, n);
   for (int k = 0; k < 3; k++)
     dist += n[k] * (q[k] - p[0][k]);
   return fabs (dist) <= TOL * len;

@@ -19,6 +19,7 @@
 
 #include "check.h"
 #include "contact/lac_macromesh.h"
+#include "contact/lac_refine.h"
 #include "fem/lac_quadrature.h"
 #include "base/lac_status.h"
 

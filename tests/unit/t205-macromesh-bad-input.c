@@ -14,6 +14,7 @@
 
 #include "check.h"
 #include "contact/lac_macromesh.h"
+#include "contact/lac_refine.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 

@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "contact/lac_pairing.h"
+#include "contact/lac_pairing_geom.h"
 #include "base/lac_status.h"
 #include "unit/t6-pairing-mesh.h"
 

@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "contact/lac_pairing.h"
+#include "contact/lac_pairing_project.h"
 #include "base/lac_status.h"
 
 /* x(xi), the unit normal and J of a face. */

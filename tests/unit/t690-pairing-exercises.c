@@ -41,6 +41,7 @@
 #include "check.h"
 #include "fem/lac_mesh.h"
 #include "contact/lac_pairing.h"
+#include "contact/lac_pairing_project.h"
 #include "base/lac_status.h"
 
 #define TOL 1e-12

@@ -29,6 +29,7 @@
 
 #include "check.h"
 #include "t85-infsup-blocks.h"
+#include "contact/lac_assembly_lac.h"
 
 /* ---- exercise 1 ------------------------------------------------------ */
 

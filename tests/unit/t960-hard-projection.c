@@ -25,6 +25,7 @@
  *    fraction silently.)
  */
 #include "t95-hard.h"
+#include "contact/lac_pairing_project.h"
 
 /* the largest integer n in "N iteration(s)" or "iteration N" (-1: none) */
 static int
