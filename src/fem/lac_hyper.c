@@ -376,18 +376,6 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
   return status;
 }
 
-/* Global dofs of cell c. */
-static int
-cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
-{
-  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
-  for (int a = 0; a < nen; a++)
-    for (int i = 0; i < m->dim; i++)
-      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
-                             + (size_t) i;
-  return nen * m->dim;
-}
-
 /* Position of entry (row, col) in the pattern of K; -1 if absent. */
 static long
 csc_find (const lac_csc *K, size_t row, size_t col)
@@ -434,7 +422,7 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
     {
       if (!(h->E[c] > 0.0))
         continue;
-      int nc = cell_dofs (m, c, dofs);
+      int nc = lac_mesh_cell_dofs (m, c, dofs);
       memset (fe, 0, (size_t) nc * sizeof *fe);
       if (wantK)
         memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);

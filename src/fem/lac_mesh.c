@@ -174,6 +174,19 @@ lac_mesh_cell_coords (const lac_mesh *m, size_t c, double *xe)
       *xe++ = m->x[(size_t) m->conn[k] * d + i];
 }
 
+/* dofs[a*dim + i] = dim*conn[a] + i: the global dofs of cell c, node by
+ * node; returns their number. */
+int
+lac_mesh_cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
+{
+  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < m->dim; i++)
+      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
+                             + (size_t) i;
+  return nen * m->dim;
+}
+
 /* The largest number of nodes of one cell. */
 size_t
 lac_mesh_nconn_max (const lac_mesh *m)
