@@ -350,14 +350,17 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
   return status;
 }
 
-/* Surface loads: F += int_{facets of g} t(x) . v w ds, where t is either a
- * field (pressure == 0 flag) or -p n.  Shared by traction and pressure. */
+/* Surface loads: F += int_{facets of g} t(x) . v w ds, where t is a field
+ * t(x) or t(x, n) (tn), or -p n (is_pressure).  Shared by the tractions
+ * and the pressure. */
 static int
 surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
               lac_field *t, lac_field_n *tn, void *ctx, int is_pressure,
               double p, double *F)
 {
   lac_quad_cache qc;
+  if (!is_pressure && !t && !tn)
+    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   int status = check_model (m, model);
   if (status)
     return status;
@@ -430,8 +433,6 @@ lac_assembly_traction (const lac_mesh *m, lac_model model,
                        const lac_group *g, lac_field *t, void *ctx,
                        double *F)
 {
-  if (!t)
-    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   return surface_load (m, model, g, t, NULL, ctx, 0, 0.0, F);
 }
 
@@ -443,8 +444,6 @@ lac_assembly_traction_n (const lac_mesh *m, lac_model model,
                          const lac_group *g, lac_field_n *t, void *ctx,
                          double *F)
 {
-  if (!t)
-    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   return surface_load (m, model, g, NULL, t, ctx, 0, 0.0, F);
 }
 
