@@ -13,6 +13,18 @@ lac_cli_print_error (const char *msg)
   fputc ('\n', stderr);
 }
 
+int
+lac_cli_usage_error (const char *cmd, const char *what, const char *arg)
+{
+  if (cmd)
+    fprintf (stderr, "lac: %s: %s%s%s (try lac %s --help)\n", cmd, what,
+             arg ? " " : "", arg ? arg : "", cmd);
+  else
+    fprintf (stderr, "lac: %s%s%s (try lac --help)\n", what, arg ? " " : "",
+             arg ? arg : "");
+  return LAC_CLI_USAGE;
+}
+
 const char *
 lac_cli_option_value (int argc, char **argv, int *k, const char *name,
                       int *missing)

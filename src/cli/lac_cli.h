@@ -5,8 +5,15 @@
 #ifndef LAC_CLI_H
 #define LAC_CLI_H
 
+/* Exit statuses of lac and its subcommands besides 0, success. */
+enum { LAC_CLI_FAILURE = 1, LAC_CLI_USAGE = 2 };
+
 /* "lac: MESSAGE" on stderr, as one line (newlines become blanks). */
 void lac_cli_print_error (const char *msg);
+
+/* A bad command line: "lac: CMD: WHAT ARG (try lac CMD --help)" on
+ * stderr (cmd NULL: lac itself; arg may be NULL); returns LAC_CLI_USAGE. */
+int lac_cli_usage_error (const char *cmd, const char *what, const char *arg);
 
 /* The value of option `name` at argv[*k]: "--name VALUE" (then *k moves to
  * VALUE) or "--name=VALUE"; NULL if argv[*k] is not that option, or if

@@ -24,8 +24,6 @@
 #include "io/lac_scene.h"
 #include "base/lac_status.h"
 
-enum { EXIT_FAIL = 1, EXIT_USAGE = 2 };
-
 const char lac_cli_infsup_help[] =
   "usage: lac infsup SCENE [options]   estimate the inf-sup constant beta_h\n"
   "\n"
@@ -78,15 +76,6 @@ typedef struct args
 
 
 static int
-usage (const char *what, const char *arg)
-{
-  fprintf (stderr, "lac: infsup: %s%s%s (try lac infsup --help)\n", what,
-           arg ? " " : "", arg ? arg : "");
-  return EXIT_USAGE;
-}
-
-
-static int
 parse (int argc, char **argv, args *a)
 {
   for (int k = 1; k < argc; k++)
@@ -98,12 +87,14 @@ parse (int argc, char **argv, args *a)
       else if ((v = lac_cli_option_value (argc, argv, &k, "--norm", &missing)))
         {
           if (strcmp (v, "h1") && strcmp (v, "energy"))
-            return usage ("--norm: expected h1 or energy, got", v);
+            return lac_cli_usage_error ("infsup", "--norm: expected h1 or "
+                                        "energy, got", v);
           a->norm = strcmp (v, "energy") ? LAC_INFSUP_NORM_H1
                     : LAC_INFSUP_NORM_ENERGY;
         }
       else if (missing)
-        return usage ("missing value after", argv[k]);
+        return lac_cli_usage_error ("infsup", "missing value after",
+                                    argv[k]);
       else if (!strcmp (argv[k], "--dense"))
         a->path = LAC_INFSUP_DENSE;
       else if (!strcmp (argv[k], "--sparse"))
@@ -115,14 +106,15 @@ parse (int argc, char **argv, args *a)
       else if (!strcmp (argv[k], "--help") || !strcmp (argv[k], "-h"))
         a->help = 1;
       else if (argv[k][0] == '-' && argv[k][1] != '\0')
-        return usage ("unknown option", argv[k]);
+        return lac_cli_usage_error ("infsup", "unknown option", argv[k]);
       else if (a->scene)
-        return usage ("more than one scene:", argv[k]);
+        return lac_cli_usage_error ("infsup", "more than one scene:",
+                                    argv[k]);
       else
         a->scene = argv[k];
     }
   if (!a->scene && !a->help)
-    return usage ("no scene file given", NULL);
+    return lac_cli_usage_error ("infsup", "no scene file given", NULL);
   return 0;
 }
 
@@ -216,7 +208,7 @@ lac_cli_infsup (int argc, char **argv)
   int ret;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
-    return usage ("out of memory", NULL);
+    return lac_cli_usage_error ("infsup", "out of memory", NULL);
   if ((ret = parse (argc, argv, &a)) || a.help)
     {
       if (!ret)
@@ -225,7 +217,7 @@ lac_cli_infsup (int argc, char **argv)
       return ret;
     }
   /* 1. The scene: it must have multipliers. */
-  ret = EXIT_FAIL;
+  ret = LAC_CLI_FAILURE;
   if (lac_scene_read (a.scene, a.nset, a.set, &sc))
     lac_cli_print_error (lac_error_message ());
   else if (sc->ncontact == 0)
@@ -239,7 +231,7 @@ lac_cli_infsup (int argc, char **argv)
   else if (run_to_assemble (r, a.quiet) || estimate (r, &a))
     lac_cli_print_error (lac_error_message ());
   else
-    ret = fflush (stdout) == 0 ? 0 : EXIT_FAIL;
+    ret = fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
   lac_run_free (r);
   lac_scene_free (sc);
   lac_free (a.set);

@@ -27,9 +27,7 @@
  * This is command-line glue: it prints and runs gnuplot (fork, execvp);
  * the library files do not.
  */
-#include "cli/lac_cli.h"
 #include "cli/lac_cli_render.h"
-#include "cli/lac_cli_render_internal.h"
 
 #include <errno.h>
 #include <math.h>
@@ -39,10 +37,21 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "base/lac_mem.h"
+#include "cli/lac_cli.h"
+#include "cli/lac_cli_render_curves.h"
+#include "cli/lac_cli_result.h"
 #include "render/lac_render.h"
 #include "base/lac_status.h"
 
-enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
+typedef struct render_args
+{
+  const char *dir, *field, *out, *title, *units;
+  const char *vtu;          /* --vtu FILE, NULL: solution.vtu               */
+  int fixed_box;            /* --box given                                  */
+  double box[6];            /* --box: x0 x1 y0 y1 z0 z1                      */
+  double scale, az, el, vmin, vmax;
+  int auto_scale, edges, contact, list, width, height, fixed_range;
+} render_args;
 
 const char lac_cli_render_help[] =
   "usage: lac render RESULT_DIR [options]   draw a result of lac run as PNG\n"
@@ -95,15 +104,6 @@ const char lac_cli_render_help[] =
   "example: lac run chapters/01-problem/sphere-axi.scene --out out/sph\n"
   "         lac render out/sph --field radial_stress --edges --units MPa\n";
 
-
-
-static int
-usage_error (const char *what, const char *arg)
-{
-  fprintf (stderr, "lac: render: %s%s%s (try lac render --help)\n", what,
-           arg ? " " : "", arg ? arg : "");
-  return EXIT_USAGE;
-}
 
 
 static int
@@ -208,12 +208,12 @@ parse_args (int argc, char **argv, render_args *a)
           || (r = numeric_option (argc, argv, &k, a, &missing)) > 0)
         {
           if (bad)
-            return usage_error ("bad value for", opt);
+            return lac_cli_usage_error ("render", "bad value for", opt);
         }
       else if (r < 0)
-        return usage_error ("bad value for", opt);
+        return lac_cli_usage_error ("render", "bad value for", opt);
       else if (missing)
-        return usage_error ("missing value after", opt);
+        return lac_cli_usage_error ("render", "missing value after", opt);
       else if (!strcmp (opt, "--edges"))
         a->edges = 1;
       else if (!strcmp (opt, "--contact"))
@@ -221,158 +221,19 @@ parse_args (int argc, char **argv, render_args *a)
       else if (!strcmp (opt, "--list"))
         a->list = 1;
       else if (opt[0] == '-' && opt[1] != '\0')
-        return usage_error ("unknown option", opt);
+        return lac_cli_usage_error ("render", "unknown option", opt);
       else if (a->dir)
-        return usage_error ("more than one result directory:", opt);
+        return lac_cli_usage_error ("render", "more than one result "
+                                    "directory:", opt);
       else
         a->dir = opt;
     }
   if (!a->dir)
-    return usage_error ("no result directory given", NULL);
+    return lac_cli_usage_error ("render", "no result directory given", NULL);
   if (a->vtu && a->contact)
-    return usage_error ("--contact draws contact.csv, the last step: not "
-                        "with", "--vtu");
+    return lac_cli_usage_error ("render", "--contact draws contact.csv, "
+                                "the last step: not with", "--vtu");
   return 0;
-}
-
-/* ---- files of the result directory --------------------------------------- */
-
-/* The value of `key` in DIR/summary.txt ("key = value"); 0 if absent. */
-static int
-summary_value (const char *dir, const char *key, char *buf, size_t len)
-{
-  char path[4096], line[1024];
-  size_t n = strlen (key);
-  FILE *fp;
-  int found = 0;
-  snprintf (path, sizeof path, "%s/summary.txt", dir);
-  if (!(fp = fopen (path, "r")))
-    return 0;
-  while (!found && fgets (line, sizeof line, fp))
-    if (!strncmp (line, key, n) && !strncmp (line + n, " = ", 3))
-      {
-        size_t l = strcspn (line + n + 3, "\r\n");
-        l = l < len ? l : len - 1;
-        memcpy (buf, line + n + 3, l);
-        buf[l] = '\0';
-        found = 1;
-      }
-  fclose (fp);
-  return found;
-}
-
-/* The title of the run (summary.txt), or the directory's last name. */
-void
-lac_cli_render_scene_title (const char *dir, char *buf, size_t len)
-{
-  size_t n = strlen (dir);
-  const char *p;
-  if (summary_value (dir, "title", buf, len))
-    return;
-  while (n > 1 && dir[n - 1] == '/')
-    n--;
-  for (p = dir + n; p > dir && p[-1] != '/'; p--)
-    ;
-  snprintf (buf, len, "%.*s", (int) (dir + n - p), p);
-}
-
-
-static void
-rows_free (macro_rows *r)
-{
-  lac_free (r->x);
-  lac_free (r->meas);
-  lac_free (r->lam);
-  lac_free (r->lex);
-  lac_free (r->gap);
-}
-
-/* Column index of each wanted name in the CSV header line. */
-static int
-csv_columns (char *head, const char *const *want, int nwant, int *col)
-{
-  int k = 0;
-  for (int i = 0; i < nwant; i++)
-    col[i] = -1;
-  for (char *t = strtok (head, ",\r\n"); t; t = strtok (NULL, ",\r\n"), k++)
-    for (int i = 0; i < nwant; i++)
-      if (!strcmp (t, want[i]))
-        col[i] = k;
-  for (int i = 0; i < nwant; i++)
-    if (col[i] < 0 && i != 6)                /* lambda_exact: optional */
-      return i;
-  return -1;
-}
-
-static int
-rows_add (macro_rows *r, size_t *cap, const double *v)
-{
-  if (r->n == *cap)
-    {
-      size_t c = *cap ? 2 * *cap : 64;
-      double **dst[5] = { &r->x, &r->meas, &r->lam, &r->lex, &r->gap };
-      for (int i = 0; i < 5; i++)
-        {
-          double *p = lac_realloc (*dst[i], (i ? 1 : 3) * c * sizeof *p);
-          if (!p)
-            return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
-          *dst[i] = p;
-        }
-      *cap = c;
-    }
-  memcpy (r->x + 3 * r->n, v, 3 * sizeof *v);
-  r->meas[r->n] = v[3];
-  r->lam[r->n] = v[5];
-  r->lex[r->n] = v[6];
-  r->gap[r->n++] = v[7];
-  return LAC_SUCCESS;
-}
-
-/* The admissible rows of DIR/contact.csv. */
-static int
-read_contact (const char *dir, macro_rows *r)
-{
-  static const char *const want[8] = { "x", "y", "z", "measure",
-                                       "admissible", "lambda",
-                                       "lambda_exact", "mean_gap" };
-  char path[4096], line[4096];
-  int col[8], miss, status = LAC_SUCCESS;
-  size_t cap = 0;
-  FILE *fp;
-  memset (r, 0, sizeof *r);
-  snprintf (path, sizeof path, "%s/contact.csv", dir);
-  if (!(fp = fopen (path, "r")))
-    LAC_ERROR (LAC_EIO, "cannot open '%s' (%s): --contact needs the "
-               "contact.csv of a run with a [contact] section", path,
-               strerror (errno));
-  if (!fgets (line, sizeof line, fp))
-    {
-      fclose (fp);
-      LAC_ERROR (LAC_EIO, "'%s' is empty", path);
-    }
-  if ((miss = csv_columns (line, want, 8, col)) >= 0)
-    {
-      fclose (fp);
-      LAC_ERROR (LAC_EIO, "'%s': no column '%s' in the header", path,
-                 want[miss]);
-    }
-  while (!status && fgets (line, sizeof line, fp))
-    {
-      double v[8] = { 0, 0, 0, 0, 0, 0, NAN, 0 };
-      int k = 0;
-      for (char *t = strtok (line, ",\r\n"); t; t = strtok (NULL, ",\r\n"),
-           k++)
-        for (int i = 0; i < 8; i++)
-          if (col[i] == k)
-            v[i] = strtod (t, NULL);
-      if (v[4] != 0)
-        status = rows_add (r, &cap, v);
-    }
-  fclose (fp);
-  if (!status && r->n == 0)
-    status = LAC_ERRMSG (LAC_EINVAL, "'%s' has no admissible "
-                         "macro-element", path);
-  return status;
 }
 
 /* ---- pictures ------------------------------------------------------------ */
@@ -459,7 +320,7 @@ fill_opts (const render_args *a, double scale, const char *what,
       o->box_lo[d] = a->box[2 * d];
       o->box_hi[d] = a->box[2 * d + 1];
     }
-  lac_cli_render_scene_title (a->dir, scene, sizeof scene);
+  lac_cli_result_title (a->dir, scene, sizeof scene);
   if (a->vtu)                                    /* name the step file */
     snprintf (scene + strlen (scene), sizeof scene - strlen (scene),
               ", %s", base_name (a->vtu));
@@ -540,6 +401,22 @@ draw_contact_3d (const render_args *a, const lac_render_result *res,
   return status;
 }
 
+/* 2D: lambda and the mean gap along Gamma_C, drawn by gnuplot. */
+static int
+draw_curves (const render_args *a, const lac_render_result *res,
+             const macro_rows *rows, const char *out)
+{
+  char scene[512];
+  lac_render_opts o;
+  lac_cli_result_title (a->dir, scene, sizeof scene);
+  lac_render_opts_init (&o);
+  o.width = a->width;
+  o.height = a->height;
+  o.units = a->units;
+  o.title = a->title ? a->title : scene;
+  return lac_cli_render_curves (rows, res, &o, out);
+}
+
 /* ---- the command ---------------------------------------------------------- */
 
 static int
@@ -563,10 +440,10 @@ render_result (const render_args *a, const lac_render_result *res,
     scale = auto_scale (m, u);
   if (!a->contact)
     status = draw_field (a, res, u, scale, out);
-  else if (!(status = read_contact (a->dir, &rows)))
-    status = m->dim == 2 ? lac_cli_render_curves (a, res, &rows, out)
+  else if (!(status = lac_cli_result_contact (a->dir, &rows)))
+    status = m->dim == 2 ? draw_curves (a, res, &rows, out)
              : draw_contact_3d (a, res, u, scale, &rows, out);
-  rows_free (&rows);
+  lac_cli_result_contact_free (&rows);
   lac_free (u);
   return status;
 }
@@ -590,7 +467,7 @@ lac_cli_render (int argc, char **argv)
   if (lac_render_result_read (path, &res))
     {
       lac_cli_print_error (lac_error_message ());
-      return EXIT_RUN;
+      return LAC_CLI_FAILURE;
     }
   if (a.list)
     {
@@ -605,8 +482,8 @@ lac_cli_render (int argc, char **argv)
   if (ret)
     {
       lac_cli_print_error (lac_error_message ());
-      return EXIT_RUN;
+      return LAC_CLI_FAILURE;
     }
   printf ("%s\n", out);
-  return fflush (stdout) == 0 ? 0 : EXIT_RUN;
+  return fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
 }

@@ -3,7 +3,7 @@
  * constant per macro-element, drawn by gnuplot (pngcairo).  Command-line
  * glue like lac_cli_render.c: it writes files and runs gnuplot.
  */
-#include "cli/lac_cli_render_internal.h"
+#include "cli/lac_cli_render_curves.h"
 
 #include <errno.h>
 #include <math.h>
@@ -151,7 +151,7 @@ gp_yrange (FILE *fp, const double *v1, const double *v2, size_t n,
 /* The script: dat and png are names relative to the script's directory. */
 static int
 write_curves_gp (const char *gp, const char *name, const char *png,
-                 const char *title, const render_args *a,
+                 const char *title, const lac_render_opts *o,
                  const macro_rows *r, int exact, double gap_floor)
 {
   char dat[1100];
@@ -162,7 +162,7 @@ write_curves_gp (const char *gp, const char *name, const char *png,
   fprintf (fp, "# lac render --contact: lambda and mean gap along Gamma_C\n"
            "# (run in this directory: gnuplot %s.gp)\n"
            "set terminal pngcairo size %d,%d font 'DejaVu Sans,10'\n"
-           "set output ", name, a->width, a->height);
+           "set output ", name, o->width, o->height);
   gp_quote (fp, png);
   fprintf (fp, "\nset datafile missing 'NaN'\nset grid\n"
            "set key below\nset autoscale xfix\n"
@@ -171,7 +171,7 @@ write_curves_gp (const char *gp, const char *name, const char *png,
   gp_quote (fp, title);
   fprintf (fp, " noenhanced\nset xlabel 's, curvilinear abscissa along "
            "{/Symbol G}_C'\nset ylabel '{/Symbol l}%s%s%s'\n",
-           a->units ? " (" : "", a->units ? a->units : "", a->units ? ")" : "");
+           o->units ? " (" : "", o->units ? o->units : "", o->units ? ")" : "");
   gp_yrange (fp, r->lam, exact ? r->lex : NULL, r->n, 0);
   fprintf (fp, "plot ");
   gp_quote (fp, dat);
@@ -236,10 +236,10 @@ mesh_diameter (const lac_mesh *m)
 /* out = DIR/NAME.png: DIR/NAME.dat and DIR/NAME.gp, which refers to the
  * data and the picture by their names (run it in DIR). */
 int
-lac_cli_render_curves (const render_args *a, const lac_render_result *res,
-                 const macro_rows *rows, const char *out)
+lac_cli_render_curves (const macro_rows *rows, const lac_render_result *res,
+                       const lac_render_opts *o, const char *out)
 {
-  char dir[4096], name[1024], dat[5200], gp[5200], title[1024], scene[512];
+  char dir[4096], name[1024], dat[5200], gp[5200], title[1024];
   const char *slash = strrchr (out, '/'), *file = slash ? slash + 1 : out;
   size_t n = strlen (file);
   int exact = 0, status;
@@ -252,10 +252,9 @@ lac_cli_render_curves (const render_args *a, const lac_render_result *res,
                                               ".png") ? n - 4 : n), file);
   snprintf (dat, sizeof dat, "%s/%s.dat", dir, name);
   snprintf (gp, sizeof gp, "%s/%s.gp", dir, name);
-  lac_cli_render_scene_title (a->dir, scene, sizeof scene);
-  snprintf (title, sizeof title, "%s", a->title ? a->title : scene);
+  snprintf (title, sizeof title, "%s", o->title ? o->title : "");
   if ((status = write_curves_dat (dat, rows, res->axisymmetric, &exact))
-      || (status = write_curves_gp (gp, name, file, title, a, rows, exact,
+      || (status = write_curves_gp (gp, name, file, title, o, rows, exact,
                                     1e-9 * mesh_diameter (res->mesh))))
     return status;
   snprintf (gp, sizeof gp, "%s.gp", name);

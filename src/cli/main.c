@@ -26,7 +26,6 @@
 #define LAC_VERSION "0.1.0"
 #endif
 
-enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
 
 static const char *help_text =
   "usage: lac run SCENE [options]      solve the scene, write the results\n"
@@ -116,14 +115,6 @@ static const char *help_text =
 /* Print "lac: message" on one line (newlines in the message become
  * blanks). */
 
-static int
-usage_error (const char *what, const char *arg)
-{
-  fprintf (stderr, "lac: %s%s%s (try lac --help)\n", what, arg ? " " : "",
-           arg ? arg : "");
-  return EXIT_USAGE;
-}
-
 typedef struct cmdline
 {
   const char *scene;
@@ -147,15 +138,15 @@ parse_run_args (int argc, char **argv, cmdline *c)
       else if ((v = lac_cli_option_value (argc, argv, &k, "--solver", &missing)))
         {
           if (lac_solver_kind_from_name (v) < 0)
-            return usage_error ("--solver: expected dense, umfpack or "
-                                "cholmod, got", v);
+            return lac_cli_usage_error (NULL, "--solver: expected dense, "
+                                        "umfpack or cholmod, got", v);
           snprintf (c->solver_set, sizeof c->solver_set, "scene.solver=%s", v);
           c->set[c->nset++] = c->solver_set;
         }
       else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
       else if (missing)
-        return usage_error ("missing value after", argv[k]);
+        return lac_cli_usage_error (NULL, "missing value after", argv[k]);
       else if (strcmp (argv[k], "--quiet") == 0)
         c->quiet = 1;
       else if (strcmp (argv[k], "--timings") == 0)
@@ -163,14 +154,15 @@ parse_run_args (int argc, char **argv, cmdline *c)
       else if (strcmp (argv[k], "--no-output") == 0)
         c->no_output = 1;
       else if (argv[k][0] == '-' && argv[k][1] != '\0')
-        return usage_error ("unknown option", argv[k]);
+        return lac_cli_usage_error (NULL, "unknown option", argv[k]);
       else if (c->scene)
-        return usage_error ("more than one scene:", argv[k]);
+        return lac_cli_usage_error (NULL, "more than one scene:",
+                                    argv[k]);
       else
         c->scene = argv[k];
     }
   if (!c->scene)
-    return usage_error ("run: no scene file given", NULL);
+    return lac_cli_usage_error (NULL, "run: no scene file given", NULL);
   return 0;
 }
 
@@ -205,13 +197,13 @@ cmd_run (const cmdline *c)
   if (status)
     {
       lac_cli_print_error (lac_error_message ());
-      return EXIT_RUN;
+      return LAC_CLI_FAILURE;
     }
   if (!(r = lac_run_alloc (sc, &opts)))
     {
       lac_cli_print_error (lac_error_message ());
       lac_scene_free (sc);
-      return EXIT_RUN;
+      return LAC_CLI_FAILURE;
     }
   if (!c->quiet)
     {
@@ -249,9 +241,9 @@ cmd_run (const cmdline *c)
   if (fflush (stdout) != 0)
     {
       lac_cli_print_error ("cannot write the summary to stdout");
-      return EXIT_RUN;
+      return LAC_CLI_FAILURE;
     }
-  return status == LAC_SUCCESS ? EXIT_SUCCESS : EXIT_RUN;
+  return status == LAC_SUCCESS ? EXIT_SUCCESS : LAC_CLI_FAILURE;
 }
 
 int
@@ -260,7 +252,7 @@ main (int argc, char **argv)
   cmdline c;
   int ret;
   if (argc < 2)
-    return usage_error ("no command", NULL);
+    return lac_cli_usage_error (NULL, "no command", NULL);
   /* The other subcommands parse their own arguments (and --help). */
   if (strcmp (argv[1], "infsup") == 0 || strcmp (argv[1], "render") == 0)
     {
@@ -283,10 +275,10 @@ main (int argc, char **argv)
       return EXIT_SUCCESS;
     }
   if (strcmp (argv[1], "run") != 0)
-    return usage_error ("unknown command", argv[1]);
+    return lac_cli_usage_error (NULL, "unknown command", argv[1]);
   memset (&c, 0, sizeof c);
   if (!(c.set = malloc ((size_t) argc * sizeof *c.set)))
-    return usage_error ("out of memory", NULL);
+    return lac_cli_usage_error (NULL, "out of memory", NULL);
   if ((ret = parse_run_args (argc, argv, &c)) == 0)
     {
       lac_init ();

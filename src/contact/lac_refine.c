@@ -122,20 +122,6 @@ typedef struct tmpl
   int pface[LAC_MAX_FACES][MAXPIECE];   /*   and its local face           */
 } tmpl;
 
-static lac_elem_type
-linear_of (lac_elem_type t)
-{
-  switch (t)
-    {
-    case LAC_SEG3: return LAC_SEG2;
-    case LAC_TRI6: return LAC_TRI3;
-    case LAC_QUAD8: case LAC_QUAD9: return LAC_QUAD4;
-    case LAC_TET10: return LAC_TET4;
-    case LAC_HEX20: case LAC_HEX27: return LAC_HEX8;
-    default: return t;
-    }
-}
-
 /* xi of local node a of re, padded to 3 coordinates. */
 static void
 ref_node (const lac_refelem *re, int a, double *p)
@@ -179,7 +165,7 @@ tmpl_add_sub (tmpl *T, const lac_refelem *rp, lac_elem_type st,
               const double v[][3])
 {
   const lac_refelem *rs = lac_refelem_get (st);
-  const lac_refelem *rl = lac_refelem_get (linear_of (st));
+  const lac_refelem *rl = lac_refelem_get (lac_refelem_linear_type (st));
   int s = T->nsub;
 
   if (s == MAXSUB)

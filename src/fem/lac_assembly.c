@@ -43,21 +43,6 @@
 
 
 
-/* The linear element with the same vertices as a quadratic one. */
-static lac_elem_type
-linear_type (lac_elem_type t)
-{
-  switch (t)
-    {
-    case LAC_SEG3: return LAC_SEG2;
-    case LAC_TRI6: return LAC_TRI3;
-    case LAC_QUAD8: case LAC_QUAD9: return LAC_QUAD4;
-    case LAC_TET10: return LAC_TET4;
-    case LAC_HEX20: case LAC_HEX27: return LAC_HEX8;
-    default: return t;
-    }
-}
-
 /* is_curved: does the cell geometry differ from the (multi)linear map of
  * its vertices?  Checks every non-vertex node against the linear map
  * evaluated at that node's reference coordinates (relative tolerance 1e-10
@@ -67,7 +52,7 @@ is_curved (const lac_refelem *re, int sdim, const double *xe)
 {
   if (re->order < 2)
     return 0;
-  const lac_refelem *rl = lac_refelem_get (linear_type (re->type));
+  const lac_refelem *rl = lac_refelem_get (lac_refelem_linear_type (re->type));
   if (!rl || rl == re)
     return 1;
   double lo[3] = { 0 }, hi[3] = { 0 }, diam = 0.0, N[LAC_MAX_NODES];
@@ -254,18 +239,6 @@ lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
   return status;
 }
 
-/* Global dofs of cell c: dofs[a*dim + i] = dim*conn[a] + i. */
-static int
-cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
-{
-  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
-  for (int a = 0; a < nen; a++)
-    for (int i = 0; i < m->dim; i++)
-      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
-                             + (size_t) i;
-  return nen * m->dim;
-}
-
 /* lac_assembly_stiffness: K += sum_c Ke over the cells with E[c] > 0
  * (cells with E[c] <= 0 belong to no elastic body and are skipped).
  *   [in]     m, mat
@@ -296,7 +269,7 @@ lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
       status = cell_stiffness (m, mat, c, &qc, Ke);
       if (status)
         break;
-      size_t nc = (size_t) cell_dofs (m, c, dofs);
+      size_t nc = (size_t) lac_mesh_cell_dofs (m, c, dofs);
       status = lac_triplet_add_block (K, nc, dofs, nc, dofs, Ke); /* K += Ke */
     }
   lac_quad_cache_free (&qc);
@@ -377,14 +350,17 @@ lac_assembly_volume_force (const lac_mesh *m, lac_model model,
   return status;
 }
 
-/* Surface loads: F += int_{facets of g} t(x) . v w ds, where t is either a
- * field (pressure == 0 flag) or -p n.  Shared by traction and pressure. */
+/* Surface loads: F += int_{facets of g} t(x) . v w ds, where t is a field
+ * t(x) or t(x, n) (tn), or -p n (is_pressure).  Shared by the tractions
+ * and the pressure. */
 static int
 surface_load (const lac_mesh *m, lac_model model, const lac_group *g,
               lac_field *t, lac_field_n *tn, void *ctx, int is_pressure,
               double p, double *F)
 {
   lac_quad_cache qc;
+  if (!is_pressure && !t && !tn)
+    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   int status = check_model (m, model);
   if (status)
     return status;
@@ -457,8 +433,6 @@ lac_assembly_traction (const lac_mesh *m, lac_model model,
                        const lac_group *g, lac_field *t, void *ctx,
                        double *F)
 {
-  if (!t)
-    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   return surface_load (m, model, g, t, NULL, ctx, 0, 0.0, F);
 }
 
@@ -470,8 +444,6 @@ lac_assembly_traction_n (const lac_mesh *m, lac_model model,
                          const lac_group *g, lac_field_n *t, void *ctx,
                          double *F)
 {
-  if (!t)
-    LAC_ERROR (LAC_EINVAL, "traction field is NULL");
   return surface_load (m, model, g, NULL, t, ctx, 0, 0.0, F);
 }
 

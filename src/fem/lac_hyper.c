@@ -17,11 +17,11 @@
  *   K_(a,i),(b,k) += w sum_(kL) T^(a,i)_kL dF^(b,k)_kL.
  */
 #include "fem/lac_hyper.h"
-#include "fem/lac_post.h"
 
 #include <math.h>
 #include <string.h>
 #include "base/lac_mem.h"
+#include "fem/lac_nodal.h"
 #include "fem/lac_quadrature.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
@@ -376,18 +376,6 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
   return status;
 }
 
-/* Global dofs of cell c. */
-static int
-cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
-{
-  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
-  for (int a = 0; a < nen; a++)
-    for (int i = 0; i < m->dim; i++)
-      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
-                             + (size_t) i;
-  return nen * m->dim;
-}
-
 /* Position of entry (row, col) in the pattern of K; -1 if absent. */
 static long
 csc_find (const lac_csc *K, size_t row, size_t col)
@@ -434,7 +422,7 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
     {
       if (!(h->E[c] > 0.0))
         continue;
-      int nc = cell_dofs (m, c, dofs);
+      int nc = lac_mesh_cell_dofs (m, c, dofs);
       memset (fe, 0, (size_t) nc * sizeof *fe);
       if (wantK)
         memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
@@ -510,10 +498,12 @@ cauchy (lac_model model, const double *F, const double *P, double *s)
     }
 }
 
+/* The lac_cell_stress of the hyperelastic laws: law = a lac_hyper. */
 static int
-cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u, size_t c,
+cauchy_at (const lac_mesh *m, const void *hyper, const double *u, size_t c,
            const double *xi, double *s)
 {
+  const lac_hyper *h = hyper;
   int dim = m->dim;
   double xe[LAC_MAX_NODES * 3], ue[LAC_MAX_NODES * 3], P[9];
   point pt;
@@ -554,20 +544,6 @@ lac_hyper_cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u,
   return cauchy_at (m, h, u, c, xi, s);
 }
 
-typedef struct hyper_ctx
-{
-  const lac_hyper *h;
-  const double *u;
-} hyper_ctx;
-
-static int
-hyper_stress (const lac_mesh *m, size_t c, const double *xi, void *ctx,
-              double *s)
-{
-  const hyper_ctx *q = ctx;
-  return cauchy_at (m, q->h, q->u, c, xi, s);
-}
-
 int
 lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
                         const double *u, const char *cells, double *sigma,
@@ -578,7 +554,6 @@ lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
     return status;
   if (!u || !sigma)
     LAC_ERROR (LAC_EINVAL, "displacement or output is NULL");
-  hyper_ctx q = { h, u };
-  return lac_post_nodal_average (m, h->model, h->E, cells, hyper_stress, &q,
-                                 sigma, vm);
+  return lac_nodal_average (m, h->model, h->E, cells, cauchy_at, h, u, sigma,
+                            vm);
 }

@@ -107,7 +107,7 @@ int lac_hyper_cauchy_at (const lac_mesh *m, const lac_hyper *h,
 
 /* Nodal means of the Cauchy stress over the cells (E > 0, and cells[c]
  * != 0 if cells is given) at the nodes' reference coordinates, and the von
- * Mises stress (vm may be NULL); as lac_post_stress_nodal. */
+ * Mises stress (vm may be NULL), as lac_post_stress_nodal (lac_nodal.h). */
 int lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
                             const double *u, const char *cells,
                             double *sigma, double *vm);

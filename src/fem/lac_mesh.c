@@ -174,6 +174,19 @@ lac_mesh_cell_coords (const lac_mesh *m, size_t c, double *xe)
       *xe++ = m->x[(size_t) m->conn[k] * d + i];
 }
 
+/* dofs[a*dim + i] = dim*conn[a] + i: the global dofs of cell c, node by
+ * node; returns their number. */
+int
+lac_mesh_cell_dofs (const lac_mesh *m, size_t c, size_t *dofs)
+{
+  int nen = (int) (m->ptr[c + 1] - m->ptr[c]);
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < m->dim; i++)
+      dofs[a * m->dim + i] = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a]
+                             + (size_t) i;
+  return nen * m->dim;
+}
+
 /* The largest number of nodes of one cell. */
 size_t
 lac_mesh_nconn_max (const lac_mesh *m)
@@ -505,68 +518,70 @@ lac_mesh_measure (const lac_mesh *m)
 /* orientation                                                             */
 /* ---------------------------------------------------------------------- */
 
-/* The mirror permutation of a reference element: node a of the mirrored
- * cell is node perm[a] of the original, where the mirror swaps xi_0 and
- * xi_1 (xi -> -xi on a line).  Swapping two reference coordinates maps
- * every reference domain here onto itself and reverses det J. */
+/* The node of re at the mirror image of node a, or -1: the mirror swaps
+ * xi_0 and xi_1 (xi -> -xi on a line).  Swapping two reference
+ * coordinates maps every reference domain here onto itself and reverses
+ * det J. */
 static int
-flip_perm (const lac_refelem *re, int *perm)
+mirror_node (const lac_refelem *re, int a)
 {
   int d = re->dim;
-  for (int a = 0; a < re->nnodes; a++)
+  const double *xa = re->xi + a * d;
+  double t[3];
+  for (int k = 0; k < d; k++)
+    t[k] = xa[k];
+  if (d == 1)
+    t[0] = -xa[0];
+  else
     {
-      double t[3];
-      const double *xa = re->xi + a * d;
-      int b;
-      for (int k = 0; k < d; k++)
-        t[k] = xa[k];
-      if (d == 1)
-        t[0] = -xa[0];
-      else
-        {
-          t[0] = xa[1];
-          t[1] = xa[0];
-        }
-      for (b = 0; b < re->nnodes; b++)
-        {
-          double dist = 0;
-          for (int k = 0; k < d; k++)
-            dist += fabs (re->xi[b * d + k] - t[k]);
-          if (dist < 1e-12)
-            break;
-        }
-      if (b == re->nnodes)
-        LAC_ERROR (LAC_ESANITY, "%s: node %d has no mirror image", re->name,
-                   a);
-      perm[a] = b;
+      t[0] = xa[1];
+      t[1] = xa[0];
     }
-  return LAC_SUCCESS;
+  for (int b = 0; b < re->nnodes; b++)
+    {
+      double dist = 0;
+      for (int k = 0; k < d; k++)
+        dist += fabs (re->xi[b * d + k] - t[k]);
+      if (dist < 1e-12)
+        return b;
+    }
+  return -1;
 }
 
-/* fmap[f] = the local face of the mirrored cell that holds the global
- * nodes of face f of the original cell. */
+/* The local face of re whose vertices are the images by perm of those of
+ * face f, or -1. */
 static int
-flip_face_map (const lac_refelem *re, const int *perm, int *fmap)
+mirror_face (const lac_refelem *re, const int *perm, int f)
 {
-  for (int f = 0; f < re->nfaces; f++)
+  int nv = lac_refelem_get (re->face_type[f])->nvertices;
+  for (int g = 0; g < re->nfaces; g++)
     {
-      int nv = lac_refelem_get (re->face_type[f])->nvertices, g;
-      for (g = 0; g < re->nfaces; g++)
-        {
-          int found = 0;
-          if (lac_refelem_get (re->face_type[g])->nvertices != nv)
-            continue;
-          for (int i = 0; i < nv; i++)
-            for (int j = 0; j < nv; j++)
-              found += perm[re->face_node[f][i]] == re->face_node[g][j];
-          if (found == nv)
-            break;
-        }
-      if (g == re->nfaces)
-        LAC_ERROR (LAC_ESANITY, "%s: face %d has no mirror image", re->name,
-                   f);
-      fmap[f] = g;
+      int found = 0;
+      if (lac_refelem_get (re->face_type[g])->nvertices != nv)
+        continue;
+      for (int i = 0; i < nv; i++)
+        for (int j = 0; j < nv; j++)
+          found += perm[re->face_node[f][i]] == re->face_node[g][j];
+      if (found == nv)
+        return g;
     }
+  return -1;
+}
+
+/* The mirror of a reference element: node a of the mirrored cell is node
+ * perm[a] of the original, and fmap[f] is the local face of the mirrored
+ * cell that holds the global nodes of face f of the original. */
+static int
+flip_maps (const lac_refelem *re, int *perm, int *fmap)
+{
+  for (int a = 0; a < re->nnodes; a++)
+    if ((perm[a] = mirror_node (re, a)) < 0)
+      LAC_ERROR (LAC_ESANITY, "%s: node %d has no mirror image", re->name,
+                 a);
+  for (int f = 0; f < re->nfaces; f++)
+    if ((fmap[f] = mirror_face (re, perm, f)) < 0)
+      LAC_ERROR (LAC_ESANITY, "%s: face %d has no mirror image", re->name,
+                 f);
   return LAC_SUCCESS;
 }
 
@@ -677,9 +692,7 @@ lac_mesh_check_orientation (lac_mesh *m, int flip, size_t *nflipped)
         {
           if (!have[re->type])
             {
-              status = flip_perm (re, perm[re->type]);
-              if (!status)
-                status = flip_face_map (re, perm[re->type], fmap[re->type]);
+              status = flip_maps (re, perm[re->type], fmap[re->type]);
               have[re->type] = 1;
             }
           if (!status)

@@ -80,6 +80,9 @@ int lac_mesh_facet_nodes (const lac_mesh *m, size_t cell, int face,
                           int *nodes, lac_elem_type *ftype);
                           /* returns count, -LAC_EINVAL for a bad cell/face */
 void lac_mesh_cell_coords (const lac_mesh *m, size_t c, double *xe);
+/* The global dofs of cell c, dofs[a*dim + i] = dim*conn[a] + i (room for
+ * LAC_MAX_NODES*3); returns their number. */
+int lac_mesh_cell_dofs (const lac_mesh *m, size_t c, size_t *dofs);
 size_t lac_mesh_nconn_max (const lac_mesh *m);
 
 /* compute */

@@ -27,6 +27,7 @@
 #include <math.h>
 #include <string.h>
 #include "base/lac_mem.h"
+#include "fem/lac_nodal.h"
 #include "fem/lac_quadrature.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
@@ -95,11 +96,13 @@ strain (lac_model model, const double *g, double hoop, double *e)
     }
 }
 
-/* Stress at reference point xi of cell c (no argument checks). */
+/* Stress at reference point xi of cell c (no argument checks): the
+ * lac_cell_stress of the linear law, law = a lac_elastic. */
 static int
-stress_at (const lac_mesh *m, const lac_elastic *mat, const double *u,
-           size_t c, const double *xi, double *s)
+stress_at (const lac_mesh *m, const void *law, const double *u, size_t c,
+           const double *xi, double *s)
 {
+  const lac_elastic *mat = law;
   int dim = m->dim, ns = lac_model_nstress (mat->model);
   double xe[LAC_MAX_NODES * 3], D[36], uh[3], gh[9], e[6];
   lac_map mp;
@@ -169,66 +172,6 @@ lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
  * that contain the node; vm = von Mises of the mean (may be NULL).
  *   [out] sigma  nnodes*ns, vm  nnodes
  *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
-/* lac_post_nodal_average: sigma at the nodes = the mean over the cells
- * sharing a node (cells[c] != 0, E[c] > 0) of the cell's stress there,
- * evaluated by f; vm (may be NULL) its von Mises value.  Shared by the
- * linear (below) and hyperelastic (lac_hyper.c) recoveries. */
-int
-lac_post_nodal_average (const lac_mesh *m, lac_model model, const double *E,
-                        const char *cells, lac_cell_stress *f, void *ctx,
-                        double *sigma, double *vm)
-{
-  int ns = lac_model_nstress (model), status = LAC_SUCCESS;
-  double s[6];
-  unsigned *count = lac_calloc (m->nnodes, sizeof *count);
-  if (!count)
-    LAC_ERROR (LAC_ENOMEM, "counters for %zu nodes", m->nnodes);
-  memset (sigma, 0, m->nnodes * (size_t) ns * sizeof *sigma);
-  for (size_t c = 0; c < m->ncells && !status; c++)
-    {
-      if ((cells && !cells[c]) || !(E[c] > 0.0))
-        continue;
-      const lac_refelem *re = lac_refelem_get (m->type[c]);
-      if (!re)
-        {
-          status = LAC_ERRMSG (LAC_EINVAL, "cell %zu has an unknown type", c);
-          break;
-        }
-      const int *conn = m->conn + m->ptr[c];
-      for (int a = 0; a < re->nnodes && !status; a++)
-        {
-          status = f (m, c, re->xi + a * re->dim, ctx, s);
-          for (int k = 0; k < ns && !status; k++)
-            sigma[(size_t) conn[a] * (size_t) ns + (size_t) k] += s[k];
-          count[conn[a]]++;
-        }
-    }
-  for (size_t a = 0; a < m->nnodes && !status; a++)
-    {
-      if (count[a] > 0)
-        for (int k = 0; k < ns; k++)
-          sigma[a * (size_t) ns + (size_t) k] /= count[a];   /* mean */
-      if (vm)
-        vm[a] = lac_von_mises (model, sigma + a * (size_t) ns);
-    }
-  lac_free (count);
-  return status;
-}
-
-typedef struct linear_ctx
-{
-  const lac_elastic *mat;
-  const double *u;
-} linear_ctx;
-
-static int
-linear_stress (const lac_mesh *m, size_t c, const double *xi, void *ctx,
-               double *s)
-{
-  const linear_ctx *l = ctx;
-  return stress_at (m, l->mat, l->u, c, xi, s);
-}
-
 int
 lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                        const double *u, const char *cells, double *sigma,
@@ -239,9 +182,8 @@ lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
     return status;
   if (!sigma)
     LAC_ERROR (LAC_EINVAL, "output sigma is NULL");
-  linear_ctx l = { mat, u };
-  return lac_post_nodal_average (m, mat->model, mat->E, cells, linear_stress,
-                                 &l, sigma, vm);
+  return lac_nodal_average (m, mat->model, mat->E, cells, stress_at, mat, u,
+                            sigma, vm);
 }
 
 /* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,

@@ -15,24 +15,13 @@ int lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
                         const double *u, size_t c, const double *xi,
                         double *s);
 
-/* Nodal averages: sigma[nnodes*ns], vm[nnodes] (vm may be NULL).  Nodes
- * in no cell get zeros; cells with E <= 0 are skipped.  If cells != NULL only cells with cells[c] != 0
- * contribute (per-body averages keep interface jumps). */
+/* Nodal averages (lac_nodal.h): sigma[nnodes*ns], vm[nnodes] (vm may be
+ * NULL).  Nodes in no cell get zeros; cells with E <= 0 are skipped.  If
+ * cells != NULL only cells with cells[c] != 0 contribute (per-body
+ * averages keep interface jumps). */
 int lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                            const double *u, const char *cells,
                            double *sigma, double *vm);
-
-/* The stress s[ns] of cell c at reference point xi, by some law. */
-typedef int lac_cell_stress (const lac_mesh *m, size_t c, const double *xi,
-                             void *ctx, double *s);
-
-/* Nodal averages of the stress f gives (cells with cells[c] != 0 and
- * E[c] > 0; cells may be NULL): sigma[nnodes*ns], vm[nnodes] (may be
- * NULL).  lac_post_stress_nodal is this with the linear law. */
-int lac_post_nodal_average (const lac_mesh *m, lac_model model,
-                            const double *E, const char *cells,
-                            lac_cell_stress *f, void *ctx, double *sigma,
-                            double *vm);
 
 /* Errors over all cells: l2 = ||u - u_h||_0, h1 = |u - u_h|_1 (seminorm),
  * also the norms of the exact solution (for relative errors; any output

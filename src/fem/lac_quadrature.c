@@ -224,85 +224,92 @@ rule_tensor (lac_shape shape, int dim, int degree)
   return q;
 }
 
-/* The three 1D rules of a collapsed rule, on [0,1] or [-1,1]. */
-typedef struct
+/* The collapsed maps from the square or cube of u = (u, v, w) to the
+ * element (file header). */
+static void
+map_tri (const double *u, double *xi)
 {
+  xi[0] = u[0];
+  xi[1] = u[1] * (1 - u[0]);
+}
+
+static void
+map_tet (const double *u, double *xi)
+{
+  xi[0] = u[0];
+  xi[1] = u[1] * (1 - u[0]);
+  xi[2] = u[2] * (1 - u[0]) * (1 - u[1]);
+}
+
+static void
+map_pyr (const double *u, double *xi)
+{
+  double s = 1 - u[2];
+  xi[0] = u[0] * s;
+  xi[1] = u[1] * s;
+  xi[2] = u[2];
+}
+
+/* The 1D rules a collapsed rule is the product of: Gauss-Legendre on
+ * [0,1] or [-1,1], Gauss-Jacobi for the weight (1-u) or (1-u)^2 on [0,1]
+ * (the Jacobian of the map). */
+typedef enum { LEGENDRE_01, LEGENDRE_11, JACOBI_1, JACOBI_2 } rule1d_kind;
+
+static const struct
+{
+  lac_shape shape;
+  int dim;
+  rule1d_kind rule[3];                   /* in u, v, w */
+  void (*map) (const double *u, double *xi);
+} collapsed_rules[] = {
+  { LAC_SHAPE_TRI, 2, { JACOBI_1, LEGENDRE_01 }, map_tri },
+  { LAC_SHAPE_TET, 3, { JACOBI_2, JACOBI_1, LEGENDRE_01 }, map_tet },
+  { LAC_SHAPE_PYR, 3, { LEGENDRE_11, LEGENDRE_11, JACOBI_2 }, map_pyr },
+};
+
+static int
+rule1d (rule1d_kind kind, int n, double *x, double *w)
+{
+  switch (kind)
+    {
+    case LEGENDRE_01: return gauss_legendre (n, 0, 1, x, w);
+    case LEGENDRE_11: return gauss_legendre (n, -1, 1, x, w);
+    case JACOBI_1: return gauss_jacobi01 (n, 1, x, w);
+    case JACOBI_2: return gauss_jacobi01 (n, 2, x, w);
+    }
+  LAC_ERROR (LAC_ESANITY, "1D rule kind %d", (int) kind);
+}
+
+/* The collapsed rule of a triangle, tetrahedron or pyramid: the product
+ * of n-point 1D rules (the last coordinate running fastest), mapped to
+ * the element; exact for total degree 2n - 1. */
+static lac_quad *
+rule_collapsed (lac_shape shape, int degree)
+{
+  int k = 0, n = degree / 2 + 1;
   double x[3][NMAX], w[3][NMAX];
-} rules1d;
-
-/* tri: x = u, y = v(1-u); u Jacobi(1), v Legendre on [0,1]. */
-static lac_quad *
-rule_collapsed_tri (int degree)
-{
-  int n = degree / 2 + 1;
-  rules1d r;
-  if (gauss_jacobi01 (n, 1, r.x[0], r.w[0])
-      || gauss_legendre (n, 0, 1, r.x[1], r.w[1]))
-    return NULL;
-  lac_quad *q = quad_new (LAC_SHAPE_TRI, 2, 2 * n - 1, n * n);
+  while (collapsed_rules[k].shape != shape)
+    k++;
+  int dim = collapsed_rules[k].dim, np = dim == 2 ? n * n : n * n * n;
+  for (int d = 0; d < dim; d++)
+    if (rule1d (collapsed_rules[k].rule[d], n, x[d], w[d]))
+      return NULL;
+  lac_quad *q = quad_new (shape, dim, 2 * n - 1, np);
   if (q == NULL)
     return NULL;
-  for (int i = 0, p = 0; i < n; i++)
-    for (int j = 0; j < n; j++, p++)
-      {
-        double u = r.x[0][i], v = r.x[1][j];
-        q->xi[2 * p] = u;
-        q->xi[2 * p + 1] = v * (1 - u);
-        q->w[p] = r.w[0][i] * r.w[1][j];
-      }
-  return q;
-}
-
-/* tet: x = u, y = v(1-u), z = w(1-u)(1-v); Jacobi(2), Jacobi(1), Legendre. */
-static lac_quad *
-rule_collapsed_tet (int degree)
-{
-  int n = degree / 2 + 1;
-  rules1d r;
-  if (gauss_jacobi01 (n, 2, r.x[0], r.w[0])
-      || gauss_jacobi01 (n, 1, r.x[1], r.w[1])
-      || gauss_legendre (n, 0, 1, r.x[2], r.w[2]))
-    return NULL;
-  lac_quad *q = quad_new (LAC_SHAPE_TET, 3, 2 * n - 1, n * n * n);
-  if (q == NULL)
-    return NULL;
-  int p = 0;
-  for (int i = 0; i < n; i++)
-    for (int j = 0; j < n; j++)
-      for (int k = 0; k < n; k++, p++)
-        {
-          double u = r.x[0][i], v = r.x[1][j], w = r.x[2][k];
-          q->xi[3 * p] = u;
-          q->xi[3 * p + 1] = v * (1 - u);
-          q->xi[3 * p + 2] = w * (1 - u) * (1 - v);
-          q->w[p] = r.w[0][i] * r.w[1][j] * r.w[2][k];
-        }
-  return q;
-}
-
-/* pyramid: x = xi(1-w), y = eta(1-w), z = w; Legendre^2 x Jacobi(2). */
-static lac_quad *
-rule_collapsed_pyr (int degree)
-{
-  int n = degree / 2 + 1;
-  rules1d r;
-  if (gauss_legendre (n, -1, 1, r.x[0], r.w[0])
-      || gauss_jacobi01 (n, 2, r.x[2], r.w[2]))
-    return NULL;
-  lac_quad *q = quad_new (LAC_SHAPE_PYR, 3, 2 * n - 1, n * n * n);
-  if (q == NULL)
-    return NULL;
-  int p = 0;
-  for (int i = 0; i < n; i++)
-    for (int j = 0; j < n; j++)
-      for (int k = 0; k < n; k++, p++)
-        {
-          double s = 1 - r.x[2][k];
-          q->xi[3 * p] = r.x[0][i] * s;
-          q->xi[3 * p + 1] = r.x[0][j] * s;
-          q->xi[3 * p + 2] = r.x[2][k];
-          q->w[p] = r.w[0][i] * r.w[0][j] * r.w[2][k];
-        }
+  for (int p = 0; p < np; p++)
+    {
+      int i[3], rest = p;
+      double u[3];
+      for (int d = dim - 1; d >= 0; d--, rest /= n)
+        i[d] = rest % n;                 /* digits of p in base n: (i, j, k) */
+      q->w[p] = w[0][i[0]];
+      for (int d = 0; d < dim; d++)
+        u[d] = x[d][i[d]];
+      for (int d = 1; d < dim; d++)
+        q->w[p] *= w[d][i[d]];
+      collapsed_rules[k].map (u, q->xi + p * dim);
+    }
   return q;
 }
 
@@ -402,14 +409,14 @@ lac_quad_alloc (lac_shape shape, int degree)
       for (int i = 0; i < NTRI_RULES; i++)
         if (tri_rules[i].degree >= degree)
           return rule_symmetric (shape, 2, &tri_rules[i]);
-      return rule_collapsed_tri (degree);
+      return rule_collapsed (shape, degree);
     case LAC_SHAPE_TET:
       for (int i = 0; i < NTET_RULES; i++)
         if (tet_rules[i].degree >= degree)
           return rule_symmetric (shape, 3, &tet_rules[i]);
-      return rule_collapsed_tet (degree);
+      return rule_collapsed (shape, degree);
     case LAC_SHAPE_PYR:
-      return rule_collapsed_pyr (degree);
+      return rule_collapsed (shape, degree);
     }
   return NULL;
 }

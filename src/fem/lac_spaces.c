@@ -218,6 +218,21 @@ lac_refelem_by_gmsh (int gmsh_type)
   return NULL;
 }
 
+/* The linear element with the same vertices as a quadratic one. */
+lac_elem_type
+lac_refelem_linear_type (lac_elem_type t)
+{
+  switch (t)
+    {
+    case LAC_SEG3: return LAC_SEG2;
+    case LAC_TRI6: return LAC_TRI3;
+    case LAC_QUAD8: case LAC_QUAD9: return LAC_QUAD4;
+    case LAC_TET10: return LAC_TET4;
+    case LAC_HEX20: case LAC_HEX27: return LAC_HEX8;
+    default: return t;
+    }
+}
+
 /* ---- shape functions ---------------------------------------------------- */
 
 /* 1D Lagrange polynomial of the node at c in {-1, 0, 1} (Q2) and its

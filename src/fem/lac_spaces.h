@@ -71,6 +71,9 @@ typedef struct lac_refelem
 const lac_refelem *lac_refelem_get (lac_elem_type t);        /* NULL if bad */
 const lac_refelem *lac_refelem_by_name (const char *name);   /* NULL if unknown */
 const lac_refelem *lac_refelem_by_gmsh (int gmsh_type);      /* NULL if unsupported */
+/* The linear element with the same vertices (tri6 -> tri3, hex27 -> hex8;
+ * t itself if t is linear). */
+lac_elem_type lac_refelem_linear_type (lac_elem_type t);
 
 /* N_a(xi) and dN_a/dxi_k at one reference point.
  *   [out] N   nnodes values (may be NULL)

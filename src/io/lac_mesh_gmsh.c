@@ -6,8 +6,8 @@
  * nothing to gmsh afterwards.  This file holds the gmsh session (options,
  * opening, meshing) and the driver; the copy is done by
  * lac_mesh_gmsh_cells.c (nodes and cells: tags -> 0-based indices) and
- * lac_mesh_gmsh_groups.c (physical groups), through
- * lac_mesh_gmsh_internal.h.
+ * lac_mesh_gmsh_groups.c (physical groups), both on the reader state and
+ * messages of lac_mesh_gmsh_reader.c.
  *
  *   - inverted cells are flipped or rejected (opts->flip_inverted);
  *   - size, order, serendipity and recombine apply to .geo files only; a
@@ -28,46 +28,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/lac_mem.h"
-#include "io/lac_mesh_gmsh_internal.h"
+#include "io/lac_mesh_gmsh_cells.h"
+#include "io/lac_mesh_gmsh_groups.h"
+#include "io/lac_mesh_gmsh_reader.h"
 #include "base/lac_status.h"
 
 enum { KIND_MSH, KIND_GEO };
-
-static void
-reader_free (lac_gmsh_reader *R)
-{
-  lac_free (R->tag);
-  lac_free (R->index);
-  lac_free (R->coord);
-  lac_free (R->ent_tag);
-  lac_free (R->ent_first);
-  lac_free (R->slot);
-}
-
-/* Put the file name in front of the message a lac_mesh_* call stored. */
-int
-lac_gmsh_with_path (const lac_gmsh_reader *R, int status)
-{
-  char msg[768];
-  if (!status)
-    return status;
-  snprintf (msg, sizeof msg, "%s", lac_error_message ());
-  return READ_ERR (status, "'%s': %s", R->path, msg);
-}
-
-/* Set the message for a failed gmsh call, with gmsh's last error. */
-int
-lac_gmsh_fail (const lac_gmsh_reader *R, int status, const char *what)
-{
-  char *e = NULL;
-  int ierr = 0;
-  gmshLoggerGetLastError (&e, &ierr);
-  status = READ_ERR (status, "'%s': %s: %s", R->path, what,
-                     !ierr && e && *e ? e : "gmsh gives no details");
-  gmshFree (e);
-  return status;
-}
 
 static int
 set_option (const lac_gmsh_reader *R, const char *name, double value)
@@ -257,6 +223,6 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
       *out = NULL;
       status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to finalize", path);
     }
-  reader_free (&R);
+  lac_gmsh_reader_free (&R);
   return status;
 }

@@ -11,7 +11,7 @@
  *   - the space dimension is 2 when the cells are 2D and every z is 0, and 3
  *     for 3D cells (2D cells out of the plane z = 0 are rejected).
  */
-#include "fem/lac_mesh.h"
+#include "io/lac_mesh_gmsh_cells.h"
 
 #include <gmshc.h>
 #include <math.h>
@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "base/lac_mem.h"
-#include "io/lac_mesh_gmsh_internal.h"
+#include "io/lac_mesh_gmsh_reader.h"
 #include "base/lac_status.h"
 
 /* ---------------------------------------------------------------------- */
@@ -98,84 +98,9 @@ done:
   return status;
 }
 
-/* Position of node tag t in the sorted list, or SIZE_MAX. */
-static size_t
-find_tag (const lac_gmsh_reader *R, size_t t)
-{
-  size_t lo = 0, hi = R->nall;
-  while (lo < hi)
-    {
-      size_t mid = lo + (hi - lo) / 2;
-      if (R->tag[mid] < t)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-  return lo < R->nall && R->tag[lo] == t ? lo : SIZE_MAX;
-}
-
-/* Mesh index of node tag t, or SIZE_MAX if it is in no cell. */
-size_t
-lac_gmsh_node_index (const lac_gmsh_reader *R, size_t t)
-{
-  size_t k = find_tag (R, t);
-  return k == SIZE_MAX ? SIZE_MAX : R->index[k];
-}
-
 /* ---------------------------------------------------------------------- */
 /* cells                                                                   */
 /* ---------------------------------------------------------------------- */
-
-int
-lac_gmsh_get_elements (const lac_gmsh_reader *R, lac_gmsh_elements *E,
-                       int dim, int tag)
-{
-  int ierr = 0;
-  memset (E, 0, sizeof *E);
-  gmshModelMeshGetElements (&E->types, &E->ntypes, &E->etags, &E->etags_n,
-                            &E->netags, &E->ntags, &E->ntags_n, &E->nntags,
-                            dim, tag, &ierr);
-  if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, "cannot get the elements");
-  return LAC_SUCCESS;
-}
-
-void
-lac_gmsh_elements_free (lac_gmsh_elements *E)
-{
-  for (size_t i = 0; i < E->netags; i++)
-    gmshFree (E->etags[i]);
-  for (size_t i = 0; i < E->nntags; i++)
-    gmshFree (E->ntags[i]);
-  gmshFree (E->types);
-  gmshFree (E->etags);
-  gmshFree (E->etags_n);
-  gmshFree (E->ntags);
-  gmshFree (E->ntags_n);
-  memset (E, 0, sizeof *E);
-}
-
-/* The reference element of gmsh type t, or an error naming the file. */
-const lac_refelem *
-lac_gmsh_refelem (const lac_gmsh_reader *R, int t)
-{
-  const lac_refelem *re = lac_refelem_by_gmsh (t);
-  if (!re)
-    {
-      char *name = NULL;
-      int dim, order, nn, nv, ierr = 0;
-      double *xi = NULL;
-      size_t nxi = 0;
-      gmshModelMeshGetElementProperties (t, &name, &dim, &order, &nn, &xi,
-                                         &nxi, &nv, &ierr);
-      READ_ERR (LAC_EINVAL, "'%s': gmsh element type %d (%s) is not "
-                "supported", R->path, t, !ierr && name ? name : "unknown");
-      gmshFree (name);
-      gmshFree (xi);
-    }
-  return re;
-}
-
 
 /* The highest dimension (3, 2 or 1) that has elements, 0 if none. */
 int
@@ -239,7 +164,7 @@ count_cells (lac_gmsh_reader *R, const lac_gmsh_elements *E, size_t *ncells,
                              E[e].ntags_n[i], ne, re->name, R->tdim);
           for (size_t k = 0; k < E[e].ntags_n[i]; k++)
             {
-              size_t pos = find_tag (R, E[e].ntags[i][k]);
+              size_t pos = lac_gmsh_tag_position (R, E[e].ntags[i][k]);
               if (pos == SIZE_MAX)
                 return READ_ERR (LAC_EINVAL, "'%s': element %zu has node "
                                  "%zu, which is not in the mesh", R->path,

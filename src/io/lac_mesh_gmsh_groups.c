@@ -10,7 +10,7 @@
  *   - lower dimensions become node groups;
  *   - an unnamed group is "<dim>:<tag>".
  */
-#include "fem/lac_mesh.h"
+#include "io/lac_mesh_gmsh_groups.h"
 
 #include <gmshc.h>
 #include <stdint.h>
@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "base/lac_mem.h"
-#include "io/lac_mesh_gmsh_internal.h"
+#include "io/lac_mesh_gmsh_reader.h"
 #include "base/lac_status.h"
 
 /* Grow an array to hold at least `need' items. */

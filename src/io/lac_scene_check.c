@@ -8,12 +8,14 @@
  * large-deformation run.  The first error stops with a one-line message
  * naming the scene line.
  */
-#include "io/lac_scene_internal.h"
+#include "io/lac_scene_check.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include "fem/lac_exact.h"
+#include "io/lac_scene_keys.h"
+#include "io/lac_scene_query.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 

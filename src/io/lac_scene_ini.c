@@ -6,13 +6,13 @@
  *      them);
  *   2. overrides: --set KEY=VALUE replaces or adds entries;
  *   3. build: headers and entries, in file order, are checked against the
- *      section and key tables (lac_scene.c) and stored in typed structs:
+ *      section and key tables (lac_scene_keys.c) and stored in typed structs:
  *      text, numbers, integers, booleans, enums, vectors.
  * Step 4 (defaults, required keys, conflicts) is in lac_scene_check.c.
  *
  * References: inih, https://github.com/benhoyt/inih (BSD-3-Clause).
  */
-#include "io/lac_scene_internal.h"
+#include "io/lac_scene_ini.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -22,6 +22,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <ini.h>
+#include "io/lac_scene_keys.h"
+#include "io/lac_scene_query.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 

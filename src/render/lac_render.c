@@ -493,11 +493,16 @@ render_geom (const lac_render_geom *g, const lac_render_opts *o,
 }
 
 /* Resolve the options (NULL: defaults; 0 supersample, subdiv: defaults)
- * into *def, check them and the mesh. */
+ * into *def, check them and the mesh; an empty g with the grey level of
+ * the triangles without a value. */
 static int
-prologue (const lac_mesh *m, int need_mesh, const lac_render_opts **o,
-          lac_render_opts *def, unsigned char *rgba)
+prologue (const lac_mesh *m, int need_mesh, double grey,
+          const lac_render_opts **o, lac_render_opts *def,
+          unsigned char *rgba, lac_render_geom *g)
 {
+  memset (g, 0, sizeof *g);
+  g->dim = m ? m->dim : 3;
+  g->grey = grey;
   if (*o)
     *def = **o;
   else
@@ -514,24 +519,29 @@ prologue (const lac_mesh *m, int need_mesh, const lac_render_opts **o,
   return check_opts (*o);
 }
 
+/* Draw g into rgba if status is LAC_SUCCESS; free the lists of g. */
+static int
+epilogue (lac_render_geom *g, const lac_render_opts *o, int status,
+          unsigned char *rgba)
+{
+  if (!status)
+    status = render_geom (g, o, rgba);
+  lac_render_geom_free (g);
+  return status;
+}
+
 int
 lac_render_mesh_rgba (const lac_mesh *m, const double *u, const double *field,
                       const lac_render_opts *o, unsigned char *rgba)
 {
   lac_render_opts def;
   lac_render_geom g;
-  int status;
-  if ((status = prologue (m, 1, &o, &def, rgba)))
+  int status = prologue (m, 1, 0.80, &o, &def, rgba, &g);
+  if (status)
     return status;
-  memset (&g, 0, sizeof g);
-  g.dim = m->dim;
-  g.grey = 0.80;
   status = lac_render_geom_mesh (&g, m, u, o->scale, field, o->subdiv,
                                  o->edges);
-  if (!status)
-    status = render_geom (&g, o, rgba);
-  lac_render_geom_free (&g);
-  return status;
+  return epilogue (&g, o, status, rgba);
 }
 
 int
@@ -542,23 +552,18 @@ lac_render_facets_rgba (const lac_mesh *m, const double *u, size_t n,
 {
   lac_render_opts def;
   lac_render_geom g;
-  int status;
-  if ((status = prologue (m, 1, &o, &def, rgba)))
+  int status = prologue (m, 1, 0.88, &o, &def, rgba, &g);
+  if (status)
     return status;
   if (n && (!cell || !face || !value))
     LAC_ERROR (LAC_EINVAL, "%zu facets but no cell, face or value array", n);
-  memset (&g, 0, sizeof g);
-  g.dim = m->dim;
-  g.grey = 0.88;
-  status = m->dim == 2 ? lac_render_geom_mesh (&g, m, u, o->scale, NULL,
-                                               o->subdiv, o->edges) : 0;
+  if (m->dim == 2)                 /* the mesh in light grey under them */
+    status = lac_render_geom_mesh (&g, m, u, o->scale, NULL, o->subdiv,
+                                   o->edges);
   if (!status)
     status = lac_render_geom_facets (&g, m, u, o->scale, n, cell, face,
                                      value, o->subdiv, o->edges);
-  if (!status)
-    status = render_geom (&g, o, rgba);
-  lac_render_geom_free (&g);
-  return status;
+  return epilogue (&g, o, status, rgba);
 }
 
 int
@@ -569,23 +574,17 @@ lac_render_points_rgba (const lac_mesh *m, const double *u, size_t n,
 {
   lac_render_opts def;
   lac_render_geom g;
-  int status = LAC_SUCCESS;
-  if ((status = prologue (m, 0, &o, &def, rgba)))
+  int status = prologue (m, 0, 0.90, &o, &def, rgba, &g);
+  if (status)
     return status;
   if (n && (!xyz || !value))
     LAC_ERROR (LAC_EINVAL, "%zu points but no coordinates or values", n);
-  memset (&g, 0, sizeof g);
-  g.dim = m ? m->dim : 3;
-  g.grey = 0.90;
-  if (m)
+  if (m)                           /* the body in light grey behind them */
     status = lac_render_geom_mesh (&g, m, u, o->scale, NULL, o->subdiv,
                                    o->edges);
   if (!status)
     status = lac_render_geom_discs (&g, n, xyz, radius, value);
-  if (!status)
-    status = render_geom (&g, o, rgba);
-  lac_render_geom_free (&g);
-  return status;
+  return epilogue (&g, o, status, rgba);
 }
 
 /* ---- PNG --------------------------------------------------------------- */

@@ -23,25 +23,35 @@
 
 /* ---- growing lists ----------------------------------------------------- */
 
+/* The capacity, doubled from cap (1024 at first), that holds need items. */
+static size_t
+grown (size_t cap, size_t need)
+{
+  cap = cap ? cap : 1024;
+  while (cap < need)
+    cap *= 2;
+  return cap;
+}
+
+/* *a resized to cap * per doubles; 0 if out of memory (*a kept). */
+static int
+resize (double **a, size_t cap, size_t per)
+{
+  double *p = lac_realloc (*a, cap * per * sizeof *p);
+  if (p)
+    *a = p;
+  return p != NULL;
+}
+
 static int
 tris_reserve (lac_render_tris *T, size_t more)
 {
-  size_t cap = T->cap ? T->cap : 1024;
-  double *x, *nrm, *v;
+  size_t cap = grown (T->cap, T->n + more);
   if (T->n + more <= T->cap)
     return LAC_SUCCESS;
-  while (cap < T->n + more)
-    cap *= 2;
-  x = lac_realloc (T->x, cap * 9 * sizeof *x);
-  if (x)
-    T->x = x;
-  nrm = x ? lac_realloc (T->nrm, cap * 9 * sizeof *nrm) : NULL;
-  if (nrm)
-    T->nrm = nrm;
-  v = nrm ? lac_realloc (T->v, cap * 3 * sizeof *v) : NULL;
-  if (!v)
+  if (!resize (&T->x, cap, 9) || !resize (&T->nrm, cap, 9)
+      || !resize (&T->v, cap, 3))
     LAC_ERROR (LAC_ENOMEM, "cannot allocate %zu triangles to draw", cap);
-  T->v = v;
   T->cap = cap;
   return LAC_SUCCESS;
 }
@@ -49,21 +59,24 @@ tris_reserve (lac_render_tris *T, size_t more)
 static int
 lines_reserve (lac_render_lines *L, size_t more)
 {
-  size_t cap = L->cap ? L->cap : 1024;
-  double *x, *v;
+  size_t cap = grown (L->cap, L->n + more);
   if (L->n + more <= L->cap)
     return LAC_SUCCESS;
-  while (cap < L->n + more)
-    cap *= 2;
-  x = lac_realloc (L->x, cap * 6 * sizeof *x);
-  if (x)
-    L->x = x;
-  v = x ? lac_realloc (L->v, cap * 2 * sizeof *v) : NULL;
-  if (!v)
+  if (!resize (&L->x, cap, 6) || !resize (&L->v, cap, 2))
     LAC_ERROR (LAC_ENOMEM, "cannot allocate %zu lines to draw", cap);
-  L->v = v;
   L->cap = cap;
   return LAC_SUCCESS;
+}
+
+/* Append the segment from a to b with the value v at both ends (room
+ * reserved). */
+static void
+line_add (lac_render_lines *L, const double *a, const double *b, double v)
+{
+  memcpy (L->x + 6 * L->n, a, 3 * sizeof *a);
+  memcpy (L->x + 6 * L->n + 3, b, 3 * sizeof *b);
+  L->v[2 * L->n] = L->v[2 * L->n + 1] = v;
+  L->n++;
 }
 
 void
@@ -324,12 +337,7 @@ add_edges (lac_render_lines *L, const lac_refelem *fe, const double *P,
           xi[1] = (1 - t) * xa[1] + t * xb[1];
           map_point (fe, P, NULL, 0, xi, x, nrm, &v);
           if (s > 0)
-            {
-              memcpy (L->x + 6 * L->n, prev, sizeof prev);
-              memcpy (L->x + 6 * L->n + 3, x, sizeof x);
-              L->v[2 * L->n] = L->v[2 * L->n + 1] = NAN;
-              L->n++;
-            }
+            line_add (L, prev, x, NAN);
           memcpy (prev, x, sizeof x);
         }
     }
@@ -423,12 +431,7 @@ add_thick (lac_render_lines *L, const lac_refelem *fe, const double *P,
         for (int i = 0; i < 3; i++)
           x[i] += N[a] * P[3 * a + i];
       if (s > 0)
-        {
-          memcpy (L->x + 6 * L->n, prev, sizeof prev);
-          memcpy (L->x + 6 * L->n + 3, x, sizeof x);
-          L->v[2 * L->n] = L->v[2 * L->n + 1] = v;
-          L->n++;
-        }
+        line_add (L, prev, x, v);
       memcpy (prev, x, sizeof x);
     }
   return LAC_SUCCESS;

@@ -1,18 +1,20 @@
-/* lac_mesh_gmsh_internal.h -- internal: shared by the lac_mesh_gmsh*.c files
- *                                                                   [LAC §2]
- * Not part of the public interface.  lac_mesh_read (lac_mesh_gmsh.c) opens
- * or meshes the file through gmsh and holds a lac_gmsh_reader for the whole
- * read; the conversion of the gmsh model into a lac_mesh is split by what
- * it converts:
+/* lac_mesh_gmsh_reader.h -- one read of a gmsh model: its state, its
+ * errors, the gmsh calls the converters share                    [LAC §2]
  *
- *   lac_mesh_gmsh.c         opening a .msh, meshing a .geo, the driver and
- *                           the error helpers;
+ * lac_mesh_read (lac_mesh_gmsh.c) opens or meshes the file through gmsh
+ * and holds a lac_gmsh_reader for the whole read; the conversion of the
+ * gmsh model into a lac_mesh is split by what it converts, each part on
+ * top of this module:
+ *
  *   lac_mesh_gmsh_cells.c   nodes and cells: gmsh tags -> 0-based indices;
  *   lac_mesh_gmsh_groups.c  physical groups: cell, facet (matched to cell
  *                           faces through a hash) and node groups.
+ *
+ * Messages name the public function (lac_mesh_read) and the file,
+ * whatever helper sets them.
  */
-#ifndef LAC_MESH_GMSH_INTERNAL_H
-#define LAC_MESH_GMSH_INTERNAL_H
+#ifndef LAC_MESH_GMSH_READER_H
+#define LAC_MESH_GMSH_READER_H
 
 #include <stddef.h>
 
@@ -50,6 +52,21 @@ typedef struct lac_gmsh_reader
   lac_gmsh_face_slot *slot;    /* owned, hcap                              */
 } lac_gmsh_reader;
 
+/* Free the arrays the reader owns (not R itself). */
+void lac_gmsh_reader_free (lac_gmsh_reader *R);
+
+/* Put the file name in front of the message a lac_mesh_* call stored. */
+int lac_gmsh_with_path (const lac_gmsh_reader *R, int status);
+
+/* Set the message for a failed gmsh call, with gmsh's last error. */
+int lac_gmsh_fail (const lac_gmsh_reader *R, int status, const char *what);
+
+/* Position of node tag t in the sorted R->tag, or SIZE_MAX. */
+size_t lac_gmsh_tag_position (const lac_gmsh_reader *R, size_t t);
+
+/* Mesh index of node tag t, or SIZE_MAX if it is in no cell. */
+size_t lac_gmsh_node_index (const lac_gmsh_reader *R, size_t t);
+
 /* Elements of one gmsh call (getElements), released together. */
 typedef struct lac_gmsh_elements
 {
@@ -59,28 +76,6 @@ typedef struct lac_gmsh_elements
   size_t **ntags, *ntags_n, nntags;
 } lac_gmsh_elements;
 
-/* Error helpers (lac_mesh_gmsh.c). */
-
-/* Put the file name in front of the message a lac_mesh_* call stored. */
-int lac_gmsh_with_path (const lac_gmsh_reader *R, int status);
-
-/* Set the message for a failed gmsh call, with gmsh's last error. */
-int lac_gmsh_fail (const lac_gmsh_reader *R, int status, const char *what);
-
-/* Nodes and cells (lac_mesh_gmsh_cells.c). */
-
-/* All nodes of the model, sorted by tag, into R->tag, index, coord. */
-int lac_gmsh_read_nodes (lac_gmsh_reader *R);
-
-/* The highest dimension (3, 2 or 1) that has elements, 0 if none. */
-int lac_gmsh_top_dimension (const lac_gmsh_reader *R, int *tdim);
-
-/* Cells: the elements of every top-dimension entity, into a new *out. */
-int lac_gmsh_read_cells (lac_gmsh_reader *R, lac_mesh **out);
-
-/* Mesh index of node tag t, or SIZE_MAX if it is in no cell. */
-size_t lac_gmsh_node_index (const lac_gmsh_reader *R, size_t t);
-
 /* gmsh elements of dimension dim on entity tag (-1: all); freed below. */
 int lac_gmsh_get_elements (const lac_gmsh_reader *R, lac_gmsh_elements *E,
                            int dim, int tag);
@@ -89,9 +84,4 @@ void lac_gmsh_elements_free (lac_gmsh_elements *E);
 /* The reference element of gmsh type t, or NULL and an error. */
 const lac_refelem *lac_gmsh_refelem (const lac_gmsh_reader *R, int t);
 
-/* Physical groups (lac_mesh_gmsh_groups.c). */
-
-/* Every physical group of the model, added to m. */
-int lac_gmsh_read_groups (lac_gmsh_reader *R, lac_mesh *m);
-
-#endif /* LAC_MESH_GMSH_INTERNAL_H */
+#endif /* LAC_MESH_GMSH_READER_H */

@@ -1,17 +1,22 @@
-/* lac_scene_internal.h -- internal: shared by the lac_scene*.c files
+/* lac_scene_keys.h -- the sections and keys a scene file may hold
  *
- * Not part of the public interface: only lac_scene.c (tables, sections,
- * the public functions), lac_scene_ini.c (steps 1-3: the INI text, --set
- * overrides, typed values) and lac_scene_check.c (step 4: defaults,
- * required keys, conflicts) include it.
+ * A table describes every section and every key: its name, its type
+ * (text, number, integer, boolean, enum, vector), the field of the
+ * section's struct (lac_scene_types.h) that stores it, its allowed range
+ * and the words of a message about a wrong value.  The reading steps
+ * (lac_scene_ini.c: typed values; lac_scene_check.c: defaults, required
+ * keys, conflicts) and the messages (lac_scene_query.c) all read these
+ * tables; adding a key is one table line plus a field.
+ *
+ * Also here: the defaults of a new section, the lookup and creation of
+ * the sections of a scene, and the lists of names that messages show.
  */
-#ifndef LAC_SCENE_INTERNAL_H
-#define LAC_SCENE_INTERNAL_H
+#ifndef LAC_SCENE_KEYS_H
+#define LAC_SCENE_KEYS_H
 
 #include <stddef.h>
-#include "io/lac_scene.h"
-
-/* ---- the section and key tables (lac_scene.c) ------------------------- */
+#include "fem/lac_spaces.h"
+#include "io/lac_scene_types.h"
 
 typedef enum { K_STR, K_NUM, K_INT, K_BOOL, K_ENUM, K_VEC } key_type;
 
@@ -53,12 +58,9 @@ extern const lac_scene_element_spec lac_scene_elements[LAC_SCENE_NELEMENTS];
 extern const char *const lac_scene_element_names[];   /* same order */
 extern const char *const lac_scene_model_names[];     /* lac_model order */
 
-/* ---- sections and messages (lac_scene.c) ------------------------------ */
-
-/* Store "PATH:LINE: message" ("--set: message" for overrides). */
-int lac_scene_where_error (const char *path, int line, int status,
-                           const char *fmt, ...)
-  __attribute__ ((format (printf, 4, 5)));
+/* The defaults of a section of this kind (the rest stays as it is: zero
+ * for a new section); sets s->kind. */
+void lac_scene_section_defaults (int kind, lac_scene_section *s);
 
 int lac_scene_section_kind (const char *type);        /* -1 if unknown */
 /* "material steel" -> kind, name ("" if none); type and name point into
@@ -78,14 +80,4 @@ void lac_scene_join_names (char *buf, size_t size, const char *const *names,
 /* "scene, mesh, material NAME, ..." */
 void lac_scene_section_list (char *buf, size_t size);
 
-/* ---- the steps -------------------------------------------------------- */
-
-/* Steps 1-3 (lac_scene_ini.c): capture the INI text, apply the overrides,
- * build the typed sections of sc. */
-int lac_scene_parse (lac_scene *sc, const char *text, const char *path,
-                     size_t nset, const char *const *set);
-/* Step 4 (lac_scene_check.c): defaults, required keys, conflicts,
- * model-dependent keys, the mesh file. */
-int lac_scene_finish (lac_scene *sc);
-
-#endif /* LAC_SCENE_INTERNAL_H */
+#endif /* LAC_SCENE_KEYS_H */

@@ -1,0 +1,33 @@
+/* lac_nodal.h -- nodal averages of a stress computed cell by cell [LAC (2)]
+ *
+ * A stress computed from the gradient of u_h jumps across cells.  For the
+ * results it is averaged at the nodes: the unweighted mean, over the
+ * cells sharing a node, of each cell's value at that node (its reference
+ * coordinates), and the von Mises stress of the mean.  The law is a
+ * function of the cell and the point: the linear law of lac_post.c and
+ * the Cauchy stress of the hyperelastic laws of lac_hyper.c both use this
+ * loop.  Components as in lac_material.h.
+ */
+#ifndef LAC_NODAL_H
+#define LAC_NODAL_H
+
+#include <stddef.h>
+#include "fem/lac_material.h"
+#include "fem/lac_mesh.h"
+
+/* The stress s[ns] of cell c at reference point xi for the displacement
+ * u, by the material `law` (a lac_elastic, a lac_hyper, ...). */
+typedef int lac_cell_stress (const lac_mesh *m, const void *law,
+                             const double *u, size_t c, const double *xi,
+                             double *s);
+
+/* Nodal averages of the stress f gives (cells with cells[c] != 0 and
+ * E[c] > 0; cells may be NULL): sigma[nnodes*ns], vm[nnodes] (may be
+ * NULL).  Nodes in no such cell get zeros.  Returns LAC_SUCCESS,
+ * LAC_EINVAL (a cell of unknown type), LAC_ENOMEM, or what f returns. */
+int lac_nodal_average (const lac_mesh *m, lac_model model, const double *E,
+                       const char *cells, lac_cell_stress *f,
+                       const void *law, const double *u, double *sigma,
+                       double *vm);
+
+#endif /* LAC_NODAL_H */

@@ -1,0 +1,163 @@
+/* lac_scene_types.h -- what a scene holds once read
+ *
+ * One typed struct per section of a scene file (the format, the keys and
+ * their defaults are described in lac_scene.h), and the scene itself.
+ * Every section remembers the lines its header and its keys came from, so
+ * that later stages can point at the offending line (lac_scene_query.h).
+ * The section and key tables that fill these structs are in
+ * lac_scene_keys.c.
+ *
+ * Ownership: every pointer inside a lac_scene is owned by it
+ * (lac_scene_free, lac_scene.h).
+ */
+#ifndef LAC_SCENE_TYPES_H
+#define LAC_SCENE_TYPES_H
+
+#include <stddef.h>
+#include "fem/lac_exact.h"        /* solution: a lac_exact_kind */
+#include "fem/lac_material.h"     /* model: a lac_model */
+#include "fem/lac_spaces.h"       /* element: a lac_elem_type */
+
+#define LAC_SCENE_MAX_KEYS 16
+
+/* Where a section and each of its keys came from: line numbers in the
+ * scene file, LAC_SCENE_FROM_SET for --set, 0 when not given. */
+#define LAC_SCENE_FROM_SET (-1)
+
+typedef struct lac_scene_section
+{
+  int kind;                             /* index in the section table     */
+  char *name;                           /* owned: NAME, or NULL           */
+  int line;                             /* line of the [header]           */
+  int key_line[LAC_SCENE_MAX_KEYS];     /* per key of the table: its line */
+  char *key_raw[LAC_SCENE_MAX_KEYS];    /* owned: the value as written    */
+} lac_scene_section;
+
+typedef struct lac_scene_main            /* [scene] */
+{
+  lac_scene_section sec;
+  char *title;          /* owned */
+  int model;            /* lac_model */
+  int element;          /* lac_elem_type, LAC_ELEM_NONE if not given */
+  int solver;           /* lac_solver_kind */
+  char *out;            /* owned, NULL if not given */
+  int large_deformation;  /* 1: the nonlinear run (lac_nonlinear.h) */
+} lac_scene_main;
+
+typedef struct lac_scene_mesh            /* [mesh] */
+{
+  lac_scene_section sec;
+  char *file;           /* owned: as written in the scene             */
+  char *path;           /* owned: resolved against the scene directory */
+  double size;
+  int order;            /* 0: as the file / element says */
+  int level;
+  int recombine;        /* -1: as the element says */
+  int inverted;         /* 0 flip, 1 reject */
+} lac_scene_mesh;
+
+typedef struct lac_scene_material        /* [material NAME] */
+{
+  lac_scene_section sec;
+  char *group;          /* owned, NULL: every cell not in another group */
+  double E, nu;
+  int law;              /* lac_law (lac_hyper.h): 0 linear, 1 neo_hookean */
+} lac_scene_material;
+
+typedef enum
+{
+  LAC_BC_COMPONENTS,    /* ux / uy / uz (ur) values */
+  LAC_BC_CLAMP,
+  LAC_BC_SYMMETRY,
+  LAC_BC_EXACT
+} lac_bc_kind;
+
+typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
+{
+  lac_scene_section sec;
+  char *group;          /* owned */
+  lac_bc_kind kind;
+  int fixed[3];         /* components fixed (model components)          */
+  double value[3];      /* their values                                 */
+  double ux, uy, uz, ur;            /* raw key values (table storage)  */
+  int clamp, exact, symmetry;       /* raw key values (table storage)  */
+  int ramp;             /* 1: values times the load factor ([steps])   */
+} lac_scene_dirichlet;
+
+typedef enum
+{
+  LAC_LOAD_PRESSURE, LAC_LOAD_TRACTION, LAC_LOAD_FORCE,
+  LAC_LOAD_EXACT_TRACTION,    /* sigma(u) n of the [exact] solution        */
+  LAC_LOAD_EXACT_TANGENTIAL,  /* its tangential part (on a contact side)   */
+  LAC_LOAD_EXACT_FORCE        /* -div sigma(u) of the [exact] solution     */
+} lac_load_kind;
+
+typedef struct lac_scene_load            /* [load NAME] */
+{
+  lac_scene_section sec;
+  char *group;          /* owned, NULL: all cells (force only) */
+  lac_load_kind kind;
+  double pressure;
+  double vec[3];        /* traction or force, model components */
+  double traction[3], force[3];     /* raw key values (table storage)  */
+  int ntraction, nforce;
+  int exact;                        /* 0 none, 1 traction, 2 tangential,
+                                       3 force (table storage)          */
+} lac_scene_load;
+
+typedef struct lac_scene_exact           /* [exact] */
+{
+  lac_scene_section sec;
+  int solution;         /* lac_exact_kind: index in lac_exact_table */
+  double a, b, p, E, nu;
+} lac_scene_exact;
+
+typedef struct lac_scene_contact         /* [contact NAME] */
+{
+  lac_scene_section sec;
+  char *slave;          /* owned: facet group carrying the multipliers    */
+  char *master;         /* owned: facet group of the other body, or NULL  */
+  int obstacle;         /* 1: a rigid obstacle below a graph (no master)  */
+  double height;        /* obstacle: v <= height + sum curv_k (w_k - c_k)^2 */
+  double curvature[3], center[3];    /* (room for 3: the parser's limit) */
+  int ncurvature, ncenter;
+  double epsilon;       /* admissibility threshold [LAC Def. 1]            */
+  int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
+} lac_scene_contact;
+
+typedef struct lac_scene_steps           /* [steps] */
+{
+  lac_scene_section sec;
+  int n;                /* equal load steps (after the start step)        */
+  double start;         /* load factor of a first step, 0: none            */
+  double tol;           /* Newton tolerance (lac_nl_opts.tol)              */
+  int maxit;            /* Newton iterations per step                      */
+  char *monitor;        /* owned, NULL: node group followed step by step   */
+  char *curve;          /* owned, NULL: file name of the per-step CSV      */
+  int vtu_every;        /* K > 0: step_NNN.vtu every K steps, 0: none      */
+} lac_scene_steps;
+
+typedef struct lac_scene_output          /* [output] */
+{
+  lac_scene_section sec;
+  int vtu, csv, matrix;
+} lac_scene_output;
+
+typedef struct lac_scene
+{
+  char *path;                   /* owned: the scene file as given        */
+  char *dir;                    /* owned: its directory ("." if none)    */
+  char *basename;               /* owned: file name without .scene       */
+  lac_scene_main scene;
+  lac_scene_mesh mesh;
+  lac_scene_exact exact;        /* exact.sec.line == 0: no [exact]       */
+  lac_scene_output output;
+  lac_scene_steps steps;        /* steps.sec.line == 0: no [steps]       */
+  size_t nmaterial, ndirichlet, nload, ncontact;
+  lac_scene_material *material;     /* owned, nmaterial  */
+  lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */
+  lac_scene_load *load;             /* owned, nload      */
+  lac_scene_contact *contact;       /* owned, ncontact (0 or 1) */
+} lac_scene;
+
+#endif /* LAC_SCENE_TYPES_H */
