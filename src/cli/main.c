@@ -1,6 +1,7 @@
 /* main.c -- the lac command line
  *
- *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--out DIR]
+ *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--strategy NAME]
+ *                 [--out DIR]
  *                 [--quiet] [--timings] [--no-output]
  *   lac infsup SCENE [...]     (lac_cli_infsup.c)
  *   lac render RESULT [...]    (lac_cli_render.c)
@@ -19,6 +20,7 @@
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
 #include "run/lac_run.h"
+#include "solve/lac_strategy.h"
 #include "io/lac_scene.h"
 #include "base/lac_status.h"
 
@@ -50,7 +52,8 @@ static const char *help_text =
   "                   material, geometry and contact, re-pairing every\n"
   "                   iteration)\n"
   "  [mesh]           file = NAME.geo|NAME.msh (relative to the scene),\n"
-  "                   size (1), order = 1|2, level (0), recombine = yes|no,\n"
+  "                   size (1), order = 1|2, level (0), numbers = NAME=VALUE\n"
+  "                   ... (more .geo numbers), recombine = yes|no,\n"
   "                   inverted = flip|reject (flip)\n"
   "  [material NAME]  group (all other cells), E, nu,\n"
   "                   law = linear|neo_hookean (linear)\n"
@@ -60,7 +63,9 @@ static const char *help_text =
   "  [load NAME]      group, and pressure = P, or traction = TX TY [TZ], or\n"
   "                   force = FX FY [FZ] (per unit volume; group optional)\n"
   "  [contact NAME]   slave = FACET_GROUP, master = FACET_GROUP,\n"
-  "                   epsilon (0.01): admissibility threshold in (0, 1]\n"
+  "                   epsilon (0.01): admissibility threshold in (0, 1],\n"
+  "                   strategy = auto|dense|schur|augmented|saddle (auto),\n"
+  "                   max_iterations (50): active-set iterations at most\n"
   "  [exact]          solution = thick_sphere|thick_cylinder (a, b, p, E, nu)\n"
   "                   | taylor (p, E, nu: uniform pressure, patch test)\n"
   "  [steps]          n (1) equal load steps after a first step to the load\n"
@@ -78,6 +83,11 @@ static const char *help_text =
   "  --solver NAME     dense (GSL LU), umfpack (sparse LU) or cholmod\n"
   "                    (sparse Cholesky, the default): same as\n"
   "                    --set scene.solver=NAME\n"
+  "  --strategy NAME   how each active set's system is solved: auto (the\n"
+  "                    default: dense for small systems, else augmented),\n"
+  "                    dense, schur (every body held by its Dirichlet\n"
+  "                    conditions), augmented or saddle; overrides the\n"
+  "                    scene's [contact] strategy (chapter 07)\n"
   "  --out DIR         output directory (created if needed).  Default: the\n"
   "                    scene's [scene] out, else out/<scene name without\n"
   "                    .scene>, relative to the current directory\n"
@@ -121,7 +131,7 @@ typedef struct cmdline
   const char **set;     /* argc entries at most */
   size_t nset;
   const char *out;
-  int quiet, timings, no_output;
+  int quiet, timings, no_output, strategy;
   char solver_set[64];
 } cmdline;
 
@@ -142,6 +152,14 @@ parse_run_args (int argc, char **argv, cmdline *c)
                                         "umfpack or cholmod, got", v);
           snprintf (c->solver_set, sizeof c->solver_set, "scene.solver=%s", v);
           c->set[c->nset++] = c->solver_set;
+        }
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--strategy",
+                                          &missing)))
+        {
+          if ((c->strategy = lac_strategy_from_name (v)) < 0)
+            return lac_cli_usage_error (NULL, "--strategy: expected auto, "
+                                        "dense, schur, augmented or saddle, "
+                                        "got", v);
         }
       else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
@@ -189,7 +207,7 @@ cmd_run (const cmdline *c)
 {
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts opts = { c->out, c->timings, c->no_output };
+  lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy };
   int status;
 
   /* 1. The scene, with the overrides. */

@@ -179,16 +179,65 @@ read_model (lac_gmsh_reader *R, int kind, lac_mesh **out)
  *   returns LAC_SUCCESS, LAC_EIO (missing or unreadable file), LAC_EINVAL
  *   (unsupported elements, inverted cells, groups that do not fit),
  *   LAC_EDEP (gmsh failed), LAC_ENOMEM */
+/* argv for gmshInitialize: "-setnumber level N" and one "-setnumber NAME
+ * VALUE" per pair of `numbers` ("n=28, m=3"); the strings in buf.
+ * Returns argc, or -1 with a message for a malformed pair. */
+static int
+number_args (const char *path, int level, const char *numbers, char *buf,
+             size_t size, char **argv)
+{
+  static char prog[] = "lac", set[] = "-setnumber", lev[] = "level";
+  int argc = 0;
+  size_t used = 0;
+  argv[argc++] = prog;
+  argv[argc++] = set;
+  argv[argc++] = lev;
+  argv[argc++] = buf;
+  used = (size_t) snprintf (buf, size, "%d", level) + 1;
+  for (const char *p = numbers; p && *p;)
+    {
+      size_t nl = 0, vl;
+      char *end;
+      p += strspn (p, " \t,");
+      if (!*p)
+        break;
+      while (p[nl] == '_' || (p[nl] >= 'a' && p[nl] <= 'z')
+             || (p[nl] >= 'A' && p[nl] <= 'Z') || (nl > 0 && p[nl] >= '0'
+                                                   && p[nl] <= '9'))
+        nl++;
+      vl = strcspn (p + nl + 1, " \t,");
+      if (nl == 0 || p[nl] != '=' || vl == 0
+          || argc + 3 > 3 + 3 * (LAC_MESH_MAX_NUMBERS + 1)
+          || used + nl + vl + 2 > size)
+        return READ_ERR (LAC_EINVAL, "'%s': numbers = '%s': expected at "
+                         "most %d NAME=VALUE pairs", path, numbers,
+                         LAC_MESH_MAX_NUMBERS), -1;
+      argv[argc++] = set;
+      argv[argc++] = memcpy (buf + used, p, nl);
+      buf[used + nl] = '\0';
+      used += nl + 1;
+      argv[argc++] = memcpy (buf + used, p + nl + 1, vl);
+      buf[used + vl] = '\0';
+      strtod (buf + used, &end);
+      if (*end != '\0')
+        return READ_ERR (LAC_EINVAL, "'%s': numbers: '%s' is not a number",
+                         path, buf + used), -1;
+      used += vl + 1;
+      p += nl + 1 + vl;
+    }
+  argv[argc] = NULL;
+  return argc;
+}
+
 int
 lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
 {
   static const lac_mesh_opts none;
   lac_gmsh_reader R = { 0 };
   const char *ext;
-  char a0[] = "lac", a1[] = "-setnumber", a2[] = "level", a3[32];
-  char *argv[] = { a0, a1, a2, a3, NULL };
+  char buf[1024], *argv[4 + 3 * LAC_MESH_MAX_NUMBERS + 4];
   FILE *f;
-  int kind, ierr = 0, status;
+  int kind, ierr = 0, status, argc;
 
   if (!out)
     return READ_ERR (LAC_EINVAL, "no output pointer");
@@ -209,9 +258,13 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
   R.path = path;
   R.opts = opts ? opts : &none;
   /* "-setnumber level N" defines `level' for the .geo parser; gmsh keeps
-   * such numbers for the whole process, so it is always given. */
-  snprintf (a3, sizeof a3, "%d", R.opts->level);
-  gmshInitialize (4, argv, 0, &ierr);
+   * such numbers for the whole process, so it is always given (the other
+   * numbers persist likewise: a later read in the same process sees them). */
+  argc = number_args (path, R.opts->level, R.opts->numbers, buf, sizeof buf,
+                      argv);
+  if (argc < 0)
+    return LAC_EINVAL;
+  gmshInitialize (argc, argv, 0, &ierr);
   if (ierr)
     status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize", path);
   else

@@ -11,6 +11,8 @@
 
 #include "fem/lac_mesh.h"
 
+#define LAC_MESH_MAX_NUMBERS 16
+
 /* Options for reading or meshing (.geo) through gmsh. */
 typedef struct lac_mesh_opts
 {
@@ -19,6 +21,9 @@ typedef struct lac_mesh_opts
   int serendipity;     /* quad8/hex20 instead of quad9/hex27             */
   int recombine;       /* quadrangles / hexahedra from .geo              */
   int level;           /* exported to the .geo as the number `level`     */
+  const char *numbers; /* borrowed, NULL: more numbers for the .geo,
+                          "NAME=VALUE" pairs separated by blanks or
+                          commas (at most LAC_MESH_MAX_NUMBERS)          */
   int flip_inverted;   /* 1: flip cells with det J < 0; 0: reject them   */
 } lac_mesh_opts;
 

@@ -38,6 +38,7 @@
  *     order                1 | 2 (.geo)               from element, else 1
  *     level                refinement level 0..12, exported to the .geo as
  *                          the number `level`         0
+ *     numbers              "NAME=VALUE ..." more numbers for the .geo  none
  *     recombine            yes | no: quadrangles/hexahedra (.geo)
  *                                                     from element
  *     inverted             flip | reject: cells with det J < 0     flip
@@ -82,11 +83,16 @@
  *                          other coordinates)          (one of the two)
  *     height curvature center   the graph (0; 0 [0]; 0 [0])
  *     epsilon              admissibility threshold in (0, 1] [LAC Def. 1]
- *                                                     0.01
+ *                          (0 in the struct when not given: the
+ *                          method's default LAC_EPSILON_DEFAULT)   0.01
  *     method               lac | p0 (one multiplier per raw slave facet,
  *                          no macro-elements: violates Hypothesis 1) |
  *                          nts (node-to-segment / node-to-face
  *                          collocation): p0 and nts for comparisons  lac
+ *     strategy             auto | dense | schur | augmented | saddle: how
+ *                          each active set's system is solved
+ *                          (solve/lac_strategy.h)               auto
+ *     max_iterations       active-set iterations at most          50
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b

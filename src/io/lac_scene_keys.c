@@ -12,10 +12,10 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "contact/lac_contact.h"
 #include "fem/lac_exact.h"
 #include "fem/lac_material.h"
 #include "linalg/lac_linalg.h"
+#include "solve/lac_strategy.h"
 #include "base/lac_mem.h"
 
 /* ---- tables ----------------------------------------------------------- */
@@ -67,6 +67,7 @@ static const key_spec mesh_keys[] = {
   NUM (lac_scene_mesh, size, 0, HUGE_VAL, 1, "a number > 0"),
   INT (lac_scene_mesh, order, 1, 2, "1 or 2"),
   INT (lac_scene_mesh, level, 0, 12, "an integer in 0..12"),
+  STR (lac_scene_mesh, numbers),
   BOOL (lac_scene_mesh, recombine),
   ENUM (lac_scene_mesh, inverted, inverted_names),
 };
@@ -107,6 +108,8 @@ static const key_spec exact_keys[] = {
 };
 static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const char *const method_names[] = { "lac", "p0", "nts", NULL };
+static const char *const strategy_names[] =             /* lac_strategy.h */
+  { "auto", "dense", "schur", "augmented", "saddle", NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),
@@ -116,6 +119,9 @@ static const key_spec contact_keys[] = {
   VEC12 (lac_scene_contact, center, ncenter),
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
   ENUM (lac_scene_contact, method, method_names),
+  ENUM (lac_scene_contact, strategy, strategy_names),
+  INT (lac_scene_contact, max_iterations, 1, 100000,
+       "an integer in 1..100000"),
 };
 static const key_spec steps_keys[] = {
   INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),
@@ -202,7 +208,8 @@ lac_scene_section_defaults (int kind, lac_scene_section *s)
       ((lac_scene_output *) s)->vtu = ((lac_scene_output *) s)->csv = 1;
       break;
     case SEC_CONTACT:
-      ((lac_scene_contact *) s)->epsilon = LAC_EPSILON_DEFAULT;
+      ((lac_scene_contact *) s)->strategy = LAC_STRATEGY_AUTO;
+      ((lac_scene_contact *) s)->max_iterations = 50;
       break;
     case SEC_DIRICHLET:
       ((lac_scene_dirichlet *) s)->ramp = 1;

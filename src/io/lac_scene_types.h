@@ -52,6 +52,7 @@ typedef struct lac_scene_mesh            /* [mesh] */
   double size;
   int order;            /* 0: as the file / element says */
   int level;
+  char *numbers;        /* owned, NULL: "NAME=VALUE ..." for the .geo      */
   int recombine;        /* -1: as the element says */
   int inverted;         /* 0 flip, 1 reject */
 } lac_scene_mesh;
@@ -121,8 +122,11 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double height;        /* obstacle: v <= height + sum curv_k (w_k - c_k)^2 */
   double curvature[3], center[3];    /* (room for 3: the parser's limit) */
   int ncurvature, ncenter;
-  double epsilon;       /* admissibility threshold [LAC Def. 1]            */
+  double epsilon;       /* admissibility threshold [LAC Def. 1]; 0: not
+                           given (the method's default)                    */
   int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
+  int strategy;         /* lac_strategy_kind, LAC_STRATEGY_AUTO default   */
+  int max_iterations;   /* active-set iterations at most (default 50)     */
 } lac_scene_contact;
 
 typedef struct lac_scene_steps           /* [steps] */

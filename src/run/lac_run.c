@@ -238,6 +238,7 @@ stage_mesh (lac_run *r)
                   || sc->scene.element == LAC_HEX20;
   o.recombine = sc->mesh.recombine > 0;
   o.level = sc->mesh.level;
+  o.numbers = sc->mesh.numbers;
   o.flip_inverted = sc->mesh.inverted == 0;
   status = lac_mesh_read (sc->mesh.path, &o, &r->mesh);
   if (status)

@@ -51,6 +51,8 @@ typedef struct lac_run_opts
                             out/<scene basename>                        */
   int timings;           /* add time_<stage> lines to the summary       */
   int no_output;         /* skip the output stage (no files at all)     */
+  int strategy;          /* lac_strategy_kind; LAC_STRATEGY_AUTO: the
+                            scene's [contact] strategy                   */
 } lac_run_opts;
 
 #define LAC_RUN_MAX_EFFECTS 8

@@ -21,7 +21,6 @@
 #include "contact/lac_obstacle.h"
 #include "base/lac_status.h"
 
-#define NEWTON_MAXIT 50
 #define NEWTON_TOL 1e-10
 
 /* Mark the nodes of the slave and master groups (the rigid-motion check
@@ -141,7 +140,9 @@ lac_run_contact_assemble (lac_run *r, const lac_dirichlet *d)
                                     &r->master, &r->contact);
   else
     status = lac_contact_build (r->mesh, r->model, r->macro, r->pairing,
-                                r->master.n ? &r->master : NULL, c->epsilon,
+                                r->master.n ? &r->master : NULL,
+                                c->epsilon > 0 ? c->epsilon
+                                : LAC_EPSILON_DEFAULT,
                                 &r->contact);
   if (status)
     return lac_scene_error (r->scene, &c->sec, status == LAC_EADMISS
@@ -157,15 +158,21 @@ lac_run_contact_solve (lac_run *r)
 {
   lac_contact_system sys = { r->K, r->b, r->contact->C, r->contact->G, NULL,
                              0, NULL, NULL };
-  lac_strategy_kind kind = lac_strategy_choose (LAC_STRATEGY_AUTO, r->ndof,
-                                                r->contact->k, sys.nfree);
+  const lac_scene_contact *sc = &r->scene->contact[0];
+  lac_strategy_kind want = (lac_strategy_kind) (r->opts.strategy
+                                                ? r->opts.strategy
+                                                : sc->strategy);
+  lac_strategy_kind kind = lac_strategy_choose (want, r->ndof, r->contact->k,
+                                                sys.nfree);
   int status;
   if (kind == LAC_NSTRATEGIES)
-    return LAC_EINVAL;
+    return lac_scene_error (r->scene, &sc->sec, "strategy", LAC_EINVAL, "%s",
+                            lac_error_message ());
   r->newton = lac_newton_alloc (kind, r->ndof, r->contact->k);
   if (!r->newton)
     return LAC_ENOMEM;
-  status = lac_newton_solve (r->newton, &sys, NEWTON_MAXIT, NEWTON_TOL);
+  status = lac_newton_solve (r->newton, &sys, sc->max_iterations,
+                             NEWTON_TOL);
   if (status)
     return status;
   r->fallback = lac_strategy_fallback (r->newton->strategy);
