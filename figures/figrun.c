@@ -73,15 +73,15 @@ precise_time (const lac_run *r, const char *key)
     if (strcmp (key + 5, lac_run_stage_name (s)) == 0)
       return r->time[s];
   if (strcmp (key, "time_refine") == 0)
-    return r->time_refine;
+    return r->setup.time_refine;
   if (strcmp (key, "time_pairing") == 0)
-    return r->time_pairing;
+    return r->setup.time_pairing;
   lac_strategy_counts c;
-  if (r->newton)
-    lac_strategy_get_counts (r->newton->strategy, &c);
-  if (strcmp (key, "time_factor_K") == 0 && r->newton)
+  if (r->sol.newton)
+    lac_strategy_get_counts (r->sol.newton->strategy, &c);
+  if (strcmp (key, "time_factor_K") == 0 && r->sol.newton)
     return c.time_factor;
-  if (strcmp (key, "time_active_set") == 0 && r->newton)
+  if (strcmp (key, "time_active_set") == 0 && r->sol.newton)
     return c.time_solve;
   return -1;
 }
@@ -90,8 +90,8 @@ precise_time (const lac_run *r, const char *key)
 static double *
 facet_values (const lac_run *r, const char *kind)
 {
-  const lac_macro *M = r->macro;
-  const lac_contact *c = r->contact;
+  const lac_macro *M = r->setup.macro;
+  const lac_contact *c = r->sys.contact;
   double *v = malloc ((M->ptr[M->n] ? M->ptr[M->n] : 1) * sizeof *v);
   if (!v)
     return NULL;
@@ -100,9 +100,9 @@ facet_values (const lac_run *r, const char *kind)
       long i = c->mult[m];
       double val = NAN;
       if (i >= 0 && strcmp (kind, "lambda") == 0)
-        val = r->newton->lambda[i];
+        val = r->sol.newton->lambda[i];
       else if (i >= 0 && c->area[i] > 0)
-        val = r->newton->d[i] / c->area[i];
+        val = r->sol.newton->d[i] / c->area[i];
       for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
         v[j] = val;
     }
@@ -123,7 +123,7 @@ nodal_values (const lac_run *r, const char *kind)
       double xx = 0, xu = 0, uu = 0;
       for (int i = 0; i < d; i++)
         {
-          double x = m->x[d * n + i], u = r->u[d * n + i];
+          double x = m->x[d * n + i], u = r->sol.u[d * n + i];
           xx += x * x;
           xu += x * u;
           uu += u * u;
@@ -139,10 +139,10 @@ do_draw (const lac_run *r, const draw *dw)
 {
   int status;
   const lac_mesh *m = r->mesh;
-  const double *u = dw->o.scale != 0 ? r->u : NULL;
+  const double *u = dw->o.scale != 0 ? r->sol.u : NULL;
   if (strcmp (dw->kind, "lambda") == 0 || strcmp (dw->kind, "gap") == 0)
     {
-      if (!r->macro || !r->contact || !r->newton)
+      if (!r->setup.macro || !r->sys.contact || !r->sol.newton)
         {
           fprintf (stderr, "figrun: --draw %s: the scene has no contact\n",
                    dw->kind);
@@ -151,7 +151,7 @@ do_draw (const lac_run *r, const draw *dw)
       double *v = facet_values (r, dw->kind);
       if (!v)
         return 1;
-      const lac_macro *M = r->macro;
+      const lac_macro *M = r->setup.macro;
       status = lac_render_facets (m, u, M->ptr[M->n], M->cell, M->face, v,
                                   &dw->o, dw->file);
       free (v);
@@ -186,7 +186,7 @@ main (int argc, char **argv)
   char solver_set[64];
   size_t nset = 0, ndraw = 0;
   draw dr[MAX_DRAW];
-  lac_run_opts opts = { NULL, 0, 0 };
+  lac_run_opts opts = { NULL, 0, 0, 0 };
   int quiet = 0;
   lac_render_opts o;
   lac_render_opts_init (&o);
@@ -309,13 +309,15 @@ main (int argc, char **argv)
     }
   else
     {
-      for (size_t k = 0; k < r->nsummary; k++)
+      for (size_t k = 0; k < r->res.summary.n; k++)
         {
-          double t = opts.timings ? precise_time (r, r->key[k]) : -1;
+          double t = opts.timings ? precise_time (r, r->res.summary.key[k])
+                                  : -1;
           if (t >= 0)
-            printf ("%s = %.6f\n", r->key[k], t);
+            printf ("%s = %.6f\n", r->res.summary.key[k], t);
           else
-            printf ("%s = %s\n", r->key[k], r->val[k]);
+            printf ("%s = %s\n", r->res.summary.key[k],
+                    r->res.summary.val[k]);
         }
       if (opts.timings)
         {
@@ -324,8 +326,11 @@ main (int argc, char **argv)
             if (s != LAC_STAGE_OUTPUT)
               tot += r->time[s];
           printf ("time_total = %.6f\n", tot);
-          printf ("solver_used = %s\n", r->fallback ? "umfpack"
-                  : r->solver_name);
+          printf ("solver_used = %s\n", r->sol.newton
+                  ? lac_strategy_name (lac_strategy_kind_of
+                                       (r->sol.newton->strategy))
+                  : lac_solver_kind_name ((lac_solver_kind)
+                                          r->scene->scene.solver));
         }
       for (size_t k = 0; k < ndraw; k++)
         rc |= do_draw (r, &dr[k]);

@@ -139,8 +139,8 @@ run_to_assemble (lac_run *r, int quiet)
 static int
 estimate (lac_run *r, const args *a)
 {
-  const lac_contact *c = r->contact;
-  char *fixed = lac_calloc (r->ndof, 1);
+  const lac_contact *c = r->sys.contact;
+  char *fixed = lac_calloc (r->sys.ndof, 1);
   double *h = lac_malloc ((c->k ? c->k : 1) * sizeof *h);
   lac_csc *G = NULL, *M = NULL;
   lac_infsup *res = NULL;
@@ -152,14 +152,14 @@ estimate (lac_run *r, const args *a)
       status = LAC_ERRMSG (LAC_ENOMEM, "out of memory");
       goto done;
     }
-  nfixed = lac_infsup_fixed_dofs (r->K, fixed);        /* Dirichlet dofs */
+  nfixed = lac_infsup_fixed_dofs (r->sys.K, fixed);        /* Dirichlet dofs */
   if ((!energy && (status = lac_infsup_gram_h1 (r->mesh, r->model, fixed,
                                                 0.0, &G)))      /* A */
-      || (status = lac_infsup_norm_lac (r->mesh, r->macro, c, h, &M)))
+      || (status = lac_infsup_norm_lac (r->mesh, r->setup.macro, c, h, &M)))
     goto done;
   lac_infsup_opts_init (&o);
   o.path = a->path;
-  if ((status = lac_infsup_estimate (energy ? r->K : G, c->C, M, &o, &res)))
+  if ((status = lac_infsup_estimate (energy ? r->sys.K : G, c->C, M, &o, &res)))
     goto done;
   double hmin = HUGE_VAL, hmax = 0, cmin = HUGE_VAL;
   size_t mcrit = 0;
@@ -173,7 +173,7 @@ estimate (lac_run *r, const args *a)
   printf ("lambda_min = %.10e\n", res->lambda_min);
   printf ("lambda_2 = %.10e\n", res->lambda_2);
   printf ("multipliers = %zu\n", c->k);
-  printf ("ndof = %zu\n", r->ndof);
+  printf ("ndof = %zu\n", r->sys.ndof);
   printf ("fixed_dofs = %zu\n", nfixed);
   printf ("h_max = %.6e\n", hmax);
   printf ("h_min = %.6e\n", hmin);

@@ -184,20 +184,14 @@ parse_run_args (int argc, char **argv, cmdline *c)
   return 0;
 }
 
-/* The active-set history [LAC Alg. 1]: one line per iteration. */
+/* The strategy's fallback, if one happened in the solve stage. */
 static void
-print_newton (const lac_run *r)
+print_fallback (const lac_run *r)
 {
-  if (r->fallback)
-    fprintf (stderr, "lac:       note: %s\n", r->fallback);
-  fprintf (stderr, "lac:       iter  residual    ncp         active  "
-           "changed\n");
-  for (size_t k = 0; k < r->newton->nhist; k++)
-    {
-      const lac_newton_record *h = &r->newton->hist[k];
-      fprintf (stderr, "lac:       %4d  %.3e   %.3e   %6zu  %7zu\n",
-               h->iter, h->residual, h->ncp, h->nactive, h->nchanged);
-    }
+  const char *why = r->sol.newton
+                    ? lac_strategy_fallback (r->sol.newton->strategy) : NULL;
+  if (why)
+    fprintf (stderr, "lac:       note: %s\n", why);
 }
 
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
@@ -242,16 +236,16 @@ cmd_run (const cmdline *c)
           fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
                    LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
                    r->time[stage]);
-          if (stage == LAC_STAGE_SOLVE && r->newton)
-            print_newton (r);
+          if (stage == LAC_STAGE_SOLVE && r->stage != stage)
+            print_fallback (r);
         }
     }
   while (status == LAC_CONTINUE);
 
   /* 3. The summary. */
   if (status == LAC_SUCCESS)
-    for (size_t k = 0; k < r->nsummary; k++)
-      printf ("%s = %s\n", r->key[k], r->val[k]);
+    for (size_t k = 0; k < r->res.summary.n; k++)
+      printf ("%s = %s\n", r->res.summary.key[k], r->res.summary.val[k]);
   else
     lac_cli_print_error (lac_error_message ());
   lac_run_free (r);

@@ -50,6 +50,7 @@ lac_csc *lac_csc_from_triplet (const lac_triplet *T);  /* sums duplicates */
 void lac_csc_free (lac_csc *A);
 int lac_csc_matvec (const lac_csc *A, const double *x, double *y); /* y = A x */
 lac_csc *lac_csc_transpose (const lac_csc *A);
+lac_csc *lac_csc_copy (const lac_csc *A);
 int lac_csc_write_mm (const lac_csc *A, const char *path);  /* Matrix Market */
 /* The augmented matrix K + C W C^T of the contact solves [LAC (17)]:
  * the pattern of K + C C^T with the values of K (zeros elsewhere), made

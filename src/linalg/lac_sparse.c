@@ -272,6 +272,19 @@ lac_csc_matvec (const lac_csc *A, const double *x, double *y)
 }
 
 lac_csc *
+lac_csc_copy (const lac_csc *A)
+{
+  size_t nnz = (size_t) A->p[A->ncol];
+  lac_csc *B = lac_csc_alloc (A->nrow, A->ncol, nnz);
+  if (!B)
+    return NULL;
+  memcpy (B->p, A->p, (A->ncol + 1) * sizeof *B->p);
+  memcpy (B->i, A->i, nnz * sizeof *B->i);
+  memcpy (B->x, A->x, nnz * sizeof *B->x);
+  return B;
+}
+
+lac_csc *
 lac_csc_transpose (const lac_csc *A)
 {
   size_t nnz = (size_t) A->p[A->ncol];

@@ -14,18 +14,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "solve/lac_complementarity.h"
-
-static double
-seconds (void)
-{
-  struct timespec t;
-  clock_gettime (CLOCK_MONOTONIC, &t);
-  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
-}
 
 lac_newton *
 lac_newton_alloc (lac_strategy_kind kind, size_t n, size_t k)
@@ -255,7 +247,7 @@ lac_newton_iterate (lac_newton *s)
 {
   lac_newton_record r;
   lac_strategy_counts c0, c1;
-  double t0 = seconds ();
+  double t0 = lac_seconds ();
   int status, damped;
   if (!s->sys)
     LAC_ERROR (LAC_EINVAL, "lac_newton_set was not called");
@@ -286,7 +278,7 @@ lac_newton_iterate (lac_newton *s)
   s->changed = update_status (s, &damped);                 /* steps 26-33 */
   r.nchanged = s->changed;
   r.damped = damped;
-  r.seconds = seconds () - t0;
+  r.seconds = lac_seconds () - t0;
   if ((status = push_record (s, &r)))
     return status;
   s->seen[s->nhist] = status_hash (s->active, s->k);

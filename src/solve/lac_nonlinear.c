@@ -10,21 +10,13 @@
 
 #include <math.h>
 #include <string.h>
-#include <time.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "solve/lac_complementarity.h"
 #include "solve/lac_strategy.h"
 #include "base/lac_status.h"
 
 #define HALVINGS 5        /* corrections halved when a cell turns inside out */
-
-static double
-seconds (void)
-{
-  struct timespec t;
-  clock_gettime (CLOCK_MONOTONIC, &t);
-  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
-}
 
 void
 lac_nl_opts_init (lac_nl_opts *o)
@@ -255,7 +247,7 @@ contact_update (lac_nl *s)
     s->x[j] = p->mesh->x[j] + s->U[j];                /* x = X + U */
   lac_pairing_facets S = { &s->cur, M->ptr[M->n], M->cell, M->face };
   lac_pairing_facets Mf;
-  double t0 = seconds ();
+  double t0 = lac_seconds ();
   if (p->master)
     {
       Mf = *p->master;
@@ -270,7 +262,7 @@ contact_update (lac_nl *s)
     status = lac_contact_build (&s->cur, p->mat->model, M, s->pairing,
                                 p->master ? &Mf : NULL, p->epsilon,
                                 &s->contact);
-  s->time_pairing += seconds () - t0;
+  s->time_pairing += lac_seconds () - t0;
   if (status == LAC_EADMISS)                          /* nothing in reach */
     {
       lac_error_clear ();
@@ -299,11 +291,11 @@ assemble (lac_nl *s)
             }
           lac_error_clear ();
         }
-      double t0 = seconds ();
+      double t0 = lac_seconds ();
       memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
       status = lac_hyper_assemble_csc (s->prob.mesh, s->prob.mat, s->U,
                                        s->Fint, s->K);
-      s->time_assemble += seconds () - t0;
+      s->time_assemble += lac_seconds () - t0;
     }
   return status;
 }
@@ -548,11 +540,11 @@ solve (lac_nl *s)
     }
   if (!status && s->contact)
     status = lac_contact_apply_dirichlet (s->contact, inc.n, inc.dof, inc.val);
-  double t0 = seconds ();
+  double t0 = lac_seconds ();
   if (!status)
     status = s->contact && s->contact->k > 0 ? solve_contact (s)
                                              : solve_plain (s);
-  s->time_solve += seconds () - t0;
+  s->time_solve += lac_seconds () - t0;
   lac_free (inc.dof);
   lac_free (inc.val);
   if (status)

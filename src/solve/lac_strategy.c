@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "solve/lac_saddle.h"
@@ -40,14 +40,6 @@ struct lac_strategy
 
 static const char *const names[LAC_NSTRATEGIES] =
   { "auto", "dense", "schur", "augmented", "saddle" };
-
-static double
-seconds (void)
-{
-  struct timespec t;
-  clock_gettime (CLOCK_MONOTONIC, &t);
-  return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
-}
 
 int
 lac_strategy_from_name (const char *name)
@@ -138,7 +130,7 @@ int
 lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
 {
   size_t n = sys->K->ncol, k = sys->C->ncol;
-  double t0 = seconds ();
+  double t0 = lac_seconds ();
   int status;
   if (!s->r || s->n != n || s->k != k)
     {
@@ -156,7 +148,7 @@ lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
   status = s->saddle ? lac_saddle_set (s->saddle, sys)
            : s->schur ? lac_schur_set (s->schur, sys)
            : lac_augmented_set (s->aug, sys);
-  s->counts.time_factor += seconds () - t0;
+  s->counts.time_factor += lac_seconds () - t0;
   return status;
 }
 
@@ -233,7 +225,7 @@ int
 lac_strategy_solve (lac_strategy *s, const char *active, double *U,
                     double *lambda)
 {
-  double t0 = seconds ();
+  double t0 = lac_seconds ();
   int status;
   if (!s->sys)
     LAC_ERROR (LAC_EINVAL, "lac_strategy_set was not called");
@@ -248,7 +240,7 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
     }
   if (!status)
     status = refine (s, active, U, lambda);
-  s->counts.time_solve += seconds () - t0;
+  s->counts.time_solve += lac_seconds () - t0;
   return status;
 }
 

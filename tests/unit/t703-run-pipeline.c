@@ -62,11 +62,11 @@ test_uniaxial (const char *element)
     {
       for (size_t a = 0; a < r->mesh->nnodes; a++)
         {
-          const double *s = r->sigma + 4 * a, want[4] = { t, 0, nu * t, 0 };
+          const double *s = r->res.sigma + 4 * a, want[4] = { t, 0, nu * t, 0 };
           double x = r->mesh->x[2 * a];
           for (int k = 0; k < 4; k++)
             err_s = fmax (err_s, fabs (s[k] - want[k]));
-          err_u = fmax (err_u, fabs (r->u[2 * a] - (1 - nu * nu) * t * x / E));
+          err_u = fmax (err_u, fabs (r->sol.u[2 * a] - (1 - nu * nu) * t * x / E));
         }
       check_abs (err_s, 0, 1e-9, "uniaxial %s: stress", element);
       check_abs (err_u, 0, 1e-12, "uniaxial %s: u_x", element);
@@ -111,7 +111,7 @@ test_convergence (const char *what, size_t nset, const char **set)
                &sc);
       check_status (st, LAC_SUCCESS, "%s level %d", what, l);
       if (!st)
-        e[l] = r->err_l2 / r->norm_l2;
+        e[l] = r->res.err_l2 / r->res.norm_l2;
       lac_run_free (r);
       lac_scene_free (sc);
     }

@@ -1,14 +1,7 @@
-/* lac_run_rigid.c -- is every body fixed against rigid motions?  [LAC §2]
- *
- * Part of the assemble stage (lac_run.c): with too few Dirichlet
- * conditions K is singular, and a solver's pivot message cannot say why.
- * Here the bodies (connected components of the mesh) are found, the rigid
- * motions of the model are restricted to the fixed dofs of each body, and
- * the Gram matrix of these restrictions is checked for singularity: its
- * null space names the free motion ("rotation about (0, 0)",
- * "translation along z", ...).
+/* lac_rigid.c -- bodies and their free rigid motions (see lac_rigid.h)
+ *                                                                  [LAC §2]
  */
-#include "run/lac_run_internal.h"
+#include "fem/lac_rigid.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -94,10 +87,11 @@ describe_mode (lac_model model, int nm, const double *v, const double *ctr,
 
 /* The free rigid motions of a body from the Gram matrix G of the modes
  * restricted to its fixed dofs: eigenvalues <= 1e-10 * max are free.
- * Describes them in buf; returns their number (-1: GSL failed). */
+ * Describes them in buf, their coefficients in mode[]; returns their
+ * number (-1: GSL failed). */
 static int
 free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
-            char *buf, size_t size)
+            char *buf, size_t size, double (*mode)[6])
 {
   gsl_matrix_view A = gsl_matrix_view_array (G, (size_t) nm, (size_t) nm);
   gsl_vector *ev = gsl_vector_alloc ((size_t) nm);
@@ -117,6 +111,7 @@ free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
         continue;
       for (int j = 0; j < nm; j++)
         v[j] = gsl_matrix_get (V, (size_t) j, (size_t) k);
+      memcpy (mode[nfree], v, sizeof v);
       if (len + 8 < size)
         len += (size_t) snprintf (buf + len, size - len, nfree ? "; "
                                   : "free: ");
@@ -188,12 +183,12 @@ body_frames (const lac_mesh *m, const size_t *comp, size_t nb, double *ctr)
 /* G_b += v v^T over the fixed dofs q of body b, v = the rigid modes at q
  * (36 entries per body, nm x nm used). */
 static void
-mode_gram (const lac_run *r, const char *fixed, const size_t *comp,
-           const double *ctr, int nm, double *G)
+mode_gram (const lac_mesh *m, lac_model model, const char *fixed,
+           const size_t *comp, const double *ctr, int nm, double *G)
 {
-  const lac_mesh *m = r->mesh;
   int dim = m->dim;
-  for (size_t q = 0; q < r->ndof; q++)
+  size_t ndof = (size_t) dim * m->nnodes;
+  for (size_t q = 0; q < ndof; q++)
     {
       size_t a = q / (size_t) dim, b = comp[a];
       double x[3] = { 0, 0, 0 }, v[6];
@@ -202,90 +197,161 @@ mode_gram (const lac_run *r, const char *fixed, const size_t *comp,
       for (int i = 0; i < dim; i++)
         x[i] = (m->x[a * (size_t) dim + (size_t) i] - ctr[4 * b + (size_t) i])
                / ctr[4 * b + 3];
-      rigid_modes (r->model, (int) (q % (size_t) dim), x, v);
+      rigid_modes (model, (int) (q % (size_t) dim), x, v);
       for (int i = 0; i < nm; i++)
         for (int j = 0; j < nm; j++)
           G[36 * b + (size_t) (i * nm + j)] += v[i] * v[j];
     }
 }
 
-/* ---- the check -------------------------------------------------------- */
+/* ---- the public functions --------------------------------------------- */
 
-/* Every connected body must be fixed against rigid motions by the fixed
- * dofs; otherwise K is singular.  Checking it here names the body and the
- * free motion, which a solver's pivot message cannot:  the rigid modes
- * restricted to the fixed dofs of a body must be linearly independent,
- * i.e. their Gram matrix G_b must be non-singular. */
-/* Does body b touch a contact surface?  Such a body may be held by the
- * contact constraints alone (the upper block of a patch test). */
-static int
-body_on_contact (const lac_run *r, const size_t *comp, size_t b)
+void
+lac_bodies_free (lac_bodies *b)
 {
-  if (!r->on_contact)
-    return 0;
-  for (size_t a = 0; a < r->mesh->nnodes; a++)
-    if (comp[a] == b && r->on_contact[a])
-      return 1;
-  return 0;
+  if (!b)
+    return;
+  lac_free (b->body);
+  lac_free (b->node_body);
+  lac_free (b);
+}
+
+/* Each body's cell, group, frame and free motions from the Gram matrices
+ * G (36 per body) and the frames ctr (4 per body). */
+static int
+describe_bodies (lac_bodies *B, const lac_mesh *m, const size_t *cell0,
+                 double *G, const double *ctr)
+{
+  for (size_t b = 0; b < B->n; b++)
+    {
+      lac_body *y = &B->body[b];
+      y->cell0 = cell0[b];
+      y->group = m->body[cell0[b]];
+      memcpy (y->ctr, ctr + 4 * b, 3 * sizeof (double));
+      y->size = ctr[4 * b + 3];
+      y->nfree = free_modes (B->model, B->nm, G + 36 * b, y->ctr, y->size,
+                             y->desc, sizeof y->desc, y->mode);
+      if (y->nfree < 0)
+        LAC_ERROR (LAC_EDEP, "rigid motions of body %zu: GSL's eigensolver "
+                   "failed", b);
+    }
+  return LAC_SUCCESS;
 }
 
 int
-lac_run_check_rigid (lac_run *r, const lac_dirichlet *d)
+lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
+                 lac_bodies **out)
 {
-  const lac_mesh *m = r->mesh;
-  int nm = r->model == LAC_PLANE_STRAIN ? 3
-           : r->model == LAC_AXISYMMETRIC ? 1 : 6;
-  size_t n = m->nnodes, nb, *p = lac_malloc (n * sizeof *p);
-  size_t *comp = lac_malloc (n * sizeof *comp);
-  size_t *cell0 = lac_malloc (n * sizeof *cell0);
+  size_t n = m->nnodes, *p = lac_malloc ((n ? n : 1) * sizeof *p);
+  size_t *cell0 = lac_malloc ((n ? n : 1) * sizeof *cell0);
+  lac_bodies *B = lac_calloc (1, sizeof *B);
   double *ctr = NULL, *G = NULL;
-  char *fixed = lac_calloc (r->ndof, 1), desc[400];
   int status = LAC_SUCCESS;
-  if (!p || !comp || !cell0 || !fixed)
+  *out = NULL;
+  if (B)
+    B->node_body = lac_malloc ((n ? n : 1) * sizeof *B->node_body);
+  if (!p || !cell0 || !B || !B->node_body)
     {
-      status = LAC_ERRMSG (LAC_ENOMEM, "rigid-motion check");
+      status = LAC_ERRMSG (LAC_ENOMEM, "bodies of %zu nodes", n);
       goto done;
     }
-  nb = find_bodies (m, p, comp, cell0);
-  ctr = lac_calloc (4 * nb, sizeof *ctr);
-  G = lac_calloc (36 * nb, sizeof *G);
-  if (!ctr || !G)
+  B->model = model;
+  B->nm = model == LAC_PLANE_STRAIN ? 3 : model == LAC_AXISYMMETRIC ? 1 : 6;
+  B->n = find_bodies (m, p, B->node_body, cell0);
+  ctr = lac_calloc (4 * B->n + 1, sizeof *ctr);
+  G = lac_calloc (36 * B->n + 1, sizeof *G);
+  B->body = lac_calloc (B->n + 1, sizeof *B->body);
+  if (!ctr || !G || !B->body)
     {
-      status = LAC_ERRMSG (LAC_ENOMEM, "rigid-motion check");
+      status = LAC_ERRMSG (LAC_ENOMEM, "rigid motions of %zu bodies", B->n);
       goto done;
     }
-  body_frames (m, comp, nb, ctr);
-  for (size_t k = 0; k < d->n; k++)
-    fixed[d->dof[k]] = 1;
-  mode_gram (r, fixed, comp, ctr, nm, G);
-  for (size_t b = 0; b < nb && !status; b++)
-    {
-      if (body_on_contact (r, comp, b))
-        continue;         /* held by the contact constraints (if at all) */
-      int nfree = free_modes (r->model, nm, G + 36 * b, ctr + 4 * b,
-                              ctr[4 * b + 3], desc, sizeof desc);
-      size_t c = cell0[b];
-      if (nfree < 0)
-        status = LAC_ERRMSG (LAC_ENOMEM, "rigid-motion check (GSL)");
-      else if (nfree > 0 && m->body[c] >= 0)
-        status = lac_error_set (LAC_ESING, r->scene->path, "stiffness is "
-                                "singular: body '%s' is not fixed against "
-                                "rigid motion (%s); add [dirichlet] "
-                                "conditions that prevent it",
-                                m->group[m->body[c]].name, desc);
-      else if (nfree > 0)
-        status = lac_error_set (LAC_ESING, r->scene->path, "stiffness is "
-                                "singular: the cells around cell %zu are not "
-                                "fixed against rigid motion (%s); add "
-                                "[dirichlet] conditions that prevent it",
-                                m->cell_tag[c], desc);
-    }
+  body_frames (m, B->node_body, B->n, ctr);
+  mode_gram (m, model, fixed, B->node_body, ctr, B->nm, G);
+  status = describe_bodies (B, m, cell0, G, ctr);
 done:
   lac_free (G);
-  lac_free (fixed);
   lac_free (ctr);
   lac_free (cell0);
-  lac_free (comp);
   lac_free (p);
+  if (status)
+    lac_bodies_free (B);
+  else
+    *out = B;
   return status;
+}
+
+const char *
+lac_bodies_name (const lac_bodies *b, const lac_mesh *m, size_t body)
+{
+  int g = b->body[body].group;
+  return g >= 0 ? m->group[g].name : NULL;
+}
+
+/* Column j of N: free motion f of body b at every dof of the body. */
+static void
+motion_column (const lac_bodies *B, const lac_mesh *m, size_t b, int f,
+               double *col)
+{
+  const lac_body *y = &B->body[b];
+  int dim = m->dim;
+  for (size_t a = 0; a < m->nnodes; a++)
+    for (int i = 0; i < dim; i++)
+      {
+        double x[3] = { 0, 0, 0 }, v[6], s = 0;
+        size_t q = a * (size_t) dim + (size_t) i;
+        col[q] = 0;
+        if (B->node_body[a] != b)
+          continue;
+        for (int k = 0; k < dim; k++)
+          x[k] = (m->x[a * (size_t) dim + (size_t) k] - y->ctr[k]) / y->size;
+        rigid_modes (B->model, i, x, v);
+        for (int k = 0; k < B->nm; k++)
+          s += y->mode[f][k] * v[k];
+        col[q] = s;
+      }
+}
+
+int
+lac_bodies_free_motions (const lac_bodies *B, const lac_mesh *m,
+                         const char *which, size_t *nfree, double **N,
+                         char ***what)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes, nf = 0, j = 0;
+  *nfree = 0;
+  *N = NULL;
+  *what = NULL;
+  for (size_t b = 0; b < B->n; b++)
+    nf += !which || which[b] ? (size_t) B->body[b].nfree : 0;
+  if (nf == 0)
+    return LAC_SUCCESS;
+  *N = lac_malloc (nf * ndof * sizeof **N);
+  *what = lac_calloc (nf, sizeof **what);
+  if (!*N || !*what)
+    {
+      lac_free (*N);
+      lac_free (*what);
+      *N = NULL;
+      *what = NULL;
+      LAC_ERROR (LAC_ENOMEM, "%zu free rigid motions", nf);
+    }
+  for (size_t b = 0; b < B->n; b++)
+    for (int f = 0; (!which || which[b]) && f < B->body[b].nfree; f++, j++)
+      {
+        char buf[LAC_RIGID_DESC + 80], one[LAC_RIGID_DESC];
+        const char *name = lac_bodies_name (B, m, b);
+        double v[6];
+        motion_column (B, m, b, f, *N + j * ndof);
+        memcpy (v, B->body[b].mode[f], sizeof v);
+        describe_mode (B->model, B->nm, v, B->body[b].ctr, B->body[b].size,
+                       one, sizeof one);
+        if (name)
+          snprintf (buf, sizeof buf, "body '%s' (%s)", name, one);
+        else
+          snprintf (buf, sizeof buf, "the body of cell %zu (%s)",
+                    m->cell_tag[B->body[b].cell0], one);
+        (*what)[j] = lac_strdup (buf);
+      }
+  *nfree = nf;
+  return LAC_SUCCESS;
 }

@@ -1,0 +1,22 @@
+/* lac_run_mesh.h -- stage 1 of a run: the mesh                     [LAC §2]
+ *
+ * In:  the scene (its [mesh] and the groups its sections name), the model.
+ * Out: the mesh, read or meshed through gmsh (io/lac_mesh_gmsh.h) and
+ *      checked against the scene: its dimension is the model's, its cells
+ *      are the scene's element, r >= 0 in axisymmetry, every group a
+ *      section names exists with the right dimension.  Errors name the
+ *      scene line.
+ */
+#ifndef LAC_RUN_MESH_H
+#define LAC_RUN_MESH_H
+
+#include <stddef.h>
+#include "fem/lac_mesh.h"
+#include "io/lac_scene.h"
+
+/* *mesh (owned by the caller, lac_mesh_free); a progress line in
+ * progress[size]. */
+int lac_run_mesh (const lac_scene *sc, lac_model model, lac_mesh **mesh,
+                  char *progress, size_t size);
+
+#endif /* LAC_RUN_MESH_H */

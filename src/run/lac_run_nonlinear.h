@@ -1,0 +1,81 @@
+/* lac_run_nonlinear.h -- stage 5 of a large-deformation run: the load
+ *                        steps                [LAC §4.5, Alg. 1; §5.4]
+ *
+ * In:  the scene ([steps], loads, Dirichlet values and their ramp flags,
+ *      [contact]), the mesh, the material, the contact set-up (the
+ *      macro-mesh, built once on the reference mesh [LAC Remark 3]; the
+ *      pairing is recomputed on the current coordinates at every Newton
+ *      iteration), the system of stage 4 (F; the bodies held by contact
+ *      alone, N).
+ * Out: the displacement at every load step, the records of the steps and
+ *      of every multiplier at every step, the displacements of the steps
+ *      that get a step_NNN.vtu.
+ * The load factors: [steps] n equal steps to 1, after a first step to
+ * `start` if given; one call per step (LAC_CONTINUE until the last), each
+ * the generalized Newton loop of [LAC Alg. 1] (solve/lac_nonlinear.h).
+ * Loads of [load] sections are dead loads (given on the reference
+ * configuration), times t.
+ */
+#ifndef LAC_RUN_NONLINEAR_H
+#define LAC_RUN_NONLINEAR_H
+
+#include <stddef.h>
+#include "io/lac_scene.h"
+#include "run/lac_run_material.h"
+#include "run/lac_run_setup.h"
+#include "run/lac_run_system.h"
+#include "solve/lac_nonlinear.h"
+
+/* One converged load step, as written to the curve. */
+typedef struct lac_run_nl_step
+{
+  double t, imposed;    /* load factor, t * the reference imposed value   */
+  double um[3];         /* displacement of the monitor node               */
+  int iters, cuts;
+  double residual;
+  size_t k, nactive;
+  double force;         /* sum of lambda |T^m cap Gamma_C| (<= 0)          */
+  double lambda_min;    /* the largest pressure (most negative lambda)     */
+  double seconds;
+} lac_run_nl_step;
+
+/* Every multiplier at the end of a step (contact_steps.csv). */
+typedef struct lac_run_nl_mult
+{
+  int step;
+  size_t macro;
+  double x[3];          /* centroid of T^m cap Gamma_C, current coords    */
+  double lambda, gap;   /* multiplier, mean gap d / |T^m cap Gamma_C|     */
+  char active;
+} lac_run_nl_mult;
+
+typedef struct lac_run_nl
+{
+  lac_dirichlet *dir;         /* owned: Dirichlet data at t = 1           */
+  char *ramp;                 /* owned, dir->n flags                      */
+  lac_obstacle ob;
+  lac_nl_problem prob;
+  lac_nl *s;                  /* owned                                    */
+  double *factor;             /* owned, nfactor load factors              */
+  size_t nfactor, next;
+  size_t monitor;             /* node, SIZE_MAX: none                     */
+  double imposed_ref;         /* first non-zero ramped value (t = 1)      */
+  lac_run_nl_step *step;      /* owned, nfactor                           */
+  size_t nmult, capmult;
+  lac_run_nl_mult *mult;      /* owned                                    */
+  size_t nkept;               /* steps before the last with a step file   */
+  size_t *kept;               /* owned, their indices j (0-based)         */
+  double *ukept;              /* owned, nkept * ndof displacements        */
+} lac_run_nl;
+
+/* One load step per call: LAC_CONTINUE until the last, then LAC_SUCCESS
+ * with u (ndof, the caller's) the final displacement. */
+int lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
+                      const lac_run_material *mat, const lac_run_setup *setup,
+                      const lac_run_system *sys, lac_run_nl *nl, double *u,
+                      char *progress, size_t size);
+void lac_run_nl_clear (lac_run_nl *nl);
+/* 1 if step j (0-based) of n gets a step_NNN.vtu: every K-th, the last. */
+int lac_run_nl_step_file (size_t j, size_t n, int K);
+
+#endif /* LAC_RUN_NONLINEAR_H */

@@ -1,0 +1,267 @@
+/* lac_run_output.c -- stage 7 of a run: the files (see lac_run_output.h)
+ */
+#include "run/lac_run_output.h"
+
+#include <stdio.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "io/lac_output.h"
+
+/* ---- linear runs ------------------------------------------------------ */
+
+/* contact.csv, one line per macro-element. */
+static int
+contact_csv (const lac_run_output_in *in, const char *path)
+{
+  const lac_contact *c = in->sys->contact;
+  const lac_newton *nw = in->sol->newton;
+  const lac_run_multipliers *mu = &in->res->mult;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
+           "multiplier,lambda,lambda_exact,mean_gap,active\n");
+  for (size_t m = 0; m < c->nmacro; m++)
+    {
+      long i = c->mult[m];
+      const double *x = i >= 0 ? mu->x + 3 * i : NULL;
+      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%ld,%.10e,"
+               "%.10e,%.10e,%d\n", m, x ? x[0] : 0.0, x ? x[1] : 0.0,
+               x ? x[2] : 0.0, c->meas[m], c->covered[m], c->crit[m],
+               c->admissible[m], i, i >= 0 ? nw->lambda[i] : 0.0,
+               i >= 0 ? mu->exact[i] : 0.0,
+               i >= 0 && c->area[i] > 0 ? nw->d[i] / c->area[i] : 0.0,
+               i >= 0 ? nw->active[i] : 0);
+    }
+  if (fclose (f) != 0)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  return LAC_SUCCESS;
+}
+
+/* solution.vtu and nodes.csv, as [output] asks, into the batch b. */
+static int
+write_fields (const lac_run_output_in *in, lac_output_batch *b,
+              const lac_output_fields *f)
+{
+  const lac_scene_output *o = &in->sc->output;
+  const char *path;
+  int status = LAC_SUCCESS;
+  if (o->vtu && !status)
+    status = (path = lac_output_batch_add (b, "solution.vtu"))
+             ? lac_output_vtu (path, f) : LAC_ENOMEM;
+  if (o->csv && !status)
+    status = (path = lac_output_batch_add (b, "nodes.csv"))
+             ? lac_output_csv (path, f) : LAC_ENOMEM;
+  return status;
+}
+
+/* summary.txt, written last, then the batch renamed into place. */
+static int
+write_summary (const lac_run_output_in *in, lac_output_batch *b)
+{
+  const lac_summary *s = &in->res->summary;
+  const char *path = lac_output_batch_add (b, "summary.txt");
+  int status = path ? lac_output_summary (path, s->n,
+                                          (const char *const *) s->key,
+                                          (const char *const *) s->val)
+                    : LAC_ENOMEM;
+  return status ? status : lac_output_commit (b);
+}
+
+static int
+write_curve (const lac_run_output_in *in, const char *path)
+{
+  const lac_run_nl *nl = in->nl;
+  int dim = in->mesh->dim;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  fprintf (f, "step,load_factor,imposed,monitor_ux,monitor_uy%s,iterations,"
+           "cuts,residual,multipliers,active,contact_force,lambda_min\n",
+           dim == 3 ? ",monitor_uz" : "");
+  fprintf (f, "0,0,0,0,0%s,0,0,0,0,0,0,0\n", dim == 3 ? ",0" : "");
+  for (size_t j = 0; j < nl->nfactor; j++)
+    {
+      const lac_run_nl_step *q = &nl->step[j];
+      fprintf (f, "%zu,%.10e,%.10e", j + 1, q->t, q->imposed);
+      for (int k = 0; k < dim; k++)
+        fprintf (f, ",%.10e", q->um[k]);
+      fprintf (f, ",%d,%d,%.3e,%zu,%zu,%.10e,%.10e\n", q->iters, q->cuts,
+               q->residual, q->k, q->nactive, q->force, q->lambda_min);
+    }
+  if (fclose (f) != 0)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  return LAC_SUCCESS;
+}
+
+/* contact_steps.csv (every step) or contact.csv (last step only). */
+static int
+write_mults (const lac_run_output_in *in, const char *path, int last_only)
+{
+  const lac_run_nl *nl = in->nl;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active\n",
+           last_only ? "" : "step,");
+  for (size_t q = 0; q < nl->nmult; q++)
+    {
+      const lac_run_nl_mult *u = &nl->mult[q];
+      if (last_only && u->step != (int) nl->nfactor)
+        continue;
+      if (!last_only)
+        fprintf (f, "%d,", u->step);
+      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d\n", u->macro, u->x[0],
+               u->x[1], u->x[2], u->lambda, u->gap, u->active);
+    }
+  if (fclose (f) != 0)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  return LAC_SUCCESS;
+}
+
+/* step_NNN.vtu of step j (0-based): the displacement u, its Cauchy
+ * stresses in sigma, vm (the last step: those of solution.vtu). */
+static int
+write_step_vtu (const lac_run_output_in *in, lac_output_batch *b, size_t j,
+                const double *u, const double *sigma, const double *vm)
+{
+  lac_output_fields f = { in->mesh, in->model, u, NULL, sigma, vm };
+  char name[64];
+  const char *path;
+  snprintf (name, sizeof name, "step_%03zu.vtu", j + 1);
+  if (!(path = lac_output_batch_add (b, name)))
+    return LAC_ENOMEM;
+  return lac_output_vtu (path, &f);
+}
+
+/* steps.pvd: the ParaView collection of the step files, timestep = the
+ * load factor t (VTK file formats, "ParaView data (PVD)"). */
+static int
+write_pvd (const lac_run_output_in *in, const char *path)
+{
+  const lac_run_nl *nl = in->nl;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  fprintf (f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n");
+  for (size_t j = 0; j < nl->nfactor; j++)
+    if (lac_run_nl_step_file (j, nl->nfactor, in->sc->steps.vtu_every))
+      fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
+               "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
+  fprintf (f, "  </Collection>\n</VTKFile>\n");
+  if (fclose (f) != 0)
+    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+  return LAC_SUCCESS;
+}
+
+/* The step files ([steps] vtu_every) and steps.pvd; stresses of the kept
+ * steps as in stage post (lac_hyper_cauchy_nodal). */
+static int
+write_steps (const lac_run_output_in *in, lac_output_batch *b)
+{
+  const lac_run_nl *nl = in->nl;
+  size_t nn = in->mesh->nnodes, ndof = (size_t) in->mesh->dim * nn;
+  int ns = lac_model_nstress (in->model);
+  double *sigma = lac_malloc (nn * (size_t) ns * sizeof *sigma),
+    *vm = lac_malloc (nn * sizeof *vm);
+  const char *path;
+  int status = sigma && vm ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "stresses of the step files");
+  for (size_t q = 0; q < nl->nkept && !status; q++)
+    {
+      const double *u = nl->ukept + q * ndof;
+      if (!(status = lac_hyper_cauchy_nodal (in->mesh, &in->mat->hyper, u,
+                                             NULL, sigma, vm)))
+        status = write_step_vtu (in, b, nl->kept[q], u, sigma, vm);
+    }
+  if (!status)
+    status = write_step_vtu (in, b, nl->nfactor - 1, in->u, in->res->sigma,
+                             in->res->vm);
+  if (!status)
+    status = (path = lac_output_batch_add (b, "steps.pvd"))
+             ? write_pvd (in, path) : LAC_ENOMEM;
+  lac_free (sigma);
+  lac_free (vm);
+  return status;
+}
+
+/* ---- the stage -------------------------------------------------------- */
+
+static int
+output_linear (const lac_run_output_in *in, lac_output_batch *b,
+               char *progress, size_t size)
+{
+  const lac_scene_output *o = &in->sc->output;
+  const lac_run_results *res = in->res;
+  const char *path = "";
+  int contact = in->sys->contact != NULL;
+  lac_output_fields f = { in->mesh, in->model, in->u, res->u_exact,
+                          res->sigma, res->vm };
+  int status = write_fields (in, b, &f);
+  if (!status && o->csv && contact
+      && (!(path = lac_output_batch_add (b, "contact.csv"))
+          || (status = contact_csv (in, path))))
+    return status ? status : LAC_ENOMEM;
+  if (!status && o->matrix
+      && (!(path = lac_output_batch_add (b, "K.mtx"))
+          || (status = lac_csc_write_mm (in->sys->K0, path))))
+    return status ? status : LAC_ENOMEM;
+  if (!status && !(status = write_summary (in, b)))
+    snprintf (progress, size, "%s/: %s%s%s%ssummary.txt", in->dir,
+              o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
+              o->csv && contact ? "contact.csv, " : "",
+              o->matrix ? "K.mtx, " : "");
+  return status;
+}
+
+static int
+output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
+                  char *progress, size_t size)
+{
+  const lac_scene *sc = in->sc;
+  const lac_scene_output *o = &sc->output;
+  const char *curve = sc->steps.curve ? sc->steps.curve : "curve.csv";
+  const char *path = "";
+  int macro = in->setup->macro != NULL;
+  char nsteps[64];
+  lac_output_fields f = { in->mesh, in->model, in->u, NULL, in->res->sigma,
+                          in->res->vm };
+  int status = write_fields (in, b, &f);
+  if (!status && (!(path = lac_output_batch_add (b, curve))
+                  || (status = write_curve (in, path))))
+    return status ? status : LAC_ENOMEM;
+  if (!status && macro && (!(path = lac_output_batch_add (b, "contact.csv"))
+                           || (status = write_mults (in, path, 1))))
+    return status ? status : LAC_ENOMEM;
+  if (!status && macro
+      && (!(path = lac_output_batch_add (b, "contact_steps.csv"))
+          || (status = write_mults (in, path, 0))))
+    return status ? status : LAC_ENOMEM;
+  if (!status && sc->steps.vtu_every > 0)
+    status = write_steps (in, b);
+  if (status || (status = write_summary (in, b)))
+    return status;
+  snprintf (nsteps, sizeof nsteps, "%zu step_NNN.vtu, steps.pvd, ",
+            in->nl->nkept + 1);
+  snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
+            o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
+            curve, macro ? ", contact.csv, contact_steps.csv, " : ", ",
+            sc->steps.vtu_every > 0 ? nsteps : "");
+  return LAC_SUCCESS;
+}
+
+int
+lac_run_output (const lac_run_output_in *in, char *progress, size_t size)
+{
+  lac_output_batch *b = lac_output_batch_alloc (in->dir);
+  int status;
+  if (!b)
+    return LAC_EIO;
+  status = in->nl ? output_nonlinear (in, b, progress, size)
+                  : output_linear (in, b, progress, size);
+  lac_output_batch_free (b);
+  return status;
+}

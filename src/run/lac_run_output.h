@@ -1,0 +1,38 @@
+/* lac_run_output.h -- stage 7 of a run: the files
+ *
+ * In:  the products of the earlier stages, the output directory.
+ * Out: in the directory, as the scene's [output] asks: solution.vtu (mesh,
+ *      displacement, stresses, von Mises: ParaView), nodes.csv, with
+ *      contact contact.csv (one line per macro-element), K.mtx ([output]
+ *      matrix), for large deformation the per-step curve, contact.csv of
+ *      the last step, contact_steps.csv, step_NNN.vtu and steps.pvd
+ *      ([steps] vtu_every), and summary.txt last.  Everything is written
+ *      into a batch (io/lac_output.h) and renamed into place at the end,
+ *      so that a failed run leaves the files of an earlier one.
+ */
+#ifndef LAC_RUN_OUTPUT_H
+#define LAC_RUN_OUTPUT_H
+
+#include <stddef.h>
+#include "run/lac_run_post.h"
+
+/* What stage 7 reads (the results too). */
+typedef struct lac_run_output_in
+{
+  const lac_scene *sc;
+  lac_model model;
+  const lac_mesh *mesh;
+  const lac_run_material *mat;
+  const lac_run_setup *setup;
+  const lac_run_system *sys;
+  const double *u;                 /* ndof                                */
+  const lac_run_solution *sol;     /* linear scenes, else NULL            */
+  const lac_run_nl *nl;            /* large deformation, else NULL        */
+  const lac_run_results *res;
+  const char *dir;                 /* the output directory                */
+} lac_run_output_in;
+
+int lac_run_output (const lac_run_output_in *in, char *progress,
+                    size_t size);
+
+#endif /* LAC_RUN_OUTPUT_H */

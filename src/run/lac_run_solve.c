@@ -1,0 +1,122 @@
+/* lac_run_solve.c -- stage 5 of a linear run: the solution
+ *                    (see lac_run_solve.h)        [LAC (8), §4.5, Alg. 1]
+ */
+#include "run/lac_run_solve.h"
+
+#include <stdio.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "run/lac_run_scene.h"
+
+#define NEWTON_TOL 1e-10
+
+void
+lac_run_solution_clear (lac_run_solution *sol)
+{
+  lac_free (sol->u);
+  lac_newton_free (sol->newton);
+  memset (sol, 0, sizeof *sol);
+}
+
+/* K u = b, no contact. */
+static int
+solve_plain (const lac_scene *sc, const lac_run_system *sys,
+             lac_run_solution *sol, char *progress, size_t size)
+{
+  lac_solver_kind kind = (lac_solver_kind) sc->scene.solver;
+  lac_solver *s = lac_solver_alloc (kind);
+  lac_solver_info info;
+  int status;
+  if (!s)
+    return LAC_ENOMEM;
+  status = lac_solver_factor (s, sys->K);                /* K = L U, L L^T */
+  if (status == LAC_ESING)
+    {
+      char msg[600];
+      lac_run_inner_message (msg, sizeof msg);
+      status = lac_error_set (status, sc->path, "stiffness is singular"
+                              " (%s solver): %s", lac_solver_kind_name (kind),
+                              msg);
+    }
+  if (!status)
+    status = lac_solver_solve (s, sys->b, sol->u);       /* u = K^-1 b */
+  if (!status && lac_solver_get_info (s, &info) == LAC_SUCCESS)
+    sol->rcond = info.rcond;
+  lac_solver_free (s);
+  if (!status)
+    snprintf (progress, size, "%s, rcond %.1e", lac_solver_kind_name (kind),
+              sol->rcond);
+  return status;
+}
+
+/* The active set's workspace: the strategy chosen, (*) set up. */
+static int
+contact_start (const lac_scene *sc, int strategy, const lac_run_system *sys,
+               lac_run_solution *sol, lac_contact_system *cs)
+{
+  const lac_scene_contact *c = &sc->contact[0];
+  lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
+                                                : c->strategy);
+  *cs = (lac_contact_system) { sys->K, sys->b, sys->contact->C,
+                               sys->contact->G, NULL, sys->nfree, sys->N,
+                               (const char *const *) sys->N_what };
+  sol->strategy = lac_strategy_choose (want, sys->ndof, sys->contact->k,
+                                       sys->nfree);
+  if (sol->strategy == LAC_NSTRATEGIES)
+    return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
+                            lac_error_message ());
+  if (!(sol->newton = lac_newton_alloc (sol->strategy, sys->ndof,
+                                        sys->contact->k)))
+    return LAC_ENOMEM;
+  return lac_newton_set (sol->newton, cs, NULL);
+}
+
+/* One iteration of [LAC Alg. 1]; LAC_CONTINUE until it settles. */
+static int
+contact_iterate (const lac_scene *sc, const lac_run_system *sys,
+                 lac_run_solution *sol, char *progress, size_t size)
+{
+  const lac_scene_contact *c = &sc->contact[0];
+  lac_newton *nw = sol->newton;
+  const lac_newton_record *h;
+  int status = lac_newton_iterate (nw);
+  if (status)
+    return status;
+  h = &nw->hist[nw->nhist - 1];
+  if (lac_newton_test (nw, NEWTON_TOL) == LAC_SUCCESS)
+    {
+      memcpy (sol->u, nw->U, sys->ndof * sizeof *sol->u);
+      snprintf (progress, size, "%s, active set: %zu iteration%s, %zu of "
+                "%zu multipliers active",
+                lac_strategy_name (lac_strategy_kind_of (nw->strategy)),
+                nw->nhist, nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
+                sys->contact->k);
+      return LAC_SUCCESS;
+    }
+  if ((int) nw->nhist >= c->max_iterations)
+    return lac_newton_maxiter_error (nw, c->max_iterations);
+  snprintf (progress, size, "active set %d: %zu active, %zu changed%s, "
+            "residual %.1e, %d CG iteration%s, %d factorization%s "
+            "(%.2f s)", h->iter, h->nactive, h->nchanged,
+            h->damped ? " (cycle: damped)" : "", h->residual,
+            h->cg_iterations, h->cg_iterations == 1 ? "" : "s",
+            h->factorizations, h->factorizations == 1 ? "" : "s",
+            h->seconds);
+  return LAC_CONTINUE;
+}
+
+int
+lac_run_solve (const lac_scene *sc, int strategy, const lac_run_system *sys,
+               lac_run_solution *sol, char *progress, size_t size)
+{
+  int status;
+  if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
+    LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
+  if (!sys->contact)
+    return solve_plain (sc, sys, sol, progress, size);
+  if (!sol->newton
+      && (status = contact_start (sc, strategy, sys, sol, &sol->cs)))
+    return status;
+  return contact_iterate (sc, sys, sol, progress, size);
+}

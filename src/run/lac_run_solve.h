@@ -1,0 +1,38 @@
+/* lac_run_solve.h -- stage 5 of a linear run: the solution
+ *                                             [LAC (8), §4.5, Alg. 1]
+ * In:  the scene ([scene] solver; [contact] strategy, max_iterations), the
+ *      system of stage 4, a strategy asked for on the command line (or
+ *      LAC_STRATEGY_AUTO: the scene's).
+ * Out: the displacement U; with contact, the multipliers, mean gaps,
+ *      statuses and the history of the active set (solve/lac_newton.h).
+ * Without contact, K U = b is solved once by the scene's solver (dense,
+ * umfpack, cholmod).  With contact, the strategy is chosen from the
+ * problem (solve/lac_strategy.h: the size, and whether a body is held by
+ * contact alone) and each call does ONE active-set iteration, returning
+ * LAC_CONTINUE with a progress line about it until the statuses settle.
+ */
+#ifndef LAC_RUN_SOLVE_H
+#define LAC_RUN_SOLVE_H
+
+#include <stddef.h>
+#include "io/lac_scene.h"
+#include "run/lac_run_system.h"
+#include "solve/lac_newton.h"
+
+typedef struct lac_run_solution
+{
+  double *u;                   /* owned, ndof: the displacement            */
+  lac_newton *newton;          /* owned, with [contact]                    */
+  lac_contact_system cs;       /* (*) as the newton workspace borrows it;
+                                  points into the system of stage 4        */
+  lac_strategy_kind strategy;  /* with [contact]: the one chosen           */
+  double rcond;                /* without contact: K's condition estimate   */
+} lac_run_solution;
+
+/* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done. */
+int lac_run_solve (const lac_scene *sc, int strategy,
+                   const lac_run_system *sys, lac_run_solution *sol,
+                   char *progress, size_t size);
+void lac_run_solution_clear (lac_run_solution *sol);
+
+#endif /* LAC_RUN_SOLVE_H */

@@ -1,0 +1,285 @@
+/* lac_run_system.c -- stage 4 of a run: the system to solve
+ *                     (see lac_run_system.h)    [LAC (8), (16)-(18); §4.3]
+ */
+#include "run/lac_run_system.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "run/lac_run_scene.h"
+
+void
+lac_run_system_clear (lac_run_system *sys)
+{
+  lac_csc_free (sys->K);
+  lac_csc_free (sys->K0);
+  lac_free (sys->F);
+  lac_free (sys->b);
+  lac_dirichlet_free (sys->dir);
+  lac_contact_free (sys->contact);
+  lac_bodies_free (sys->bodies);
+  lac_free (sys->N);
+  for (size_t j = 0; sys->N_what && j < sys->nfree; j++)
+    lac_free (sys->N_what[j]);
+  lac_free (sys->N_what);
+  memset (sys, 0, sizeof *sys);
+}
+
+/* ---- loads and Dirichlet data given by the scene ---------------------- */
+
+typedef struct const_ctx
+{
+  int dim;
+  double v[3];
+} const_ctx;
+
+static void
+const_field (const double *x, void *ctx, double *out)
+{
+  const const_ctx *c = ctx;
+  (void) x;
+  for (int i = 0; i < c->dim; i++)
+    out[i] = c->v[i];
+}
+
+static int
+add_loads (const lac_scene *sc, lac_model model, const lac_mesh *m,
+           double *F)
+{
+  int status = LAC_SUCCESS;
+  for (size_t k = 0; k < sc->nload && !status; k++)
+    {
+      const lac_scene_load *l = &sc->load[k];
+      const lac_group *g = l->group ? lac_mesh_group (m, l->group) : NULL;
+      const_ctx c = { m->dim, { l->vec[0], l->vec[1], l->vec[2] } };
+      lac_exact e;
+      lac_run_exact (sc, model, &e);
+      if (l->kind == LAC_LOAD_EXACT_TRACTION)
+        status = lac_assembly_traction_n (m, model, g,
+                                          lac_exact_traction, &e, F);
+      else if (l->kind == LAC_LOAD_EXACT_TANGENTIAL)
+        status = lac_assembly_traction_n (m, model, g,
+                                          lac_exact_traction_tangential, &e,
+                                          F);
+      else if (l->kind == LAC_LOAD_EXACT_FORCE)
+        status = lac_assembly_volume_force (m, model, g,
+                                            lac_exact_force, &e, F);
+      else if (l->kind == LAC_LOAD_PRESSURE)
+        status = lac_assembly_pressure (m, model, g, l->pressure,
+                                        F);
+      else if (l->kind == LAC_LOAD_TRACTION)
+        status = lac_assembly_traction (m, model, g, const_field, &c,
+                                        F);
+      else
+        status = lac_assembly_volume_force (m, model, g,
+                                            const_field, &c, F);
+      if (status)
+        {
+          char msg[600];
+          lac_run_inner_message (msg, sizeof msg);
+          return lac_scene_error (sc, &l->sec, NULL, status, "%s", msg);
+        }
+    }
+  return status;
+}
+
+static int
+add_dirichlet (const lac_scene *sc, lac_model model, const lac_mesh *m,
+               lac_dirichlet *d)
+{
+  int status = LAC_SUCCESS;
+  lac_exact e;
+  lac_run_exact (sc, model, &e);
+  for (size_t k = 0; k < sc->ndirichlet && !status; k++)
+    {
+      const lac_scene_dirichlet *bc = &sc->dirichlet[k];
+      const lac_group *g = lac_mesh_group (m, bc->group);
+      if (bc->kind == LAC_BC_EXACT)
+        status = lac_dirichlet_add_field (d, m, g, lac_exact_u, &e);
+      for (int c = 0; c < m->dim && bc->kind != LAC_BC_EXACT && !status; c++)
+        if (bc->fixed[c])
+          status = lac_dirichlet_add_group (d, m, g, c, bc->value[c]);
+    }
+  return status;
+}
+
+/* ---- bodies: fixed, or held by contact ------------------------------- */
+
+/* Does body b touch a contact surface?  Such a body may be held by the
+ * contact constraints alone (the upper block of a patch test). */
+static int
+body_on_contact (const lac_bodies *B, const lac_run_setup *setup,
+                 size_t nnodes, size_t b)
+{
+  if (!setup->on_contact)
+    return 0;
+  for (size_t a = 0; a < nnodes; a++)
+    if (B->node_body[a] == b && setup->on_contact[a])
+      return 1;
+  return 0;
+}
+
+/* Every body that touches no contact surface must be fixed against rigid
+ * motion (else K is singular, and a pivot message could not say why); the
+ * free motions of those that touch one are N. */
+static int
+check_bodies (const lac_scene *sc, const lac_mesh *m,
+              const lac_run_setup *setup, lac_run_system *sys)
+{
+  const lac_bodies *B = sys->bodies;
+  char *held_by_contact = lac_calloc (B->n + 1, 1);
+  int status = held_by_contact ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t b = 0; !status && b < B->n; b++)
+    {
+      const char *name = lac_bodies_name (B, m, b);
+      if (B->body[b].nfree == 0)
+        continue;
+      if (body_on_contact (B, setup, m->nnodes, b))
+        held_by_contact[b] = 1;
+      else if (name)
+        status = lac_error_set (LAC_ESING, sc->path, "stiffness is singular:"
+                                " body '%s' is not fixed against rigid "
+                                "motion (%s); add [dirichlet] conditions "
+                                "that prevent it", name, B->body[b].desc);
+      else
+        status = lac_error_set (LAC_ESING, sc->path, "stiffness is singular:"
+                                " the cells around cell %zu are not fixed "
+                                "against rigid motion (%s); add [dirichlet] "
+                                "conditions that prevent it",
+                                m->cell_tag[B->body[b].cell0],
+                                B->body[b].desc);
+    }
+  if (!status)
+    status = lac_bodies_free_motions (B, m, held_by_contact, &sys->nfree,
+                                      &sys->N, &sys->N_what);
+  lac_free (held_by_contact);
+  return status;
+}
+
+static int
+find_bodies (const lac_scene *sc, lac_model model, const lac_mesh *m,
+             const lac_run_setup *setup, lac_run_system *sys)
+{
+  char *fixed = lac_calloc (sys->ndof, 1);
+  int status;
+  if (!fixed)
+    LAC_ERROR (LAC_ENOMEM, "rigid-motion check");
+  for (size_t k = 0; k < sys->dir->n; k++)
+    fixed[sys->dir->dof[k]] = 1;
+  status = lac_bodies_find (m, model, fixed, &sys->bodies);
+  lac_free (fixed);
+  return status ? status : check_bodies (sc, m, setup, sys);
+}
+
+/* ---- contact: admissibility, C, G ------------------------------------- */
+
+static int
+contact_matrices (const lac_scene *sc, lac_model model, const lac_mesh *m,
+                  const lac_run_setup *setup, lac_run_system *sys)
+{
+  const lac_scene_contact *c = &sc->contact[0];
+  int status;
+  if (c->method == 2)                            /* node-to-segment */
+    status = lac_contact_build_nts (m, model, setup->macro, setup->pairing,
+                                    &setup->master, &sys->contact);
+  else
+    status = lac_contact_build (m, model, setup->macro, setup->pairing,
+                                setup->master.n ? &setup->master : NULL,
+                                c->epsilon > 0 ? c->epsilon
+                                : LAC_EPSILON_DEFAULT, &sys->contact);
+  if (status)
+    return lac_scene_error (sc, &c->sec, status == LAC_EADMISS
+                            ? "epsilon" : NULL, status, "%s",
+                            lac_error_message ());
+  return lac_contact_apply_dirichlet (sys->contact, sys->dir->n,
+                                      sys->dir->dof, sys->dir->val);
+}
+
+/* ---- the stage -------------------------------------------------------- */
+
+/* The number of distinct fixed dofs. */
+static int
+count_fixed (lac_run_system *sys)
+{
+  char *seen = lac_calloc (sys->ndof, 1);
+  if (!seen)
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  for (size_t k = 0; k < sys->dir->n; k++)
+    if (!seen[sys->dir->dof[k]])
+      seen[sys->dir->dof[k]] = 1, sys->nfixed++;
+  lac_free (seen);
+  return LAC_SUCCESS;
+}
+
+/* K after the Dirichlet elimination, and b. */
+static int
+eliminate (const lac_scene *sc, lac_run_system *sys)
+{
+  sys->nnz = (size_t) sys->K->p[sys->ndof];
+  if (sc->output.matrix && !(sys->K0 = lac_csc_copy (sys->K)))
+    LAC_ERROR (LAC_ENOMEM, "copy of K");
+  memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
+  return lac_dirichlet_apply (sys->dir, sys->K, sys->b);
+}
+
+int
+lac_run_system_build (const lac_scene *sc, lac_model model,
+                      const lac_mesh *m, const lac_run_material *mat,
+                      const lac_run_setup *setup, lac_run_system *sys,
+                      char *progress, size_t size)
+{
+  lac_triplet *T = NULL;
+  size_t cap = 0;
+  int status = LAC_SUCCESS;
+  memset (sys, 0, sizeof *sys);
+  sys->ndof = (size_t) m->dim * m->nnodes;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      size_t nc = (m->ptr[c + 1] - m->ptr[c]) * (size_t) m->dim;
+      cap += nc * nc;                          /* entries of K_e */
+    }
+  if (sc->scene.large_deformation)
+    cap = 0;                  /* K_T is assembled by the Newton loop */
+  T = lac_triplet_alloc (sys->ndof, sys->ndof, cap ? cap : 1);
+  sys->F = lac_calloc (sys->ndof, sizeof *sys->F);
+  sys->b = lac_malloc (sys->ndof * sizeof *sys->b);
+  sys->dir = lac_dirichlet_alloc ();
+  if (!T || !sys->F || !sys->b || !sys->dir)
+    {
+      lac_triplet_free (T);
+      LAC_ERROR (LAC_ENOMEM, "system of %zu dofs", sys->ndof);
+    }
+  if ((!sc->scene.large_deformation
+       && (status = lac_assembly_stiffness (m, &mat->elastic, T)))
+      || (status = add_loads (sc, model, m, sys->F))          /* F = l(v)    */
+      || (status = add_dirichlet (sc, model, m, sys->dir))
+      || (status = find_bodies (sc, model, m, setup, sys))
+      || (status = count_fixed (sys))
+      || (sc->ncontact && !sc->scene.large_deformation    /* C, G (else: */
+          && (status = contact_matrices (sc, model, m, setup, sys))))
+    goto done;                                       /* per Newton it.) */
+  if (sc->scene.large_deformation)        /* the Newton loop's affair */
+    {
+      memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
+      goto done;
+    }
+  if (!(sys->K = lac_csc_from_triplet (T)))
+    {
+      status = LAC_ENOMEM;
+      goto done;
+    }
+  lac_triplet_free (T);
+  T = NULL;
+  if ((status = eliminate (sc, sys)))
+    goto done;
+  snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K",
+            sys->ndof, sys->nfixed, sys->nnz);
+done:
+  if (!status && sc->scene.large_deformation)
+    snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "
+              "at every Newton iteration)", sys->ndof);
+  lac_triplet_free (T);
+  return status;
+}

@@ -1,0 +1,46 @@
+/* lac_run_system.h -- stage 4 of a run: the system to solve
+ *                                          [LAC (8), (16)-(18); §4.3]
+ * In:  the scene (loads, Dirichlet conditions, [contact]), the model, the
+ *      mesh, the material, the contact set-up.
+ * Out: K and F [LAC (8)], the Dirichlet data and their elimination (b);
+ *      for a linear scene with contact, admissibility [LAC Def. 1], C and
+ *      the mean gaps G [LAC (16)-(18)] with the Dirichlet values moved into
+ *      G; the bodies and the rigid motions their Dirichlet conditions
+ *      leave free (fem/lac_rigid.h).  A body that touches no contact
+ *      surface and is not fixed is an error naming it and its free motion;
+ *      the free motions of bodies held by contact alone are N, for the
+ *      solve (solve/lac_system.h).
+ */
+#ifndef LAC_RUN_SYSTEM_H
+#define LAC_RUN_SYSTEM_H
+
+#include <stddef.h>
+#include "contact/lac_contact.h"
+#include "fem/lac_assembly.h"
+#include "fem/lac_rigid.h"
+#include "io/lac_scene.h"
+#include "run/lac_run_material.h"
+#include "run/lac_run_setup.h"
+
+typedef struct lac_run_system
+{
+  size_t ndof, nfixed, nnz;
+  lac_csc *K;              /* owned: K after the Dirichlet elimination   */
+  lac_csc *K0;             /* owned, [output] matrix: K before it, or NULL */
+  double *F;               /* owned, ndof: the load vector               */
+  double *b;               /* owned, ndof: right-hand side after it      */
+  lac_dirichlet *dir;      /* owned: the fixed dofs and their values     */
+  lac_contact *contact;    /* owned: admissibility, C, G (linear contact) */
+  lac_bodies *bodies;      /* owned                                      */
+  size_t nfree;            /* free motions of bodies held by contact     */
+  double *N;               /* owned, ndof x nfree                        */
+  char **N_what;           /* owned, nfree descriptions                  */
+} lac_run_system;
+
+int lac_run_system_build (const lac_scene *sc, lac_model model,
+                          const lac_mesh *m, const lac_run_material *mat,
+                          const lac_run_setup *setup, lac_run_system *sys,
+                          char *progress, size_t size);
+void lac_run_system_clear (lac_run_system *sys);
+
+#endif /* LAC_RUN_SYSTEM_H */
