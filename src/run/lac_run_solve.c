@@ -82,7 +82,12 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
   const lac_newton_record *h;
   int status = lac_newton_iterate (nw);
   if (status)
-    return status;
+    {
+      char msg[600];
+      lac_run_inner_message (msg, sizeof msg);
+      return lac_error_set (status, sc->path, "active-set iteration %zu: "
+                            "%s", nw->nhist + 1, msg);
+    }
   h = &nw->hist[nw->nhist - 1];
   if (lac_newton_test (nw, NEWTON_TOL) == LAC_SUCCESS)
     {
@@ -97,12 +102,10 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
   if ((int) nw->nhist >= c->max_iterations)
     return lac_newton_maxiter_error (nw, c->max_iterations);
   snprintf (progress, size, "active set %d: %zu active, %zu changed%s, "
-            "residual %.1e, %d CG iteration%s, %d factorization%s "
-            "(%.2f s)", h->iter, h->nactive, h->nchanged,
-            h->damped ? " (cycle: damped)" : "", h->residual,
-            h->cg_iterations, h->cg_iterations == 1 ? "" : "s",
-            h->factorizations, h->factorizations == 1 ? "" : "s",
-            h->seconds);
+            "residual %.1e, %d CG iteration%s, %d factorization%s", h->iter,
+            h->nactive, h->nchanged, h->damped ? " (cycle: damped)" : "",
+            h->residual, h->cg_iterations, h->cg_iterations == 1 ? "" : "s",
+            h->factorizations, h->factorizations == 1 ? "" : "s");
   return LAC_CONTINUE;
 }
 
