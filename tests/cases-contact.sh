@@ -147,3 +147,42 @@ for args in "$T2 --set contact.interface.method=nts" "$T2 --set contact.interfac
     contact_fail "infsup $args" "beta_h = '$b': $(tail -1 "$C/infsup.err")"
   fi
 done
+
+# ---- curved contact: few active-set iterations ([contact] strategy auto) --
+# The three curved scenes of chapter 07 (a cylinder on a rigid flat, a ball
+# on a rigid plane, a cylinder on an elastic block) settle in <= 8
+# iterations at every level run here, with a contact zone strictly inside
+# the candidates (some multiplier inactive), and contact.csv satisfies the
+# conditions of [LAC (18)] up to rounding: active rows have a mean gap
+# <= 1e-10 max |mean gap| in size and lambda <= 0, inactive rows lambda = 0
+# and a mean gap >= -1e-10 max |mean gap|.
+curved () {
+  name="curved-$1-level$2"
+  if ! "$LAC" run "chapters/07-newton/$1.scene" --set level="$2" --quiet \
+       --out "$C/$name" > "$C/$name.out" 2> "$C/$name.err"; then
+    contact_fail "$name" "lac run failed: $(tail -1 "$C/$name.err")"
+    return
+  fi
+  it=$(value_of "$C/$name.out" newton_iterations)
+  na=$(value_of "$C/$name.out" active)
+  nm=$(value_of "$C/$name.out" multipliers)
+  kkt=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; next }
+    $col["multiplier"] >= 0 { n++; g[n] = $col["mean_gap"]; l[n] = $col["lambda"];
+      a[n] = $col["active"]; m = (g[n] < 0 ? -g[n] : g[n]) > m ? (g[n] < 0 ? -g[n] : g[n]) : m }
+    END { bad = 0; t = 1e-10 * m
+      for (i = 1; i <= n; i++)
+        if (a[i] == 1 ? (g[i] > t || g[i] < -t || l[i] > 0) : (l[i] != 0 || g[i] < -t)) bad++
+      print bad }' "$C/$name/contact.csv")
+  if awk -v n="$it" -v a="$na" -v m="$nm" -v k="$kkt" \
+       'BEGIN { exit !(n >= 2 && n <= 8 && a > 0 && a < m && k == 0) }'; then
+    contact_ok "$name"
+  else
+    contact_fail "$name" "newton_iterations = $it (want 2..8), active = $na of $nm, $kkt rows of contact.csv violate (18)"
+  fi
+}
+for l in 0 2 4; do
+  curved cylinder-flat $l
+  curved cylinder-block $l
+done
+curved sphere-plane 0
+curved sphere-plane 1

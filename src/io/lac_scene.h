@@ -93,6 +93,8 @@
  *                          each active set's system is solved
  *                          (solve/lac_strategy.h)               auto
  *     max_iterations       active-set iterations at most          50
+ *     gap_bound            length added to the pairing distance (one
+ *                          facet size) for curved bodies           0
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b

@@ -122,6 +122,7 @@ static const key_spec contact_keys[] = {
   ENUM (lac_scene_contact, strategy, strategy_names),
   INT (lac_scene_contact, max_iterations, 1, 100000,
        "an integer in 1..100000"),
+  NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
 };
 static const key_spec steps_keys[] = {
   INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),

@@ -127,6 +127,7 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
   int strategy;         /* lac_strategy_kind, LAC_STRATEGY_AUTO default   */
   int max_iterations;   /* active-set iterations at most (default 50)     */
+  double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
 } lac_scene_contact;
 
 typedef struct lac_scene_steps           /* [steps] */

@@ -97,6 +97,9 @@ lac_solver_alloc (lac_solver_kind kind)
     {
       umfpack_dl_defaults (s->control);
       s->control[UMFPACK_PRL] = 0;                     /* never print */
+      /* METIS instead of the default AMD: on the 3D saddle systems of
+       * chapter 07 the LU takes 4x less time and 2x less memory */
+      s->control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
     }
   if (kind == LAC_SOLVER_CHOLMOD)
     {

@@ -45,6 +45,7 @@ pair (const lac_scene *sc, const lac_mesh *m, lac_run_setup *s)
   double t0 = lac_seconds ();
   int status;
   lac_pairing_opts_init (&po);
+  po.dist_abs = c->gap_bound;
   status = s->master.n ? lac_pairing_build (&S, &s->master, &po, &s->pairing)
                        : lac_obstacle_pairing (&S, &s->obstacle, 0,
                                                &s->pairing);

@@ -80,6 +80,47 @@ gap_scale (const lac_newton *s, size_t i)
   return sc;
 }
 
+/* Penetration of macro-element i as a length: -d_i / |C(:,i)|_1 (the mean
+ * gap per unit weight; 0 for an empty column). */
+static double
+penetration (const lac_newton *s, size_t i)
+{
+  const lac_csc *C = s->sys->C;
+  double csum = 0;
+  for (int p = C->p[i]; p < C->p[i + 1]; p++)
+    csum += fabs (C->x[p]);
+  return csum > 0 ? -s->d[i] / csum : 0.0;
+}
+
+/* The first contact.  When the first solve had no active multiplier, the
+ * gaps d are those of the bodies passing through each other, and every
+ * penetrating element would be switched on: for a curved body that is the
+ * whole overlap, wider than the contact zone, and the rule then releases
+ * about half of the excess per iteration.  For a paraboloid pressed by a
+ * depth delta (gap -delta + r^2 / 2R) the overlap radius is sqrt(2 R delta)
+ * and Hertz's contact radius sqrt(R delta), where the overlap is delta / 2:
+ * so only the elements that penetrate by at least half the deepest
+ * penetration are switched on now; the others, if they belong to the
+ * contact, are switched on by the rule at the next iteration.  A flat
+ * contact (all penetrations equal) is switched on whole.  Returns the
+ * number of changes left in want[]. */
+static size_t
+first_contact (const lac_newton *s, char *want)
+{
+  double pmax = 0;
+  size_t nch = 0;
+  for (size_t i = 0; i < s->k; i++)
+    if (want[i])
+      pmax = fmax (pmax, penetration (s, i));
+  for (size_t i = 0; i < s->k; i++)
+    {
+      if (want[i] && penetration (s, i) < LAC_NEWTON_FIRST_CONTACT * pmax)
+        want[i] = 0;
+      nch += want[i] != 0;
+    }
+  return nch;
+}
+
 static double
 rho_of (const lac_newton *s, size_t i)
 {
@@ -194,6 +235,8 @@ update_status (lac_newton *s, int *damped)
           pair[2 * nch++ + 1] = (double) i;
         }
     }
+  if (s->nhist == 0 && nch > 0 && lac_newton_nactive (s) == 0)
+    nch = first_contact (s, want);
   if (nch == 0 || !seen_before (s, status_hash (want, s->k)))
     {
       memcpy (s->active, want, s->k);
@@ -222,21 +265,16 @@ update_status (lac_newton *s, int *damped)
 static void
 record (lac_newton *s, lac_newton_record *r)
 {
-  const lac_csc *C = s->sys->C;
   double lmax = lac_complementarity_lmax (s->k, s->lambda), ncp = 0, pen = 0;
   lac_strategy_counts c;
   lac_strategy_get_counts (s->strategy, &c);
   r->residual = c.backward_error;
   for (size_t i = 0; i < s->k; i++)
     {
-      double csum = 0;
-      for (int p = C->p[i]; p < C->p[i + 1]; p++)
-        csum += fabs (C->x[p]);
       ncp = fmax (ncp, lac_complementarity_residual (s->lambda[i], s->d[i],
                                                      rho_of (s, i), lmax,
                                                      gap_scale (s, i)));
-      if (csum > 0)
-        pen = fmax (pen, -s->d[i] / csum);
+      pen = fmax (pen, penetration (s, i));
     }
   r->ncp = ncp / (lmax > 0 ? lmax : 1.0);
   r->max_penetration = pen;

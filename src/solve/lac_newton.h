@@ -19,6 +19,15 @@
  * the iteration starts from every multiplier active instead (restarted =
  * 1); the rule then releases those in tension.
  *
+ * First contact: when the first solve had no active multiplier (bodies
+ * apart at the start), only the elements that penetrate by at least
+ * LAC_NEWTON_FIRST_CONTACT times the deepest penetration are switched on
+ * (Hertz: the contact radius of a pressed paraboloid is where the overlap
+ * is half the deepest); the rule switches on the others at the next
+ * iteration if they belong to the contact.  The solution is the same; the
+ * overlap of a curved body, wider than its contact zone, is not taken
+ * whole and released half an excess per iteration.
+ *
  * Safeguard against cycling: the statuses of every iteration are
  * remembered (a checksum); when the rule would return to statuses already
  * tried, only the most violated half of its changes is made (the
@@ -42,6 +51,9 @@
 #include <stddef.h>
 #include "solve/lac_strategy.h"
 #include "solve/lac_system.h"
+
+/* Fraction of the deepest penetration switched on at the first contact. */
+#define LAC_NEWTON_FIRST_CONTACT 0.5
 
 typedef struct lac_newton_record
 {

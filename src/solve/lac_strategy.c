@@ -71,8 +71,9 @@ lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
     }
   if (want != LAC_STRATEGY_AUTO)
     return want;
-  return n + k <= LAC_STRATEGY_DENSE_MAX ? LAC_STRATEGY_DENSE
-                                        : LAC_STRATEGY_AUGMENTED;
+  if (n + k <= LAC_STRATEGY_DENSE_MAX)
+    return LAC_STRATEGY_DENSE;
+  return nfree == 0 ? LAC_STRATEGY_SCHUR : LAC_STRATEGY_AUGMENTED;
 }
 
 static int fall_back (lac_strategy *s);

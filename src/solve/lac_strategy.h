@@ -10,8 +10,10 @@
  *   dense      (d) GSL's LU of the whole system: classroom sizes, matrices
  *                  a student can print (solve/lac_saddle.h);
  *   schur      (a) every body held by its Dirichlet conditions: K = L L^T
- *                  once, the multipliers by conjugate gradients on
- *                  C_A^T K^{-1} C_A (solve/lac_schur.h);
+ *                  once, the columns of S = C^T K^{-1} C of the active
+ *                  multipliers computed the first time they are needed
+ *                  and kept, the multipliers by a dense Cholesky of S_AA
+ *                  (solve/lac_schur.h);
  *   augmented  (b) the Cholesky factor of K + C_A W C_A^T, positive
  *                  definite as soon as the active multipliers hold the
  *                  bodies (also those held by contact alone), the
@@ -20,10 +22,11 @@
  *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
  *                  fallback and the reference (solve/lac_saddle.h).
  *
- * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, augmented
- * otherwise (chapter 07 has the measurements behind the rule: (a) needs 80
- * to more than 100 products with K^{-1} per active set on 3D meshes where
- * (b) needs 10 and a factorization).  Bodies held by contact alone are
+ * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur
+ * when every body is held by its Dirichlet conditions (one factorization
+ * for the whole active-set iteration), augmented when a body is held by
+ * contact alone (chapter 07 has the measurements behind the rule).
+ * Bodies held by contact alone are
  * known before anything is factorized (the system's N); (a) is refused
  * for them, and before (b) factorizes, lac_system_check_held says whether
  * the active multipliers hold them (else a message naming the body and
