@@ -26,6 +26,8 @@
  */
 #include "linalg/lac_linalg.h"
 
+#include "linalg/lac_blas.h"
+
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -285,9 +287,11 @@ umf_factor (lac_solver *s, const lac_csc *A)
   if (!s->symbolic)                   /* ordering + symbolic LU, or kept */
     st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, s->Ap, s->Ai, s->Ax,
                               &s->symbolic, s->control, info);
+  lac_blas_parallel ();
   if (st == UMFPACK_OK)
     st = umfpack_dl_numeric (s->Ap, s->Ai, s->Ax, s->symbolic, &s->numeric,
                              s->control, info);
+  lac_blas_serial ();
   if (st == UMFPACK_ERROR_out_of_memory)
     LAC_ERROR (LAC_ENOMEM, "UMFPACK ran out of memory factoring n = %zu, "
                "nnz = %zu", n, nnz);
@@ -492,8 +496,10 @@ chol_factor (lac_solver *s, const lac_csc *A)
       s->sym_nnz = cc->lnz;
       s->sym_fl = cc->fl;
     }
+  lac_blas_parallel ();
   if (s->L)
     cholmod_l_factorize (C, s->L, cc);
+  lac_blas_serial ();
   cholmod_l_free_sparse (&C, cc);
   if (!s->L || cc->status < CHOLMOD_OK)
     LAC_ERROR (cc->status == CHOLMOD_OUT_OF_MEMORY ? LAC_ENOMEM : LAC_EDEP,

@@ -14,6 +14,7 @@
 
 #include <math.h>
 #include <string.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_pcg.h"
@@ -137,7 +138,9 @@ static int
 factor (lac_augmented *s, const lac_csc *A)
 {
   lac_solver_info info;
+  double t0 = lac_seconds ();
   int status = lac_solver_refactor (s->chol, A);
+  s->counts.time_factor += lac_seconds () - t0;
   if (status)
     return status;
   s->counts.factorizations++;

@@ -10,6 +10,7 @@
 
 #include <math.h>
 #include <string.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -25,6 +26,7 @@ struct lac_saddle
   double *work;                    /* owned, 2 (n + k)                     */
   int factorizations, analyses;
   double rcond;                    /* of the last factorization           */
+  double time_factor;              /* seconds in lac_solver_refactor      */
 };
 
 lac_saddle *
@@ -141,11 +143,14 @@ factorize (lac_saddle *s, const char *active)
 {
   lac_csc *A;
   lac_solver_info info;
+  double t0;
   int status;
   saddle_scaling (s, active);
   if (!(A = saddle_matrix (s, active)))
     return LAC_ENOMEM;
+  t0 = lac_seconds ();
   status = lac_solver_refactor (s->solver, A);
+  s->time_factor += lac_seconds () - t0;
   lac_csc_free (A);
   if (status == LAC_ESING)
     {
@@ -201,8 +206,9 @@ lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
 
 void
 lac_saddle_counts (const lac_saddle *s, int *factorizations, int *analyses,
-                   double *rcond)
+                   double *rcond, double *time_factor)
 {
+  *time_factor = s->time_factor;
   *factorizations = s->factorizations;
   *analyses = s->analyses;
   *rcond = s->rcond;

@@ -36,6 +36,6 @@ int lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
 /* Numeric factorizations and symbolic analyses made so far, and the
  * condition estimate of the last factorization. */
 void lac_saddle_counts (const lac_saddle *s, int *factorizations,
-                        int *analyses, double *rcond);
+                        int *analyses, double *rcond, double *time_factor);
 
 #endif /* LAC_SADDLE_H */

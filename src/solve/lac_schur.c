@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -65,6 +66,7 @@ lac_schur_set (lac_schur *s, const lac_contact_system *sys)
 {
   size_t n = sys->K->ncol, k = sys->C->ncol;
   lac_solver_info info;
+  double t0;
   int status;
   if (!s->x || s->n != n || s->k != k)
     {
@@ -79,7 +81,10 @@ lac_schur_set (lac_schur *s, const lac_contact_system *sys)
     }
   s->sys = sys;
   memset (s->have, 0, k);
-  if ((status = lac_solver_refactor (s->chol, sys->K)))    /* K = L L^T */
+  t0 = lac_seconds ();
+  status = lac_solver_refactor (s->chol, sys->K);          /* K = L L^T */
+  s->counts.time_factor += lac_seconds () - t0;
+  if (status)
     return status;
   s->counts.factorizations++;
   s->counts.solves += 2;                  /* the condition estimate's */

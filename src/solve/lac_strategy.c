@@ -271,11 +271,16 @@ lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
   c->factorizations = sc.factorizations;
   c->analyses = sc.analyses;
   c->rcond = sc.rcond;
+  c->time_factor = sc.time_factor;
   if (s->saddle)
     {
       int f, a;
-      lac_saddle_counts (s->saddle, &f, &a, &c->rcond);
+      double t;
+      lac_saddle_counts (s->saddle, &f, &a, &c->rcond, &t);
       c->factorizations += f;
       c->analyses += a;
+      c->time_factor += t;
     }
+  c->time_solve = s->counts.time_solve + s->counts.time_factor
+                  - c->time_factor;
 }

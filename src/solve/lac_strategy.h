@@ -89,8 +89,8 @@ typedef struct lac_strategy_counts
   int refinements;     /* refinement steps                                 */
   double backward_error; /* of the last solve, after refinement            */
   double rcond;        /* condition estimate of the last factorization     */
-  double time_factor;  /* seconds in set and in factorizations            */
-  double time_solve;   /* seconds in all solves                           */
+  double time_factor;  /* seconds in analyses and factorizations          */
+  double time_solve;   /* seconds in the rest of set and of the solves    */
 } lac_strategy_counts;
 
 /* kind: a concrete one (from lac_strategy_choose), not auto. */

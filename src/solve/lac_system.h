@@ -62,6 +62,7 @@ typedef struct lac_solve_counts
   int solves;          /* forward and back substitutions                 */
   int iterations;      /* conjugate-gradient iterations, all solves      */
   double rcond;        /* condition estimate of the last factorization   */
+  double time_factor;  /* seconds in analyses and factorizations         */
 } lac_solve_counts;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
