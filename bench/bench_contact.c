@@ -1,7 +1,8 @@
 /* bench_contact -- where the time and the memory of a contact run go, and
  * a yardstick                                        [LAC Alg. 1; ch. 07]
  *
- * Usage:  bench_contact LABEL SCENE [--strategy NAME] [--set KEY=VALUE]...
+ * Usage:  bench_contact                 the table of `make bench` (below)
+ *         bench_contact LABEL SCENE [--strategy NAME] [--set KEY=VALUE]...
  *         bench_contact --header
  *
  * Runs the scene twice, each time in a child process of its own (so that
@@ -187,14 +188,87 @@ header (void)
           "strategy", "yardst", "ratio", "total", "peak_MB", "yard_MB", "err_lam");
 }
 
-int
-main (int argc, char **argv)
+/* One case: both children, one line. */
+static int
+bench_case (const char *label, const args *a)
 {
-  args a = { NULL, 0, NULL, LAC_STRATEGY_AUTO };
   char run[512], yard[128], strat[32], err[32];
   double peak = 0, ypeak = 0, t[7], ty;
   size_t ndof, k, its;
   int nfact, ncg;
+  if (in_child (child_run, a, run, sizeof run, &peak)
+      || in_child (child_yardstick, a, yard, sizeof yard, &ypeak)
+      || sscanf (run, "%zu %zu %lf %lf %lf %lf %lf %lf %lf %zu %d %d %31s "
+                 "%31s", &ndof, &k, &t[0], &t[1], &t[2], &t[3], &t[4], &t[5],
+                 &t[6], &its, &nfact, &ncg, strat, err) != 14
+      || sscanf (yard, "%lf", &ty) != 1)
+    {
+      fprintf (stderr, "bench_contact: %s failed\n", label);
+      return 1;
+    }
+  printf ("%-14s %8zu %5zu %6.2f %6.2f %6.2f %7.2f %7.2f %6.2f %5.2f %4zu"
+          " %4d %4d %-9s %7.2f %6.2f %6.1f %8.0f %8.0f %9s\n", label, ndof,
+          k, t[0], t[1], t[2], t[3], t[4], t[5], t[6], its, nfact, ncg,
+          strat, ty, t[3] / ty, t[0] + t[1] + t[2] + t[3] + t[6], peak,
+          ypeak, err);
+  fflush (stdout);
+  return 0;
+}
+
+/* The default table of `make bench`: the 3D patch test (hex8, n^3 over
+ * (n-1)^3 cells) at about 7k, 53k, 141k and 269k dofs, the reference LU
+ * at 141k, and the curved scenes of chapter 07 at their finer levels. */
+static int
+bench_default (void)
+{
+  static const char *T3 = "chapters/08-experiments/taylor3d.scene";
+  static const char *CF = "chapters/07-newton/cylinder-flat.scene";
+  static const char *CB = "chapters/07-newton/cylinder-block.scene";
+  static const char *SP = "chapters/07-newton/sphere-plane.scene";
+  static const struct { const char *label, *scene, *set; int strategy; }
+  cases[] = {
+    { "taylor3d-n10", NULL, "mesh.numbers=n=10", LAC_STRATEGY_AUTO },
+    { "taylor3d-n20", NULL, "mesh.numbers=n=20", LAC_STRATEGY_AUTO },
+    { "taylor3d-n28", NULL, "mesh.numbers=n=28", LAC_STRATEGY_AUTO },
+    { "taylor3d-n28", NULL, "mesh.numbers=n=28", LAC_STRATEGY_SADDLE },
+    { "taylor3d-n35", NULL, "mesh.numbers=n=35", LAC_STRATEGY_AUTO },
+    { "cyl-flat-4", NULL, "level=4", LAC_STRATEGY_AUTO },
+    { "cyl-flat-5", NULL, "level=5", LAC_STRATEGY_AUTO },
+    { "cyl-flat-6", NULL, "level=6", LAC_STRATEGY_AUTO },
+    { "cyl-block-4", NULL, "level=4", LAC_STRATEGY_AUTO },
+    { "cyl-block-5", NULL, "level=5", LAC_STRATEGY_AUTO },
+    { "cyl-block-6", NULL, "level=6", LAC_STRATEGY_AUTO },
+    { "ball-plane-0", NULL, "level=0", LAC_STRATEGY_AUTO },
+    { "ball-plane-1", NULL, "level=1", LAC_STRATEGY_AUTO },
+    { "ball-plane-2", NULL, "level=2", LAC_STRATEGY_AUTO },
+  };
+  int failed = 0;
+  header ();
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+    {
+      const char *set[1] = { cases[c].set };
+      const char *lb = cases[c].label;
+      args a = { !strncmp (lb, "taylor", 6) ? T3 : !strncmp (lb, "cyl-f", 5)
+                 ? CF : !strncmp (lb, "cyl-b", 5) ? CB : SP, 1, set,
+                 cases[c].strategy };
+      failed |= bench_case (lb, &a);
+    }
+  printf ("(seconds; solve = the solve stage, factor = its analyses and "
+          "factorizations, subst = the rest: substitutions, CG, "
+          "refinement; its = active-set iterations, fact = factorizations, "
+          "cg = CG iterations; yardst = one CHOLMOD factorization of K + "
+          "delta I of the same mesh; ratio = solve / yardst; total = every "
+          "stage; peaks of the run and of the yardstick's process)\n");
+  return failed;
+}
+
+int
+main (int argc, char **argv)
+{
+  args a = { NULL, 0, NULL, LAC_STRATEGY_AUTO };
+  int status;
+  if (argc == 1)
+    return bench_default ();
   if (argc == 2 && !strcmp (argv[1], "--header"))
     {
       header ();
@@ -202,8 +276,9 @@ main (int argc, char **argv)
     }
   if (argc < 3)
     {
-      fprintf (stderr, "usage: bench_contact LABEL SCENE [--strategy NAME] "
-               "[--set KEY=VALUE]...\n       bench_contact --header\n");
+      fprintf (stderr, "usage: bench_contact [LABEL SCENE [--strategy NAME] "
+               "[--set KEY=VALUE]...]\n       bench_contact --header\n"
+               "(no argument: the table of make bench)\n");
       return 2;
     }
   a.scene = argv[2];
@@ -218,26 +293,11 @@ main (int argc, char **argv)
       else
         {
           fprintf (stderr, "bench_contact: unknown option '%s'\n", argv[i]);
+          free (a.set);
           return 2;
         }
     }
-  if (!a.set || in_child (child_run, &a, run, sizeof run, &peak)
-      || in_child (child_yardstick, &a, yard, sizeof yard, &ypeak)
-      || sscanf (run, "%zu %zu %lf %lf %lf %lf %lf %lf %lf %zu %d %d %31s "
-                 "%31s", &ndof, &k, &t[0], &t[1], &t[2], &t[3], &t[4], &t[5],
-                 &t[6], &its, &nfact, &ncg, strat, err) != 14
-      || sscanf (yard, "%lf", &ty) != 1)
-    {
-      fprintf (stderr, "bench_contact: %s failed\n", argv[1]);
-      free (a.set);
-      return 1;
-    }
-  printf ("%-14s %8zu %5zu %6.2f %6.2f %6.2f %7.2f %7.2f %6.2f %5.2f %4zu"
-          " %4d %4d %-9s %7.2f %6.2f %6.1f %8.0f %8.0f %9s\n", argv[1], ndof,
-          k, t[0], t[1], t[2], t[3], t[4], t[5], t[6], its, nfact, ncg,
-          strat, ty, t[3] / ty, t[0] + t[1] + t[2] + t[3] + t[6], peak,
-          ypeak, err);
-  fflush (stdout);
+  status = a.set ? bench_case (argv[1], &a) : 1;
   free (a.set);
-  return 0;
+  return status;
 }
