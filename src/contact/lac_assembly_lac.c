@@ -12,9 +12,9 @@
  *
  * so that (C^T U)_i = int [u_N] with [u_N] = (u^S - u^M).n^S (lac_newton.h).
  * Against a rigid obstacle (lac_obstacle.h) the points have no master
- * facet and C^M = 0.  Axisymmetric: w carries 2 pi r.  The tangent ignores the variation of
- * n^S and of the pairing with U (a "frozen geometry", what makes the method
- * a generalized Newton [LAC §4.5]).
+ * facet and C^M = 0.  Axisymmetric: w carries 2 pi r.  The variation of
+ * C and G with the coordinates (large deformations) is in
+ * lac_contact_tangent.h.
  */
 #include "contact/lac_assembly_lac.h"
 

@@ -115,6 +115,9 @@
  *     curve                file name of the per-step CSV    curve.csv
  *     vtu_every            K >= 0: step_NNN.vtu after every K-th step and
  *                          the last, listed in steps.pvd (0: none)   0
+ *     tangent              consistent | frozen: the Newton step with the
+ *                          derivatives of the contact terms, or without
+ *                          (frozen geometry)                  consistent
  *   [output]
  *     vtu                  yes | no: solution.vtu     yes
  *     csv                  yes | no: nodes.csv        yes

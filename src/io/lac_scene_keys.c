@@ -124,6 +124,8 @@ static const key_spec contact_keys[] = {
        "an integer in 1..100000"),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
 };
+static const char *const tangent_names[] =            /* lac_nonlinear.h */
+  { "consistent", "frozen", NULL };
 static const key_spec steps_keys[] = {
   INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),
   NUM (lac_scene_steps, start, 0, 1, 2, "a number in [0, 1)"),
@@ -132,6 +134,7 @@ static const key_spec steps_keys[] = {
   STR (lac_scene_steps, monitor),
   STR (lac_scene_steps, curve),
   INT (lac_scene_steps, vtu_every, 0, 100000, "an integer in 0..100000"),
+  ENUM (lac_scene_steps, tangent, tangent_names),
 };
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),

@@ -140,6 +140,7 @@ typedef struct lac_scene_steps           /* [steps] */
   char *monitor;        /* owned, NULL: node group followed step by step   */
   char *curve;          /* owned, NULL: file name of the per-step CSV      */
   int vtu_every;        /* K > 0: step_NNN.vtu every K steps, 0: none      */
+  int tangent;          /* 0 consistent, 1 frozen (lac_nl_opts.frozen)     */
 } lac_scene_steps;
 
 typedef struct lac_scene_output          /* [output] */

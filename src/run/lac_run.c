@@ -113,6 +113,18 @@ add_timings (lac_run *r)
                                          n->time_pairing)))
         status = lac_summary_add (s, "time_saddle_solve", "%.3f",
                                   n->time_solve);
+      if (!status)
+        status = lac_summary_add (s, "time_factor_KT", "%.3f",
+                                  n->time_factor);
+      if (!status)
+        status = lac_summary_add (s, "time_frozen_solve", "%.3f",
+                                  n->time_frozen);
+      if (!status)
+        status = lac_summary_add (s, "time_consistent_step", "%.3f",
+                                  n->time_krylov);
+      if (!status)
+        status = lac_summary_add (s, "time_contact_tangent", "%.3f",
+                                  n->time_tangent);
     }
   else if (!status && r->sol.newton)
     {

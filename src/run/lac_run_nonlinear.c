@@ -159,6 +159,7 @@ nl_setup (const lac_scene *sc, const lac_mesh *m,
            : LAC_STRATEGY_SADDLE;
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
+  o.frozen = sc->steps.tangent == 1;
   return (nl->s = lac_nl_alloc (p, &o)) ? LAC_SUCCESS : LAC_ENOMEM;
 }
 

@@ -3,8 +3,9 @@
  *
  * See lac_nonlinear.h for the algorithm.  The file follows it: set-up
  * (fixed dofs, the pattern of K_T), the contact data on the current
- * coordinates, the statuses, the residual, one solve, and the step driver
- * with its halvings.
+ * coordinates, the statuses, the residual, one solve (the strategy's
+ * frozen one, then the consistent step), and the step driver with its
+ * halvings.
  */
 #include "solve/lac_nonlinear.h"
 
@@ -12,11 +13,18 @@
 #include <string.h>
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
+#include "contact/lac_contact_tangent.h"
 #include "solve/lac_complementarity.h"
+#include "solve/lac_consistent.h"
 #include "solve/lac_strategy.h"
 #include "base/lac_status.h"
 
 #define HALVINGS 5        /* corrections halved when a cell turns inside out */
+#define ETA_FACTOR 1e-2  /* accuracy of the consistent step: this times    */
+#define ETA_MAX 1e-3      /*   the residual of step 4, within these bounds  */
+#define ETA_MIN 1e-12
+     /*   its right-hand side: the Newton residual,    */
+                          /*   within these bounds                          */
 
 void
 lac_nl_opts_init (lac_nl_opts *o)
@@ -50,8 +58,12 @@ lac_nl_free (lac_nl *s)
   lac_csc_free (s->K);
   lac_solver_free (s->solver);
   lac_strategy_free (s->strategy);
+  lac_contact_tangent_free (s->tangent);
   lac_free (s->klam);
   lac_free (s->kact);
+  lac_free (s->klin);
+  lac_free (s->kgap);
+  lac_free (s->lam_lin);
   lac_free (s->r);
   lac_free (s->Fint);
   lac_free (s->dU);
@@ -154,11 +166,12 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->U_save = lac_calloc (n, sizeof *s->U_save);
   s->lambda = lac_calloc (nm, sizeof *s->lambda);
   s->lambda_save = lac_calloc (nm, sizeof *s->lambda_save);
+  s->lam_lin = lac_calloc (nm, sizeof *s->lam_lin);
   s->active = lac_calloc (nm, 1);
   s->active_save = lac_calloc (nm, 1);
   if (!s->U || !s->x || !s->fixed || !s->g1 || !s->g0 || !s->r || !s->Fint
       || !s->dU || !s->U_save || !s->lambda || !s->lambda_save || !s->active
-      || !s->active_save)
+      || !s->active_save || !s->lam_lin)
     {
       lac_nl_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace for %zu dofs", n);
@@ -473,45 +486,105 @@ solve_plain (lac_nl *s)
   return status ? status : lac_solver_solve (s->solver, s->r, s->dU);
 }
 
+/* Room for k multipliers: lambda, statuses, linearization point, gaps. */
+static int
+kroom (lac_nl *s, size_t k)
+{
+  if (k <= s->kcap)
+    return LAC_SUCCESS;
+  lac_free (s->klam);
+  lac_free (s->kact);
+  lac_free (s->klin);
+  lac_free (s->kgap);
+  s->klam = lac_malloc (k * sizeof *s->klam);
+  s->kact = lac_malloc (k);
+  s->klin = lac_malloc (k * sizeof *s->klin);
+  s->kgap = lac_malloc (k * sizeof *s->kgap);
+  if (!s->klam || !s->kact || !s->klin || !s->kgap)
+    {
+      s->kcap = 0;
+      LAC_ERROR (LAC_ENOMEM, "%zu multipliers", k);
+    }
+  s->kcap = k;
+  return LAC_SUCCESS;
+}
+
+/* The consistent step (solve/lac_consistent.h) from the frozen one in
+ * s->dU, s->klam: the derivatives of the contact terms at the current
+ * coordinates and the multipliers of the linearization point. */
+static int
+consistent (lac_nl *s, lac_nl_iter *rec)
+{
+  const lac_nl_problem *p = &s->prob;
+  const lac_contact *c = s->contact;
+  lac_pairing_facets Mf;
+  lac_consistent_info info;
+  double t0 = lac_seconds ();
+  if (p->master)
+    {
+      Mf = *p->master;
+      Mf.mesh = &s->cur;
+    }
+  for (size_t i = 0; i < c->k; i++)
+    s->klin[i] = s->lam_lin[c->macro[i]];
+  lac_contact_tangent_free (s->tangent);
+  s->tangent = NULL;
+  int status = lac_contact_tangent_build (&s->cur, p->mat->model, p->M,
+                                          s->pairing, p->master ? &Mf : NULL,
+                                          p->obstacle, c, s->klin,
+                                          &s->tangent);
+  s->time_tangent += lac_seconds () - t0;
+  if (status)
+    return status;
+  lac_consistent cs = { &s->sys, s->strategy, s->tangent, s->fixed, s->kgap,
+                        s->kact, s->eta, 0 };
+  status = lac_consistent_solve (&cs, s->dU, s->klam, &info);
+  rec->krylov = info.iterations;
+  rec->krylov_residual = info.residual;
+  return status;
+}
+
 /* The saddle system of step 5 by the strategy (solve/lac_strategy.h),
  * kept between iterations (its analyses made once): the statuses and
  * the multipliers of the admissible macro-elements, the total lambda as
- * the unknown, the last one as the start.  If the statuses do not hold a
+ * the unknown, the last one as the start; then, unless the geometry is
+ * frozen, the consistent step from there.  If the statuses do not hold a
  * body held by contact alone, every admissible one is active in this
  * solve (step 3 releases those in tension at the next iteration). */
 static int
-solve_contact (lac_nl *s)
+solve_contact (lac_nl *s, lac_nl_iter *rec)
 {
   const lac_contact *c = s->contact;
   size_t k = c->k;
+  int status;
   if (!s->strategy && !(s->strategy = lac_strategy_alloc (s->opts.kind)))
     return LAC_ENOMEM;
-  if (k > s->kcap)
-    {
-      lac_free (s->klam);
-      lac_free (s->kact);
-      s->klam = lac_malloc (k * sizeof *s->klam);
-      s->kact = lac_malloc (k);
-      if (!s->klam || !s->kact)
-        LAC_ERROR (LAC_ENOMEM, "%zu multipliers", k);
-      s->kcap = k;
-    }
+  if ((status = kroom (s, k)))
+    return status;
   for (size_t i = 0; i < k; i++)
     {
       s->kact[i] = s->active[c->macro[i]];
       s->klam[i] = s->kact[i] ? s->lambda[c->macro[i]] : 0.0;
     }
-  lac_contact_system sys = { s->K, s->r, c->C, c->G, NULL, s->prob.nfree,
-                             s->prob.N, s->prob.N_what };
-  if (sys.nfree > 0 && lac_system_check_held (&sys, s->kact))
+  s->sys = (lac_contact_system) { s->K, s->r, c->C, c->G, NULL,
+                                  s->prob.nfree, s->prob.N, s->prob.N_what };
+  if (s->sys.nfree > 0 && lac_system_check_held (&s->sys, s->kact))
     {
       lac_error_clear ();
       memset (s->kact, 1, k);
     }
   memset (s->dU, 0, s->ndof * sizeof *s->dU);
-  int status = lac_strategy_set (s->strategy, &sys);
+  double t0 = lac_seconds ();
+  status = lac_strategy_set (s->strategy, &s->sys);
+  double t1 = lac_seconds ();
   if (!status)
     status = lac_strategy_solve (s->strategy, s->kact, s->dU, s->klam);
+  double t2 = lac_seconds ();
+  if (!status && !s->opts.frozen)
+    status = consistent (s, rec);
+  s->time_factor += t1 - t0;
+  s->time_frozen += t2 - t1;
+  s->time_krylov += lac_seconds () - t2;
   for (size_t i = 0; !status && i < k; i++)             /* total lambda */
     {
       s->lambda[c->macro[i]] = s->klam[i];
@@ -522,10 +595,12 @@ solve_contact (lac_nl *s)
 
 /* Step 5: Dirichlet increments into K_T, r and G, solve, U += dU. */
 static int
-solve (lac_nl *s)
+solve (lac_nl *s, lac_nl_iter *rec)
 {
   lac_dirichlet inc = { 0, 0, NULL, NULL };
   int status = increments (s, &inc);
+  if (!status && s->contact && (status = kroom (s, s->contact->k)) == 0)
+    memcpy (s->kgap, s->contact->G, s->contact->k * sizeof *s->kgap);
   if (!status)
     status = lac_dirichlet_apply (&inc, s->K, s->r);
   if (!status && s->it == 0)
@@ -542,7 +617,7 @@ solve (lac_nl *s)
     status = lac_contact_apply_dirichlet (s->contact, inc.n, inc.dof, inc.val);
   double t0 = lac_seconds ();
   if (!status)
-    status = s->contact && s->contact->k > 0 ? solve_contact (s)
+    status = s->contact && s->contact->k > 0 ? solve_contact (s, rec)
                                              : solve_plain (s);
   s->time_solve += lac_seconds () - t0;
   lac_free (inc.dof);
@@ -599,6 +674,7 @@ lac_nl_iterate (lac_nl *s)
     return status;
   /* Step 4's residual uses the lambda of the last solve and the new C */
   rec.residual = residual (s);
+  memcpy (s->lam_lin, s->lambda, s->nmacro * sizeof *s->lam_lin);
   /* Step 3 on the current mean gaps (the Dirichlet increments are moved
    * into G by solve() only) */
   rec.nchanged = update_status (s, &pen);
@@ -618,8 +694,11 @@ lac_nl_iterate (lac_nl *s)
     LAC_ERROR (LAC_EMAXITER, "load factor %g: no convergence in %d Newton "
                "iterations (residual %.3e, %zu statuses changed)", s->t,
                s->opts.maxit, rec.residual, rec.nchanged);
-  /* Step 5 */
-  if ((status = solve (s)))
+  /* Step 5: an inexact Newton step, to a fraction of the residual (the
+   * first of a step carries the new Dirichlet increments: ETA_MAX) */
+  s->eta = s->it == 0 ? ETA_MAX
+           : fmax (ETA_MIN, fmin (ETA_MAX, ETA_FACTOR * rec.residual));
+  if ((status = solve (s, &rec)))
     return status;
   s->first = 0;
   s->it++;

@@ -31,27 +31,36 @@
  *      macro-elements are below tol * h_m |T^m cap Gamma_C| -> the step
  *      is done (at least one solve per step);
  *   5. otherwise solve, with C_A the columns of the active multipliers,
- *        [ K_T    -C_A ] [ dU       ]   [ t F - F_int(U)   ]
- *        [ -C_A^T   0  ] [ lambda_A ] = [ -d_A(U)          ]
+ *        [ K_T - H   -C_A ] [ dU       ]   [ t F - F_int(U)   ]
+ *        [ B_A^T       0  ] [ lambda_A ] = [ d_A(U)           ]
  *      (Dirichlet dofs: dU = their remaining increment; lambda is the
- *      TOTAL multiplier, not an increment; the geometry is frozen: no
- *      derivative of the normals or of the pairing -- the "generalized"
- *      Newton method) and set U += dU, lambda = lambda_A (0 elsewhere).
- * The saddle system is solved by the strategy of solve/lac_strategy.h
- * (the statuses being those of step 3, the last multipliers the start),
- * kept from iteration to iteration so that its orderings and symbolic
- * analyses are made once; the statuses follow the rule of
+ *      TOTAL multiplier, not an increment) and set U += dU, lambda =
+ *      lambda_A (0 elsewhere).  H = d(C lambda)/dU at the multipliers of
+ *      the iteration's start and B = -d(d)/dU are the derivatives of the
+ *      contact terms (contact/lac_contact_tangent.h): of the normals, the
+ *      surface elements and the projection onto the master.  With
+ *      opts.frozen, H = 0 and B = C: the "frozen geometry" of the
+ *      generalized Newton method of [LAC §4.5].
+ * The frozen system (symmetric) is solved by the strategy of
+ * solve/lac_strategy.h (the statuses being those of step 3, the last
+ * multipliers the start), kept from iteration to iteration so that its
+ * orderings and symbolic analyses are made once; the consistent system
+ * (not symmetric) by GMRES with that solve as the preconditioner, from
+ * the frozen solution, to a relative accuracy eta = 1e-2 times the
+ * residual of step 4 (at most 1e-3, at least 1e-12; 1e-3 in the first
+ * iteration of a step, whose right-hand side is the new Dirichlet data)
+ * (solve/lac_consistent.h).  The statuses follow the rule of
  * solve/lac_complementarity.h, the rule of the linear active set.
  * Without any admissible macro-element (bodies apart) step 5 is
  * K_T dU = t F - F_int(U).
  *
- * Convergence.  Quadratic where the statuses have settled and the contact
- * pressure is small against the stiffness.  The frozen geometry leaves
- * out lambda dC/dU (the stretch and rotation of n dGamma under the
- * pressure, and the motion of the master points): the convergence turns
- * linear when |lambda| / E is large (t433: a block compressed by 40 %,
- * |lambda| / E = 0.6, diverges; by 20 % it converges in 3 solves), and a
- * late step of the ring takes 10 iterations or so.
+ * Convergence.  Quadratic once the statuses have settled, whatever the
+ * pressure (t435 checks the derivatives against finite differences).  The
+ * frozen geometry leaves out H and B - C (the stretch and rotation of
+ * n dGamma under the pressure, and the motion of the master points): its
+ * convergence turns linear when |lambda| / E is large, and diverges for
+ * the quadratic elements of t433's block compressed by 40 % (|lambda| / E
+ * = 0.6); the late steps of the ring took 10 iterations or more.
  *
  * rho_m = E_ref / (h_m |T^m cap Gamma_C|), h_m = |T^m cap Gamma_C|^(1/(dim-1)),
  * E_ref the smallest Young modulus: rho_m d_m is then a pressure, the
@@ -82,6 +91,7 @@
 #include <stddef.h>
 #include "fem/lac_assembly.h"
 #include "contact/lac_contact.h"
+#include "contact/lac_contact_tangent.h"
 #include "fem/lac_hyper.h"
 #include "linalg/lac_linalg.h"
 #include "solve/lac_strategy.h"
@@ -121,6 +131,9 @@ typedef struct lac_nl_opts
   double tol;            /* relative tolerance of step 4 (0: 1e-8)          */
   double rho;            /* > 0: rho_m = rho for all m; 0: the default above */
   int max_cuts;          /* step halvings allowed (0: 4; < 0: none)         */
+  int frozen;            /* 1: the frozen-geometry tangent (the generalized
+                            Newton method of [LAC §4.5]); 0: the consistent
+                            one (solve/lac_consistent.h)                   */
   lac_pairing_opts popts;  /* pairing options (allow_empty is forced);
                             degree_nonaffine = 8 instead of 18: deformed
                             facets are all non-affine, and with 100 points
@@ -147,6 +160,8 @@ typedef struct lac_nl_iter
                             iteration, before its solve                    */
   double du;             /* |dU| / max(|U|, tiny) of the solve (0: none)    */
   double max_penetration;/* max over active m of -d_m / |T^m cap Gamma_C|  */
+  int krylov;            /* GMRES iterations of the consistent step          */
+  double krylov_residual;/* its relative residual at the end                */
 } lac_nl_iter;
 
 /* One load step (converged or not). */
@@ -183,7 +198,13 @@ typedef struct lac_nl
   lac_nl_iter *iters;    /* owned, niters records (all steps)               */
   double time_assemble;  /* seconds, cumulated: F_int and K_T,            */
   double time_pairing;   /*   pairing, admissibility, C and mean gaps,    */
-  double time_solve;     /*   saddle-point solves                         */
+  double time_solve;     /*   saddle-point solves (with the consistent
+                                 step's GMRES),                          */
+  double time_tangent;   /*   derivatives of the contact terms, and of
+                              the contact solves in time_solve:         */
+  double time_factor;    /*   the strategy's factorizations,             */
+  double time_frozen;    /*   its solve of the frozen system,            */
+  double time_krylov;    /*   the consistent step (GMRES, tangent incl.) */
   size_t npairings;      /* pairings computed                               */
   /* internals */
   lac_mesh cur;          /* shallow copy of *mesh with x = the array above  */
@@ -196,7 +217,13 @@ typedef struct lac_nl
   lac_strategy *strategy; /* owned: the saddle solves, kept likewise        */
   double *klam;          /* owned, kcap: lambda per multiplier            */
   char *kact;            /* owned, kcap: statuses per multiplier          */
+  double *klin;          /* owned, kcap: lambda of the linearization point */
+  double *kgap;          /* owned, kcap: mean gaps d(U)                   */
   size_t kcap;
+  double *lam_lin;       /* owned, nmacro: lambda before the statuses     */
+  lac_contact_system sys;    /* the frozen system of the last solve       */
+  lac_contact_tangent *tangent; /* owned: H and B of the last solve       */
+  double eta;            /* accuracy asked of the consistent step          */
   double *r, *Fint, *dU; /* owned, ndof                                     */
   double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
   char *active_save;

@@ -23,10 +23,9 @@
  * interfaces): lambda to 1e-8, U to 1e-8; and each step takes a few
  * Newton iterations (<= 8; measured: 3 solves and the final check).
  *
- * Why 20 % and not more: the tangent is that of frozen geometry; it lacks
- * lambda dC/dU (the stretch and rotation of n dGamma under the pressure).
- * At 40 % compression |lambda| / E = 0.6 and the iteration diverges for
- * some elements; at 20 %, |lambda| / E = 0.25, it converges quadratically.
+ * The tangent is the consistent one (lac_nonlinear.h); the frozen-geometry
+ * tangent converges here too (at 20 %, |lambda| / E = 0.25) but diverges
+ * for the quadratic elements at 40 % (|lambda| / E = 0.6).
  */
 #include <math.h>
 #include <stdio.h>
