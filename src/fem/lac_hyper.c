@@ -237,11 +237,63 @@ variation (const point *pt, int dim, int a, int i, int *idx, double *val)
   return n;
 }
 
+/* Ke += w dF : A : dF without the hoop term (3D, plane strain): dF^(a,i)
+ * = e_i (x) grad N_a, so the block of nodes (a, b) is
+ *   K_ab[i][k] = sum_JL dN_a,J A_iJkL dN_b,L,
+ * first T_a[i][kL] = sum_J dN_a,J A_iJkL, then the blocks a <= b (the
+ * lower part of a diagonal block is overwritten by the mirror of
+ * cell_eval).  D is a constant at each call, so the loops unroll. */
+static inline void
+tangent_plain (const point *pt, int nen, const int D, const double *A,
+               double *Ke, double *T)
+{
+  int nc = nen * D;
+  const double *dN = pt->mp.dNdx;
+  for (int a = 0; a < nen; a++)
+    for (int i = 0; i < D; i++)
+      {
+        double *Tr = T + (a * D + i) * 9;
+        for (int k = 0; k < D; k++)
+          for (int L = 0; L < D; L++)
+            {
+              double t = 0;
+              for (int J = 0; J < D; J++)
+                t += dN[a * D + J] * A[((i * 3 + J) * 3 + k) * 3 + L];
+              Tr[k * 3 + L] = pt->w * t;
+            }
+      }
+  for (int b = 0; b < nen; b++)
+    {
+      const double *db = dN + b * D;
+      for (int r = 0; r < (b + 1) * D; r++)
+        {
+          const double *Tr = T + r * 9;
+          double *Kr = Ke + r * nc + b * D;
+          for (int k = 0; k < D; k++)
+            {
+              double t = 0;
+              for (int L = 0; L < D; L++)
+                t += Tr[k * 3 + L] * db[L];
+              Kr[k] += t;
+            }
+        }
+    }
+}
+
 /* fe += w P : dF, Ke += w dF : A : dF at one point (two passes). */
 static void
 point_add (const point *pt, int nen, int dim, const double *P,
            const double *A, double *fe, double *Ke, double *T)
 {
+  if (Ke && pt->hoop == 0)
+    {
+      point_add (pt, nen, dim, P, A, fe, NULL, T);     /* fe only */
+      if (dim == 3)
+        tangent_plain (pt, nen, 3, A, Ke, T);
+      else
+        tangent_plain (pt, nen, 2, A, Ke, T);
+      return;
+    }
   int nc = nen * dim, idx[4], n;
   double val[4];
   for (int a = 0; a < nen; a++)
@@ -376,30 +428,14 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
   return status;
 }
 
-/* Position of entry (row, col) in the pattern of K; -1 if absent. */
-static long
-csc_find (const lac_csc *K, size_t row, size_t col)
-{
-  int lo = K->p[col], hi = K->p[col + 1] - 1;
-  while (lo <= hi)
-    {
-      int mid = (lo + hi) / 2;
-      if ((size_t) K->i[mid] == row)
-        return mid;
-      if ((size_t) K->i[mid] < row)
-        lo = mid + 1;
-      else
-        hi = mid - 1;
-    }
-  return -1;
-}
-
-/* The loop over cells shared by both assemblies: K into triplets (T) or
- * into a CSC pattern (C); any of Fint, Tk, Kc may be NULL. */
+/* The loop over cells shared by both assemblies: K into triplets (Tk) or
+ * into a kept pattern (Kp, its scatter map: no search); any of Fint, Tk,
+ * Kp may be NULL. */
 static int
 assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
-          double *Fint, lac_triplet *Tk, lac_csc *Kc)
+          double *Fint, lac_triplet *Tk, lac_pattern *Kp)
 {
+  lac_csc *Kc = Kp ? Kp->K : NULL;
   lac_quad_cache qc;
   int status = check_hyper (m, h);
   if (status)
@@ -416,8 +452,8 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
   if (!Ke || !T)
     status = LAC_ERRMSG (LAC_ENOMEM, "element matrix of %zu^2 entries", ncmax);
   memset (&qc, 0, sizeof qc);
-  if (Kc && !status)
-    memset (Kc->x, 0, (size_t) Kc->p[ndof] * sizeof *Kc->x);
+  if (Kp && !status)
+    lac_pattern_zero (Kp);
   for (size_t c = 0; c < m->ncells && !status; c++)
     {
       if (!(h->E[c] > 0.0))
@@ -435,19 +471,8 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
       if (Tk)
         status = lac_triplet_add_block (Tk, (size_t) nc, dofs, (size_t) nc,
                                         dofs, Ke);    /* K += Ke */
-      for (int j = 0; Kc && j < nc && !status; j++)
-        for (int r = 0; r < nc; r++)
-          {
-            long p = csc_find (Kc, dofs[r], dofs[j]);
-            if (p < 0)
-              {
-                status = LAC_ERRMSG (LAC_EINVAL, "entry (%zu, %zu) of cell %zu"
-                                     " is not in the pattern of K", dofs[r],
-                                     dofs[j], c);
-                break;
-              }
-            Kc->x[p] += Ke[r * nc + j];
-          }
+      if (Kp)
+        lac_pattern_add (Kp, m, c, Ke);               /* K += Ke */
     }
   lac_quad_cache_free (&qc);
   lac_free (Ke);
@@ -463,11 +488,14 @@ lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
 }
 
 int
-lac_hyper_assemble_csc (const lac_mesh *m, const lac_hyper *h,
-                        const double *u, double *Fint, lac_csc *K)
+lac_hyper_assemble_pattern (const lac_mesh *m, const lac_hyper *h,
+                            const double *u, double *Fint, lac_pattern *K)
 {
   if (!K)
     LAC_ERROR (LAC_EINVAL, "K is NULL");
+  for (size_t c = 0; c < m->ncells; c++)
+    if (h->E[c] > 0.0 && K->cptr[c + 1] == K->cptr[c])
+      LAC_ERROR (LAC_EINVAL, "cell %zu is not in the pattern of K", c);
   return assemble (m, h, u, Fint, NULL, K);
 }
 

@@ -51,6 +51,7 @@
 #include "linalg/lac_linalg.h"
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
+#include "fem/lac_pattern.h"
 
 typedef enum
 {
@@ -93,11 +94,12 @@ int lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
 int lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h,
                         const double *u, double *Fint, lac_triplet *K);
 
-/* The same with K scattered into an existing CSC matrix whose pattern
- * contains every cell block (from a first triplet assembly): its values
- * are overwritten.  LAC_EINVAL if an entry is missing from the pattern. */
-int lac_hyper_assemble_csc (const lac_mesh *m, const lac_hyper *h,
-                            const double *u, double *Fint, lac_csc *K);
+/* The same with K scattered into a kept pattern (lac_pattern.h, built
+ * once on the cells with E > 0): its values are overwritten, no triplet,
+ * no search.  LAC_EINVAL if a cell with E > 0 is not in the pattern. */
+int lac_hyper_assemble_pattern (const lac_mesh *m, const lac_hyper *h,
+                                const double *u, double *Fint,
+                                lac_pattern *K);
 
 /* Cauchy stress sigma = P F^T / J at reference point xi of cell c, in
  * the Voigt order of lac_material.h (plane strain: s[2] = sigma_zz). */

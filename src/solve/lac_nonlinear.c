@@ -55,7 +55,7 @@ lac_nl_free (lac_nl *s)
   lac_free (s->fixed);
   lac_free (s->g1);
   lac_free (s->g0);
-  lac_csc_free (s->K);
+  lac_pattern_free (s->pat);
   lac_solver_free (s->solver);
   lac_strategy_free (s->strategy);
   lac_contact_tangent_free (s->tangent);
@@ -73,37 +73,18 @@ lac_nl_free (lac_nl *s)
   lac_free (s);
 }
 
-/* The pattern of K_T: every entry of every cell block (value 1). */
-static lac_csc *
+/* The kept pattern of K_T: the cells with E > 0 (lac_pattern.h). */
+static lac_pattern *
 pattern (const lac_mesh *m, const lac_hyper *h)
 {
-  size_t ndof = (size_t) m->dim * m->nnodes, dofs[LAC_MAX_NODES * 3];
-  size_t ncmax = LAC_MAX_NODES * 3;
-  double *ones = lac_malloc (ncmax * ncmax * sizeof *ones);
-  lac_triplet *T = lac_triplet_alloc (ndof, ndof, 0);
-  lac_csc *K = NULL;
-  int status = ones && T ? LAC_SUCCESS : LAC_ENOMEM;
-  for (size_t q = 0; ones && q < ncmax * ncmax; q++)
-    ones[q] = 1.0;
-  for (size_t c = 0; c < m->ncells && !status; c++)
-    {
-      if (!(h->E[c] > 0))
-        continue;
-      size_t nen = m->ptr[c + 1] - m->ptr[c];
-      for (size_t a = 0; a < nen; a++)
-        for (int i = 0; i < m->dim; i++)
-          dofs[a * (size_t) m->dim + (size_t) i]
-            = (size_t) m->dim * (size_t) m->conn[m->ptr[c] + a] + (size_t) i;
-      size_t nc = nen * (size_t) m->dim;
-      status = lac_triplet_add_block (T, nc, dofs, nc, dofs, ones);
-    }
-  if (!status)
-    K = lac_csc_from_triplet (T);
-  else if (status == LAC_ENOMEM)
-    LAC_ERRMSG (LAC_ENOMEM, "pattern of K_T for %zu dofs", ndof);
-  lac_triplet_free (T);
-  lac_free (ones);
-  return K;
+  char *cells = lac_malloc (m->ncells + 1);
+  if (!cells)
+    LAC_ERROR_NULL (LAC_ENOMEM, "cell flags");
+  for (size_t c = 0; c < m->ncells; c++)
+    cells[c] = h->E[c] > 0;
+  lac_pattern *p = lac_pattern_build (m, cells);
+  lac_free (cells);
+  return p;
 }
 
 /* Fixed dofs: fixed[dof], g1 (ramped value at t = 1), g0 (constant). */
@@ -180,11 +161,12 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->cur.x = s->x;
   memcpy (s->x, m->x, n * sizeof *s->x);
   s->first = 1;
-  if (set_fixed (s) || !(s->K = pattern (m, p->mat)))
+  if (set_fixed (s) || !(s->pat = pattern (m, p->mat)))
     {
       lac_nl_free (s);
       return NULL;
     }
+  s->K = s->pat->K;
   return s;
 }
 
@@ -306,8 +288,8 @@ assemble (lac_nl *s)
         }
       double t0 = lac_seconds ();
       memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
-      status = lac_hyper_assemble_csc (s->prob.mesh, s->prob.mat, s->U,
-                                       s->Fint, s->K);
+      status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, s->U,
+                                           s->Fint, s->pat);
       s->time_assemble += lac_seconds () - t0;
     }
   return status;

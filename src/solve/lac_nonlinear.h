@@ -210,7 +210,9 @@ typedef struct lac_nl
   lac_mesh cur;          /* shallow copy of *mesh with x = the array above  */
   char *fixed;           /* owned, ndof: dof fixed                          */
   double *g1, *g0;       /* owned, ndof: value at t = 1 (ramped), constant  */
-  lac_csc *K;            /* owned: K_T (pattern kept between iterations)    */
+  lac_pattern *pat;      /* owned: the kept pattern of K_T and its scatter
+                            map (fem/lac_pattern.h)                        */
+  lac_csc *K;            /* K_T: pat's matrix                               */
   lac_solver *solver;    /* owned: the solver of K_T without contact, kept
                             between iterations: the ordering and symbolic
                             analysis are made once (lac_solver_refactor)   */

@@ -1,0 +1,245 @@
+/* lac_pattern.c -- the stiffness pattern and the scatter map
+ *                  (see lac_pattern.h)                         [LAC (17)]
+ *
+ * 1. node -> cells (the cells kept), 2. each node's sorted neighbours,
+ * 3. the CSC (dim columns per node, dim rows per neighbour), 4. the map.
+ */
+#include "fem/lac_pattern.h"
+
+#include <limits.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+/* Node -> cells as a CSR list (ptr: nnodes+1, cell). */
+typedef struct graph
+{
+  size_t *ptr;
+  size_t *idx;
+} graph;
+
+static void
+graph_free (graph *g)
+{
+  lac_free (g->ptr);
+  lac_free (g->idx);
+  g->ptr = g->idx = NULL;
+}
+
+static int
+node_cells (const lac_mesh *m, const char *cells, graph *g)
+{
+  g->ptr = lac_calloc (m->nnodes + 1, sizeof *g->ptr);
+  if (!g->ptr)
+    return LAC_ENOMEM;
+  for (size_t c = 0; c < m->ncells; c++)
+    for (size_t q = m->ptr[c]; (!cells || cells[c]) && q < m->ptr[c + 1]; q++)
+      g->ptr[m->conn[q] + 1]++;
+  for (size_t a = 0; a < m->nnodes; a++)
+    g->ptr[a + 1] += g->ptr[a];
+  size_t *fill = lac_malloc ((m->nnodes + 1) * sizeof *fill);
+  g->idx = lac_malloc ((g->ptr[m->nnodes] + 1) * sizeof *g->idx);
+  if (!fill || !g->idx)
+    {
+      lac_free (fill);
+      return LAC_ENOMEM;
+    }
+  memcpy (fill, g->ptr, m->nnodes * sizeof *fill);
+  for (size_t c = 0; c < m->ncells; c++)
+    for (size_t q = m->ptr[c]; (!cells || cells[c]) && q < m->ptr[c + 1]; q++)
+      g->idx[fill[m->conn[q]]++] = c;
+  lac_free (fill);
+  return LAC_SUCCESS;
+}
+
+static int
+cmp_size (const void *x, const void *y)
+{
+  size_t a = *(const size_t *) x, b = *(const size_t *) y;
+  return (a > b) - (a < b);
+}
+
+/* Node -> its neighbours (the nodes of its cells, itself included),
+ * sorted; two passes with a marker per node. */
+static int
+neighbours (const lac_mesh *m, const graph *nc, graph *nb)
+{
+  size_t n = m->nnodes;
+  size_t *mark = lac_malloc ((n + 1) * sizeof *mark);
+  nb->ptr = lac_calloc (n + 1, sizeof *nb->ptr);
+  if (!mark || !nb->ptr)
+    {
+      lac_free (mark);
+      return LAC_ENOMEM;
+    }
+  for (int pass = 0; pass < 2; pass++)
+    {
+      for (size_t a = 0; a <= n; a++)
+        mark[a] = SIZE_MAX;
+      for (size_t b = 0; b < n; b++)
+        {
+          size_t deg = 0;
+          for (size_t q = nc->ptr[b]; q < nc->ptr[b + 1]; q++)
+            for (size_t r = m->ptr[nc->idx[q]]; r < m->ptr[nc->idx[q] + 1];
+                 r++)
+              if (mark[m->conn[r]] != b)
+                {
+                  mark[m->conn[r]] = b;
+                  if (pass)
+                    nb->idx[nb->ptr[b] + deg] = (size_t) m->conn[r];
+                  deg++;
+                }
+          if (!pass)
+            nb->ptr[b + 1] = nb->ptr[b] + deg;
+          else
+            qsort (nb->idx + nb->ptr[b], deg, sizeof *nb->idx, cmp_size);
+        }
+      if (!pass && !(nb->idx = lac_malloc ((nb->ptr[n] + 1)
+                                           * sizeof *nb->idx)))
+        {
+          lac_free (mark);
+          return LAC_ENOMEM;
+        }
+    }
+  lac_free (mark);
+  return LAC_SUCCESS;
+}
+
+/* The CSC: column dim b + k holds rows dim a + i, a among b's neighbours. */
+static int
+csc_of (const graph *nb, size_t nnodes, int dim, lac_csc **out)
+{
+  size_t d = (size_t) dim, nnz = nb->ptr[nnodes] * d * d;
+  if (nnz > INT_MAX)
+    LAC_ERROR (LAC_EINVAL, "%zu entries in the pattern: more than INT_MAX "
+               "(int indices)", nnz);
+  lac_csc *K = *out = lac_csc_alloc (d * nnodes, d * nnodes, nnz);
+  if (!K)
+    return LAC_ENOMEM;
+  size_t q = 0;
+  for (size_t b = 0; b < nnodes; b++)
+    for (size_t k = 0; k < d; k++)
+      {
+        for (size_t t = nb->ptr[b]; t < nb->ptr[b + 1]; t++)
+          for (size_t i = 0; i < d; i++)
+            K->i[q++] = (int) (nb->idx[t] * d + i);
+        K->p[b * d + k + 1] = (int) q;
+      }
+  memset (K->x, 0, nnz * sizeof *K->x);
+  return LAC_SUCCESS;
+}
+
+/* Position of node a in b's sorted neighbours. */
+static int
+position (const graph *nb, size_t b, size_t a)
+{
+  const size_t *x = nb->idx + nb->ptr[b];
+  size_t lo = 0, hi = nb->ptr[b + 1] - nb->ptr[b];
+  while (hi - lo > 1)
+    {
+      size_t mid = (lo + hi) / 2;
+      if (x[mid] <= a)
+        lo = mid;
+      else
+        hi = mid;
+    }
+  return (int) lo;
+}
+
+static int
+make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
+          const graph *nb)
+{
+  p->cptr = lac_calloc (m->ncells + 1, sizeof *p->cptr);
+  if (!p->cptr)
+    return LAC_ENOMEM;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      size_t nen = m->ptr[c + 1] - m->ptr[c];
+      p->cptr[c + 1] = p->cptr[c] + (!cells || cells[c] ? nen * nen : 0);
+    }
+  if (!(p->pos = lac_malloc ((p->cptr[m->ncells] + 1) * sizeof *p->pos)))
+    return LAC_ENOMEM;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      const int *conn = m->conn + m->ptr[c];
+      size_t nen = m->ptr[c + 1] - m->ptr[c];
+      int *pos = p->pos + p->cptr[c];
+      for (size_t a = 0; p->cptr[c + 1] > p->cptr[c] && a < nen; a++)
+        for (size_t b = 0; b < nen; b++)
+          pos[a * nen + b] = position (nb, (size_t) conn[b], (size_t) conn[a]);
+    }
+  return LAC_SUCCESS;
+}
+
+lac_pattern *
+lac_pattern_build (const lac_mesh *m, const char *cells)
+{
+  graph nc = { NULL, NULL }, nb = { NULL, NULL };
+  lac_pattern *p = lac_calloc (1, sizeof *p);
+  int status = p ? node_cells (m, cells, &nc) : LAC_ENOMEM;
+  if (!status)
+    status = neighbours (m, &nc, &nb);
+  graph_free (&nc);
+  if (!status)
+    {
+      p->dim = m->dim;
+      p->ncells = m->ncells;
+      p->ndof = (size_t) m->dim * m->nnodes;
+      status = csc_of (&nb, m->nnodes, m->dim, &p->K);
+    }
+  if (!status)
+    status = make_map (p, m, cells, &nb);
+  graph_free (&nb);
+  if (status)
+    {
+      lac_pattern_free (p);
+      if (status == LAC_ENOMEM)
+        LAC_ERROR_NULL (LAC_ENOMEM, "pattern of the stiffness of %zu nodes",
+                        m->nnodes);
+      return NULL;
+    }
+  return p;
+}
+
+void
+lac_pattern_free (lac_pattern *p)
+{
+  if (!p)
+    return;
+  lac_csc_free (p->K);
+  lac_free (p->cptr);
+  lac_free (p->pos);
+  lac_free (p);
+}
+
+void
+lac_pattern_zero (lac_pattern *p)
+{
+  memset (p->K->x, 0, (size_t) p->K->p[p->K->ncol] * sizeof *p->K->x);
+}
+
+void
+lac_pattern_add (lac_pattern *p, const lac_mesh *m, size_t c,
+                 const double *Ke)
+{
+  const int *conn = m->conn + m->ptr[c], *pos = p->pos + p->cptr[c];
+  const int *cp = p->K->p;
+  size_t nen = m->ptr[c + 1] - m->ptr[c], d = (size_t) p->dim;
+  size_t nc = nen * d;
+  double *x = p->K->x;
+  for (size_t b = 0; b < nen; b++)
+    for (size_t k = 0; k < d; k++)
+      {
+        size_t col = b * d + k;
+        double *xc = x + cp[(size_t) conn[b] * d + k];
+        for (size_t a = 0; a < nen; a++)
+          {
+            double *xa = xc + (size_t) pos[a * nen + b] * d;
+            for (size_t i = 0; i < d; i++)
+              xa[i] += Ke[(a * d + i) * nc + col];      /* K += Ke */
+          }
+      }
+}
