@@ -19,6 +19,16 @@ SS_LIBS  ?= -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig
 GSL_LIBS ?= -lgsl -lgslcblas
 LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lpng16 -lm
 
+# PETSc (optional): the petsc strategy and MPI (chapter 11).  Found with
+# pkg-config (Debian 12: libpetsc-real-dev, OpenMPI); without it lac builds
+# all the same and the petsc strategy says how to install it.  PETSC=no
+# builds without it although it is installed.
+PETSC    ?= $(shell pkg-config --exists PETSc mpi-c 2>/dev/null && echo yes)
+ifeq ($(PETSC),yes)
+CPPFLAGS += -DLAC_HAVE_PETSC $(filter -I%,$(shell pkg-config --cflags PETSc mpi-c))
+LDLIBS   += $(shell pkg-config --libs PETSc mpi-c)
+endif
+
 # Debian 12 packages needed to build, test and draw.
 DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
@@ -79,6 +89,11 @@ $(B)/figures/%: figures/%.c $(LIB)
 $(B)/bench/%: bench/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+# The objects that depend on PETSc's presence follow its changes.
+$(B)/src/solve/lac_petsc.o: $(B)/.petsc-$(if $(PETSC),$(PETSC),no)
+$(B)/.petsc-%:
+	@mkdir -p $(B) && rm -f $(B)/.petsc-* && touch $@
 
 -include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d)
 

@@ -18,7 +18,12 @@
  *                  multipliers by conjugate gradients in about ten
  *                  iterations (solve/lac_schur.h);
  *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
- *                  fallback and the reference (solve/lac_saddle.h).
+ *                  fallback and the reference (solve/lac_saddle.h);
+ *   petsc      (e) no factorization: the augmented system of (b) as a
+ *                  whole by GMRES, preconditioned by algebraic multigrid
+ *                  on K + C_A W C_A^T and W on the multipliers, on one or
+ *                  N MPI processes (solve/lac_petsc.h; optional: a build
+ *                  without PETSc says how to install it).
  *
  * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, augmented
  * otherwise (chapter 07 has the measurements behind the rule: (a) needs 80
@@ -57,14 +62,15 @@
 typedef enum
 {
   LAC_STRATEGY_AUTO, LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
-  LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_NSTRATEGIES
+  LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_STRATEGY_PETSC,
+  LAC_NSTRATEGIES
 } lac_strategy_kind;
 
 #define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
 #define LAC_STRATEGY_TOL 1e-16       /* backward error aimed at          */
 
-/* "auto" | "dense" | "schur" | "augmented" | "saddle" -> kind, -1 if
- * unknown; and back. */
+/* "auto" | "dense" | "schur" | "augmented" | "saddle" | "petsc" -> kind,
+ * -1 if unknown; and back. */
 int lac_strategy_from_name (const char *name);
 const char *lac_strategy_name (lac_strategy_kind kind);
 /* The strategy for a system of n displacements, k multipliers and nfree
@@ -88,6 +94,9 @@ typedef struct lac_strategy_counts
   double rcond;        /* condition estimate of the last factorization     */
   double time_factor;  /* seconds in set and in factorizations            */
   double time_solve;   /* seconds in all solves                           */
+  int last_iterations; /* Krylov iterations of the last solve of (*),
+                          before refinement (schur, augmented, petsc)      */
+  double last_residual; /* and its relative residual (petsc: the true one) */
 } lac_strategy_counts;
 
 /* kind: a concrete one (from lac_strategy_choose), not auto. */
@@ -99,6 +108,11 @@ int lac_strategy_set (lac_strategy *s, const lac_contact_system *sys);
  * the solution, lambda_i = 0 where inactive. */
 int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
                         double *lambda);
+/* The nodal coordinates for the petsc strategy's multigrid (dof =
+ * dim*node + comp, n entries, borrowed until free; NULL: none, e.g. the
+ * axisymmetric model); the other strategies ignore them.  Before set. */
+void lac_strategy_set_coordinates (lac_strategy *s, int dim,
+                                   const double *x);
 /* The strategy in use (the fallback once it happened). */
 lac_strategy_kind lac_strategy_kind_of (const lac_strategy *s);
 /* Why the strategy fell back to saddle, NULL if it did not. */

@@ -62,6 +62,8 @@ typedef struct lac_solve_counts
   int solves;          /* forward and back substitutions                 */
   int iterations;      /* conjugate-gradient iterations, all solves      */
   double rcond;        /* condition estimate of the last factorization   */
+  int last_iterations; /* Krylov iterations of the last solve            */
+  double last_residual; /* its relative residual ||b - A x|| / ||b||      */
 } lac_solve_counts;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
