@@ -194,7 +194,7 @@ record_mults (lac_run_nl *nl, const lac_macro *M, int step)
   lac_map mp;
   for (size_t i = 0; c && i < c->k; i++)
     {
-      lac_run_nl_mult *q;
+      lac_run_nl_mult *q = NULL;
       size_t m = c->macro[i];
       double wsum = 0;
       if ((status = push_mult (nl, &q)))

@@ -23,6 +23,8 @@
 #define CG_RTOL 1e-10     /* relative residual of the conjugate gradients */
 #define CG_RTOL_REFINE 1e-6  /* ... in a refinement step (a correction) */
 #define MAX_REFINE 3
+#define MAX_REFINE_KRYLOV 2  /* petsc: a step costs half a solve, ...  */
+#define TOL_KRYLOV 1e-11     /* ... so only above this backward error    */
 
 struct lac_strategy
 {
@@ -97,7 +99,7 @@ lac_strategy_alloc (lac_strategy_kind kind)
   else if (kind == LAC_STRATEGY_SCHUR)
     s->schur = lac_schur_alloc ();
   else if (kind == LAC_STRATEGY_PETSC)
-    s->petsc = lac_petsc_alloc (LAC_AUGMENT_OMEGA);
+    s->petsc = lac_petsc_alloc (LAC_PETSC_OMEGA);
   else
     s->aug = lac_augmented_alloc (LAC_AUGMENT_OMEGA);
   if (!s->saddle && !s->schur && !s->aug && !s->petsc)
@@ -211,7 +213,9 @@ static int
 refine (lac_strategy *s, const char *active, double *U, double *lambda)
 {
   double be = lac_system_residual (s->sys, active, U, lambda, s->r, s->g);
-  for (int step = 0; step < MAX_REFINE && be > LAC_STRATEGY_TOL; step++)
+  int steps = s->petsc ? MAX_REFINE_KRYLOV : MAX_REFINE;
+  double tol = s->petsc ? TOL_KRYLOV : LAC_STRATEGY_TOL;
+  for (int step = 0; step < steps && be > tol; step++)
     {
       double bnew;
       int status;
@@ -266,6 +270,12 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
     }
   s->counts.time_solve += lac_seconds () - t0;
   return status;
+}
+
+const char *
+lac_strategy_method (const lac_strategy *s)
+{
+  return s->petsc ? lac_petsc_method (s->petsc) : names[s->kind];
 }
 
 lac_strategy_kind

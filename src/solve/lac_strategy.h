@@ -19,11 +19,12 @@
  *                  iterations (solve/lac_schur.h);
  *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
  *                  fallback and the reference (solve/lac_saddle.h);
- *   petsc      (e) no factorization: the augmented system of (b) as a
- *                  whole by GMRES, preconditioned by algebraic multigrid
- *                  on K + C_A W C_A^T and W on the multipliers, on one or
- *                  N MPI processes (solve/lac_petsc.h; optional: a build
- *                  without PETSc says how to install it).
+ *   petsc      (e) no factorization: the augmented system of (b) by
+ *                  conjugate gradients on the null space of C_A^T,
+ *                  preconditioned by algebraic multigrid on
+ *                  K + C_A W C_A^T, on one or N MPI processes
+ *                  (solve/lac_petsc.h; optional: a build without PETSc
+ *                  says how to install it).
  *
  * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, augmented
  * otherwise (chapter 07 has the measurements behind the rule: (a) needs 80
@@ -44,7 +45,10 @@
  * LAC_STRATEGY_TOL where they can: without them the augmented strategy
  * leaves errors of a few 1e-12 on lambda (K_W's condition number is
  * omega times K's), with one of them the Taylor patch tests are exact to
- * 1e-14.
+ * 1e-14.  The petsc strategy refines only above a backward error of
+ * 1e-11 (two steps at most): a step costs half a Krylov solve, and the
+ * projected CG to 1e-10 (true residual) usually gives 1e-12 and lambda
+ * to about 1e-10 at once.
  *
  * Usage:
  *   lac_strategy *s = lac_strategy_alloc (kind);
@@ -113,6 +117,9 @@ int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
  * axisymmetric model); the other strategies ignore them.  Before set. */
 void lac_strategy_set_coordinates (lac_strategy *s, int dim,
                                    const double *x);
+/* What solves (*): the strategy's name, or for petsc its Krylov method,
+ * preconditioner and processes. */
+const char *lac_strategy_method (const lac_strategy *s);
 /* The strategy in use (the fallback once it happened). */
 lac_strategy_kind lac_strategy_kind_of (const lac_strategy *s);
 /* Why the strategy fell back to saddle, NULL if it did not. */

@@ -74,7 +74,7 @@ compare (const char *what, const char *scene, size_t nset,
                      "%s: lambda, %s vs saddle", what, kn);
           check_true (memcmp (a->active, b->active, a->k) == 0,
                       "%s: the same statuses (%s)", what, kn);
-          check_true (lac_strategy_kind_of (a->strategy) == kinds[k],
+          check_true ((int) lac_strategy_kind_of (a->strategy) == kinds[k],
                       "%s: %s was used", what, kn);
         }
       lac_run_free (r);

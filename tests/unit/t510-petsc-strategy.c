@@ -3,13 +3,14 @@
  *
  * The patch test of t450 (two blocks stacked, non-matching meshes,
  * pressure 25 on top, exact lambda = -25) in 2D (quad4) and 3D (hex8,
- * tet4): the active-set loop with the petsc strategy (fieldsplit and
- * nested, with and without the nodal coordinates) gives the lambda and U
- * of the augmented strategy (CHOLMOD) to 1e-8 relative, and lambda = -25
- * to 1e-8; the iterations and the residual of the last solve are
- * reported.  Without multipliers (k = 0) it is the Cholesky solution of
- * K U = F.  Built without PETSc: the strategy fails with the apt-get
- * line.  Runs on one process; tests/cases-petsc.sh runs it on two.
+ * tet4): the active-set loop with the petsc strategy (projected CG, with
+ * and without the nodal coordinates, and fieldsplit) gives the lambda
+ * and U of the augmented strategy (CHOLMOD) to 1e-8 relative, and lambda
+ * = -25 to 1e-8; the iterations and the true residual of the last solve
+ * are reported.  Without multipliers (k = 0) it is the Cholesky solution
+ * of K U = F.  A bad -lac_contact is refused with a message.  Built
+ * without PETSc: the strategy fails with the apt-get line.  Runs on one
+ * process; tests/cases-petsc.sh runs lac on two.
  */
 #include <math.h>
 #include <stdio.h>
@@ -252,9 +253,15 @@ main (void)
   compare (LAC_HEX8, 4, 3, 0);
   compare (LAC_TET4, 3, 2, 1);
   plain ();
-  check_status (lac_petsc_initialize ("-lac_contact nested"), LAC_SUCCESS,
-                "nested");
+  check_status (lac_petsc_initialize ("-lac_contact fieldsplit"),
+                LAC_SUCCESS, "fieldsplit");
   compare (LAC_HEX8, 4, 3, 1);
+  compare (LAC_QUAD4, 8, 6, 1);
+  check_status (lac_petsc_initialize ("-lac_contact nested"), LAC_SUCCESS,
+                "options");
+  check_true (lac_strategy_alloc (LAC_STRATEGY_PETSC) == NULL,
+              "-lac_contact nested refused");
+  check_message ("-lac_contact nested", "the message names the option");
   lac_petsc_finalize ();
   lac_finalize ();
   return check_summary ();
