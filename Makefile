@@ -24,6 +24,18 @@ DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
             libinih-dev gnuplot-nox
 
+# PETSc and Open MPI: the petsc strategy and mpirun (chapter 11), installed
+# like the others.  PETSC=no builds without them (and does not install
+# them); so does a machine where pkg-config does not find them: lac then
+# builds all the same, and --strategy petsc prints the apt-get line.  The
+# flags are found after the set-up, in $(B)/config-petsc-*.mk (make reads
+# it again once it is made).
+PETSC    ?= auto
+DEB_PETSC := libpetsc-real-dev openmpi-bin
+ifneq ($(PETSC),no)
+DEB_PKGS += $(DEB_PETSC)
+endif
+
 B        ?= build
 # The library, folder by folder in the order data flows (src/README.md);
 # the command line (src/cli) is outside it.
@@ -45,9 +57,22 @@ BENCH    := $(BENCHSRC:bench/%.c=$(B)/bench/%)
 
 all: deps $(LIB) $(B)/lac $(EX)
 
+# ---- PETSc's flags, once the packages are there --------------------------
+PETSC_MK := $(B)/config-petsc-$(PETSC).mk
+ifeq ($(filter clean help,$(MAKECMDGOALS)),)
+-include $(PETSC_MK)
+endif
+CPPFLAGS += $(PETSC_CPPFLAGS)
+LDLIBS   += $(PETSC_LIBS)
+$(PETSC_MK): | $(B)/.deps-ok
+	@if [ "$(PETSC)" != no ] && pkg-config --exists PETSc mpi-c; then \
+	  echo "PETSC_CPPFLAGS := -DLAC_HAVE_PETSC $$(pkg-config --cflags-only-I PETSc mpi-c)"; \
+	  echo "PETSC_LIBS := $$(pkg-config --libs PETSc mpi-c)"; \
+	else echo "# built without PETSc"; fi > $@
+
 # ---- set-up: install missing Debian packages (root) or say how ----------
 deps: $(B)/.deps-ok
-$(B)/.deps-ok:
+$(B)/.deps-ok: Makefile
 	@sh tests/deps.sh $(DEB_PKGS)
 	@mkdir -p $(B) && touch $@
 
@@ -79,6 +104,9 @@ $(B)/figures/%: figures/%.c $(LIB)
 $(B)/bench/%: bench/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
+# The objects that depend on PETSc's presence follow its changes.
+$(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
 
 -include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d)
 

@@ -1,8 +1,9 @@
 /* main.c -- the lac command line
  *
  *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--strategy NAME]
- *                 [--out DIR]
+ *                 [--petsc-options "..."] [--out DIR]
  *                 [--quiet] [--timings] [--no-output]
+ *   mpirun -n N lac run SCENE --strategy petsc [...]
  *   lac infsup SCENE [...]     (lac_cli_infsup.c)
  *   lac render RESULT [...]    (lac_cli_render.c)
  *   lac --help | --version
@@ -10,7 +11,9 @@
  * The only file that prints and exits.  Progress (the active effects, one
  * line per stage) goes to stderr, the summary lines "name = value" to
  * stdout (and, identical, to DIR/summary.txt); an error is one line
- * "lac: <message>" on stderr and a non-zero exit status.
+ * "lac: <message>" on stderr and a non-zero exit status.  On N MPI
+ * processes, process 0 runs the scene (and alone prints and writes) and
+ * the others serve its petsc strategy (solve/lac_petsc.h).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,6 +23,7 @@
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
 #include "run/lac_run.h"
+#include "solve/lac_petsc.h"
 #include "solve/lac_strategy.h"
 #include "io/lac_scene.h"
 #include "base/lac_status.h"
@@ -64,7 +68,8 @@ static const char *help_text =
   "                   force = FX FY [FZ] (per unit volume; group optional)\n"
   "  [contact NAME]   slave = FACET_GROUP, master = FACET_GROUP,\n"
   "                   epsilon (0.01): admissibility threshold in (0, 1],\n"
-  "                   strategy = auto|dense|schur|augmented|saddle (auto),\n"
+  "                   strategy = auto|dense|schur|augmented|saddle|petsc\n"
+  "                   (auto),\n"
   "                   max_iterations (50): active-set iterations at most\n"
   "  [exact]          solution = thick_sphere|thick_cylinder (a, b, p, E, nu)\n"
   "                   | taylor (p, E, nu: uniform pressure, patch test)\n"
@@ -82,17 +87,25 @@ static const char *help_text =
   "                    solver, out, level, order, size.  Repeatable.\n"
   "  --solver NAME     dense (GSL LU), umfpack (sparse LU) or cholmod\n"
   "                    (sparse Cholesky, the default): same as\n"
-  "                    --set scene.solver=NAME\n"
+  "                    --set scene.solver=NAME; petsc: same as --strategy\n"
+  "                    petsc\n"
   "  --strategy NAME   how each active set's system is solved: auto (the\n"
   "                    default: dense for small systems, else augmented),\n"
   "                    dense, schur (every body held by its Dirichlet\n"
-  "                    conditions), augmented or saddle; overrides the\n"
-  "                    scene's [contact] strategy (chapter 07)\n"
+  "                    conditions), augmented, saddle, or petsc (Krylov\n"
+  "                    methods and algebraic multigrid, no factorization,\n"
+  "                    on N MPI processes; also without contact); overrides\n"
+  "                    the scene's [contact] strategy (chapters 07, 11)\n"
+  "  --petsc-options \"...\"  PETSc options for the petsc strategy, e.g.\n"
+  "                    \"-fieldsplit_u_pc_type hypre -ksp_monitor\"; they win\n"
+  "                    over the environment variable PETSC_OPTIONS\n"
   "  --out DIR         output directory (created if needed).  Default: the\n"
   "                    scene's [scene] out, else out/<scene name without\n"
   "                    .scene>, relative to the current directory\n"
   "  --quiet           no progress lines on stderr (errors still shown)\n"
-  "  --timings         add time_<stage> lines (seconds) to the summary\n"
+  "  --timings         add time_<stage> lines (seconds) and\n"
+  "                    peak_rss_total_mb (peak memory, MB, summed over the\n"
+  "                    MPI processes) to the summary\n"
   "  --no-output       write no files (the summary still goes to stdout)\n"
   "\n"
   "output files in DIR (all renamed into place at the end, so a failed run\n"
@@ -120,6 +133,13 @@ static const char *help_text =
   "'name = value' per line.  Exit status: 0 success, 1 the run failed\n"
   "(message 'lac: ...' on stderr), 2 bad command line.\n"
   "\n"
+  "MPI: mpirun -n N lac run SCENE --strategy petsc runs on N processes:\n"
+  "process 0 reads the scene, assembles (on one process), runs the active\n"
+  "set and alone prints and writes the files; the matrices and vectors of\n"
+  "the solves are distributed by rows over the N processes.  The petsc\n"
+  "strategy adds the summary lines processes, solver_iterations (Krylov,\n"
+  "all solves) and solver_residual (true relative residual of the last).\n"
+  "\n"
   "example: lac run chapters/01-problem/sphere-axi.scene --set level=1\n";
 
 /* Print "lac: message" on one line (newlines in the message become
@@ -132,6 +152,7 @@ typedef struct cmdline
   size_t nset;
   const char *out;
   int quiet, timings, no_output, strategy;
+  const char *petsc_options;
   char solver_set[64];
 } cmdline;
 
@@ -147,20 +168,29 @@ parse_run_args (int argc, char **argv, cmdline *c)
         c->set[c->nset++] = v;
       else if ((v = lac_cli_option_value (argc, argv, &k, "--solver", &missing)))
         {
-          if (lac_solver_kind_from_name (v) < 0)
+          if (strcmp (v, "petsc") == 0)
+            c->strategy = LAC_STRATEGY_PETSC;
+          else if (lac_solver_kind_from_name (v) < 0)
             return lac_cli_usage_error (NULL, "--solver: expected dense, "
-                                        "umfpack or cholmod, got", v);
-          snprintf (c->solver_set, sizeof c->solver_set, "scene.solver=%s", v);
-          c->set[c->nset++] = c->solver_set;
+                                        "umfpack, cholmod or petsc, got", v);
+          else
+            {
+              snprintf (c->solver_set, sizeof c->solver_set,
+                        "scene.solver=%s", v);
+              c->set[c->nset++] = c->solver_set;
+            }
         }
       else if ((v = lac_cli_option_value (argc, argv, &k, "--strategy",
                                           &missing)))
         {
           if ((c->strategy = lac_strategy_from_name (v)) < 0)
             return lac_cli_usage_error (NULL, "--strategy: expected auto, "
-                                        "dense, schur, augmented or saddle, "
-                                        "got", v);
+                                        "dense, schur, augmented, saddle or "
+                                        "petsc, got", v);
         }
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--petsc-options",
+                                          &missing)))
+        c->petsc_options = v;
       else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
       else if (missing)
@@ -202,7 +232,7 @@ cmd_run (const cmdline *c)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy };
-  int status;
+  int rank, size, status;
 
   /* 1. The scene, with the overrides. */
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
@@ -224,6 +254,11 @@ cmd_run (const cmdline *c)
       for (size_t k = 0; k < r->neffects; k++)
         fprintf (stderr, "%s %s", k ? "," : "", r->effects[k]);
       fprintf (stderr, "\n");
+      lac_petsc_rank (&rank, &size);
+      if (size > 1)
+        fprintf (stderr, "lac: %d MPI processes: process 0 reads, assembles "
+                 "and writes; the petsc strategy solves on all %d\n", size,
+                 size);
     }
 
   /* 2. The stages. */
@@ -256,6 +291,47 @@ cmd_run (const cmdline *c)
       return LAC_CLI_FAILURE;
     }
   return status == LAC_SUCCESS ? EXIT_SUCCESS : LAC_CLI_FAILURE;
+}
+
+/* The number of processes an MPI launcher started (Open MPI, MPICH),
+ * 1 without one. */
+static int
+launched_processes (void)
+{
+  const char *v = getenv ("OMPI_COMM_WORLD_SIZE");
+  if (!v)
+    v = getenv ("PMI_SIZE");
+  return v ? atoi (v) : 1;
+}
+
+/* MPI and PETSc, when the run needs them: the petsc strategy, PETSc
+ * options, or a launcher's processes (lac_petsc_initialize fails with
+ * the install line in a build without PETSc).  *rank: this process. */
+static int
+start_processes (const cmdline *c, int *rank)
+{
+  int size;
+  *rank = 0;
+  if (c->strategy != LAC_STRATEGY_PETSC && !c->petsc_options
+      && launched_processes () <= 1)
+    return EXIT_SUCCESS;
+  if (lac_petsc_initialize (c->petsc_options))
+    {
+      lac_cli_print_error (lac_error_message ());
+      return LAC_CLI_FAILURE;
+    }
+  lac_petsc_rank (rank, &size);
+  return EXIT_SUCCESS;
+}
+
+/* Processes 1 .. N-1: serve the petsc strategy of process 0. */
+static int
+serve (void)
+{
+  if (lac_petsc_serve () == LAC_SUCCESS)
+    return EXIT_SUCCESS;
+  lac_cli_print_error (lac_error_message ());
+  return LAC_CLI_FAILURE;
 }
 
 int
@@ -293,8 +369,11 @@ main (int argc, char **argv)
     return lac_cli_usage_error (NULL, "out of memory", NULL);
   if ((ret = parse_run_args (argc, argv, &c)) == 0)
     {
+      int rank;
       lac_init ();
-      ret = cmd_run (&c);
+      if ((ret = start_processes (&c, &rank)) == EXIT_SUCCESS)
+        ret = rank == 0 ? cmd_run (&c) : serve ();
+      lac_petsc_finalize ();
       lac_finalize ();
     }
   free (c.set);

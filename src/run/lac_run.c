@@ -16,6 +16,7 @@
 #include "base/lac_status.h"
 #include "run/lac_run_mesh.h"
 #include "run/lac_run_output.h"
+#include "solve/lac_petsc_env.h"
 #include "solve/lac_strategy.h"
 
 static const char *const stage_names[LAC_NSTAGES] =
@@ -92,12 +93,14 @@ stage_post (lac_run *r)
 }
 
 /* time_<stage> lines for the stages before the output, and of their
- * parts (--timings). */
+ * parts, and the peak memory summed over the processes (--timings). */
 static int
 add_timings (lac_run *r)
 {
   lac_summary *s = &r->res.summary;
-  int status = LAC_SUCCESS;
+  int nproc, status;
+  double mb = lac_petsc_peak_rss_total_mb (&nproc);
+  status = lac_summary_add (s, "peak_rss_total_mb", "%.0f", mb);
   for (int k = 0; k < LAC_STAGE_OUTPUT && !status; k++)
     {
       char key[32];

@@ -275,6 +275,8 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
                                              in->sol->newton, &e, res->sigma,
                                              &res->mult, &res->summary)))
     return status;
+  if ((status = lac_run_solve_summary (in->sol, &res->summary)))
+    return status;
   if (res->u_exact)
     snprintf (progress, size, "stresses, errors vs %s: L2 %.3e, H1 %.3e",
               lac_scene_exact_name (sc->exact.solution), res->err_l2,

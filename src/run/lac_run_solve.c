@@ -8,8 +8,10 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "run/lac_run_scene.h"
+#include "solve/lac_petsc.h"
 
 #define NEWTON_TOL 1e-10
+#define PLAIN_RTOL 1e-10     /* petsc, no contact: relative residual of K */
 
 void
 lac_run_solution_clear (lac_run_solution *sol)
@@ -17,6 +19,36 @@ lac_run_solution_clear (lac_run_solution *sol)
   lac_free (sol->u);
   lac_newton_free (sol->newton);
   memset (sol, 0, sizeof *sol);
+}
+
+/* K u = b, no contact, by conjugate gradients and algebraic multigrid. */
+static int
+solve_plain_petsc (const lac_run_system *sys, lac_run_solution *sol,
+                   char *progress, size_t size)
+{
+  lac_contact_system cs = { sys->K, sys->b, NULL, NULL, NULL, 0, NULL,
+                            NULL };
+  lac_petsc *p = lac_petsc_alloc (1.0);
+  lac_solve_counts c;
+  int status;
+  if (!p)
+    return LAC_EDEP;
+  lac_petsc_set_coordinates (p, sys->coord_dim, sys->x);
+  memset (sol->u, 0, sys->ndof * sizeof *sol->u);
+  status = lac_petsc_set (p, &cs);
+  if (!status)
+    status = lac_petsc_solve (p, NULL, NULL, NULL, PLAIN_RTOL, sol->u, NULL);
+  lac_petsc_get_counts (p, &c);
+  sol->krylov = 1;
+  sol->krylov_iterations = c.iterations;
+  sol->krylov_residual = c.last_residual;
+  lac_petsc_rank (&(int) { 0 }, &sol->processes);
+  if (!status)
+    snprintf (progress, size, "petsc: %s, %d iterations, true residual "
+              "%.1e", lac_petsc_method (p), c.last_iterations,
+              c.last_residual);
+  lac_petsc_free (p);
+  return status;
 }
 
 /* K u = b, no contact. */
@@ -68,8 +100,48 @@ contact_start (const lac_scene *sc, int strategy, const lac_run_system *sys,
                             lac_error_message ());
   if (!(sol->newton = lac_newton_alloc (sol->strategy, sys->ndof,
                                         sys->contact->k)))
-    return LAC_ENOMEM;
+    return sol->strategy == LAC_STRATEGY_PETSC ? LAC_EDEP : LAC_ENOMEM;
+  lac_strategy_set_coordinates (sol->newton->strategy, sys->coord_dim,
+                                sys->x);
   return lac_newton_set (sol->newton, cs, NULL);
+}
+
+/* The petsc strategy's counts after an iteration. */
+static void
+krylov_counts (lac_run_solution *sol)
+{
+  lac_strategy_counts c;
+  if (sol->strategy != LAC_STRATEGY_PETSC)
+    return;
+  lac_strategy_get_counts (sol->newton->strategy, &c);
+  sol->krylov = 1;
+  sol->krylov_iterations = c.iterations;
+  sol->krylov_residual = c.last_residual;
+  lac_petsc_rank (&(int) { 0 }, &sol->processes);
+}
+
+/* "N Krylov iterations (true residual r), M with the refinement". */
+static void
+krylov_text (const lac_newton_record *h, char *buf, size_t size)
+{
+  snprintf (buf, size, "%d Krylov iteration%s (true residual %.1e), %d "
+            "with the refinement", h->krylov_iterations,
+            h->krylov_iterations == 1 ? "" : "s", h->krylov_residual,
+            h->cg_iterations);
+}
+
+int
+lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum)
+{
+  int status;
+  if (!sol->krylov)
+    return LAC_SUCCESS;
+  if ((status = lac_summary_add (sum, "processes", "%d", sol->processes))
+      || (status = lac_summary_add (sum, "solver_iterations", "%d",
+                                    sol->krylov_iterations)))
+    return status;
+  return lac_summary_add (sum, "solver_residual", "%.3e",
+                          sol->krylov_residual);
 }
 
 /* One iteration of [LAC Alg. 1]; LAC_CONTINUE until it settles. */
@@ -89,23 +161,32 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
                             "%s", nw->nhist + 1, msg);
     }
   h = &nw->hist[nw->nhist - 1];
+  krylov_counts (sol);
   if (lac_newton_test (nw, NEWTON_TOL) == LAC_SUCCESS)
     {
       memcpy (sol->u, nw->U, sys->ndof * sizeof *sol->u);
       snprintf (progress, size, "%s, active set: %zu iteration%s, %zu of "
-                "%zu multipliers active",
-                lac_strategy_name (lac_strategy_kind_of (nw->strategy)),
-                nw->nhist, nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
-                sys->contact->k);
+                "%zu multipliers active%s",
+                lac_strategy_method (nw->strategy), nw->nhist,
+                nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
+                sys->contact->k, sol->krylov ? "; last solve: " : "");
+      if (sol->krylov)
+        krylov_text (h, progress + strlen (progress),
+                     size - strlen (progress));
       return LAC_SUCCESS;
     }
   if ((int) nw->nhist >= c->max_iterations)
     return lac_newton_maxiter_error (nw, c->max_iterations);
   snprintf (progress, size, "active set %d: %zu active, %zu changed%s, "
-            "residual %.1e, %d CG iteration%s, %d factorization%s", h->iter,
-            h->nactive, h->nchanged, h->damped ? " (cycle: damped)" : "",
-            h->residual, h->cg_iterations, h->cg_iterations == 1 ? "" : "s",
-            h->factorizations, h->factorizations == 1 ? "" : "s");
+            "residual %.1e, ", h->iter, h->nactive, h->nchanged,
+            h->damped ? " (cycle: damped)" : "", h->residual);
+  if (sol->krylov)
+    krylov_text (h, progress + strlen (progress), size - strlen (progress));
+  else
+    snprintf (progress + strlen (progress), size - strlen (progress),
+              "%d CG iteration%s, %d factorization%s", h->cg_iterations,
+              h->cg_iterations == 1 ? "" : "s", h->factorizations,
+              h->factorizations == 1 ? "" : "s");
   return LAC_CONTINUE;
 }
 
@@ -117,7 +198,9 @@ lac_run_solve (const lac_scene *sc, int strategy, const lac_run_system *sys,
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
   if (!sys->contact)
-    return solve_plain (sc, sys, sol, progress, size);
+    return strategy == LAC_STRATEGY_PETSC
+           ? solve_plain_petsc (sys, sol, progress, size)
+           : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
       && (status = contact_start (sc, strategy, sys, sol, &sol->cs)))
     return status;

@@ -6,7 +6,8 @@
  * Out: the displacement U; with contact, the multipliers, mean gaps,
  *      statuses and the history of the active set (solve/lac_newton.h).
  * Without contact, K U = b is solved once by the scene's solver (dense,
- * umfpack, cholmod).  With contact, the strategy is chosen from the
+ * umfpack, cholmod), or with the petsc strategy by conjugate gradients
+ * and algebraic multigrid (solve/lac_petsc.h) on the MPI processes.  With contact, the strategy is chosen from the
  * problem (solve/lac_strategy.h: the size, and whether a body is held by
  * contact alone) and each call does ONE active-set iteration, returning
  * LAC_CONTINUE with a progress line about it until the statuses settle.
@@ -17,6 +18,7 @@
 #include <stddef.h>
 #include "io/lac_scene.h"
 #include "run/lac_run_system.h"
+#include "run/lac_summary.h"
 #include "solve/lac_newton.h"
 
 typedef struct lac_run_solution
@@ -27,6 +29,11 @@ typedef struct lac_run_solution
                                   points into the system of stage 4        */
   lac_strategy_kind strategy;  /* with [contact]: the one chosen           */
   double rcond;                /* without contact: K's condition estimate   */
+  int krylov;                  /* 1: solved by the petsc strategy           */
+  int krylov_iterations;       /* its Krylov iterations, all solves         */
+  double krylov_residual;      /* the true relative residual of the last
+                                  solve (before refinement)                */
+  int processes;               /* MPI processes that solved                 */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done. */
@@ -34,5 +41,8 @@ int lac_run_solve (const lac_scene *sc, int strategy,
                    const lac_run_system *sys, lac_run_solution *sol,
                    char *progress, size_t size);
 void lac_run_solution_clear (lac_run_solution *sol);
+/* The petsc strategy's summary lines (processes, solver_iterations,
+ * solver_residual); nothing for the direct solvers. */
+int lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum);
 
 #endif /* LAC_RUN_SOLVE_H */

@@ -235,6 +235,8 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
   int status = LAC_SUCCESS;
   memset (sys, 0, sizeof *sys);
   sys->ndof = (size_t) m->dim * m->nnodes;
+  sys->coord_dim = m->dim;
+  sys->x = model == LAC_AXISYMMETRIC ? NULL : m->x;
   for (size_t c = 0; c < m->ncells; c++)
     {
       size_t nc = (m->ptr[c + 1] - m->ptr[c]) * (size_t) m->dim;

@@ -35,6 +35,11 @@ typedef struct lac_run_system
   size_t nfree;            /* free motions of bodies held by contact     */
   double *N;               /* owned, ndof x nfree                        */
   char **N_what;           /* owned, nfree descriptions                  */
+  int coord_dim;           /* components per node                       */
+  const double *x;         /* borrowed: the mesh's coordinates (ndof), for
+                              the rigid motions of the petsc strategy's
+                              multigrid; NULL for the axisymmetric model
+                              (its one rigid motion: along the axis)    */
 } lac_run_system;
 
 int lac_run_system_build (const lac_scene *sc, lac_model model,

@@ -303,6 +303,8 @@ lac_augmented_solve (lac_augmented *s, const char *active, const double *f,
   status = lac_pcg (s->na, schur_product, schur_precondition, s, s->b,
                     s->lamA, rtol, PCG_MAXIT, &info);
   s->counts.iterations += info.iterations;
+  s->counts.last_iterations = info.iterations;
+  s->counts.last_residual = info.residual;
   if (status == LAC_EMAXITER || status == LAC_ESING)
     return LAC_ERRMSG (LAC_ESING, "the multipliers of the %zu active "
                        "macro-elements are not determined (%s): their "

@@ -311,6 +311,8 @@ lac_newton_iterate (lac_newton *s)
   lac_strategy_get_counts (s->strategy, &c1);
   r.cg_iterations = c1.iterations - c0.iterations;
   r.factorizations = c1.factorizations - c0.factorizations;
+  r.krylov_iterations = c1.last_iterations;
+  r.krylov_residual = c1.last_residual;
   lac_system_gaps (s->sys, s->U, s->d);                    /* d = G - C^T U */
   record (s, &r);
   s->changed = update_status (s, &damped);                 /* steps 26-33 */

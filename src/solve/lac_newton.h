@@ -64,6 +64,8 @@ typedef struct lac_newton_record
   double ncp;          /* max_i |A_i(U, lambda)| / max |lambda| (or 1)       */
   double max_penetration; /* max_i (-d_i / |C(:,i)|_1), scale of a length    */
   int cg_iterations;   /* conjugate-gradient iterations of this solve       */
+  int krylov_iterations; /* petsc: Krylov iterations of its first solve     */
+  double krylov_residual; /* petsc: that solve's true relative residual    */
   int factorizations;  /* numeric factorizations of this solve              */
   int damped;          /* 1: the cycle safeguard limited the changes        */
   double seconds;      /* wall time of the iteration                       */

@@ -18,10 +18,13 @@
 #include "solve/lac_saddle.h"
 #include "solve/lac_augmented.h"
 #include "solve/lac_schur.h"
+#include "solve/lac_petsc.h"
 
 #define CG_RTOL 1e-10     /* relative residual of the conjugate gradients */
 #define CG_RTOL_REFINE 1e-6  /* ... in a refinement step (a correction) */
 #define MAX_REFINE 3
+#define MAX_REFINE_KRYLOV 2  /* petsc: a step costs half a solve, ...  */
+#define TOL_KRYLOV 1e-11     /* ... so only above this backward error    */
 
 struct lac_strategy
 {
@@ -30,6 +33,7 @@ struct lac_strategy
   lac_saddle *saddle;              /* owned: dense, saddle, fallback      */
   lac_schur *schur;                /* owned: schur                        */
   lac_augmented *aug;              /* owned: augmented                    */
+  lac_petsc *petsc;                /* owned: petsc                        */
   double *r, *g, *dU, *dl;         /* owned: residuals and corrections    */
   size_t n, k;
   char fallback[512];              /* why the fallback happened, or ""    */
@@ -39,7 +43,7 @@ struct lac_strategy
 };
 
 static const char *const names[LAC_NSTRATEGIES] =
-  { "auto", "dense", "schur", "augmented", "saddle" };
+  { "auto", "dense", "schur", "augmented", "saddle", "petsc" };
 
 int
 lac_strategy_from_name (const char *name)
@@ -95,9 +99,11 @@ lac_strategy_alloc (lac_strategy_kind kind)
                                   ? LAC_SOLVER_DENSE : LAC_SOLVER_UMFPACK);
   else if (kind == LAC_STRATEGY_SCHUR)
     s->schur = lac_schur_alloc ();
+  else if (kind == LAC_STRATEGY_PETSC)
+    s->petsc = lac_petsc_alloc (LAC_PETSC_OMEGA);
   else
     s->aug = lac_augmented_alloc (LAC_AUGMENT_OMEGA);
-  if (!s->saddle && !s->schur && !s->aug)
+  if (!s->saddle && !s->schur && !s->aug && !s->petsc)
     {
       lac_free (s);
       return NULL;
@@ -124,7 +130,15 @@ lac_strategy_free (lac_strategy *s)
   lac_saddle_free (s->saddle);
   lac_schur_free (s->schur);
   lac_augmented_free (s->aug);
+  lac_petsc_free (s->petsc);
   lac_free (s);
+}
+
+void
+lac_strategy_set_coordinates (lac_strategy *s, int dim, const double *x)
+{
+  if (s->petsc)
+    lac_petsc_set_coordinates (s->petsc, dim, x);
 }
 
 int
@@ -148,6 +162,7 @@ lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
   s->sys = sys;
   status = s->saddle ? lac_saddle_set (s->saddle, sys)
            : s->schur ? lac_schur_set (s->schur, sys)
+           : s->petsc ? lac_petsc_set (s->petsc, sys)
            : lac_augmented_set (s->aug, sys);
   s->counts.time_factor += lac_seconds () - t0;
   return status;
@@ -165,6 +180,8 @@ solve_once (lac_strategy *s, const char *active, const double *f,
     return lac_saddle_solve (s->saddle, active, f, g, U, lambda);
   if (s->schur)
     return lac_schur_solve (s->schur, active, f, g, U, lambda);
+  if (s->petsc)
+    return lac_petsc_solve (s->petsc, active, f, g, rtol, U, lambda);
   return lac_augmented_solve (s->aug, active, f, g, rtol, U, lambda);
 }
 
@@ -197,7 +214,9 @@ static int
 refine (lac_strategy *s, const char *active, double *U, double *lambda)
 {
   double be = lac_system_residual (s->sys, active, U, lambda, s->r, s->g);
-  for (int step = 0; step < MAX_REFINE && be > LAC_STRATEGY_TOL; step++)
+  int steps = s->petsc ? MAX_REFINE_KRYLOV : MAX_REFINE;
+  double tol = s->petsc ? TOL_KRYLOV : LAC_STRATEGY_TOL;
+  for (int step = 0; step < steps && be > tol; step++)
     {
       double bnew;
       int status;
@@ -240,9 +259,24 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
         status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
     }
   if (!status)
-    status = refine (s, active, U, lambda);
+    {
+      lac_solve_counts sc = { 0 };
+      if (s->aug)
+        lac_augmented_get_counts (s->aug, &sc);
+      if (s->petsc)
+        lac_petsc_get_counts (s->petsc, &sc);
+      s->counts.last_iterations = sc.last_iterations;  /* before refine */
+      s->counts.last_residual = sc.last_residual;
+      status = refine (s, active, U, lambda);
+    }
   s->counts.time_solve += lac_seconds () - t0;
   return status;
+}
+
+const char *
+lac_strategy_method (const lac_strategy *s)
+{
+  return s->petsc ? lac_petsc_method (s->petsc) : names[s->kind];
 }
 
 lac_strategy_kind
@@ -266,6 +300,8 @@ lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
     lac_schur_get_counts (s->schur, &sc);
   if (s->aug)
     lac_augmented_get_counts (s->aug, &sc);
+  if (s->petsc)
+    lac_petsc_get_counts (s->petsc, &sc);
   c->substitutions = sc.solves;
   c->iterations = sc.iterations;
   c->factorizations = sc.factorizations;

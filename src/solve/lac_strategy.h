@@ -20,7 +20,13 @@
  *                  multipliers by conjugate gradients in about ten
  *                  iterations (solve/lac_schur.h);
  *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
- *                  fallback and the reference (solve/lac_saddle.h).
+ *                  fallback and the reference (solve/lac_saddle.h);
+ *   petsc      (e) no factorization: the augmented system of (b) by
+ *                  conjugate gradients on the null space of C_A^T,
+ *                  preconditioned by algebraic multigrid on
+ *                  K + C_A W C_A^T, on one or N MPI processes
+ *                  (solve/lac_petsc.h; optional: a build without PETSc
+ *                  says how to install it).
  *
  * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur
  * when every body is held by its Dirichlet conditions (one factorization
@@ -42,7 +48,10 @@
  * LAC_STRATEGY_TOL where they can: without them the augmented strategy
  * leaves errors of a few 1e-12 on lambda (K_W's condition number is
  * omega times K's), with one of them the Taylor patch tests are exact to
- * 1e-14.
+ * 1e-14.  The petsc strategy refines only above a backward error of
+ * 1e-11 (two steps at most): a step costs half a Krylov solve, and the
+ * projected CG to 1e-10 (true residual) usually gives 1e-12 and lambda
+ * to about 1e-10 at once.
  *
  * Usage:
  *   lac_strategy *s = lac_strategy_alloc (kind);
@@ -60,14 +69,15 @@
 typedef enum
 {
   LAC_STRATEGY_AUTO, LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
-  LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_NSTRATEGIES
+  LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_STRATEGY_PETSC,
+  LAC_NSTRATEGIES
 } lac_strategy_kind;
 
 #define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
 #define LAC_STRATEGY_TOL 1e-16       /* backward error aimed at          */
 
-/* "auto" | "dense" | "schur" | "augmented" | "saddle" -> kind, -1 if
- * unknown; and back. */
+/* "auto" | "dense" | "schur" | "augmented" | "saddle" | "petsc" -> kind,
+ * -1 if unknown; and back. */
 int lac_strategy_from_name (const char *name);
 const char *lac_strategy_name (lac_strategy_kind kind);
 /* The strategy for a system of n displacements, k multipliers and nfree
@@ -91,6 +101,9 @@ typedef struct lac_strategy_counts
   double rcond;        /* condition estimate of the last factorization     */
   double time_factor;  /* seconds in analyses and factorizations          */
   double time_solve;   /* seconds in the rest of set and of the solves    */
+  int last_iterations; /* Krylov iterations of the last solve of (*),
+                          before refinement (schur, augmented, petsc)      */
+  double last_residual; /* and its relative residual (petsc: the true one) */
 } lac_strategy_counts;
 
 /* kind: a concrete one (from lac_strategy_choose), not auto. */
@@ -102,6 +115,14 @@ int lac_strategy_set (lac_strategy *s, const lac_contact_system *sys);
  * the solution, lambda_i = 0 where inactive. */
 int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
                         double *lambda);
+/* The nodal coordinates for the petsc strategy's multigrid (dof =
+ * dim*node + comp, n entries, borrowed until free; NULL: none, e.g. the
+ * axisymmetric model); the other strategies ignore them.  Before set. */
+void lac_strategy_set_coordinates (lac_strategy *s, int dim,
+                                   const double *x);
+/* What solves (*): the strategy's name, or for petsc its Krylov method,
+ * preconditioner and processes. */
+const char *lac_strategy_method (const lac_strategy *s);
 /* The strategy in use (the fallback once it happened). */
 lac_strategy_kind lac_strategy_kind_of (const lac_strategy *s);
 /* Why the strategy fell back to saddle, NULL if it did not. */

@@ -63,6 +63,8 @@ typedef struct lac_solve_counts
   int iterations;      /* conjugate-gradient iterations, all solves      */
   double rcond;        /* condition estimate of the last factorization   */
   double time_factor;  /* seconds in analyses and factorizations         */
+  int last_iterations; /* Krylov iterations of the last solve            */
+  double last_residual; /* its relative residual ||b - A x|| / ||b||      */
 } lac_solve_counts;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):

@@ -1,0 +1,111 @@
+/* lac_petsc.h -- the LAC system of one active set by Krylov methods and
+ *                algebraic multigrid (PETSc), on one or N processes
+ *                                                 [LAC (17), Alg. 1 l. 21]
+ *
+ * Strategy (e) of solve/lac_strategy.h, for the 3D meshes whose Cholesky
+ * factor does not fit in memory (a 1,029,000-dof hex8 cube needs 20.5 GB,
+ * chapter 10).  It solves the augmented form of (*) of
+ * solve/lac_system.h (solve/lac_augmented.h: adding C_A W_A times the
+ * constraint changes neither U nor lambda),
+ *
+ *   [ K_W    -C_A ] [ U        ]   [ f_W ]     f_W = f + C_A W_A g_A,
+ *   [ -C_A^T   0  ] [ lambda_A ] = [ -g_A ],                       (*W)
+ *
+ *   K_W = K + C_A W_A C_A^T,   W_i = omega / s_i,  s_i = c_i^T diag(K)^-1 c_i,
+ *
+ * where K_W is positive definite as soon as the active multipliers hold
+ * every body (lac_system_check_held), with no dense Schur complement and
+ * no factorization of a matrix of size n:
+ *
+ *   projected (default)  conjugate gradients on the null space of C_A^T
+ *      (Gould, Hribar and Nocedal, SIAM J. Sci. Comput. 23 (2001)): with
+ *      the projection P = I - C_A (C_A^T C_A)^-1 C_A^T (C_A^T C_A is k x
+ *      k and sparse: LU on every process), U = u0 + x with C_A^T u0 = g_A
+ *      and x = P x solving P K_W x = P (f_W - K_W u0), preconditioned by
+ *      P M, M one V-cycle of smoothed-aggregation multigrid (PCGAMG) on
+ *      K_W; then lambda_A = (C_A^T C_A)^-1 C_A^T (K_W U - f_W).  On the
+ *      null space K_W is K: W only makes K_W positive definite for the
+ *      multigrid (omega = LAC_PETSC_OMEGA, smaller than the augmented
+ *      strategy's: a stiffer K_W is harder for the multigrid).
+ *   fieldsplit  GMRES on the whole of (*W), right preconditioned by the
+ *      block factorization of PCFIELDSPLIT (Schur type, "upper"): K_W by
+ *      one V-cycle of GAMG, the Schur complement S_W = C_A^T K_W^-1 C_A
+ *      by W_A^-1 (S_W^-1 = S^-1 + W_A lies between W_A and W_A + 1/s_min,
+ *      lac_augmented.h): the comparison of chapter 11 (option
+ *      -lac_contact fieldsplit).
+ *
+ * The inactive multipliers keep their rows (lambda_i = 0), so that the
+ * matrices keep their size and pattern when the statuses change and the
+ * multigrid keeps its interpolation (-pc_gamg_reuse_interpolation).
+ * Without multipliers (k = 0, plain elasticity) K U = f is solved by
+ * conjugate gradients and GAMG.  The near-null space of the multigrid is
+ * the rigid motions of the nodal coordinates (MatNullSpaceCreateRigidBody:
+ * 3 in 2D, 6 in 3D) when they are given (lac_petsc_set_coordinates), the
+ * constants of each component otherwise (the axisymmetric model, whose
+ * only rigid motion is the translation along the axis).  Tolerances are
+ * on the true, unpreconditioned residual ||b - A x|| / ||b|| of (*W) (of
+ * K U = f when k = 0), which is reported with the iterations of every
+ * solve.
+ *
+ * Processes.  The rows of the matrices and vectors are cut in N
+ * contiguous ranges, whole nodes for U, one range per MPI process, and so
+ * are the multipliers.  The assembly stays on one process: process 0 (the
+ * root) runs the whole scene -- mesh, assembly, active set, output -- and
+ * holds K, C and the vectors whole; it inserts every row, PETSc sends each
+ * process its own, and the solution comes back to the root alone.  The
+ * other processes run lac_petsc_serve: they wait for the root's commands
+ * (build, new values, solve, free, memory, quit; one broadcast each) and
+ * make the same collective PETSc calls with no data of their own.  One
+ * petsc strategy at a time exists on the root when N > 1.  Chapter 11
+ * gives the design of a distributed assembly, the next step.
+ *
+ * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
+ * from the string given to lac_petsc_initialize (which wins).  The
+ * multigrid of K_W (and the solver of K when k = 0) has the prefix
+ * -elast_ (-elast_pc_type hypre: BoomerAMG), the projected CG none
+ * (-ksp_monitor; its tolerance is the strategy's), C_A^T C_A -gram_;
+ * fieldsplit: no prefix for GMRES, -fieldsplit_u_ and -fieldsplit_lambda_
+ * for the blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega
+ * W (> 0).  The defaults are those of an elastic body: nothing to tune.
+ *
+ * A build without PETSc (no LAC_HAVE_PETSC, chapter 11) compiles the same
+ * interface: every function then fails with LAC_EDEP and the apt-get line.
+ *
+ * Ownership: the system and the coordinates are borrowed from set until
+ * the next set or lac_petsc_free.
+ */
+#ifndef LAC_PETSC_H
+#define LAC_PETSC_H
+
+#include "solve/lac_petsc_env.h"
+#include "solve/lac_system.h"
+
+#define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 11: 1 against 10) */
+
+/* The processes other than the root: follow the root's commands until it
+ * finalizes (lac_petsc_finalize).  LAC_SUCCESS then; an error if called
+ * on the root. */
+int lac_petsc_serve (void);
+
+typedef struct lac_petsc lac_petsc;     /* opaque */
+
+lac_petsc *lac_petsc_alloc (double omega);
+void lac_petsc_free (lac_petsc *s);      /* NULL allowed */
+/* The nodal coordinates (dof = dim*node + comp, the mesh's x; borrowed,
+ * n entries) for the rigid motions; NULL: constants per component.
+ * Before lac_petsc_set. */
+void lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x);
+/* Borrow the system (C NULL: no multipliers); distribute K_W's pattern
+ * (kept while the patterns of K and C stay; new numbers: set again). */
+int lac_petsc_set (lac_petsc *s, const lac_contact_system *sys);
+/* U, lambda of (*) for the statuses `active` (NULL when k = 0),
+ * right-hand sides f, g (NULL: F, G); U and lambda are the start (warm
+ * start) on entry, the solution on return (lambda = 0 where inactive).
+ * rtol: relative unpreconditioned residual of (*W). */
+int lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
+                     const double *g, double rtol, double *U, double *lambda);
+void lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c);
+/* What is solved, e.g. "gmres + fieldsplit(gamg, W), 2 processes". */
+const char *lac_petsc_method (const lac_petsc *s);
+
+#endif /* LAC_PETSC_H */

@@ -1,0 +1,252 @@
+/* lac_petsc_env.c -- the processes of the petsc strategy
+ *                    (see lac_petsc_env.h)                    [chapter 11]
+ */
+#include "solve/lac_petsc_env.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include <sys/resource.h>
+#include "base/lac_status.h"
+
+/* This process's peak resident memory, MB (Linux: maxrss in kB). */
+static double
+own_peak_mb (void)
+{
+  struct rusage u;
+  if (getrusage (RUSAGE_SELF, &u) != 0)
+    return 0.0;
+  return (double) u.ru_maxrss / 1024.0;
+}
+
+#ifndef LAC_HAVE_PETSC
+
+/* ---- built without PETSc: one process ----------------------------------- */
+
+int
+lac_petsc_available (void)
+{
+  return 0;
+}
+
+int
+lac_petsc_initialize (const char *options)
+{
+  (void) options;
+  LAC_ERROR (LAC_EDEP, "lac was built without PETSc (the petsc strategy, "
+             "MPI); install it with: %s", LAC_PETSC_INSTALL);
+}
+
+int
+lac_petsc_initialized (void)
+{
+  return 0;
+}
+
+void
+lac_petsc_finalize (void)
+{
+}
+
+void
+lac_petsc_rank (int *rank, int *size)
+{
+  *rank = 0;
+  *size = 1;
+}
+
+double
+lac_petsc_peak_rss_total_mb (int *nproc)
+{
+  *nproc = 1;
+  return own_peak_mb ();
+}
+
+int
+lac_petsc_command_send (const lac_petsc_command *c)
+{
+  (void) c;
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_command_receive (lac_petsc_command *c)
+{
+  memset (c, 0, sizeof *c);
+  c->cmd = LAC_PETSC_CMD_QUIT;
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_memory_reply (void)
+{
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_fail (int err, const char *func, const char *call)
+{
+  return lac_error_set (LAC_EDEP, func, "PETSc: %s: error %d", call, err);
+}
+
+#else /* LAC_HAVE_PETSC */
+
+#include <petscsys.h>
+
+static char petsc_msg[400];     /* PETSc's first message of an error     */
+static int started;             /* 1: lac called PetscInitialize;
+                                   2: and the root sent quit              */
+
+static PetscErrorCode
+keep_message (MPI_Comm comm, int line, const char *fun, const char *file,
+              PetscErrorCode n, PetscErrorType p, const char *mess,
+              void *ctx)
+{
+  (void) comm, (void) file, (void) ctx;
+  if (p == PETSC_ERROR_INITIAL)
+    snprintf (petsc_msg, sizeof petsc_msg, "%s (in %s, line %d)",
+              mess && *mess ? mess : "error", fun, line);
+  return n;
+}
+
+int
+lac_petsc_fail (int err, const char *func, const char *call)
+{
+  const char *text = NULL;
+  int status;
+  if (!petsc_msg[0])
+    PetscErrorMessage ((PetscErrorCode) err, &text, NULL);
+  status = lac_error_set (err == PETSC_ERR_MEM ? LAC_ENOMEM : LAC_EDEP, func,
+                          "PETSc: %s: %s", call, petsc_msg[0] ? petsc_msg
+                          : text ? text : "error");
+  petsc_msg[0] = 0;
+  return status;
+}
+
+int
+lac_petsc_available (void)
+{
+  return 1;
+}
+
+int
+lac_petsc_initialized (void)
+{
+  PetscBool up = PETSC_FALSE;
+  PetscInitialized (&up);
+  return up == PETSC_TRUE;
+}
+
+int
+lac_petsc_initialize (const char *options)
+{
+  PetscErrorCode e;
+  if (!lac_petsc_initialized ())
+    {
+      /* lac's signals are its caller's (and the sanitizers'). */
+      PetscOptionsSetValue (NULL, "-no_signal_handler", NULL);
+      if (PetscInitializeNoArguments ())
+        LAC_ERROR (LAC_EDEP, "PetscInitialize failed (MPI could not start)");
+      started = 1;
+      PetscPushErrorHandler (keep_message, NULL);
+    }
+  if (options && *options && (e = PetscOptionsInsertString (NULL, options)))
+    return lac_petsc_fail (e, __func__, options);
+  return LAC_SUCCESS;
+}
+
+void
+lac_petsc_rank (int *rank, int *size)
+{
+  *rank = 0;
+  *size = 1;
+  if (lac_petsc_initialized ())
+    {
+      MPI_Comm_rank (PETSC_COMM_WORLD, rank);
+      MPI_Comm_size (PETSC_COMM_WORLD, size);
+    }
+}
+
+void
+lac_petsc_finalize (void)
+{
+  int rank, size;
+  if (!started)
+    return;
+  lac_petsc_rank (&rank, &size);
+  if (rank == 0 && size > 1 && started == 1)
+    {
+      lac_petsc_command c = { .cmd = LAC_PETSC_CMD_QUIT };
+      lac_petsc_command_send (&c);
+    }
+  PetscFinalize ();
+  started = 0;
+}
+
+int
+lac_petsc_command_send (const lac_petsc_command *c)
+{
+  MPI_Request req;
+  int rank, size;
+  lac_petsc_rank (&rank, &size);
+  if (size == 1)
+    return LAC_SUCCESS;
+  if (rank != 0)
+    LAC_ERROR (LAC_ESANITY, "process %d sends a command: only the root "
+               "does", rank);
+  if (started == 2)
+    LAC_ERROR (LAC_ESANITY, "command %d after quit", c->cmd);
+  if (MPI_Ibcast ((void *) c, (int) sizeof *c, MPI_BYTE, 0,
+                  PETSC_COMM_WORLD, &req)
+      || MPI_Wait (&req, MPI_STATUS_IGNORE))
+    LAC_ERROR (LAC_EDEP, "MPI_Ibcast of command %d failed", c->cmd);
+  if (c->cmd == LAC_PETSC_CMD_QUIT)
+    started = 2;
+  return LAC_SUCCESS;
+}
+
+/* The wait polls every 0.2 ms and sleeps in between: while the root
+ * meshes and assembles alone, the others leave it the cores (MPI's own
+ * blocking wait would keep one busy each). */
+int
+lac_petsc_command_receive (lac_petsc_command *c)
+{
+  const struct timespec pause = { 0, 200000 };
+  MPI_Request req;
+  int done = 0;
+  if (MPI_Ibcast (c, (int) sizeof *c, MPI_BYTE, 0, PETSC_COMM_WORLD, &req))
+    LAC_ERROR (LAC_EDEP, "MPI_Ibcast of a command failed");
+  while (!done)
+    {
+      if (MPI_Test (&req, &done, MPI_STATUS_IGNORE))
+        LAC_ERROR (LAC_EDEP, "MPI_Test of a command failed");
+      if (!done)
+        nanosleep (&pause, NULL);
+    }
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_memory_reply (void)
+{
+  double mine = own_peak_mb (), sum = 0;
+  if (MPI_Reduce (&mine, &sum, 1, MPI_DOUBLE, MPI_SUM, 0, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Reduce of the peak memory failed");
+  return LAC_SUCCESS;
+}
+
+double
+lac_petsc_peak_rss_total_mb (int *nproc)
+{
+  int rank;
+  double mine = own_peak_mb (), sum = mine;
+  lac_petsc_command c = { .cmd = LAC_PETSC_CMD_MEMORY };
+  lac_petsc_rank (&rank, nproc);
+  if (*nproc > 1 && rank == 0 && lac_petsc_command_send (&c) == LAC_SUCCESS
+      && MPI_Reduce (&mine, &sum, 1, MPI_DOUBLE, MPI_SUM, 0,
+                     PETSC_COMM_WORLD) != MPI_SUCCESS)
+    sum = mine;
+  return sum;
+}
+
+#endif /* LAC_HAVE_PETSC */

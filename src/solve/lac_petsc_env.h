@@ -1,0 +1,78 @@
+/* lac_petsc_env.h -- the processes of the petsc strategy: MPI and PETSc
+ *                    started and stopped, the root's commands, memory
+ *                                                          [chapter 11]
+ *
+ * lac on N MPI processes (mpirun -n N lac run ...): process 0, the root,
+ * runs the scene; the others follow its commands (solve/lac_petsc.h,
+ * lac_petsc_serve).  This module starts MPI and PETSc with the options of
+ * the command line and of PETSC_OPTIONS, broadcasts the root's commands,
+ * turns PETSc's errors into lac's (PETSc prints nothing: its messages are
+ * kept and become lac's message), and sums the peak memory of the
+ * processes.  Built without PETSc (no LAC_HAVE_PETSC) the same functions
+ * exist: one process, and lac_petsc_initialize fails with the apt-get line
+ * (LAC_PETSC_INSTALL).
+ *
+ * PETSc and MPI are process-wide: whether lac started them, and PETSc's
+ * last message, are the module's two static variables.
+ */
+#ifndef LAC_PETSC_ENV_H
+#define LAC_PETSC_ENV_H
+
+#define LAC_PETSC_INSTALL "apt-get install -y --no-install-recommends " \
+  "libpetsc-real-dev openmpi-bin, then make clean && make"
+
+/* 1 if lac was built with PETSc. */
+int lac_petsc_available (void);
+/* Initialize MPI (if nobody did) and PETSc (if nobody did): PETSc reads
+ * PETSC_OPTIONS; then add `options` ("-key value ...", NULL or "": none),
+ * which win.  Every process, with the same options. */
+int lac_petsc_initialize (const char *options);
+/* 1 once lac_petsc_initialize succeeded (or PETSc was started by the
+ * caller). */
+int lac_petsc_initialized (void);
+/* The root: release the other processes (quit).  Then finalize PETSc and
+ * MPI if lac_petsc_initialize started them.  Last call of main() on
+ * every process; nothing without PETSc or before initialize. */
+void lac_petsc_finalize (void);
+/* This process and the number of processes: 0 and 1 without MPI or
+ * before lac_petsc_initialize. */
+void lac_petsc_rank (int *rank, int *size);
+/* The peak resident memory (MB, getrusage's maxrss) summed over the
+ * processes, and their number: the root asks the others (they answer in
+ * lac_petsc_serve).  One process: its own. */
+double lac_petsc_peak_rss_total_mb (int *nproc);
+
+/* ---- the root's commands (for solve/lac_petsc.c) ------------------------ */
+
+typedef enum
+{
+  LAC_PETSC_CMD_BUILD = 1,  /* new layout and patterns                    */
+  LAC_PETSC_CMD_UPDATE,     /* new values of the matrices                 */
+  LAC_PETSC_CMD_SOLVE,      /* one solve of (*W) (of K when k = 0)        */
+  LAC_PETSC_CMD_FREE,       /* destroy the strategy's objects             */
+  LAC_PETSC_CMD_MEMORY,     /* add the peak memory to the root's          */
+  LAC_PETSC_CMD_QUIT        /* the root is done                           */
+} lac_petsc_cmd;
+
+typedef struct lac_petsc_command
+{
+  int cmd;                  /* lac_petsc_cmd                              */
+  int mode, bs, coords;     /* build: the contact solver (-lac_contact),
+                               block size, coordinates given              */
+  int all;                  /* update: every row (new numbers)            */
+  int warm;                 /* solve: the start is the last solution      */
+  long long n, k;           /* build: displacements, multipliers          */
+  double rtol;              /* solve: relative residual                   */
+} lac_petsc_command;
+
+/* The root: c to every other process (nothing with one process). */
+int lac_petsc_command_send (const lac_petsc_command *c);
+/* The others: the root's next command. */
+int lac_petsc_command_receive (lac_petsc_command *c);
+/* The others, on LAC_PETSC_CMD_MEMORY: their share of the sum. */
+int lac_petsc_memory_reply (void);
+/* LAC_EDEP (LAC_ENOMEM) with PETSc's message for the failed call `call`
+ * of `func` (err: its PetscErrorCode). */
+int lac_petsc_fail (int err, const char *func, const char *call);
+
+#endif /* LAC_PETSC_ENV_H */
