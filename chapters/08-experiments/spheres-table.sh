@@ -4,7 +4,7 @@
 # each quadratic element type and level, slave = the inner body's R = 30
 # surface, and prints the DOFs, the maximum relative errors of lambda and
 # of sigma_rr on the slave and master bodies, the wall time of the run, and
-# the paper's values (../../../shared/reference/paper-tables.csv, Tables
+# the paper's values (Tables
 # 3-4, as ratios).  Then the finest level again with slave and master
 # swapped (slave = the outer body).
 #   sh chapters/08-experiments/spheres-table.sh [build-dir [max-3d-level]]

@@ -2,7 +2,7 @@
 # taylor-table.sh -- the counterpart of the paper's Tables 1 and 2.
 # Runs the Taylor patch test for every element type, slave and master as in
 # the scene and swapped, and prints the maximum relative errors next to the
-# paper's (../../../shared/reference/paper-tables.csv stores them as ratios).
+# paper's (copied here as ratios).
 #   sh chapters/08-experiments/taylor-table.sh [build-dir]
 B=${1:-build}
 printf '%-6s %-9s %-5s %12s %12s %6s\n' element slave mult err_lambda err_sigma iters
