@@ -134,7 +134,7 @@ main (int argc, char **argv)
    *    non-zero.  $(C^T U)_i = \int_{T^i\cap\Gamma_C} (u^S - u^M)\cdot n^S$
    *    is the mean normal jump, positive when the slave moves into the
    *    master (lac_newton.h); $G_i$ is the integral of the gap, not its
-   *    mean (NOTES.md item 4): $G_i / |T^i|$ is the mean. */
+   *    mean (chapter 06): $G_i / |T^i|$ is the mean. */
   lac_contact *c = NULL;
   check_status (lac_contact_build (m, LAC_PLANE_STRAIN, M, P, &Mf,
                                    LAC_EPSILON_DEFAULT, &c), "lac_contact_build");

@@ -77,7 +77,7 @@
  *
  * References: M. Abbas, G. Drouet, P. Hild, The Local Average Contact (LAC)
  * method, 2018 (Hypothesis 1, §4.4); code_aster's CREA_MAILLAGE /
- * DECOUPE_LAC, as summarized in the project's paper notes (NOTES.md), for
+ * DECOUPE_LAC, as summarized in chapter 03, for
  * the tet4, tet10 and hex8 templates and the rounds.
  */
 #ifndef LAC_MACROMESH_H

@@ -86,7 +86,7 @@
  * sub-cell maps of the six-hex cut interpolate the parent's map.
  *
  * References: code_aster, CREA_MAILLAGE / DECOUPE_LAC (as summarized in
- * the project's paper notes, NOTES.md).
+ * chapter 03).
  */
 #include "contact/lac_refine.h"
 

@@ -14,7 +14,7 @@
  * mesh is borrowed and left unchanged.
  *
  * References: code_aster's CREA_MAILLAGE / DECOUPE_LAC, as summarized in
- * the project's paper notes (NOTES.md).
+ * chapter 03.
  */
 #ifndef LAC_REFINE_H
 #define LAC_REFINE_H

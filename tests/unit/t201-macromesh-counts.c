@@ -5,7 +5,7 @@
  *   tet10 +5 nodes (centroid, 3 centroid-vertex midpoints, 1 centroid-apex
  *         midpoint), 1 -> 3 tet10: +2 cells, face -> 3 tri6, 4 interior nodes
  *   hex8  +1 node (face centre), 1 -> 5 pyr5: +4 cells, face -> 4 tri3.
- *         (NOTES.md counts faces and edges as gmsh does: 8 nodes/19 cells
+ *         (chapter 03 counts faces and edges as gmsh does: 8 nodes/19 cells
  *         -> 9/26 = 5 pyramids + 5 old faces + 4 triangles + 12 edges.)
  *   hex8 SIX  +8 nodes, 1 -> 6 hex8: +5 cells, face -> 5 quad4, 4 interior
  *   hex20 +28 nodes (8 vertices, 20 new edge mid-nodes), 1 -> 6 hex20,
