@@ -235,6 +235,7 @@ record_step (lac_run_nl *nl, size_t j, int dim, double sec)
     q->um[k] = s->U[nl->monitor * (size_t) dim + (size_t) k];
   q->iters = h->iters;
   q->cuts = h->cuts;
+  q->substeps = h->substeps;
   q->residual = h->residual;
   q->k = h->k;
   q->nactive = h->nactive;
@@ -250,15 +251,18 @@ report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
              char *progress, size_t size)
 {
   const lac_run_nl_step *q = &nl->step[j];
-  char mon[80] = "";
+  char mon[80] = "", cut[80] = "";
   if (nl->monitor != SIZE_MAX)
     snprintf (mon, sizeof mon, ", %s %s = %.4f", sc->steps.monitor,
               dim == 2 ? "u_y" : "u_z", q->um[dim - 1]);
+  if (q->cuts)
+    snprintf (cut, sizeof cut, " (step cut %d time%s: %d sub-steps)",
+              q->cuts, q->cuts == 1 ? "" : "s", q->substeps);
   snprintf (progress, size, "step %zu/%zu: t = %.4f (imposed %.3f), %d "
             "Newton iteration%s%s, residual %.1e, %zu/%zu active%s "
             "(%.1f s)", j + 1, nl->nfactor, q->t, q->imposed, q->iters,
-            q->iters == 1 ? "" : "s", q->cuts ? " (step cut)" : "",
-            q->residual, q->nactive, q->k, mon, q->seconds);
+            q->iters == 1 ? "" : "s", cut, q->residual, q->nactive, q->k,
+            mon, q->seconds);
 }
 
 int

@@ -24,6 +24,7 @@
 #include "run/lac_run_material.h"
 #include "run/lac_run_setup.h"
 #include "run/lac_run_system.h"
+#include "solve/lac_loadstep.h"
 #include "solve/lac_nonlinear.h"
 
 /* One converged load step, as written to the curve. */
@@ -31,7 +32,8 @@ typedef struct lac_run_nl_step
 {
   double t, imposed;    /* load factor, t * the reference imposed value   */
   double um[3];         /* displacement of the monitor node               */
-  int iters, cuts;
+  int iters, cuts;       /* Newton iterations, sub-steps cut              */
+  int substeps;         /* sub-steps that converged (1: the step whole)  */
   double residual;
   size_t k, nactive;
   double force;         /* sum of lambda |T^m cap Gamma_C| (<= 0)          */

@@ -172,7 +172,7 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   int dim = m->dim;
   double umax = 0, vmax = 0;
   char types[128];
-  int itmax = 0, status;
+  int itmax = 0, ncut = 0, status;
   lac_run_cell_types (m, types, sizeof types);
   for (size_t a = 0; a < m->nnodes; a++)
     {
@@ -184,7 +184,10 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       vmax = fmax (vmax, r->vm[a]);
     }
   for (size_t j = 0; j < nl->nfactor; j++)
-    itmax = nl->step[j].iters > itmax ? nl->step[j].iters : itmax;
+    {
+      itmax = nl->step[j].iters > itmax ? nl->step[j].iters : itmax;
+      ncut += nl->step[j].cuts > 0;
+    }
   if ((status = lac_summary_add (sum, "title", "%s", in->sc->scene.title))
       || (status = lac_summary_add (sum, "model", "%s",
                                         lac_model_name (in->model)))
@@ -199,6 +202,7 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
                                         s->niters))
       || (status = lac_summary_add (sum, "max_iterations_per_step", "%d",
                                         itmax))
+      || (status = lac_summary_add (sum, "cut_steps", "%d", ncut))
       || (status = lac_summary_add (sum, "max_u", "%.10e", umax))
       || (status = lac_summary_add (sum, "max_von_mises", "%.10e", vmax)))
     return status;

@@ -3,9 +3,9 @@
  *
  * See lac_nonlinear.h for the algorithm.  The file follows it: set-up
  * (fixed dofs, the pattern of K_T), the contact data on the current
- * coordinates, the statuses, the residual, one solve (the strategy's
- * frozen one, then the consistent step), and the step driver with its
- * halvings.
+ * coordinates, the statuses, the residual with the line search, one
+ * solve (the strategy's frozen one, then the consistent step).  The load
+ * steps and their cuts: lac_loadstep.c.
  */
 #include "solve/lac_nonlinear.h"
 
@@ -19,7 +19,9 @@
 #include "solve/lac_strategy.h"
 #include "base/lac_status.h"
 
-#define HALVINGS 5        /* corrections halved when a cell turns inside out */
+#define LS_HALVINGS 4     /* line search: a step halved at most this often   */
+#define DIVERGED 1e3      /* a residual this much above the best of the step:
+                             no convergence                                 */
 #define ETA_FACTOR 1e-2  /* accuracy of the consistent step: this times    */
 #define ETA_MAX 1e-3      /*   the residual of step 4, within these bounds  */
 #define ETA_MIN 1e-12
@@ -34,7 +36,7 @@ lac_nl_opts_init (lac_nl_opts *o)
   o->maxit = 25;
   o->tol = 1e-8;
   o->rho = 0;
-  o->max_cuts = 4;
+  o->max_cuts = 6;
   lac_pairing_opts_init (&o->popts);
   o->popts.degree_nonaffine = 8;   /* see lac_nonlinear.h */
 }
@@ -64,6 +66,8 @@ lac_nl_free (lac_nl *s)
   lac_free (s->klin);
   lac_free (s->kgap);
   lac_free (s->lam_lin);
+  lac_free (s->lam_step);
+  lac_free (s->dU_last);
   lac_free (s->r);
   lac_free (s->Fint);
   lac_free (s->dU);
@@ -128,7 +132,7 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   if (!(s->opts.tol > 0))
     s->opts.tol = 1e-8;
   if (s->opts.max_cuts == 0)
-    s->opts.max_cuts = 4;
+    s->opts.max_cuts = 6;
   if (!(s->prob.epsilon > 0))
     s->prob.epsilon = LAC_EPSILON_DEFAULT;
   s->opts.popts.allow_empty = 1;
@@ -148,11 +152,13 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->lambda = lac_calloc (nm, sizeof *s->lambda);
   s->lambda_save = lac_calloc (nm, sizeof *s->lambda_save);
   s->lam_lin = lac_calloc (nm, sizeof *s->lam_lin);
+  s->lam_step = lac_calloc (nm, sizeof *s->lam_step);
+  s->dU_last = lac_calloc (n, sizeof *s->dU_last);
   s->active = lac_calloc (nm, 1);
   s->active_save = lac_calloc (nm, 1);
   if (!s->U || !s->x || !s->fixed || !s->g1 || !s->g0 || !s->r || !s->Fint
       || !s->dU || !s->U_save || !s->lambda || !s->lambda_save || !s->active
-      || !s->active_save || !s->lam_lin)
+      || !s->active_save || !s->lam_lin || !s->lam_step || !s->dU_last)
     {
       lac_nl_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace for %zu dofs", n);
@@ -185,22 +191,6 @@ push_iter (lac_nl *s, const lac_nl_iter *r)
       s->capiters = cap;
     }
   s->iters[s->niters++] = *r;
-  return LAC_SUCCESS;
-}
-
-static int
-push_step (lac_nl *s, const lac_nl_step *r)
-{
-  if (s->nsteps == s->capsteps)
-    {
-      size_t cap = s->capsteps ? 2 * s->capsteps : 32;
-      lac_nl_step *h = lac_realloc (s->steps, cap * sizeof *h);
-      if (!h)
-        LAC_ERROR (LAC_ENOMEM, "step records");
-      s->steps = h;
-      s->capsteps = cap;
-    }
-  s->steps[s->nsteps++] = *r;
   return LAC_SUCCESS;
 }
 
@@ -267,31 +257,15 @@ contact_update (lac_nl *s)
   return status;
 }
 
-/* Step 1, with the halvings of a correction that turned a cell inside
- * out (U -= dU/2, dU /= 2). */
+/* Step 1: F_int and K_T at U. */
 static int
 assemble (lac_nl *s)
 {
-  int status = LAC_ESING;
-  for (int h = 0; h <= HALVINGS && status == LAC_ESING; h++)
-    {
-      if (h > 0)
-        {
-          if (s->it == 0)
-            break;                  /* nothing to halve: a bad start */
-          for (size_t j = 0; j < s->ndof; j++)
-            {
-              s->dU[j] *= 0.5;
-              s->U[j] -= s->dU[j];
-            }
-          lac_error_clear ();
-        }
-      double t0 = lac_seconds ();
-      memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
-      status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, s->U,
+  double t0 = lac_seconds ();
+  memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
+  int status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, s->U,
                                            s->Fint, s->pat);
-      s->time_assemble += lac_seconds () - t0;
-    }
+  s->time_assemble += lac_seconds () - t0;
   return status;
 }
 
@@ -617,7 +591,9 @@ solve (lac_nl *s, lac_nl_iter *rec)
       nu += s->U[j] * s->U[j];
       ndu += s->dU[j] * s->dU[j];
     }
+  memcpy (s->dU_last, s->dU, s->ndof * sizeof *s->dU_last);
   s->last_du = nu > 0 ? sqrt (ndu / nu) : sqrt (ndu);
+  s->alpha = 1;
   return LAC_SUCCESS;
 }
 
@@ -633,12 +609,62 @@ lac_nl_begin (lac_nl *s, double t)
   s->converged = 0;
   s->last_du = 0;
   s->fref = 0;
+  s->alpha = 1;
+  s->merit = s->merit_best = HUGE_VAL;
+  s->settled = 0;
   if (s->strategy && lac_strategy_fallback (s->strategy))
     {
       lac_strategy_free (s->strategy);   /* try Cholesky again in every */
       s->strategy = NULL;                /* step after a fallback       */
     }
   return LAC_SUCCESS;
+}
+
+/* Back to U_old + alpha dU, lambda_old + alpha (lambda - lambda_old), with
+ * alpha halved (the last solve gave U_old + 2 alpha dU). */
+static void
+backtrack (lac_nl *s)
+{
+  double a = s->alpha;
+  s->alpha = 0.5 * a;
+  for (size_t j = 0; j < s->ndof; j++)
+    s->U[j] -= s->alpha * s->dU_last[j];
+  for (size_t m = 0; m < s->nmacro; m++)
+    s->lambda[m] = s->lam_step[m] + 0.5 * (s->lambda[m] - s->lam_step[m]);
+  lac_error_clear ();
+}
+
+/* Steps 1, 2 and the residual of step 4 at the current U, with the line
+ * search: a step that turns a cell inside out, or (from the second solve
+ * of a step on, after a solve on settled statuses: none changed) does not
+ * lower max(residual, gap residual), is halved, up to LS_HALVINGS times;
+ * after that it is taken as it is (or its error returned). */
+static int
+evaluate (lac_nl *s, lac_nl_iter *rec)
+{
+  for (;;)
+    {
+      int status = assemble (s);
+      if (!status && s->prob.M)
+        status = contact_update (s);
+      double merit = HUGE_VAL;
+      if (!status)
+        {
+          rec->residual = residual (s);
+          merit = fmax (rec->residual, gap_residual (s));
+        }
+      int worse = (status == LAC_ESING && s->it >= 1)      /* inside out */
+                  || (!status && s->it >= 2 && s->settled /* no better */
+                      && !(merit < s->merit));
+      if (!worse || s->alpha <= 1.0 / (1 << LS_HALVINGS))
+        {
+          if (!status)
+            s->merit = merit;
+          return status;
+        }
+      backtrack (s);                    /* U_old + alpha dU, alpha /= 2 */
+      rec->backtracks++;
+    }
 }
 
 int
@@ -649,19 +675,17 @@ lac_nl_iterate (lac_nl *s)
   int status;
   if (s->converged)
     return LAC_SUCCESS;
-  /* Steps 1-2 */
-  if ((status = assemble (s)))
+  /* Steps 1-2 and step 4's residual (the lambda of the last solve, the
+   * new C) */
+  if ((status = evaluate (s, &rec)))
     return status;
-  if (s->prob.M && (status = contact_update (s)))
-    return status;
-  /* Step 4's residual uses the lambda of the last solve and the new C */
-  rec.residual = residual (s);
   memcpy (s->lam_lin, s->lambda, s->nmacro * sizeof *s->lam_lin);
   /* Step 3 on the current mean gaps (the Dirichlet increments are moved
    * into G by solve() only) */
   rec.nchanged = update_status (s, &pen);
   rec.step = (int) s->nsteps + 1;
   rec.iter = s->it + 1;
+  rec.t = s->t;
   rec.k = s->contact ? s->contact->k : 0;
   rec.nactive = lac_nl_nactive (s);
   rec.max_penetration = pen;
@@ -672,93 +696,26 @@ lac_nl_iterate (lac_nl *s)
       s->converged = 1;                 /* nothing solved, no record */
       return LAC_SUCCESS;
     }
-  if (s->it >= s->opts.maxit)
+  if (s->it >= 2)
+    s->merit_best = fmin (s->merit_best, s->merit);
+  if (s->it >= s->opts.maxit || (s->it >= 4 && s->merit > DIVERGED
+                                                          * s->merit_best))
     LAC_ERROR (LAC_EMAXITER, "load factor %g: no convergence in %d Newton "
                "iterations (residual %.3e, %zu statuses changed)", s->t,
-               s->opts.maxit, rec.residual, rec.nchanged);
+               s->it, rec.residual, rec.nchanged);
   /* Step 5: an inexact Newton step, to a fraction of the residual (the
    * first of a step carries the new Dirichlet increments: ETA_MAX) */
   s->eta = s->it == 0 ? ETA_MAX
            : fmax (ETA_MIN, fmin (ETA_MAX, ETA_FACTOR * rec.residual));
+  memcpy (s->lam_step, s->lambda, s->nmacro * sizeof *s->lam_step);
+  s->settled = rec.nchanged == 0;
+  rec.start = lac_seconds ();
   if ((status = solve (s, &rec)))
     return status;
   s->first = 0;
   s->it++;
   rec.du = s->last_du;
+  rec.seconds = lac_seconds () - rec.start;
   status = push_iter (s, &rec);
   return status ? status : LAC_CONTINUE;
-}
-
-/* The Newton loop to load factor t, no halving. */
-static int
-solve_to (lac_nl *s, double t)
-{
-  int status = lac_nl_begin (s, t);
-  while (status == LAC_SUCCESS || status == LAC_CONTINUE)
-    {
-      status = lac_nl_iterate (s);
-      if (status == LAC_SUCCESS)
-        break;
-    }
-  return status;
-}
-
-static void
-save_state (lac_nl *s)
-{
-  memcpy (s->U_save, s->U, s->ndof * sizeof *s->U);
-  memcpy (s->lambda_save, s->lambda, s->nmacro * sizeof *s->lambda);
-  memcpy (s->active_save, s->active, s->nmacro);
-}
-
-static void
-restore_state (lac_nl *s)
-{
-  memcpy (s->U, s->U_save, s->ndof * sizeof *s->U);
-  memcpy (s->lambda, s->lambda_save, s->nmacro * sizeof *s->lambda);
-  memcpy (s->active, s->active_save, s->nmacro);
-}
-
-/* lac_nl_step_to: the step from the last converged load factor to t, cut
- * into halves (recursively, opts.max_cuts halvings in all) when Newton
- * fails (no convergence, or a cell inside out).  Appends a step record. */
-int
-lac_nl_step_to (lac_nl *s, double t)
-{
-  lac_nl_step rec = { 0 };
-  double target[64];
-  int ntarget = 0, cuts = 0, status = LAC_SUCCESS, iters = 0;
-  target[ntarget++] = t;
-  while (ntarget > 0)
-    {
-      double tt = target[ntarget - 1];
-      save_state (s);
-      int first = s->first;
-      status = solve_to (s, tt);
-      iters += s->it;
-      if (status == LAC_SUCCESS)
-        {
-          s->t_prev = tt;
-          ntarget--;
-          continue;
-        }
-      if ((status != LAC_EMAXITER && status != LAC_ESING)
-          || s->opts.max_cuts < 0 || cuts >= s->opts.max_cuts
-          || ntarget >= 64)
-        break;
-      restore_state (s);
-      s->first = first;
-      lac_error_clear ();
-      target[ntarget++] = 0.5 * (s->t_prev + tt);     /* a half step first */
-      cuts++;
-    }
-  rec.t = status == LAC_SUCCESS ? t : s->t_prev;
-  rec.iters = iters;
-  rec.cuts = cuts;
-  rec.residual = s->residual;
-  rec.k = s->contact ? s->contact->k : 0;
-  rec.nactive = lac_nl_nactive (s);
-  rec.status = status;
-  int st2 = push_step (s, &rec);
-  return status ? status : st2;
 }

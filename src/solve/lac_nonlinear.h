@@ -66,20 +66,26 @@
  * E_ref the smallest Young modulus: rho_m d_m is then a pressure, the
  * stiffness of a layer of depth h_m pushed in by the mean gap d_m / |T^m|.
  *
- * Robustness: if an update turns a cell inside out (det F <= 0 at a
- * quadrature point), the correction is halved (up to 5 times); if a step
- * does not converge in maxit iterations, it is restarted from the state
- * of its beginning as two half steps (up to opts.max_cuts halvings).
+ * Line search: from the second solve of a step on, a Newton step that
+ * turns a cell inside out (det F <= 0 at a quadrature point), or that was
+ * made on settled statuses (none changed) and does not lower
+ * max(residual, gap residual), is halved (U and lambda back half way),
+ * up to 4 times.  A step whose residual rises 1000 times above its best
+ * is a failure like opts.maxit iterations without convergence; the load
+ * step driver (solve/lac_loadstep.h) then cuts the load step into
+ * smaller sub-steps, and lets them grow back when they converge fast.
  *
  * Usage (INITIALIZE / ITERATE / TEST; the loop over steps and any
  * printing belong to the caller):
  *   lac_nl *s = lac_nl_alloc (&problem, &opts);
  *   for (each load factor t)
- *     { status = lac_nl_step_to (s, t);   (the Newton loop of one step)
+ *     { status = lac_nl_step_to (s, t);   (solve/lac_loadstep.h)
  *       report s->steps[s->nsteps - 1], s->U, s->lambda ... }
  *   lac_nl_free (s);
- * or, iteration by iteration: lac_nl_begin (s, t); while ((st =
- * lac_nl_iterate (s)) == LAC_CONTINUE) { report s->iters[s->niters-1] }.
+ * or iteration by iteration with lac_nl_step_begin / lac_nl_step_iterate
+ * (solve/lac_loadstep.h), or, for one Newton loop to t without cuts,
+ * lac_nl_begin (s, t); while ((st = lac_nl_iterate (s)) == LAC_CONTINUE)
+ * { report s->iters[s->niters-1] }.
  *
  * Ownership: the problem's data are borrowed and must outlive the
  * workspace; the workspace owns U, the multipliers, the statuses, the
@@ -130,7 +136,8 @@ typedef struct lac_nl_opts
   int maxit;             /* Newton iterations per step (0: 25)              */
   double tol;            /* relative tolerance of step 4 (0: 1e-8)          */
   double rho;            /* > 0: rho_m = rho for all m; 0: the default above */
-  int max_cuts;          /* step halvings allowed (0: 4; < 0: none)         */
+  int max_cuts;          /* a sub-step is at least 2^-max_cuts of its load
+                            step (0: 6; < 0: no cut)                       */
   int frozen;            /* 1: the frozen-geometry tangent (the generalized
                             Newton method of [LAC §4.5]); 0: the consistent
                             one (solve/lac_consistent.h)                   */
@@ -162,19 +169,42 @@ typedef struct lac_nl_iter
   double max_penetration;/* max over active m of -d_m / |T^m cap Gamma_C|  */
   int krylov;            /* GMRES iterations of the consistent step          */
   double krylov_residual;/* its relative residual at the end                */
+  int backtracks;        /* line search: halvings of the last step before
+                            this iteration's residual                      */
+  double t;              /* load factor of the (sub-)step                   */
+  int cuts;              /* cuts of the load step before this iteration     */
+  double start, seconds; /* lac_seconds () at the solve, and its duration  */
 } lac_nl_iter;
 
-/* One load step (converged or not). */
+/* One load step (converged or not; solve/lac_loadstep.h). */
 typedef struct lac_nl_step
 {
   double t;              /* load factor reached                             */
   int iters;             /* Newton iterations (solves), all sub-steps        */
-  int cuts;              /* halvings needed                                 */
+  int cuts;              /* sub-steps cut (failed and halved)               */
+  int substeps;          /* sub-steps that converged                        */
+  double dt_min;         /* the shortest of them (load factor)              */
+  int grown;             /* sub-steps longer than the one before them       */
+  double seconds;        /* wall time of the step, and in it:               */
+  double time_assemble, time_pairing, time_solve;
   double residual;       /* final relative residual (the check that ended
                             the step)                                      */
   size_t k, nactive;     /* multipliers and active ones at the end          */
   int status;            /* LAC_SUCCESS or the error                        */
 } lac_nl_step;
+
+/* The load step under way (solve/lac_loadstep.h). */
+typedef struct lac_nl_loadstep
+{
+  int in_step, in_sub;   /* a step, a sub-step under way                    */
+  double t0, t;          /* the step: from t0 to t                          */
+  double dt;             /* the sub-step length in use                      */
+  int iters, cuts, substeps, grown;
+  double dt_min, dt_last;  /* sub-steps converged: shortest, last         */
+  int first_save;        /* s->first at the sub-step's beginning            */
+  double start;          /* lac_seconds () at the step's beginning          */
+  double time0[3];       /* time_assemble, _pairing, _solve then            */
+} lac_nl_loadstep;
 
 typedef struct lac_nl
 {
@@ -191,6 +221,10 @@ typedef struct lac_nl
   double *x;             /* owned, nnodes*dim: current coordinates X + U    */
   double t, t_prev;      /* load factors: current step, last converged      */
   int converged;         /* the current step converged                      */
+  lac_nl_loadstep ls;    /* the load step under way                         */
+  double dt_next;        /* > 0: the sub-step length to start the next load
+                            step with (the last one was cut)               */
+  char cut_msg[256];     /* why the last sub-step was cut ("" if none)      */
   double residual;       /* relative residual at the last evaluation        */
   size_t nsteps, capsteps;
   lac_nl_step *steps;    /* owned, nsteps records                           */
@@ -223,6 +257,12 @@ typedef struct lac_nl
   double *kgap;          /* owned, kcap: mean gaps d(U)                   */
   size_t kcap;
   double *lam_lin;       /* owned, nmacro: lambda before the statuses     */
+  double *lam_step;      /* owned, nmacro: lambda before the last solve    */
+  double *dU_last;       /* owned, ndof: the last Newton step              */
+  double alpha;          /* line search: the fraction of it taken          */
+  double merit;          /* max(residual, gap residual) at the last evaluation */
+  double merit_best;     /* the smallest after the second iteration        */
+  int settled;           /* the last solve changed no status              */
   lac_contact_system sys;    /* the frozen system of the last solve       */
   lac_contact_tangent *tangent; /* owned: H and B of the last solve       */
   double eta;            /* accuracy asked of the consistent step          */
@@ -246,9 +286,6 @@ int lac_nl_begin (lac_nl *s, double t);
  * converged (nothing solved), LAC_CONTINUE after a solve, an error status
  * otherwise (LAC_EMAXITER after opts.maxit solves). */
 int lac_nl_iterate (lac_nl *s);
-/* A whole step to load factor t, with the halvings of the header; appends
- * a step record. */
-int lac_nl_step_to (lac_nl *s, double t);
 
 /* query */
 size_t lac_nl_nactive (const lac_nl *s);

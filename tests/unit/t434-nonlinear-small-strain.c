@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
+#include "solve/lac_loadstep.h"
 #include "solve/lac_nonlinear.h"
 #include "solve/lac_newton.h"
 #include "base/lac_status.h"
