@@ -10,6 +10,9 @@
 #     (load factor, imposed displacement, ring_mid u_z, contact force) of
 #     ring_curve.csv against tests/golden/ring-hex8-ci-curve.out (numcmp;
 #     the iteration counts are left out of both and only bounded);
+#   - the progress: one line per Newton iteration (as many as the summary's
+#     newton_iterations, each with its residual, active count and time)
+#     and one per load step with its labelled times;
 #   - the effects line lists large deformation, neo-Hookean material,
 #     re-pairing every iteration and load steps, and a linear contact
 #     scene still reports small strain and one active-set solve;
@@ -48,9 +51,17 @@ ring_golden () {
 
 # 1. the CI run
 if "$LAC" run chapters/08-experiments/ring.scene --set element=hex8 \
-     --set steps.n=6 --set steps.vtu_every=2 --out "$C/run" --quiet \
+     --set steps.n=6 --set steps.vtu_every=2 --out "$C/run" \
      > "$C/run.out" 2> "$C/run.err"; then
   ring_ok ring-run
+  nit=$(sed -n 's/^newton_iterations = //p' "$C/run.out")
+  nline=$(grep -c '^lac: \[5/7\] solve  *step [0-9]*/7 iteration [0-9]*: residual [0-9.e+-]*, [0-9]* status\(es\)\{0,1\} changed, [0-9]*/[0-9]* active.*, [0-9.]* s' "$C/run.err")
+  nstep=$(grep -c '^lac: \[5/7\] solve  *step [0-9]*/7: t = .*; assembly [0-9.]* s, pairing [0-9.]* s, factorization [0-9.]* s, solves [0-9.]* s, step [0-9.]* s' "$C/run.err")
+  if [ -n "$nit" ] && [ "$nline" = "$nit" ] && [ "$nstep" = 7 ]; then
+    ring_ok ring-progress
+  else
+    ring_fail ring-progress "$nline iteration lines for $nit iterations, $nstep step lines for 7 steps"
+  fi
   grep -v -e '^newton_iterations' -e '^max_iterations_per_step' "$C/run.out" \
     > "$C/summary.out"
   ring_golden tests/golden/ring-hex8-ci.out "$C/summary.out" ring-summary \

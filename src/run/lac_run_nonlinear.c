@@ -244,6 +244,10 @@ record_step (lac_run_nl *nl, size_t j, int dim, double sec)
   for (size_t m = 0; m < s->nmacro; m++)
     q->lambda_min = fmin (q->lambda_min, s->lambda[m]);
   q->seconds = sec;
+  q->time_assemble = h->time_assemble;
+  q->time_pairing = h->time_pairing;
+  q->time_factor = h->time_factor;
+  q->time_solve = h->time_solve;
 }
 
 static void
@@ -259,34 +263,41 @@ report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
     snprintf (cut, sizeof cut, " (step cut %d time%s: %d sub-steps)",
               q->cuts, q->cuts == 1 ? "" : "s", q->substeps);
   snprintf (progress, size, "step %zu/%zu: t = %.4f (imposed %.3f), %d "
-            "Newton iteration%s%s, residual %.1e, %zu/%zu active%s "
-            "(%.1f s)", j + 1, nl->nfactor, q->t, q->imposed, q->iters,
-            q->iters == 1 ? "" : "s", cut, q->residual, q->nactive, q->k,
-            mon, q->seconds);
+            "Newton iteration%s%s, residual %.1e, %zu/%zu active%s; "
+            "assembly %.1f s, pairing %.1f s, factorization %.1f s, solves "
+            "%.1f s, step %.1f s", j + 1, nl->nfactor, q->t, q->imposed,
+            q->iters, q->iters == 1 ? "" : "s", cut, q->residual, q->nactive,
+            q->k, mon, q->time_assemble, q->time_pairing, q->time_factor,
+            q->time_solve - q->time_factor, q->seconds);
 }
 
-int
-lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
-                  const lac_run_material *mat, const lac_run_setup *setup,
-                  const lac_run_system *sys, lac_run_nl *nl, double *u,
-                  char *progress, size_t size)
+/* The line of one Newton iteration. */
+static void
+report_iter (const lac_run_nl *nl, size_t j, char *progress, size_t size)
 {
-  size_t ndof = (size_t) m->dim * m->nnodes, j;
-  double t0;
+  const lac_nl *s = nl->s;
+  const lac_nl_iter *r = &s->iters[s->niters - 1];
+  char cut[160] = "", gm[32] = "";
+  if (r->cuts > nl->cuts_seen)
+    snprintf (cut, sizeof cut, "; sub-step cut (%.100s), now to t = %.4f",
+              s->cut_msg, r->t);
+  if (r->krylov > 0)
+    snprintf (gm, sizeof gm, ", %d GMRES", r->krylov);
+  snprintf (progress, size, "step %zu/%zu iteration %d: residual %.1e, %zu "
+            "status%s changed, %zu/%zu active%s, %.2f s%s", j + 1,
+            nl->nfactor, s->ls.iters, r->residual, r->nchanged,
+            r->nchanged == 1 ? "" : "es", r->nactive, r->k, gm, r->seconds,
+            cut);
+}
+
+/* The step converged: its records, its displacement if it gets a file. */
+static int
+step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
+           lac_run_nl *nl, size_t j, char *progress, size_t size)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes;
   int status;
-  if (!nl->s && (status = nl_setup (sc, m, mat, setup, sys, nl)))
-    return status;
-  j = nl->next;
-  t0 = lac_seconds ();
-  if ((status = lac_nl_step_to (nl->s, nl->factor[j])))
-    {
-      char msg[600];
-      snprintf (msg, sizeof msg, "%s", lac_error_message ());
-      return lac_error_set (status, sc->path, "load step %zu of %zu "
-                            "(load factor %g): %s", j + 1, nl->nfactor,
-                            nl->factor[j], msg);
-    }
-  record_step (nl, j, m->dim, lac_seconds () - t0);
+  record_step (nl, j, m->dim, nl->s->steps[nl->s->nsteps - 1].seconds);
   if ((status = record_mults (nl, setup->macro, (int) j + 1)))
     return status;
   if (j + 1 < nl->nfactor
@@ -297,6 +308,45 @@ lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
               ndof * sizeof *nl->ukept);
     }
   report_step (sc, nl, j, m->dim, progress, size);
+  return LAC_SUCCESS;
+}
+
+int
+lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
+                  const lac_run_material *mat, const lac_run_setup *setup,
+                  const lac_run_system *sys, lac_run_nl *nl, double *u,
+                  char *progress, size_t size)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes, j;
+  int status;
+  if (!nl->s && (status = nl_setup (sc, m, mat, setup, sys, nl)))
+    return status;
+  j = nl->next;
+  if (!nl->in_step)
+    {
+      if ((status = lac_nl_step_begin (nl->s, nl->factor[j])))
+        return status;
+      nl->in_step = 1;
+      nl->cuts_seen = 0;
+    }
+  status = lac_nl_step_iterate (nl->s);
+  if (status == LAC_CONTINUE)
+    {
+      report_iter (nl, j, progress, size);
+      nl->cuts_seen = nl->s->iters[nl->s->niters - 1].cuts;
+      return LAC_CONTINUE;
+    }
+  nl->in_step = 0;
+  if (status)
+    {
+      char msg[600];
+      snprintf (msg, sizeof msg, "%s", lac_error_message ());
+      return lac_error_set (status, sc->path, "load step %zu of %zu "
+                            "(load factor %g): %s", j + 1, nl->nfactor,
+                            nl->factor[j], msg);
+    }
+  if ((status = step_done (sc, m, setup, nl, j, progress, size)))
+    return status;
   if (++nl->next < nl->nfactor)
     return LAC_CONTINUE;
   memcpy (u, nl->s->U, ndof * sizeof *u);

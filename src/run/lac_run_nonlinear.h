@@ -12,7 +12,8 @@
  *      that get a step_NNN.vtu.
  * The load factors: [steps] n equal steps to 1, after a first step to
  * `start` if given; one call per step (LAC_CONTINUE until the last), each
- * the generalized Newton loop of [LAC Alg. 1] (solve/lac_nonlinear.h).
+ * the generalized Newton loop of [LAC Alg. 1] (solve/lac_nonlinear.h,
+ * solve/lac_loadstep.h).
  * Loads of [load] sections are dead loads (given on the reference
  * configuration), times t.
  */
@@ -38,7 +39,8 @@ typedef struct lac_run_nl_step
   size_t k, nactive;
   double force;         /* sum of lambda |T^m cap Gamma_C| (<= 0)          */
   double lambda_min;    /* the largest pressure (most negative lambda)     */
-  double seconds;
+  double seconds;       /* wall time of the step, and in it:              */
+  double time_assemble, time_pairing, time_factor, time_solve;
 } lac_run_nl_step;
 
 /* Every multiplier at the end of a step (contact_steps.csv). */
@@ -60,6 +62,8 @@ typedef struct lac_run_nl
   lac_nl *s;                  /* owned                                    */
   double *factor;             /* owned, nfactor load factors              */
   size_t nfactor, next;
+  int in_step;                /* a load step is under way                 */
+  int cuts_seen;              /* its cuts already reported                */
   size_t monitor;             /* node, SIZE_MAX: none                     */
   double imposed_ref;         /* first non-zero ramped value (t = 1)      */
   lac_run_nl_step *step;      /* owned, nfactor                           */
@@ -70,8 +74,13 @@ typedef struct lac_run_nl
   double *ukept;              /* owned, nkept * ndof displacements        */
 } lac_run_nl;
 
-/* One load step per call: LAC_CONTINUE until the last, then LAC_SUCCESS
- * with u (ndof, the caller's) the final displacement. */
+/* One Newton iteration per call (solve/lac_loadstep.h), with its line in
+ * progress (iteration, residual, statuses changed, active count, GMRES
+ * iterations, time; a cut sub-step said once), and at the end of a load
+ * step the step's line (load factor, iterations, cuts, residual, active
+ * count, the monitor, and the times of assembly, pairing, factorization,
+ * solves and the whole step): LAC_CONTINUE until the last step, then
+ * LAC_SUCCESS with u (ndof, the caller's) the final displacement. */
 int lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
                       const lac_run_material *mat, const lac_run_setup *setup,
                       const lac_run_system *sys, lac_run_nl *nl, double *u,

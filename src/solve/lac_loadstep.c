@@ -62,6 +62,7 @@ lac_nl_step_begin (lac_nl *s, double t)
   ls->time0[0] = s->time_assemble;
   ls->time0[1] = s->time_pairing;
   ls->time0[2] = s->time_solve;
+  ls->time0[3] = s->time_factor;
   s->cut_msg[0] = '\0';
   return LAC_SUCCESS;
 }
@@ -137,6 +138,7 @@ finish (lac_nl *s, int status)
   rec.time_assemble = s->time_assemble - ls->time0[0];
   rec.time_pairing = s->time_pairing - ls->time0[1];
   rec.time_solve = s->time_solve - ls->time0[2];
+  rec.time_factor = s->time_factor - ls->time0[3];
   s->dt_next = ls->cuts ? ls->dt : 0;
   ls->in_step = 0;
   int st2 = push_step (s, &rec);

@@ -675,6 +675,7 @@ lac_nl_iterate (lac_nl *s)
   int status;
   if (s->converged)
     return LAC_SUCCESS;
+  rec.start = lac_seconds ();
   /* Steps 1-2 and step 4's residual (the lambda of the last solve, the
    * new C) */
   if ((status = evaluate (s, &rec)))
@@ -709,7 +710,6 @@ lac_nl_iterate (lac_nl *s)
            : fmax (ETA_MIN, fmin (ETA_MAX, ETA_FACTOR * rec.residual));
   memcpy (s->lam_step, s->lambda, s->nmacro * sizeof *s->lam_step);
   s->settled = rec.nchanged == 0;
-  rec.start = lac_seconds ();
   if ((status = solve (s, &rec)))
     return status;
   s->first = 0;

@@ -173,7 +173,8 @@ typedef struct lac_nl_iter
                             this iteration's residual                      */
   double t;              /* load factor of the (sub-)step                   */
   int cuts;              /* cuts of the load step before this iteration     */
-  double start, seconds; /* lac_seconds () at the solve, and its duration  */
+  double start, seconds; /* lac_seconds () at the iteration's start, and its
+                            duration (assembly, pairing, solve)            */
 } lac_nl_iter;
 
 /* One load step (converged or not; solve/lac_loadstep.h). */
@@ -187,6 +188,7 @@ typedef struct lac_nl_step
   int grown;             /* sub-steps longer than the one before them       */
   double seconds;        /* wall time of the step, and in it:               */
   double time_assemble, time_pairing, time_solve;
+  double time_factor;    /*   the factorizations (part of time_solve)       */
   double residual;       /* final relative residual (the check that ended
                             the step)                                      */
   size_t k, nactive;     /* multipliers and active ones at the end          */
@@ -203,7 +205,7 @@ typedef struct lac_nl_loadstep
   double dt_min, dt_last;  /* sub-steps converged: shortest, last         */
   int first_save;        /* s->first at the sub-step's beginning            */
   double start;          /* lac_seconds () at the step's beginning          */
-  double time0[3];       /* time_assemble, _pairing, _solve then            */
+  double time0[4];       /* time_assemble, _pairing, _solve, _factor then   */
 } lac_nl_loadstep;
 
 typedef struct lac_nl
