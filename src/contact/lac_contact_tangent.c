@@ -448,7 +448,8 @@ static int
 subfacet (const lac_mesh *mesh, lac_model model, const lac_macro *M,
           const lac_pairing *P, const lac_pairing_facets *master,
           const lac_obstacle *ob, size_t j, size_t i, double lam,
-          lac_contact_tangent *t, growth *gr, block *bk, lac_triplet *TB)
+          int wantB, lac_contact_tangent *t, growth *gr, block *bk,
+          lac_triplet *TB)
 {
   int dim = mesh->dim, status;
   size_t loc[NQ];
@@ -467,7 +468,7 @@ subfacet (const lac_mesh *mesh, lac_model model, const lac_macro *M,
       point_derivs (mesh, model, &pt, &d);
       point_add (&pt, &d, loc, lam, nl, bk);
     }
-  for (size_t l = 0; l < nl && !status; l++)
+  for (size_t l = 0; wantB && l < nl && !status; l++)
     if (bk->b[l] != 0)
       status = lac_triplet_add (TB, (size_t) bk->node[l / (size_t) dim]
                                 * (size_t) dim + l % (size_t) dim, i,
@@ -483,7 +484,7 @@ lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                            const lac_pairing_facets *master,
                            const lac_obstacle *obstacle,
                            const lac_contact *c, const double *lambda,
-                           lac_contact_tangent **out)
+                           const char *want, lac_contact_tangent **out)
 {
   size_t ndof = (size_t) mesh->dim * mesh->nnodes;
   int status = LAC_SUCCESS;
@@ -509,8 +510,9 @@ lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
   for (size_t i = 0; !status && i < c->k; i++)
     for (size_t j = M->ptr[c->macro[i]]; !status && j < M->ptr[c->macro[i]
                                                                  + 1]; j++)
-      status = subfacet (mesh, model, M, P, master, obstacle, j, i,
-                         lambda[i], t, &gr, &bk, TB);
+      if (!want || want[i] || lambda[i] != 0)
+        status = subfacet (mesh, model, M, P, master, obstacle, j, i,
+                           lambda[i], !want || want[i], t, &gr, &bk, TB);
   if (!status)
     {
       TB->ncol = c->k;

@@ -72,14 +72,16 @@ typedef struct lac_contact_tangent
  * P and the contact data c were built on; lac_contact_build's arguments),
  * with the multipliers lambda (c->k values, lambda[i] of multiplier i).
  * Master facets are given by `master`, or master is NULL and `obstacle`
- * is the rigid master.  LAC_EINVAL, LAC_ENOMEM, LAC_ESING (a degenerate
- * facet or a projection parallel to the master). */
+ * is the rigid master.  `want` (k flags, or NULL: all) says which columns
+ * of B are wanted (the active multipliers'); the others are left empty.
+ * LAC_EINVAL, LAC_ENOMEM, LAC_ESING (a degenerate facet or a projection
+ * parallel to the master). */
 int lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                                const lac_macro *M, const lac_pairing *P,
                                const lac_pairing_facets *master,
                                const lac_obstacle *obstacle,
                                const lac_contact *c, const double *lambda,
-                               lac_contact_tangent **out);
+                               const char *want, lac_contact_tangent **out);
 void lac_contact_tangent_free (lac_contact_tangent *t);    /* NULL allowed */
 
 /* y += H x (ndof vectors). */

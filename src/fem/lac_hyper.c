@@ -240,42 +240,65 @@ variation (const point *pt, int dim, int a, int i, int *idx, double *val)
 /* Ke += w dF : A : dF without the hoop term (3D, plane strain): dF^(a,i)
  * = e_i (x) grad N_a, so the block of nodes (a, b) is
  *   K_ab[i][k] = sum_JL dN_a,J A_iJkL dN_b,L,
- * first T_a[i][kL] = sum_J dN_a,J A_iJkL, then the blocks a <= b (the
- * lower part of a diagonal block is overwritten by the mirror of
- * cell_eval).  D is a constant at each call, so the loops unroll. */
-static inline void
-tangent_plain (const point *pt, int nen, const int D, const double *A,
-               double *Ke, double *T)
+ * first T_a[i][kL] = w sum_J dN_a,J A_iJkL (T row a D + i), then the
+ * blocks a <= b (the lower part of a diagonal block is overwritten by the
+ * mirror of cell_eval). */
+static void
+tangent_plain (const point *pt, int nen, int D, const double *A, double *Ke,
+               double *T)
 {
   int nc = nen * D;
   const double *dN = pt->mp.dNdx;
   for (int a = 0; a < nen; a++)
     for (int i = 0; i < D; i++)
-      {
-        double *Tr = T + (a * D + i) * 9;
-        for (int k = 0; k < D; k++)
+      for (int k = 0; k < D; k++)
+        for (int L = 0; L < D; L++)
+          {
+            double t = 0;
+            for (int J = 0; J < D; J++)
+              t += dN[a * D + J] * A[((i * 3 + J) * 3 + k) * 3 + L];
+            T[(a * D + i) * 9 + k * 3 + L] = pt->w * t;
+          }
+  for (int b = 0; b < nen; b++)
+    for (int r = 0; r < (b + 1) * D; r++)
+      for (int k = 0; k < D; k++)
+        {
+          double t = 0;
           for (int L = 0; L < D; L++)
-            {
-              double t = 0;
-              for (int J = 0; J < D; J++)
-                t += dN[a * D + J] * A[((i * 3 + J) * 3 + k) * 3 + L];
-              Tr[k * 3 + L] = pt->w * t;
-            }
-      }
+            t += T[r * 9 + k * 3 + L] * dN[b * D + L];
+          Ke[r * nc + b * D + k] += t;
+        }
+}
+
+/* The same in 3D with the loops over 3 written out (the assembly of a
+ * large-deformation run spends most of its time here). */
+static void
+tangent_3d (const point *pt, int nen, const double *A, double *Ke, double *T)
+{
+  int nc = nen * 3;
+  const double *dN = pt->mp.dNdx;
+  for (int a = 0; a < nen; a++)
+    {
+      double d0 = pt->w * dN[a * 3], d1 = pt->w * dN[a * 3 + 1],
+             d2 = pt->w * dN[a * 3 + 2];
+      for (int i = 0; i < 3; i++)
+        {
+          const double *A0 = A + (i * 3) * 9, *A1 = A0 + 9, *A2 = A0 + 18;
+          double *Tr = T + (a * 3 + i) * 9;
+          for (int kL = 0; kL < 9; kL++)
+            Tr[kL] = d0 * A0[kL] + d1 * A1[kL] + d2 * A2[kL];
+        }
+    }
   for (int b = 0; b < nen; b++)
     {
-      const double *db = dN + b * D;
-      for (int r = 0; r < (b + 1) * D; r++)
+      double e0 = dN[b * 3], e1 = dN[b * 3 + 1], e2 = dN[b * 3 + 2];
+      for (int r = 0; r < (b + 1) * 3; r++)
         {
           const double *Tr = T + r * 9;
-          double *Kr = Ke + r * nc + b * D;
-          for (int k = 0; k < D; k++)
-            {
-              double t = 0;
-              for (int L = 0; L < D; L++)
-                t += Tr[k * 3 + L] * db[L];
-              Kr[k] += t;
-            }
+          double *Kr = Ke + r * nc + b * 3;
+          Kr[0] += Tr[0] * e0 + Tr[1] * e1 + Tr[2] * e2;
+          Kr[1] += Tr[3] * e0 + Tr[4] * e1 + Tr[5] * e2;
+          Kr[2] += Tr[6] * e0 + Tr[7] * e1 + Tr[8] * e2;
         }
     }
 }
@@ -289,9 +312,9 @@ point_add (const point *pt, int nen, int dim, const double *P,
     {
       point_add (pt, nen, dim, P, A, fe, NULL, T);     /* fe only */
       if (dim == 3)
-        tangent_plain (pt, nen, 3, A, Ke, T);
+        tangent_3d (pt, nen, A, Ke, T);
       else
-        tangent_plain (pt, nen, 2, A, Ke, T);
+        tangent_plain (pt, nen, dim, A, Ke, T);
       return;
     }
   int nc = nen * dim, idx[4], n;

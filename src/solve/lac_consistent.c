@@ -22,7 +22,7 @@ typedef struct ctx
   double omega;              /* scale of the gap rows                     */
   double *h;                 /* n: H x                                     */
   double *f, *g;             /* n, k: right-hand sides of the strategy     */
-  const double *F, *G;       /* the system's own                           */
+  const double *F;           /* the system's right-hand side r             */
 } ctx;
 
 /* y = (**) z, gap rows times omega. */
@@ -66,9 +66,8 @@ precondition (void *vc, const double *v, double *z)
   for (size_t i = 0; i < c->k; i++)
     c->g[i] = cs->active[i] ? v[c->n + i] / c->omega : 0.0;
   memset (z, 0, (c->n + c->k) * sizeof *z);
-  cs->sys->F = c->f;
-  cs->sys->G = c->g;
-  int status = lac_strategy_solve (cs->strategy, cs->active, z, z + c->n);
+  int status = lac_strategy_solve_rhs (cs->strategy, cs->active, c->f, c->g,
+                                       z, z + c->n);
   for (size_t i = 0; i < c->k; i++)
     if (!cs->active[i])
       z[c->n + i] = v[c->n + i];
@@ -121,7 +120,7 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
 {
   size_t n = cs->sys->K->ncol, k = cs->sys->C->ncol;
   double normK, normC, nrhs = 0, nb = 0;
-  ctx c = { cs, n, k, 1.0, NULL, NULL, NULL, cs->sys->F, cs->sys->G };
+  ctx c = { cs, n, k, 1.0, NULL, NULL, NULL, cs->sys->F };
   lac_system_norms (cs->sys, &normK, &normC);
   c.omega = normC > 0 ? normK / normC : 1.0;
   c.h = lac_malloc (n * sizeof *c.h);
@@ -152,8 +151,6 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
       for (size_t i = 0; !status && i < k; i++)
         lambda[i] = cs->active[i] ? lambda[i] + z[n + i] : 0.0;
     }
-  cs->sys->F = c.F;
-  cs->sys->G = c.G;
   if (info)
     {
       info->iterations = gi.iterations;

@@ -30,8 +30,11 @@
  * residual keeps the convergence quadratic).  If GMRES does not get
  * there in maxit iterations the best step found is kept (and reported).
  *
- * Ownership: everything in lac_consistent is borrowed; the system's F and
- * G pointers are changed during the solve and restored.
+ * The strategy's factorization may be older than K_T (lac_strategy_reset:
+ * the factor of an earlier iteration kept): it is only the preconditioner,
+ * the step is the exact one all the same, in a few more iterations.
+ *
+ * Ownership: everything in lac_consistent is borrowed.
  */
 #ifndef LAC_CONSISTENT_H
 #define LAC_CONSISTENT_H
@@ -43,10 +46,11 @@
 
 typedef struct lac_consistent
 {
-  lac_contact_system *sys;        /* the frozen system (K, C with the
+  const lac_contact_system *sys;  /* the frozen system (K, C with the
                                      Dirichlet rows, F = r, G = d_A with the
                                      Dirichlet values moved in)            */
-  lac_strategy *strategy;         /* set on sys: its solve preconditions   */
+  lac_strategy *strategy;         /* set (or reset) on sys: its solve
+                                     preconditions                         */
   const lac_contact_tangent *T;   /* H and B                                */
   const char *fixed;              /* n: Dirichlet dofs                      */
   const double *d;                /* k: the mean gaps d(U) (no Dirichlet

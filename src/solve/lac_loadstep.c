@@ -67,6 +67,23 @@ lac_nl_step_begin (lac_nl *s, double t)
   return LAC_SUCCESS;
 }
 
+/* The predictor: U and lambda extrapolated linearly from the last two
+ * converged states, (U - U_old) (tt - t_prev) / (t_prev - t_old) added. */
+static void
+predict (lac_nl *s, double tt)
+{
+  double r = (tt - s->t_prev) / s->dt_old;
+  if (!s->opts.predict || !(s->dt_old > 0))
+    return;
+  for (size_t j = 0; j < s->ndof; j++)
+    s->U[j] += r * (s->U[j] - s->U_old[j]);
+  for (size_t m = 0; m < s->nmacro; m++)
+    if (s->active[m])
+      s->lambda[m] = fmin (0.0, s->lambda[m]
+                                + r * (s->lambda[m] - s->lambda_old[m]));
+  s->predicted = 1;
+}
+
 /* Begin the next sub-step: from t_prev by dt (the last one ends at t). */
 static void
 sub_begin (lac_nl *s)
@@ -77,6 +94,7 @@ sub_begin (lac_nl *s)
     tt = ls->t;
   save_state (s);
   lac_nl_begin (s, tt);
+  predict (s, tt);
   ls->in_sub = 1;
 }
 
@@ -86,6 +104,9 @@ sub_done (lac_nl *s)
 {
   lac_nl_loadstep *ls = &s->ls;
   double len = s->t - s->t_prev;
+  memcpy (s->U_old, s->U_save, s->ndof * sizeof *s->U_old);  /* at t_prev */
+  memcpy (s->lambda_old, s->lambda_save, s->nmacro * sizeof *s->lambda_old);
+  s->dt_old = len;
   if (ls->substeps && len > ls->dt_last * (1 + 1e-12))
     ls->grown++;                       /* longer than the one before */
   ls->dt_min = ls->substeps ? fmin (ls->dt_min, len) : len;

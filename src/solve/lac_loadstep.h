@@ -16,6 +16,12 @@
  *   - a sub-step that converges in at most LAC_FAST_ITERS iterations GROWS
  *     dt back: the next one is twice as long (never past t).
  *
+ * A sub-step starts from a prediction (opts.predict): U and the active
+ * multipliers extrapolated linearly from the last two converged states
+ * (the Dirichlet values, linear in t, land exactly on theirs), which
+ * saves about one Newton iteration per step; if the prediction turns a
+ * cell inside out, the sub-step starts from the last converged state.
+ *
  * The step record (s->steps) counts the Newton iterations of all
  * sub-steps (the failed ones too), the cuts and the sub-steps.
  *

@@ -22,6 +22,11 @@
 #define LS_HALVINGS 4     /* line search: a step halved at most this often   */
 #define DIVERGED 1e3      /* a residual this much above the best of the step:
                              no convergence                                 */
+#define LAG_RATIO 0.5     /* K_T's factorization is kept from iteration to
+                             iteration while the consistent step's GMRES
+                             takes less than this times a factorization    */
+#define ETA_FIRST 1e-5    /* the accuracy of the first step of a sub-step  */
+#define LAZY_K 1e-5       /* see evaluate ()                                 */
 #define ETA_FACTOR 1e-2  /* accuracy of the consistent step: this times    */
 #define ETA_MAX 1e-3      /*   the residual of step 4, within these bounds  */
 #define ETA_MIN 1e-12
@@ -37,6 +42,7 @@ lac_nl_opts_init (lac_nl_opts *o)
   o->tol = 1e-8;
   o->rho = 0;
   o->max_cuts = 6;
+  o->predict = 1;
   lac_pairing_opts_init (&o->popts);
   o->popts.degree_nonaffine = 8;   /* see lac_nonlinear.h */
 }
@@ -68,6 +74,8 @@ lac_nl_free (lac_nl *s)
   lac_free (s->lam_lin);
   lac_free (s->lam_step);
   lac_free (s->dU_last);
+  lac_free (s->U_old);
+  lac_free (s->lambda_old);
   lac_free (s->r);
   lac_free (s->Fint);
   lac_free (s->dU);
@@ -154,11 +162,14 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->lam_lin = lac_calloc (nm, sizeof *s->lam_lin);
   s->lam_step = lac_calloc (nm, sizeof *s->lam_step);
   s->dU_last = lac_calloc (n, sizeof *s->dU_last);
+  s->U_old = lac_calloc (n, sizeof *s->U_old);
+  s->lambda_old = lac_calloc (nm, sizeof *s->lambda_old);
   s->active = lac_calloc (nm, 1);
   s->active_save = lac_calloc (nm, 1);
   if (!s->U || !s->x || !s->fixed || !s->g1 || !s->g0 || !s->r || !s->Fint
       || !s->dU || !s->U_save || !s->lambda || !s->lambda_save || !s->active
-      || !s->active_save || !s->lam_lin || !s->lam_step || !s->dU_last)
+      || !s->active_save || !s->lam_lin || !s->lam_step || !s->dU_last
+      || !s->U_old || !s->lambda_old)
     {
       lac_nl_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace for %zu dofs", n);
@@ -257,14 +268,34 @@ contact_update (lac_nl *s)
   return status;
 }
 
-/* Step 1: F_int and K_T at U. */
+/* Step 1: F_int and, if want_K, K_T at U (s->have_K says which). */
 static int
-assemble (lac_nl *s)
+assemble (lac_nl *s, int want_K)
 {
   double t0 = lac_seconds ();
+  int status;
   memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
+  if (want_K)
+    status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, s->U,
+                                         s->Fint, s->pat);
+  else
+    status = lac_hyper_assemble (s->prob.mesh, s->prob.mat, s->U, s->Fint,
+                                 NULL);
+  s->have_K = want_K && !status;
+  s->time_assemble += lac_seconds () - t0;
+  return status;
+}
+
+/* K_T at U if step 1 left it out. */
+static int
+assemble_K (lac_nl *s)
+{
+  if (s->have_K)
+    return LAC_SUCCESS;
+  double t0 = lac_seconds ();
   int status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, s->U,
-                                           s->Fint, s->pat);
+                                           NULL, s->pat);
+  s->have_K = !status;
   s->time_assemble += lac_seconds () - t0;
   return status;
 }
@@ -487,14 +518,16 @@ consistent (lac_nl *s, lac_nl_iter *rec)
   s->tangent = NULL;
   int status = lac_contact_tangent_build (&s->cur, p->mat->model, p->M,
                                           s->pairing, p->master ? &Mf : NULL,
-                                          p->obstacle, c, s->klin,
+                                          p->obstacle, c, s->klin, s->kact,
                                           &s->tangent);
   s->time_tangent += lac_seconds () - t0;
   if (status)
     return status;
   lac_consistent cs = { &s->sys, s->strategy, s->tangent, s->fixed, s->kgap,
                         s->kact, s->eta, 0 };
+  double t1 = lac_seconds ();
   status = lac_consistent_solve (&cs, s->dU, s->klam, &info);
+  s->time_gmres_last = lac_seconds () - t1;
   rec->krylov = info.iterations;
   rec->krylov_residual = info.residual;
   return status;
@@ -508,11 +541,11 @@ consistent (lac_nl *s, lac_nl_iter *rec)
  * body held by contact alone, every admissible one is active in this
  * solve (step 3 releases those in tension at the next iteration). */
 static int
-solve_contact (lac_nl *s, lac_nl_iter *rec)
+solve_contact (lac_nl *s, const lac_dirichlet *inc, lac_nl_iter *rec)
 {
   const lac_contact *c = s->contact;
   size_t k = c->k;
-  int status;
+  int status, kept = 0;
   if (!s->strategy && !(s->strategy = lac_strategy_alloc (s->opts.kind)))
     return LAC_ENOMEM;
   if ((status = kroom (s, k)))
@@ -531,10 +564,23 @@ solve_contact (lac_nl *s, lac_nl_iter *rec)
     }
   memset (s->dU, 0, s->ndof * sizeof *s->dU);
   double t0 = lac_seconds ();
-  status = lac_strategy_set (s->strategy, &s->sys);
+  if (s->opts.frozen || !s->strategy_set
+      || s->time_gmres_last > LAG_RATIO * s->time_factor_last)
+    {
+      status = lac_strategy_set (s->strategy, &s->sys);   /* factor K_T */
+      s->strategy_set = !status;
+      s->time_factor_last = lac_seconds () - t0;
+      s->time_gmres_last = 0;
+    }
+  else
+    status = lac_strategy_reset (s->strategy, &s->sys, &kept);
   double t1 = lac_seconds ();
-  if (!status)
+  if (!status && kept)      /* the factor of an older K_T: GMRES from the */
+    for (size_t q = 0; q < inc->n; q++)     /* Dirichlet increments alone */
+      s->dU[inc->dof[q]] = inc->val[q];
+  else if (!status)
     status = lac_strategy_solve (s->strategy, s->kact, s->dU, s->klam);
+  rec->factored = !kept;
   double t2 = lac_seconds ();
   if (!status && !s->opts.frozen)
     status = consistent (s, rec);
@@ -554,7 +600,9 @@ static int
 solve (lac_nl *s, lac_nl_iter *rec)
 {
   lac_dirichlet inc = { 0, 0, NULL, NULL };
-  int status = increments (s, &inc);
+  int status = assemble_K (s);
+  if (!status)
+    status = increments (s, &inc);
   if (!status && s->contact && (status = kroom (s, s->contact->k)) == 0)
     memcpy (s->kgap, s->contact->G, s->contact->k * sizeof *s->kgap);
   if (!status)
@@ -573,7 +621,7 @@ solve (lac_nl *s, lac_nl_iter *rec)
     status = lac_contact_apply_dirichlet (s->contact, inc.n, inc.dof, inc.val);
   double t0 = lac_seconds ();
   if (!status)
-    status = s->contact && s->contact->k > 0 ? solve_contact (s, rec)
+    status = s->contact && s->contact->k > 0 ? solve_contact (s, &inc, rec)
                                              : solve_plain (s);
   s->time_solve += lac_seconds () - t0;
   lac_free (inc.dof);
@@ -610,12 +658,14 @@ lac_nl_begin (lac_nl *s, double t)
   s->last_du = 0;
   s->fref = 0;
   s->alpha = 1;
+  s->predicted = 0;
   s->merit = s->merit_best = HUGE_VAL;
   s->settled = 0;
   if (s->strategy && lac_strategy_fallback (s->strategy))
     {
       lac_strategy_free (s->strategy);   /* try Cholesky again in every */
       s->strategy = NULL;                /* step after a fallback       */
+      s->strategy_set = 0;
     }
   return LAC_SUCCESS;
 }
@@ -642,9 +692,13 @@ backtrack (lac_nl *s)
 static int
 evaluate (lac_nl *s, lac_nl_iter *rec)
 {
+  /* K_T is left to the solve when the last step was made on settled
+   * statuses from a residual below LAZY_K: this evaluation is then most
+   * likely the last of the sub-step (quadratic convergence) */
+  int want_K = !(s->it > 0 && s->settled && s->res_solved <= LAZY_K);
   for (;;)
     {
-      int status = assemble (s);
+      int status = assemble (s, want_K);
       if (!status && s->prob.M)
         status = contact_update (s);
       double merit = HUGE_VAL;
@@ -652,6 +706,14 @@ evaluate (lac_nl *s, lac_nl_iter *rec)
         {
           rec->residual = residual (s);
           merit = fmax (rec->residual, gap_residual (s));
+        }
+      if (status == LAC_ESING && s->it == 0 && s->predicted)
+        {                         /* the predictor turned a cell inside out: */
+          memcpy (s->U, s->U_save, s->ndof * sizeof *s->U);   /* without it */
+          memcpy (s->lambda, s->lambda_save, s->nmacro * sizeof *s->lambda);
+          s->predicted = 0;
+          lac_error_clear ();
+          continue;
         }
       int worse = (status == LAC_ESING && s->it >= 1)      /* inside out */
                   || (!status && s->it >= 2 && s->settled /* no better */
@@ -706,10 +768,11 @@ lac_nl_iterate (lac_nl *s)
                s->it, rec.residual, rec.nchanged);
   /* Step 5: an inexact Newton step, to a fraction of the residual (the
    * first of a step carries the new Dirichlet increments: ETA_MAX) */
-  s->eta = s->it == 0 ? ETA_MAX
+  s->eta = s->it == 0 ? ETA_FIRST
            : fmax (ETA_MIN, fmin (ETA_MAX, ETA_FACTOR * rec.residual));
   memcpy (s->lam_step, s->lambda, s->nmacro * sizeof *s->lam_step);
   s->settled = rec.nchanged == 0;
+  s->res_solved = rec.residual;
   if ((status = solve (s, &rec)))
     return status;
   s->first = 0;

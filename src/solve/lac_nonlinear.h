@@ -47,12 +47,22 @@
  * orderings and symbolic analyses are made once; the consistent system
  * (not symmetric) by GMRES with that solve as the preconditioner, from
  * the frozen solution, to a relative accuracy eta = 1e-2 times the
- * residual of step 4 (at most 1e-3, at least 1e-12; 1e-3 in the first
- * iteration of a step, whose right-hand side is the new Dirichlet data)
- * (solve/lac_consistent.h).  The statuses follow the rule of
- * solve/lac_complementarity.h, the rule of the linear active set.
- * Without any admissible macro-element (bodies apart) step 5 is
+ * residual of step 4 (at most 1e-3, at least 1e-12; 1e-5 in the first
+ * iteration of a sub-step) (solve/lac_consistent.h).  Since GMRES makes
+ * the step exact whatever the preconditioner, the factorization of K_T
+ * need not be new: with the schur strategy it is kept from iteration to
+ * iteration (and step to step; lac_strategy_reset: only the Schur columns
+ * of the new C are made) and renewed when the last GMRES took more than
+ * half the time of a factorization; the other strategies factor at every
+ * iteration, and the frozen tangent always does.  The statuses follow
+ * the rule of solve/lac_complementarity.h, the rule of the linear active
+ * set.  Without any admissible macro-element (bodies apart) step 5 is
  * K_T dU = t F - F_int(U).
+ *
+ * Step 1 leaves K_T out (F_int alone) when the last solve was made on
+ * settled statuses from a residual below 1e-5: quadratic convergence makes
+ * that evaluation the last of the sub-step; if it is not, step 5
+ * assembles K_T.
  *
  * Convergence.  Quadratic once the statuses have settled, whatever the
  * pressure (t435 checks the derivatives against finite differences).  The
@@ -138,6 +148,9 @@ typedef struct lac_nl_opts
   double rho;            /* > 0: rho_m = rho for all m; 0: the default above */
   int max_cuts;          /* a sub-step is at least 2^-max_cuts of its load
                             step (0: 6; < 0: no cut)                       */
+  int predict;           /* 1: a sub-step starts from U and lambda
+                            extrapolated from the last two converged
+                            states (solve/lac_loadstep.h); 0: from the last */
   int frozen;            /* 1: the frozen-geometry tangent (the generalized
                             Newton method of [LAC §4.5]); 0: the consistent
                             one (solve/lac_consistent.h)                   */
@@ -168,6 +181,8 @@ typedef struct lac_nl_iter
   double du;             /* |dU| / max(|U|, tiny) of the solve (0: none)    */
   double max_penetration;/* max over active m of -d_m / |T^m cap Gamma_C|  */
   int krylov;            /* GMRES iterations of the consistent step          */
+  int factored;          /* K_T factored in this iteration (else the factor
+                            of an earlier one preconditions GMRES)         */
   double krylov_residual;/* its relative residual at the end                */
   int backtracks;        /* line search: halvings of the last step before
                             this iteration's residual                      */
@@ -261,13 +276,22 @@ typedef struct lac_nl
   double *lam_lin;       /* owned, nmacro: lambda before the statuses     */
   double *lam_step;      /* owned, nmacro: lambda before the last solve    */
   double *dU_last;       /* owned, ndof: the last Newton step              */
+  double *U_old, *lambda_old; /* owned: the converged state before the last
+                            one (the predictor's)                          */
+  double dt_old;         /* the load factor between them (0: none yet)      */
+  int predicted;         /* the sub-step started from the predictor         */
   double alpha;          /* line search: the fraction of it taken          */
   double merit;          /* max(residual, gap residual) at the last evaluation */
   double merit_best;     /* the smallest after the second iteration        */
   int settled;           /* the last solve changed no status              */
+  double res_solved;     /* the residual the last solve started from       */
+  int have_K;            /* K_T holds the tangent at U                    */
   lac_contact_system sys;    /* the frozen system of the last solve       */
   lac_contact_tangent *tangent; /* owned: H and B of the last solve       */
   double eta;            /* accuracy asked of the consistent step          */
+  int strategy_set;      /* the strategy holds a factorization of K_T      */
+  double time_factor_last; /* seconds: the last factorization, and the     */
+  double time_gmres_last;  /*   consistent step since (0: none)            */
   double *r, *Fint, *dU; /* owned, ndof                                     */
   double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
   char *active_save;

@@ -96,6 +96,28 @@ lac_schur_set (lac_schur *s, const lac_contact_system *sys)
   return LAC_SUCCESS;
 }
 
+int
+lac_schur_reset (lac_schur *s, const lac_contact_system *sys)
+{
+  size_t k = sys->C->ncol;
+  if (!s->x || s->n != sys->K->ncol)
+    LAC_ERROR (LAC_EINVAL, "lac_schur_reset before lac_schur_set, or another"
+               " order of K");
+  if (s->k != k)
+    {
+      lac_free (s->S);
+      lac_free (s->have);
+      s->S = lac_malloc ((k ? k * k : 1) * sizeof *s->S);
+      s->have = lac_malloc (k ? k : 1);
+      if (!s->S || !s->have)
+        LAC_ERROR (LAC_ENOMEM, "Schur complement of %zu multipliers", k);
+      s->k = k;
+    }
+  s->sys = sys;
+  memset (s->have, 0, k);
+  return LAC_SUCCESS;
+}
+
 /* Columns idx[0..nb) of S: X = K^{-1} C(:, idx) in one block solve, then
  * S(j, i) = c_j^T X(:, i) for every j. */
 static int

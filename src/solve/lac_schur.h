@@ -33,6 +33,10 @@ void lac_schur_free (lac_schur *s);      /* NULL allowed */
 /* Borrow the system, factorize K (the analysis kept for a K of the same
  * pattern), forget the columns of S. */
 int lac_schur_set (lac_schur *s, const lac_contact_system *sys);
+/* Borrow a system with the same K as the last set's (or a K whose old
+ * factorization will do, as a preconditioner) and another C: keep the
+ * factorization, forget the columns of S. */
+int lac_schur_reset (lac_schur *s, const lac_contact_system *sys);
 /* U, lambda of (*) for the statuses `active`, right-hand sides f, g
  * (NULL: F, G); lambda_i = 0 where inactive. */
 int lac_schur_solve (lac_schur *s, const char *active, const double *f,

@@ -168,6 +168,31 @@ lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
   return status;
 }
 
+int
+lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
+                    int *kept)
+{
+  *kept = s->schur && s->sys && s->n == sys->K->ncol;
+  if (!*kept)
+    return lac_strategy_set (s, sys);
+  double t0 = lac_seconds ();
+  size_t k = sys->C->ncol;
+  if (s->k != k)
+    {
+      lac_free (s->g);
+      lac_free (s->dl);
+      s->g = lac_malloc ((k ? k : 1) * sizeof *s->g);
+      s->dl = lac_malloc ((k ? k : 1) * sizeof *s->dl);
+      if (!s->g || !s->dl)
+        LAC_ERROR (LAC_ENOMEM, "strategy work arrays, k = %zu", k);
+      s->k = k;
+    }
+  s->sys = sys;
+  int status = lac_schur_reset (s->schur, sys);
+  s->counts.time_solve += lac_seconds () - t0;
+  return status;
+}
+
 /* ---- solve -------------------------------------------------------------- */
 
 /* One solve of (*) with right-hand sides f, g (NULL: F, G); rtol: the
@@ -269,6 +294,19 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
       s->counts.last_residual = sc.last_residual;
       status = refine (s, active, U, lambda);
     }
+  s->counts.time_solve += lac_seconds () - t0;
+  return status;
+}
+
+int
+lac_strategy_solve_rhs (lac_strategy *s, const char *active, const double *f,
+                        const double *g, double *U, double *lambda)
+{
+  double t0 = lac_seconds ();
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_strategy_set was not called");
+  s->counts.solves++;
+  int status = solve_once (s, active, f, g, CG_RTOL, U, lambda);
   s->counts.time_solve += lac_seconds () - t0;
   return status;
 }

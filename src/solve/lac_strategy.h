@@ -115,6 +115,20 @@ int lac_strategy_set (lac_strategy *s, const lac_contact_system *sys);
  * the solution, lambda_i = 0 where inactive. */
 int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
                         double *lambda);
+/* As a preconditioner (the consistent step of large deformations,
+ * solve/lac_consistent.h): lac_strategy_reset is lac_strategy_set, except
+ * that the schur strategy keeps its factorization of K (the last set's):
+ * only what depends on C is made again, and the solves are those of the
+ * old K with the new C; *kept says whether the factorization was kept
+ * (the other strategies factor K + C_A W C_A^T or the whole system, which
+ * depend on C, so they factor again).  lac_strategy_solve_rhs is one
+ * solve of (*) with the right-hand sides f, g instead of F, G, without
+ * the check of the bodies held and without refinement. */
+int lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
+                        int *kept);
+int lac_strategy_solve_rhs (lac_strategy *s, const char *active,
+                            const double *f, const double *g, double *U,
+                            double *lambda);
 /* The nodal coordinates for the petsc strategy's multigrid (dof =
  * dim*node + comp, n entries, borrowed until free; NULL: none, e.g. the
  * axisymmetric model); the other strategies ignore them.  Before set. */

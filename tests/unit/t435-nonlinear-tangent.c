@@ -99,7 +99,7 @@ evaluate (const fdcase *fc, const double *U, double *Cl, double *d,
       if (tan)
         st = lac_contact_tangent_build (&cur, fc->mat.model, fc->M, P,
                                         fc->master.n ? &Mf : NULL, &fc->ob,
-                                        c, lk, tan);
+                                        c, lk, NULL, tan);
       if (C)
         *C = lac_csc_copy (c->C);
       free (lk);
