@@ -126,6 +126,10 @@ test-asan:
 demo: all
 	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo
 
+# The ring on block, coarse and fine hex20 (about 25 minutes; also in bench).
+bench-ring: all
+	sh bench/ring.sh $(B)
+
 bench: all $(BENCH)
 	@for b in $(BENCH); do echo "== $$b"; ./$$b || exit 1; done
 	@for s in bench/*.sh; do echo "== $$s"; sh $$s $(B) || exit 1; done
@@ -140,5 +144,5 @@ clean:
 help:
 	@sed -n '3,9p' Makefile
 
-.PHONY: all deps test test-asan demo bench figures clean help
+.PHONY: all deps test test-asan demo bench bench-ring figures clean help
 .DELETE_ON_ERROR:

@@ -567,9 +567,11 @@ solve_contact (lac_nl *s, const lac_dirichlet *inc, lac_nl_iter *rec)
   if (s->opts.frozen || !s->strategy_set
       || s->time_gmres_last > LAG_RATIO * s->time_factor_last)
     {
+      /* the first factorization includes the ordering and the symbolic
+       * analysis: its time is no measure, the next iteration factors again */
       status = lac_strategy_set (s->strategy, &s->sys);   /* factor K_T */
+      s->time_factor_last = s->strategy_set ? lac_seconds () - t0 : 0.0;
       s->strategy_set = !status;
-      s->time_factor_last = lac_seconds () - t0;
       s->time_gmres_last = 0;
     }
   else
