@@ -16,7 +16,7 @@
 #           contact;
 # with the direct path (taylor: the augmented strategy, a CHOLMOD
 # Cholesky factor of K + C_A W C_A^T; cube: cholmod) as long as it fits in
-# time and memory (up to N = 35 and 33), and the petsc strategy (projected
+# time and memory (up to N = 35 and 45), and the petsc strategy (projected
 # CG and GAMG, chapter 11) on 1 and 2 processes (mpirun -n 2, process 0
 # assembling), then GAMG against BoomerAMG (hypre) at the two largest
 # sizes.  Writes into DIR (BUILD_DIR/solvers; the committed figures are
@@ -164,7 +164,8 @@ run () {
 if [ $QUICK = 1 ]; then
   TN="10 14 20" TD="10 14 20" CN="14 20" CD="14 20" TH="20" CH="20"
 else
-  TN="10 14 20 28 35 45 55" TD="10 14 20 28 35" CN="14 20 33 45 69" CD="14 20 33"
+  TN="6 8 10 14 20 28 35 45 55" TD="6 8 10 14 20 28 35"
+  CN="6 8 10 14 20 33 45 69" CD="6 8 10 14 20 33 45"
   TH="28 55" CH="33 69"
 fi
 for n in $TD; do run taylor "$n" direct 1; done
