@@ -77,7 +77,7 @@ chart () {
         echo 'set ylabel "peak memory (MB)"'
       fi
       echo 'set logscale xy; set grid; set key top left; set format x "10^{%L}"'
-      echo 'set xlabel "dofs"; set xrange [5e3:2e6]'
+      echo 'set xlabel "dofs"; set xrange [1e3:2e6]'
       for p in taylor cube; do
         if [ $p = taylor ]; then
           echo 'set title "3D Taylor patch test, hex8, contact"'
@@ -123,6 +123,7 @@ fi
 command -v mpirun > /dev/null || { echo "solvers.sh: mpirun not found (Debian: openmpi-bin)" >&2; exit 1; }
 
 echo "problem,n,dofs,multipliers,solver,np,wall,mesh,assemble,solve,post,iterations,residual,peak_mb,err_lambda,max_u,status" > "$CSV"
+LOAD0=$(cut -d' ' -f1-3 /proc/loadavg)
 value () { sed -n "s/^$2 = //p" "$1" | head -1; }
 
 # run PROBLEM N SOLVER NP: one run, one row.
@@ -177,7 +178,7 @@ for n in $CH; do run cube "$n" petsc-hypre 2; done
 
 # ---- the table and the checks --------------------------------------------
 {
-  echo "Measured $(date -u +%Y-%m-%d) on $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the end; wall = the whole mpirun."
+  echo "Measured $(date -u +%Y-%m-%d) on $(nproc) cores, load average $LOAD0 at the start, $(cut -d' ' -f1-3 /proc/loadavg) at the end (other jobs share the machine); wall = the whole mpirun."
   echo
   echo "| problem | n | dofs | mult. | solver | np | wall s | mesh s | assemble s | solve s | post s | iterations | residual | peak MB (sum) | err lambda | status |"
   echo "|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
