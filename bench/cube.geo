@@ -4,7 +4,8 @@
 // the scene's element hex8, tetrahedra otherwise.  n = 69: 70^3 nodes,
 // 1,029,000 dofs with hex8, the cube whose Cholesky factor needs 20.5 GB.
 //
-// Physical groups: block (the volume), bottom (z = 0), top (z = 1).
+// Physical groups: block (the volume), bottom (z = 0), top (z = 1), x0
+// (x = 0) and y0 (y = 0).
 SetFactory("OpenCASCADE");
 If (!Exists(n))
   n = 4;
@@ -18,3 +19,5 @@ Transfinite Volume{1};
 Physical Volume("block") = {1};
 Physical Surface("bottom") = {s(4)};
 Physical Surface("top") = {s(5)};
+Physical Surface("x0") = {s(0)};
+Physical Surface("y0") = {s(2)};

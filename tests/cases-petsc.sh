@@ -21,7 +21,8 @@
 #                    petsc fail with the apt-get line (the other cases are
 #                    then skipped).
 # Open MPI refuses to start as root without --allow-run-as-root: added
-# when the tests run as root.  Same conventions as tests/cases.sh ($B,
+# when the tests run as root.  Under make test-asan, lac's runs here
+# unwind in full (LAC_MPI_ASAN, see the Makefile).  Same conventions as tests/cases.sh ($B,
 # pass, fail).  About 15 s.
 
 B=${B:-build}
@@ -35,6 +36,7 @@ petsc_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
 petsc_value () { sed -n "s/^$2 = //p" "$1"; }
 D8=chapters/08-experiments
 PETSC_LINE="apt-get install -y --no-install-recommends libpetsc-real-dev"
+PETSC_ENV="ASAN_OPTIONS=${ASAN_OPTIONS:-}${LAC_MPI_ASAN:-}"
 
 # petsc_same NAME FILE1 FILE2 KEYS...: every key equal to 1e-8 relative.
 # (sh functions share their variables: each function has its own names)
@@ -55,7 +57,7 @@ petsc_same () {
 petsc_run () {
   pr_name=$1
   shift
-  if "$LAC" run "$@" --quiet --no-output > "$C/$pr_name.out" 2> "$C/$pr_name.err"; then
+  if env "$PETSC_ENV" "$LAC" run "$@" --quiet --no-output > "$C/$pr_name.out" 2> "$C/$pr_name.err"; then
     return 0
   fi
   petsc_fail "$pr_name" "lac run $* failed: $(tail -1 "$C/$pr_name.err")"
@@ -66,7 +68,7 @@ petsc_run () {
 have_petsc=1
 for opt in "--strategy petsc" "--solver petsc"; do
   # shellcheck disable=SC2086
-  "$LAC" run "$D8/taylor2d.scene" $opt --quiet --no-output > "$C/avail.out" 2> "$C/avail.err"
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor2d.scene" $opt --quiet --no-output > "$C/avail.out" 2> "$C/avail.err"
   rc=$?
   if grep -q "built without PETSc" "$C/avail.err"; then
     have_petsc=0
@@ -129,7 +131,7 @@ if [ "$have_petsc" = 1 ]; then
       shift 2
       for np in 1 2; do
         # shellcheck disable=SC2086
-        if ! $MPIRUN -n $np "$LAC" run "$scene" "$@" --strategy petsc \
+        if ! env "$PETSC_ENV" $MPIRUN -n $np "$LAC" run "$scene" "$@" --strategy petsc \
              --out "$C/$name.np$np" > "$C/$name.np$np.out" 2> "$C/$name.np$np.err"; then
           petsc_fail "mpi $name" "mpirun -n $np failed: $(tail -1 "$C/$name.np$np.err")"
           return
@@ -154,9 +156,9 @@ if [ "$have_petsc" = 1 ]; then
 
   # ---- options ---------------------------------------------------------
   petsc_run opt-ref "$D8/taylor3d.scene" --strategy saddle
-  "$LAC" run "$D8/taylor3d.scene" --strategy petsc --no-output \
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --no-output \
     --petsc-options "-elast_pc_type hypre" > "$C/opt-hypre.out" 2> "$C/opt-hypre.err"
-  env PETSC_OPTIONS="-lac_contact fieldsplit" "$LAC" run "$D8/taylor3d.scene" \
+  env "$PETSC_ENV" PETSC_OPTIONS="-lac_contact fieldsplit" "$LAC" run "$D8/taylor3d.scene" \
     --strategy petsc --no-output > "$C/opt-env.out" 2> "$C/opt-env.err"
   petsc_same "options hypre" "$C/opt-hypre.out" "$C/opt-ref.out" lambda_min lambda_max max_u
   petsc_same "options env" "$C/opt-env.out" "$C/opt-ref.out" lambda_min lambda_max max_u
@@ -165,7 +167,7 @@ if [ "$have_petsc" = 1 ]; then
   else
     petsc_fail "options reach PETSc" "$(grep 'solve ' "$C/opt-hypre.err" "$C/opt-env.err")"
   fi
-  "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "-elast_pc_type nonsense" \
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "-elast_pc_type nonsense" \
     --quiet --no-output > "$C/opt-bad.out" 2> "$C/opt-bad.err"
   rc=$?
   if [ "$rc" = 1 ] && [ "$(wc -l < "$C/opt-bad.err")" -eq 1 ] && grep -q "^lac: .*nonsense" "$C/opt-bad.err"; then

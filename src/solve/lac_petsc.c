@@ -7,14 +7,15 @@
  * lac_petsc_serve:
  *
  *   build   the layout (nodes and multipliers cut in N ranges), the
- *           matrices K_W, B = -C_A (n x k), D = 1 on the inactive
- *           multipliers, the Schur preconditioner Sp (k x k) preallocated
- *           from the counts the root makes for every row, the near-null
- *           space, the solvers;
+ *           matrices K_W and B = -C_A (n x k) preallocated from the counts
+ *           the root makes for every row, the near-null space, the
+ *           solvers (projected: the multigrid of K_W, CG on P K_W;
+ *           fieldsplit: the nest [K_W B; B^T D], GMRES);
  *   update  the values: the root inserts every row of K_W (new numbers)
  *           or its contact rows (K + C_A W_A C_A^T changes only there),
- *           and B, D, Sp for the statuses; PETSc sends each process its
- *           rows in the assembly;
+ *           and B for the statuses; PETSc sends each process its rows in
+ *           the assembly; then B^T B + D (projected) or D and the Schur
+ *           preconditioner Sp (fieldsplit), D = 1 on the inactive;
  *   solve   the right-hand side and the start from the root, one Krylov
  *           solve, its true residual, the solution back to the root.
  *

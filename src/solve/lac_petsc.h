@@ -31,8 +31,9 @@
  *      block factorization of PCFIELDSPLIT (Schur type, "upper"): K_W by
  *      one V-cycle of GAMG, the Schur complement S_W = C_A^T K_W^-1 C_A
  *      by W_A^-1 (S_W^-1 = S^-1 + W_A lies between W_A and W_A + 1/s_min,
- *      lac_augmented.h): the comparison of chapter 11 (option
- *      -lac_contact fieldsplit).
+ *      lac_augmented.h).  GMRES meets C_A^T U = g_A only to its tolerance,
+ *      relative to the forces: one correction solve follows.  The
+ *      comparison of chapter 11 (option -lac_contact fieldsplit).
  *
  * The inactive multipliers keep their rows (lambda_i = 0), so that the
  * matrices keep their size and pattern when the statuses change and the
