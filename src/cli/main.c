@@ -107,6 +107,10 @@ static const char *help_text =
   "                    peak_rss_total_mb (peak memory, MB, summed over the\n"
   "                    MPI processes) to the summary\n"
   "  --no-output       write no files (the summary still goes to stdout)\n"
+  "  --max-memory SIZE memory a mesh may need (8G, 500M, 2e9 bytes; default\n"
+  "                    80 % of the machine's): gmsh runs in a child process\n"
+  "                    limited to it, and a .geo whose mesh is estimated to\n"
+  "                    need more is refused before gmsh makes it\n"
   "\n"
   "output files in DIR (all renamed into place at the end, so a failed run\n"
   "leaves the files of an earlier run untouched; summary.txt comes last):\n"
@@ -153,6 +157,7 @@ typedef struct cmdline
   const char *out;
   int quiet, timings, no_output, strategy;
   const char *petsc_options;
+  double max_memory;
   char solver_set[64];
 } cmdline;
 
@@ -193,6 +198,14 @@ parse_run_args (int argc, char **argv, cmdline *c)
         c->petsc_options = v;
       else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
+                                          &missing)))
+        {
+          if ((c->max_memory = lac_cli_bytes (v)) <= 0)
+            return lac_cli_usage_error (NULL, "--max-memory: expected a "
+                                        "size such as 8G, 500M or 2e9, got",
+                                        v);
+        }
       else if (missing)
         return lac_cli_usage_error (NULL, "missing value after", argv[k]);
       else if (strcmp (argv[k], "--quiet") == 0)
@@ -231,7 +244,8 @@ cmd_run (const cmdline *c)
 {
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy };
+  lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
+                        c->max_memory };
   int rank, size, status;
 
   /* 1. The scene, with the overrides. */

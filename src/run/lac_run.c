@@ -45,8 +45,8 @@ large (const lac_run *r)
 static int
 stage_mesh (lac_run *r)
 {
-  return lac_run_mesh (r->scene, r->model, &r->mesh, r->progress,
-                       sizeof r->progress);
+  return lac_run_mesh (r->scene, r->model, r->opts.max_memory, &r->mesh,
+                       r->progress, sizeof r->progress);
 }
 
 static int

@@ -64,6 +64,9 @@ typedef struct lac_run_opts
   int no_output;         /* skip the output stage (no files at all)     */
   int strategy;          /* lac_strategy_kind; LAC_STRATEGY_AUTO: the
                             scene's [contact] strategy                   */
+  double max_memory;     /* bytes a mesh may need (gmsh's limit and the
+                            size estimate of a .geo, io/lac_mesh_opts.h);
+                            0: 80 % of the machine's memory              */
 } lac_run_opts;
 
 #define LAC_RUN_MAX_EFFECTS 8

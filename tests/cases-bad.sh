@@ -1,0 +1,110 @@
+# tests/cases-bad.sh -- input made to break lac (sourced by tests/run.sh)
+#
+# Malformed and hostile meshes, scene values and scene text, each kept in
+# tests/bad/: every one must end with exactly one line "lac: ..." on stderr
+# that names what is wrong, exit status 1 (never a signal, never 0), and
+# leave the files of an earlier run in the same --out directory
+# byte-identical.  Chapter 01 (scene-format.md, "When the input is wrong")
+# explains each.  Uses $B, writes only under $B/cases-bad/; POSIX sh.
+
+B=${B:-build}
+RB="$B/cases-bad"
+LAC="$B/lac"
+rm -rf "$RB"
+mkdir -p "$RB"
+
+rb_ok () { pass=$((pass+1)); [ -n "$LAC_TEST_VERBOSE" ] && echo "ok   case $1"; return 0; }
+rb_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
+
+# Checksums of the files of the earlier run.
+rb_sums () { (cd "$RB/keep" && ls -A | sort && cksum * 2>/dev/null); }
+
+if "$LAC" run tests/bad/box-msh.scene --out "$RB/keep" --quiet > "$RB/keep.out" 2> "$RB/keep.err" \
+   && [ -f "$RB/keep/summary.txt" ]; then
+  rb_ok bad-keep
+else
+  rb_fail bad-keep "tests/bad/box-msh.scene did not run: $(head -1 "$RB/keep.err")"
+fi
+rb_sums > "$RB/keep.sums"
+
+# rbad NAME 'WORD|WORD...' ARGS...: lac ARGS exits with status 1, prints
+# one line on stderr, starting "lac: " and holding every WORD, and leaves
+# $RB/keep as it was.
+rbad () {
+  name=$1; words=$2; shift 2
+  "$LAC" "$@" > "$RB/$name.out" 2> "$RB/$name.err"
+  rc=$?
+  nl=$(wc -l < "$RB/$name.err")
+  msg=""
+  if [ "$rc" -ne 1 ]; then
+    msg="exit status $rc, expected 1"
+  elif [ "$nl" -ne 1 ]; then
+    msg="$nl lines on stderr, expected 1"
+  elif ! grep -q '^lac: ' "$RB/$name.err"; then
+    msg="stderr does not start with 'lac: '"
+  else
+    old_ifs=$IFS; IFS='|'
+    for w in $words; do
+      grep -qF -- "$w" "$RB/$name.err" || msg="message lacks '$w'"
+    done
+    IFS=$old_ifs
+  fi
+  if [ -z "$msg" ] && ! rb_sums | cmp -s - "$RB/keep.sums"; then
+    msg="the earlier files in $RB/keep changed"
+  fi
+  if [ -z "$msg" ]; then
+    rb_ok "bad-$name"
+  else
+    rb_fail "bad-$name" "$msg: $(head -3 "$RB/$name.err")"
+  fi
+}
+
+KB="--out $RB/keep --quiet"
+SB=tests/bad/box-msh.scene
+
+# ---- meshes: gmsh in its child process -----------------------------------
+rbad crash-segv "crash-segv.msh|gmsh could not read|killed by signal 11|malformed or truncated" \
+  run $SB $KB --set mesh.file=crash-segv.msh
+rbad crash-abort "crash-abort.msh|gmsh could not read|killed by signal 6|malformed or truncated" \
+  run $SB $KB --set mesh.file=crash-abort.msh
+
+# ---- meshes: the lines of a .msh file ------------------------------------
+rbad numtags "numtags.msh|line 51|element 19 (type 2) has 4 nodes after its tags" \
+  run $SB $KB --set mesh.file=numtags.msh
+rbad short-tri "short-tri.msh|line 51|element 19 (type 2) has 2 nodes after its tags" \
+  run $SB $KB --set mesh.file=short-tri.msh
+rbad huge-count "huge-count.msh|line 5|the file ends inside \$Nodes" \
+  run $SB $KB --set mesh.file=huge-count.msh
+
+# ---- meshes: the cells as a mesh -----------------------------------------
+rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
+  run $SB $KB --set mesh.file=dup-cell.msh
+rbad face3 "face3.msh|cells 15, 18 and 30 share a face" \
+  run $SB $KB --set mesh.file=face3.msh
+rbad folded "folded.msh|cells 18 and 19 overlap" \
+  run $SB $KB --set mesh.file=folded.msh
+rbad flat "flat.msh|cell 16 (tri3) is degenerate" \
+  run $SB $KB --set mesh.file=flat.msh
+
+# Nodes in no cell: a warning on the mesh line, the same answer.
+"$LAC" run $SB --set mesh.file=unused-node.msh --no-output > "$RB/unused.out" 2> "$RB/unused.err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q 'warning: 1 node of the file in no cell, left out' "$RB/unused.err" \
+   && cmp -s "$RB/unused.out" "$RB/keep.out"; then
+  rb_ok bad-unused-node
+else
+  rb_fail bad-unused-node "exit $rc, no warning or another answer: $(grep mesh "$RB/unused.err")"
+fi
+
+# ---- meshes: too large to make -------------------------------------------
+rbad level12 "[mesh] file = 'box.geo'|level = 12|an estimated 6.2e+08 nodes|--max-memory" \
+  run tests/bad/box.scene $KB --set level=12
+rbad max-memory "level = 2|an estimated|more than the limit of 0.1 GB" \
+  run tests/bad/box.scene $KB --set level=2 --max-memory 100M
+"$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M or 2e9, got 12Q" "$RB/mm-usage.err"; then
+  rb_ok bad-max-memory-usage
+else
+  rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
+fi
