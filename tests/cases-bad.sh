@@ -108,3 +108,17 @@ if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M o
 else
   rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
 fi
+
+# ---- numbers: finite and in range ----------------------------------------
+rbad E-huge "E-huge.scene:12:|E = '1e308'|magnitude at most 1e+30" \
+  run tests/bad/E-huge.scene $KB
+rbad nu-near-half "nu-near-half.scene:13:|nu = '0.4999999999999999'|too close to 0.5|lambda / mu" \
+  run tests/bad/nu-near-half.scene $KB
+rbad traction-huge "traction-huge.scene:21:|traction = '1e308 0'|magnitude at most 1e+30" \
+  run tests/bad/traction-huge.scene $KB
+rbad ux-huge "ux-huge.scene:17:|ux = '1e308'|magnitude at most 1e+30" \
+  run tests/bad/ux-huge.scene $KB
+rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
+  run tests/bad/box.scene $KB --set material.steel.E=1e-300
+rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
+  run tests/bad/contrast.scene $KB
