@@ -122,3 +122,31 @@ rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
   run tests/bad/box.scene $KB --set material.steel.E=1e-300
 rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
   run tests/bad/contrast.scene $KB
+
+# ---- scene text ----------------------------------------------------------
+rbad nul-byte "nul-byte.scene:19:|a NUL byte" run tests/bad/nul-byte.scene $KB
+rbad cr-only "cr-only.scene:1:|a carriage return not followed by a line feed" \
+  run tests/bad/cr-only.scene $KB
+rbad latin1-key "latin1-key.scene:3:|not UTF-8|titr\\xE9" run tests/bad/latin1-key.scene $KB
+rbad binary-key "binary-key.scene:12:|a control character|E\\x1B[31m" \
+  run tests/bad/binary-key.scene $KB
+rbad set-binary "--set|a control character|title=a\\x1Bb" \
+  run tests/bad/box.scene $KB --set "$(printf 'title=a\033b')"
+
+# CR LF line ends read like LF: the same summary as box.scene.
+"$LAC" run tests/bad/box.scene --no-output --quiet > "$RB/lf.out" 2>&1
+"$LAC" run tests/bad/crlf.scene --no-output --quiet > "$RB/crlf.out" 2>&1
+if sed 1d "$RB/crlf.out" | cmp -s - "$(sed 1d "$RB/lf.out" > "$RB/lf1.out"; echo "$RB/lf1.out")"; then
+  rb_ok bad-crlf
+else
+  rb_fail bad-crlf "crlf.scene does not give the summary of box.scene: $(head -2 "$RB/crlf.out")"
+fi
+
+# No message of this file holds a byte that is not printable ASCII: what
+# the files held (binary, Latin-1) is shown as \xNN.
+raw=$(LC_ALL=C grep -l '[^ -~]' "$RB"/*.err 2>/dev/null)
+if [ -z "$raw" ]; then
+  rb_ok bad-no-raw-bytes
+else
+  rb_fail bad-no-raw-bytes "raw bytes in: $raw"
+fi

@@ -208,7 +208,10 @@ lac_cli_infsup (int argc, char **argv)
   int ret;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
-    return lac_cli_usage_error ("infsup", "out of memory", NULL);
+    {
+      lac_cli_print_error ("out of memory");
+      return LAC_CLI_FAILURE;
+    }
   if ((ret = parse (argc, argv, &a)) || a.help)
     {
       if (!ret)

@@ -380,7 +380,10 @@ main (int argc, char **argv)
     return lac_cli_usage_error (NULL, "unknown command", argv[1]);
   memset (&c, 0, sizeof c);
   if (!(c.set = malloc ((size_t) argc * sizeof *c.set)))
-    return lac_cli_usage_error (NULL, "out of memory", NULL);
+    {
+      lac_cli_print_error ("out of memory");
+      return LAC_CLI_FAILURE;
+    }
   if ((ret = parse_run_args (argc, argv, &c)) == 0)
     {
       int rank;
