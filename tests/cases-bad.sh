@@ -150,3 +150,39 @@ if [ -z "$raw" ]; then
 else
   rb_fail bad-no-raw-bytes "raw bytes in: $raw"
 fi
+
+# ---- outputs: all or nothing ---------------------------------------------
+# A write that fails half-way (file size limit: the write gets EFBIG): the
+# earlier results stay, byte for byte, and no temporary is left beside.
+# (SIGXFSZ ignored so that the write fails instead of killing lac.)
+(trap '' XFSZ; ulimit -f 2; "$LAC" run tests/bad/box-msh.scene --out "$RB/keep" --quiet \
+   --set mesh.file=box.msh --set material.steel.E=2000 > /dev/null 2> "$RB/efbig.err")
+rc=$?
+left=$(ls -A "$RB" | grep -E 'lac-(new|old)-')
+if [ $rc -eq 1 ] && grep -q "cannot write" "$RB/efbig.err" && rb_sums | cmp -s - "$RB/keep.sums" \
+   && [ -z "$left" ]; then
+  rb_ok bad-output-efbig
+else
+  rb_fail bad-output-efbig "exit $rc, temporaries '$left': $(head -1 "$RB/efbig.err")"
+fi
+
+# lac render: a PNG that cannot be written leaves the earlier one.
+"$LAC" render "$RB/keep" --field u --out "$RB/u.png" > /dev/null 2> "$RB/render1.err"
+cksum < "$RB/u.png" > "$RB/u.sum" 2> /dev/null
+(trap '' XFSZ; ulimit -f 4; "$LAC" render "$RB/keep" --field u --width 1600 --height 1200 \
+   --out "$RB/u.png" > /dev/null 2> "$RB/render2.err")
+rc=$?
+if [ -s "$RB/u.png" ] && [ $rc -eq 1 ] && cksum < "$RB/u.png" | cmp -s - "$RB/u.sum" \
+   && [ -z "$(ls -A "$RB" | grep lac-tmp)" ]; then
+  rb_ok bad-render-efbig
+else
+  rb_fail bad-render-efbig "exit $rc: $(head -1 "$RB/render1.err" "$RB/render2.err")"
+fi
+
+# SIGINT and SIGTERM at random moments (3 runs here; tests/interrupt.sh
+# does 20 on a larger run): one complete set of files, no temporaries.
+if sh tests/interrupt.sh "$B" 3 3 > "$RB/interrupt.out" 2>&1; then
+  rb_ok bad-interrupt
+else
+  rb_fail bad-interrupt "$(grep -E 'MIXED|TEMPORARIES|failed' "$RB/interrupt.out" | head -3)"
+fi

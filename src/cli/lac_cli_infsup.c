@@ -204,7 +204,7 @@ lac_cli_infsup (int argc, char **argv)
   args a;
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts ro = { NULL, 0, 1, 0, 0 };
+  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL };
   int ret;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))

@@ -15,6 +15,7 @@
  * processes, process 0 runs the scene (and alone prints and writes) and
  * the others serve its petsc strategy (solve/lac_petsc.h).
  */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -112,8 +113,10 @@ static const char *help_text =
   "                    limited to it, and a .geo whose mesh is estimated to\n"
   "                    need more is refused before gmsh makes it\n"
   "\n"
-  "output files in DIR (all renamed into place at the end, so a failed run\n"
-  "leaves the files of an earlier run untouched; summary.txt comes last):\n"
+  "output files in DIR (written beside it, in .NAME.lac-new-PID, and put in\n"
+  "place all at once at the end: a run that fails, or gets SIGINT or\n"
+  "SIGTERM, leaves the complete files of the earlier run and no temporary;\n"
+  "files of DIR that a run never writes are kept):\n"
   "  solution.vtu      mesh, displacement, stresses, von Mises (ParaView)\n"
   "  nodes.csv         one row per node: coordinates, displacement, stress\n"
   "  contact.csv       one row per macro-element: centroid, measure,\n"
@@ -237,6 +240,50 @@ print_fallback (const lac_run *r)
     fprintf (stderr, "lac:       note: %s\n", why);
 }
 
+/* SIGINT and SIGTERM during the output stage: the stage stops between two
+ * files and publishes nothing (io/lac_output_batch.h), then the process
+ * ends by the signal.  A second signal ends it at once (the temporary
+ * directory is then removed by the next run).  Outside the output stage
+ * the signals keep their default action: no file of the run exists yet. */
+static volatile sig_atomic_t stop_signal;
+
+static void
+on_stop (int sig)
+{
+  if (stop_signal)                          /* a second one: at once */
+    {
+      signal (sig, SIG_DFL);
+      raise (sig);
+    }
+  stop_signal = sig;
+}
+
+/* on: catch SIGINT and SIGTERM, unless lac was started with them ignored
+ * (a background job of a shell script): then they stay ignored.  off: back
+ * to what lac was started with. */
+static void
+catch_stop (int on)
+{
+  static const int sig[2] = { SIGINT, SIGTERM };
+  static struct sigaction initial[2];
+  static int saved;
+  for (int k = 0; k < 2; k++)
+    {
+      struct sigaction sa;
+      if (!saved && sigaction (sig[k], NULL, &initial[k]) != 0)
+        return;
+      sa = initial[k];
+      if (on && initial[k].sa_handler != SIG_IGN)
+        {
+          memset (&sa, 0, sizeof sa);
+          sa.sa_handler = on_stop;
+          sigemptyset (&sa.sa_mask);
+        }
+      sigaction (sig[k], &sa, NULL);
+    }
+  saved = 1;
+}
+
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
  * summary. */
 static int
@@ -245,7 +292,7 @@ cmd_run (const cmdline *c)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
-                        c->max_memory };
+                        c->max_memory, &stop_signal };
   int rank, size, status;
 
   /* 1. The scene, with the overrides. */
@@ -279,6 +326,7 @@ cmd_run (const cmdline *c)
   do
     {
       int stage = r->stage;
+      catch_stop (stage == LAC_STAGE_OUTPUT);
       status = lac_run_iterate (r);
       if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
         {
@@ -299,6 +347,9 @@ cmd_run (const cmdline *c)
     lac_cli_print_error (lac_error_message ());
   lac_run_free (r);
   lac_scene_free (sc);
+  catch_stop (0);
+  if (stop_signal && status != LAC_SUCCESS)  /* end as the signal asked */
+    raise (stop_signal);
   if (fflush (stdout) != 0)
     {
       lac_cli_print_error ("cannot write the summary to stdout");
