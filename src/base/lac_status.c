@@ -6,6 +6,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 
+#include "base/lac_text.h"
+
 static _Thread_local char last_message[1024];
 static _Thread_local gsl_error_handler_t *saved_gsl_handler;
 
@@ -42,7 +44,9 @@ lac_error_clear (void)
 }
 
 /* The message is formatted into a local buffer first, so an argument may
- * be the previous message (lac_error_message ()) to wrap it. */
+ * be the previous message (lac_error_message ()) to wrap it; what the
+ * caller quotes from a file may be binary, so bytes that are not text are
+ * stored as \xNN (lac_text.h). */
 int
 lac_error_set (int status, const char *func, const char *fmt, ...)
 {
@@ -51,10 +55,25 @@ lac_error_set (int status, const char *func, const char *fmt, ...)
   int n = snprintf (buf, sizeof buf, "%s: ", func);
   if (n < 0 || (size_t) n >= sizeof buf)
     n = 0;
-  va_start (ap, fmt);
-  vsnprintf (buf + n, sizeof buf - (size_t) n, fmt, ap);
-  va_end (ap);
-  memcpy (last_message, buf, sizeof buf);
+  if (status == LAC_ENOMEM)         /* every such message says it once */
+    {
+      char rest[sizeof last_message];
+      va_start (ap, fmt);
+      vsnprintf (rest, sizeof rest, fmt, ap);
+      va_end (ap);
+      size_t m = (size_t) n;
+      if (!strstr (rest, "out of memory"))
+        m += (size_t) snprintf (buf + m, sizeof buf - m, "out of memory: ");
+      memcpy (buf + m, rest, strnlen (rest, sizeof buf - m - 1));
+      buf[m + strnlen (rest, sizeof buf - m - 1)] = '\0';
+    }
+  else
+    {
+      va_start (ap, fmt);
+      vsnprintf (buf + n, sizeof buf - (size_t) n, fmt, ap);
+      va_end (ap);
+    }
+  lac_text_escape (last_message, sizeof last_message, buf);
   return status;
 }
 

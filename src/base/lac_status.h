@@ -6,6 +6,10 @@
  * thread-local, like errno: it is the library's only mutable state outside
  * the objects the caller owns.
  *
+ * A message stored with LAC_ENOMEM always says "out of memory".
+ * Messages hold text only: control bytes and bytes that are not UTF-8
+ * are stored as \xNN (base/lac_text.h).
+ *
  * lac_init switches GSL's aborting error handler off (GSL would otherwise
  * abort on a singular matrix); lac_finalize restores it.
  */

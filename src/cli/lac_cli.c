@@ -1,7 +1,9 @@
 /* lac_cli.c -- helpers of the command line (see lac_cli.h). */
 #include "cli/lac_cli.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 void
@@ -42,4 +44,20 @@ lac_cli_option_value (int argc, char **argv, int *k, const char *name,
       return NULL;
     }
   return argv[++*k];
+}
+
+double
+lac_cli_bytes (const char *s)
+{
+  static const char suffix[] = "kMGT";
+  char *end;
+  double v = strtod (s, &end);
+  const char *p = *end ? strchr (suffix, *end) : NULL;
+  if (end == s || !isfinite (v) || v <= 0)
+    return -1;
+  if (*end && (!p || end[1] != '\0'))
+    return -1;
+  for (const char *q = suffix; p && q <= p; q++)
+    v *= 1000;
+  return v;
 }

@@ -21,4 +21,8 @@ int lac_cli_usage_error (const char *cmd, const char *what, const char *arg);
 const char *lac_cli_option_value (int argc, char **argv, int *k,
                                   const char *name, int *missing);
 
+/* A size in bytes: a number with an optional suffix k, M, G or T (powers
+ * of 1000, as the messages print GB); -1 if it is not one, or not > 0. */
+double lac_cli_bytes (const char *s);
+
 #endif /* LAC_CLI_H */

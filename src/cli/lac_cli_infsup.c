@@ -204,11 +204,14 @@ lac_cli_infsup (int argc, char **argv)
   args a;
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts ro = { NULL, 0, 1, 0 };
+  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL };
   int ret;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
-    return lac_cli_usage_error ("infsup", "out of memory", NULL);
+    {
+      lac_cli_print_error ("out of memory");
+      return LAC_CLI_FAILURE;
+    }
   if ((ret = parse (argc, argv, &a)) || a.help)
     {
       if (!ret)

@@ -162,8 +162,9 @@ write_curves_gp (const char *gp, const char *name, const char *png,
   fprintf (fp, "# lac render --contact: lambda and mean gap along Gamma_C\n"
            "# (run in this directory: gnuplot %s.gp)\n"
            "set terminal pngcairo size %d,%d font 'DejaVu Sans,10'\n"
-           "set output ", name, o->width, o->height);
+           "if (!exists (\"out\")) out = ", name, o->width, o->height);
   gp_quote (fp, png);
+  fprintf (fp, "\nset output out");
   fprintf (fp, "\nset datafile missing 'NaN'\nset grid\n"
            "set key below\nset autoscale xfix\n"
            "set offsets 0, 0, graph 0.08, graph 0.08\n"
@@ -191,13 +192,22 @@ write_curves_gp (const char *gp, const char *name, const char *png,
   return LAC_SUCCESS;
 }
 
-/* Run `gnuplot GP` in the directory DIR (fork, chdir, execvp). */
+/* Run `gnuplot -e "out = 'TMP'" GP` in the directory DIR (fork, chdir,
+ * execvp): the picture goes to TMP (the script's own name for it when run
+ * by hand). */
 static int
-run_gnuplot (const char *dir, const char *gp)
+run_gnuplot (const char *dir, const char *gp, const char *tmp)
 {
-  char *argv[3] = { (char *) "gnuplot", (char *) gp, NULL };
+  char set[1200];
+  char *argv[5] = { (char *) "gnuplot", (char *) "-e", set, (char *) gp,
+                    NULL };
   int st;
   pid_t pid;
+  size_t n = (size_t) snprintf (set, sizeof set, "out = '");
+  for (const char *c = tmp; *c && n + 4 < sizeof set; c++)  /* ' doubled */
+    n += (size_t) snprintf (set + n, sizeof set - n, *c == '\'' ? "''"
+                            : "%c", *c);
+  snprintf (set + n, sizeof set - n, "'");
   fflush (stdout);
   fflush (stderr);
   if ((pid = fork ()) < 0)
@@ -214,6 +224,22 @@ run_gnuplot (const char *dir, const char *gp)
                WIFEXITED (st) && WEXITSTATUS (st) == 127
                ? ": is gnuplot installed (Debian: gnuplot-nox)?" : "");
   return LAC_SUCCESS;
+}
+
+/* gnuplot draws DIR/.FILE.lac-tmp-PID, renamed to out when it succeeded:
+ * a failure leaves an earlier picture of that name as it was. */
+static int
+draw (const char *dir, const char *gp, const char *file, const char *out)
+{
+  char tmp[1100], path[5300];
+  int status;
+  snprintf (tmp, sizeof tmp, ".%s.lac-tmp-%ld", file, (long) getpid ());
+  snprintf (path, sizeof path, "%s/%s", dir, tmp);
+  if (!(status = run_gnuplot (dir, gp, tmp)) && rename (path, out) != 0)
+    status = LAC_ERRMSG (LAC_EIO, "cannot write '%s' (%s)", out,
+                         strerror (errno));
+  unlink (path);
+  return status;
 }
 
 static double
@@ -258,6 +284,6 @@ lac_cli_render_curves (const macro_rows *rows, const lac_render_result *res,
                                     1e-9 * mesh_diameter (res->mesh))))
     return status;
   snprintf (gp, sizeof gp, "%s.gp", name);
-  return run_gnuplot (dir, gp);
+  return draw (dir, gp, file, out);
 }
 

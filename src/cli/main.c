@@ -15,6 +15,7 @@
  * processes, process 0 runs the scene (and alone prints and writes) and
  * the others serve its petsc strategy (solve/lac_petsc.h).
  */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,9 +108,15 @@ static const char *help_text =
   "                    peak_rss_total_mb (peak memory, MB, summed over the\n"
   "                    MPI processes) to the summary\n"
   "  --no-output       write no files (the summary still goes to stdout)\n"
+  "  --max-memory SIZE memory a mesh may need (8G, 500M, 2e9 bytes; default\n"
+  "                    80 % of the machine's): gmsh runs in a child process\n"
+  "                    limited to it, and a .geo whose mesh is estimated to\n"
+  "                    need more is refused before gmsh makes it\n"
   "\n"
-  "output files in DIR (all renamed into place at the end, so a failed run\n"
-  "leaves the files of an earlier run untouched; summary.txt comes last):\n"
+  "output files in DIR (written beside it, in .NAME.lac-new-PID, and put in\n"
+  "place all at once at the end: a run that fails, or gets SIGINT or\n"
+  "SIGTERM, leaves the complete files of the earlier run and no temporary;\n"
+  "files of DIR that a run never writes are kept):\n"
   "  solution.vtu      mesh, displacement, stresses, von Mises (ParaView)\n"
   "  nodes.csv         one row per node: coordinates, displacement, stress\n"
   "  contact.csv       one row per macro-element: centroid, measure,\n"
@@ -153,6 +160,7 @@ typedef struct cmdline
   const char *out;
   int quiet, timings, no_output, strategy;
   const char *petsc_options;
+  double max_memory;
   char solver_set[64];
 } cmdline;
 
@@ -193,6 +201,14 @@ parse_run_args (int argc, char **argv, cmdline *c)
         c->petsc_options = v;
       else if ((v = lac_cli_option_value (argc, argv, &k, "--out", &missing)))
         c->out = v;
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
+                                          &missing)))
+        {
+          if ((c->max_memory = lac_cli_bytes (v)) <= 0)
+            return lac_cli_usage_error (NULL, "--max-memory: expected a "
+                                        "size such as 8G, 500M or 2e9, got",
+                                        v);
+        }
       else if (missing)
         return lac_cli_usage_error (NULL, "missing value after", argv[k]);
       else if (strcmp (argv[k], "--quiet") == 0)
@@ -224,6 +240,50 @@ print_fallback (const lac_run *r)
     fprintf (stderr, "lac:       note: %s\n", why);
 }
 
+/* SIGINT and SIGTERM during the output stage: the stage stops between two
+ * files and publishes nothing (io/lac_output_batch.h), then the process
+ * ends by the signal.  A second signal ends it at once (the temporary
+ * directory is then removed by the next run).  Outside the output stage
+ * the signals keep their default action: no file of the run exists yet. */
+static volatile sig_atomic_t stop_signal;
+
+static void
+on_stop (int sig)
+{
+  if (stop_signal)                          /* a second one: at once */
+    {
+      signal (sig, SIG_DFL);
+      raise (sig);
+    }
+  stop_signal = sig;
+}
+
+/* on: catch SIGINT and SIGTERM, unless lac was started with them ignored
+ * (a background job of a shell script): then they stay ignored.  off: back
+ * to what lac was started with. */
+static void
+catch_stop (int on)
+{
+  static const int sig[2] = { SIGINT, SIGTERM };
+  static struct sigaction initial[2];
+  static int saved;
+  for (int k = 0; k < 2; k++)
+    {
+      struct sigaction sa;
+      if (!saved && sigaction (sig[k], NULL, &initial[k]) != 0)
+        return;
+      sa = initial[k];
+      if (on && initial[k].sa_handler != SIG_IGN)
+        {
+          memset (&sa, 0, sizeof sa);
+          sa.sa_handler = on_stop;
+          sigemptyset (&sa.sa_mask);
+        }
+      sigaction (sig[k], &sa, NULL);
+    }
+  saved = 1;
+}
+
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
  * summary. */
 static int
@@ -231,7 +291,8 @@ cmd_run (const cmdline *c)
 {
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy };
+  lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
+                        c->max_memory, &stop_signal };
   int rank, size, status;
 
   /* 1. The scene, with the overrides. */
@@ -265,6 +326,7 @@ cmd_run (const cmdline *c)
   do
     {
       int stage = r->stage;
+      catch_stop (stage == LAC_STAGE_OUTPUT);
       status = lac_run_iterate (r);
       if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
         {
@@ -285,6 +347,9 @@ cmd_run (const cmdline *c)
     lac_cli_print_error (lac_error_message ());
   lac_run_free (r);
   lac_scene_free (sc);
+  catch_stop (0);
+  if (stop_signal && status != LAC_SUCCESS)  /* end as the signal asked */
+    raise (stop_signal);
   if (fflush (stdout) != 0)
     {
       lac_cli_print_error ("cannot write the summary to stdout");
@@ -366,7 +431,10 @@ main (int argc, char **argv)
     return lac_cli_usage_error (NULL, "unknown command", argv[1]);
   memset (&c, 0, sizeof c);
   if (!(c.set = malloc ((size_t) argc * sizeof *c.set)))
-    return lac_cli_usage_error (NULL, "out of memory", NULL);
+    {
+      lac_cli_print_error ("out of memory");
+      return LAC_CLI_FAILURE;
+    }
   if ((ret = parse_run_args (argc, argv, &c)) == 0)
     {
       int rank;

@@ -52,6 +52,8 @@ typedef struct lac_mesh
                               cell belongs to, -1 if none                 */
   size_t ngroups;
   lac_group *group;        /* owned, ngroups                              */
+  size_t ndropped;         /* nodes of the file that no cell uses, left
+                              out when read (a warning, not an error)     */
 } lac_mesh;
 
 /* construct / destroy */

@@ -1,281 +1,111 @@
-/* lac_mesh_gmsh.c -- reading meshes through the gmsh C API          [LAC §2]
+/* lac_mesh_gmsh.c -- reading meshes through gmsh, at arm's length [LAC §2]
  *
- * lac_mesh_read opens a .msh file (formats 2.2 and 4.1) or a .geo file
- * (meshed here, options from lac_mesh_opts) with gmsh, copies nodes, cells
- * and physical groups into a lac_mesh, and finalizes gmsh: the mesh owes
- * nothing to gmsh afterwards.  This file holds the gmsh session (options,
- * opening, meshing) and the driver; the copy is done by
- * lac_mesh_gmsh_cells.c (nodes and cells: tags -> 0-based indices) and
- * lac_mesh_gmsh_groups.c (physical groups), both on the reader state and
- * messages of lac_mesh_gmsh_reader.c.
+ * lac_mesh_read is the driver of one read:
  *
- *   - inverted cells are flipped or rejected (opts->flip_inverted);
- *   - size, order, serendipity and recombine apply to .geo files only; a
- *     .msh file is read as it is.
+ *   1. the file: its kind from the extension, that it exists (gmshOpen is
+ *      silent about a missing file), and for a .msh file the line-by-line
+ *      check of lac_mesh_msh_check.h, which refuses the files that gmsh
+ *      would read wrong without a word or choke on;
+ *   2. gmsh in a child process (lac_mesh_child.h) that runs one session
+ *      (lac_mesh_gmsh_session.h: open, mesh, copy) and sends the mesh back
+ *      through a pipe (lac_mesh_wire.h);
+ *   3. the checks of fem/lac_mesh_check.h: the arrays fit together (types,
+ *      node counts, indices, finite coordinates), then the cells form a
+ *      mesh (no flat cell, no cell twice, no face of three cells, no
+ *      overlapping cells).
  *
- * gmsh 4.8 notes (see the project's dependency notes): gmshOpen on a missing
- * file reports no error, so existence is checked first; the number `level'
- * reaches the .geo as a command-line "-setnumber level N" passed to
- * gmshInitialize (works with DefineConstant[] and with Exists()); such
- * numbers persist in the gmsh process, so level is always set, never left
- * over; Mesh.Algorithm 8 crashes gmsh 4.8 and is replaced by 6; a parse
- * error thrown as an exception poisons later parses (see open_file).
+ * Messages name lac_mesh_read and the file.
  */
 #include "io/lac_mesh_gmsh.h"
 
-#include <gmshc.h>
+#include <errno.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "io/lac_mesh_gmsh_cells.h"
-#include "io/lac_mesh_gmsh_groups.h"
-#include "io/lac_mesh_gmsh_reader.h"
 #include "base/lac_status.h"
+#include "fem/lac_mesh_check.h"
+#include "io/lac_mesh_child.h"
+#include "io/lac_mesh_gmsh_session.h"
+#include "io/lac_mesh_msh_check.h"
 
-enum { KIND_MSH, KIND_GEO };
+#define READ_FAIL(status, ...) lac_error_set ((status), "lac_mesh_read", \
+                                              __VA_ARGS__)
+
+/* What the child process is given. */
+typedef struct session_arg
+{
+  const char *path;
+  int kind;
+  const lac_mesh_opts *opts;
+} session_arg;
 
 static int
-set_option (const lac_gmsh_reader *R, const char *name, double value)
+session (void *arg, lac_mesh **out)
 {
-  int ierr = 0;
-  gmshOptionSetNumber (name, value, &ierr);
-  if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, name);
-  return LAC_SUCCESS;
+  const session_arg *a = arg;
+  return lac_gmsh_session (a->path, a->kind, a->opts, out);
 }
 
-/* ---------------------------------------------------------------------- */
-/* meshing a .geo                                                          */
-/* ---------------------------------------------------------------------- */
-
-/* Generate the mesh of the highest dimension with the options of opts. */
+/* The kind of file from its extension, and that it can be opened. */
 static int
-mesh_geo (lac_gmsh_reader *R)
+file_kind (const char *path, int *kind)
 {
-  const lac_mesh_opts *o = R->opts;
-  double alg = 6;
-  int ierr = 0, dim, status = LAC_SUCCESS;
-
-  dim = gmshModelGetDimension (&ierr);
-  if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, "cannot get the model dimension");
-  if (dim < 2)
-    return READ_ERR (LAC_EINVAL, "'%s': the geometry has no surface or volume "
-                     "(dimension %d)", R->path, dim);
-  if (o->size < 0 || o->order < 0 || o->order > 2)
-    return READ_ERR (LAC_EINVAL, "'%s': size %g or order %d out of range "
-                     "(size >= 0, order 0, 1 or 2)", R->path, o->size,
-                     o->order);
-  if (o->size > 0)
-    status = set_option (R, "Mesh.MeshSizeFactor", o->size);
-  if (!status && o->recombine)
-    status = set_option (R, "Mesh.RecombineAll", 1);
-  if (!status && o->recombine)
-    status = set_option (R, "Mesh.RecombinationAlgorithm", 1);   /* blossom */
-  if (!status && o->serendipity)
-    status = set_option (R, "Mesh.SecondOrderIncomplete", 1);
-  gmshOptionGetNumber ("Mesh.Algorithm", &alg, &ierr);
-  if (!status && !ierr && alg == 8)   /* crashes gmsh 4.8.4: use the default */
-    status = set_option (R, "Mesh.Algorithm", 6);
-  if (status)
-    return status;
-  gmshModelMeshGenerate (dim, &ierr);
-  if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, "meshing failed");
-  if (o->order > 0)
-    {
-      gmshModelMeshSetOrder (o->order, &ierr);
-      if (ierr)
-        return lac_gmsh_fail (R, LAC_EDEP, "cannot set the element order");
-    }
-  return LAC_SUCCESS;
-}
-
-/* ---------------------------------------------------------------------- */
-/* the reader                                                              */
-/* ---------------------------------------------------------------------- */
-
-/* gmshOpen, with its errors taken from the logger.  A parse error thrown
- * as an exception (General.AbortOnError = 2, the API default) leaves the
- * .geo parser of gmsh 4.8 in a state that breaks every later parse in the
- * process, even after gmshFinalize/gmshInitialize; with AbortOnError = 0
- * the parser ends normally and the errors are logged. */
-static int
-open_file (const lac_gmsh_reader *R, int kind)
-{
-  char **log = NULL;
-  const char *first = NULL;
-  size_t nlog = 0;
-  int ierr = 0, ierr_log = 0, status;
-
-  status = set_option (R, "General.AbortOnError", 0);
-  if (status)
-    return status;
-  gmshLoggerStart (&ierr);
-  if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, "cannot start the gmsh logger");
-  gmshOpen (R->path, &ierr);
-  gmshLoggerGet (&log, &nlog, &ierr_log);
-  for (size_t i = 0; i < nlog && !first; i++)
-    if (strncmp (log[i], "Error: ", 7) == 0)
-      first = log[i] + 7;
-  if (first)
-    status = READ_ERR (LAC_EIO, "'%s': not a valid %s file: %s", R->path,
-                       kind == KIND_GEO ? ".geo" : "mesh", first);
-  else if (ierr || ierr_log)
-    status = lac_gmsh_fail (R, LAC_EIO, kind == KIND_GEO
-                                    ? "not a valid .geo file"
-                                    : "not a valid mesh file");
-  for (size_t i = 0; i < nlog; i++)
-    gmshFree (log[i]);
-  gmshFree (log);
-  gmshLoggerStop (&ierr);
-  if (!status)
-    status = set_option (R, "General.AbortOnError", 2);
-  return status;
-}
-
-/* Open (and mesh) the file, copy nodes, cells and groups into *out. */
-static int
-read_model (lac_gmsh_reader *R, int kind, lac_mesh **out)
-{
-  int status;
-  lac_mesh *m = NULL;
-
-  status = set_option (R, "General.Terminal", 0);
-  if (!status)
-    status = set_option (R, "General.Verbosity", 1);   /* errors, logged */
-  if (!status)
-    status = open_file (R, kind);
-  if (!status && kind == KIND_GEO)
-    status = mesh_geo (R);
-  if (!status)
-    status = lac_gmsh_read_nodes (R);
-  if (!status)
-    status = lac_gmsh_top_dimension (R, &R->tdim);
-  if (!status && R->tdim < 2)
-    status = READ_ERR (LAC_EINVAL, "'%s': no 2D or 3D elements (expected a "
-                       "mesh of surfaces or volumes)", R->path);
-  if (!status)
-    status = lac_gmsh_read_cells (R, &m);
-  if (!status)
-    status = lac_gmsh_with_path (R, lac_mesh_check_orientation (m,
-                                                       R->opts->flip_inverted,
-                                                       NULL));
-  if (!status)
-    status = lac_gmsh_read_groups (R, m);
-  if (status)
-    lac_mesh_free (m);
+  const char *ext = strrchr (path, '.');
+  FILE *f;
+  if (ext && strcmp (ext, ".geo") == 0)
+    *kind = LAC_GMSH_GEO;
+  else if (ext && strcmp (ext, ".msh") == 0)
+    *kind = LAC_GMSH_MSH;
   else
-    *out = m;
-  return status;
+    return READ_FAIL (LAC_EINVAL, "'%s': expected a .msh or .geo file", path);
+  if (!(f = fopen (path, "r")))
+    return READ_FAIL (LAC_EIO, "cannot open '%s': %s", path,
+                      strerror (errno));
+  fclose (f);
+  return LAC_SUCCESS;
 }
 
-/* lac_mesh_read: read a .msh (2.2, 4.1) or mesh a .geo through gmsh.
- *   [in]  path  the file; its extension says which
- *   [in]  opts  meshing options (NULL: all zero)
- *   [out] out   the mesh (caller frees), NULL on failure
- *   returns LAC_SUCCESS, LAC_EIO (missing or unreadable file), LAC_EINVAL
- *   (unsupported elements, inverted cells, groups that do not fit),
- *   LAC_EDEP (gmsh failed), LAC_ENOMEM */
-/* argv for gmshInitialize: "-setnumber level N" and one "-setnumber NAME
- * VALUE" per pair of `numbers` ("n=28, m=3"); the strings in buf.
- * Returns argc, or -1 with a message for a malformed pair. */
+/* A lac_mesh_* message, with the file in front. */
 static int
-number_args (const char *path, int level, const char *numbers, char *buf,
-             size_t size, char **argv)
+with_path (const char *path, int status)
 {
-  static char prog[] = "lac", set[] = "-setnumber", lev[] = "level";
-  int argc = 0;
-  size_t used = 0;
-  argv[argc++] = prog;
-  argv[argc++] = set;
-  argv[argc++] = lev;
-  argv[argc++] = buf;
-  used = (size_t) snprintf (buf, size, "%d", level) + 1;
-  for (const char *p = numbers; p && *p;)
-    {
-      size_t nl = 0, vl;
-      char *end;
-      p += strspn (p, " \t,");
-      if (!*p)
-        break;
-      while (p[nl] == '_' || (p[nl] >= 'a' && p[nl] <= 'z')
-             || (p[nl] >= 'A' && p[nl] <= 'Z') || (nl > 0 && p[nl] >= '0'
-                                                   && p[nl] <= '9'))
-        nl++;
-      vl = strcspn (p + nl + 1, " \t,");
-      if (nl == 0 || p[nl] != '=' || vl == 0
-          || argc + 3 > 3 + 3 * (LAC_MESH_MAX_NUMBERS + 1)
-          || used + nl + vl + 2 > size)
-        return READ_ERR (LAC_EINVAL, "'%s': numbers = '%s': expected at "
-                         "most %d NAME=VALUE pairs", path, numbers,
-                         LAC_MESH_MAX_NUMBERS), -1;
-      argv[argc++] = set;
-      argv[argc++] = memcpy (buf + used, p, nl);
-      buf[used + nl] = '\0';
-      used += nl + 1;
-      argv[argc++] = memcpy (buf + used, p + nl + 1, vl);
-      buf[used + vl] = '\0';
-      strtod (buf + used, &end);
-      if (*end != '\0')
-        return READ_ERR (LAC_EINVAL, "'%s': numbers: '%s' is not a number",
-                         path, buf + used), -1;
-      used += vl + 1;
-      p += nl + 1 + vl;
-    }
-  argv[argc] = NULL;
-  return argc;
+  char msg[768];
+  const char *m = lac_error_message (), *colon = strstr (m, ": ");
+  snprintf (msg, sizeof msg, "%s", colon ? colon + 2 : m);
+  return READ_FAIL (status, "'%s': %s", path, msg);
 }
 
+/* lac_mesh_read: see lac_mesh_gmsh.h. */
 int
 lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
 {
-  static const lac_mesh_opts none;
-  lac_gmsh_reader R = { 0 };
-  const char *ext;
-  char buf[1024], *argv[4 + 3 * LAC_MESH_MAX_NUMBERS + 4];
-  FILE *f;
-  int kind, ierr = 0, status, argc;
+  lac_mesh_opts o = { 0 };
+  session_arg arg;
+  int kind = LAC_GMSH_MSH, status;
 
   if (!out)
-    return READ_ERR (LAC_EINVAL, "no output pointer");
+    return READ_FAIL (LAC_EINVAL, "no output pointer");
   *out = NULL;
   if (!path)
-    return READ_ERR (LAC_EINVAL, "no file name");
-  ext = strrchr (path, '.');
-  if (ext && strcmp (ext, ".geo") == 0)
-    kind = KIND_GEO;
-  else if (ext && strcmp (ext, ".msh") == 0)
-    kind = KIND_MSH;
-  else
-    return READ_ERR (LAC_EINVAL, "'%s': expected a .msh or .geo file", path);
-  f = fopen (path, "r");                 /* gmshOpen is silent if missing */
-  if (!f)
-    return READ_ERR (LAC_EIO, "cannot open '%s'", path);
-  fclose (f);
-  R.path = path;
-  R.opts = opts ? opts : &none;
-  /* "-setnumber level N" defines `level' for the .geo parser; gmsh keeps
-   * such numbers for the whole process, so it is always given (the other
-   * numbers persist likewise: a later read in the same process sees them). */
-  argc = number_args (path, R.opts->level, R.opts->numbers, buf, sizeof buf,
-                      argv);
-  if (argc < 0)
-    return LAC_EINVAL;
-  gmshInitialize (argc, argv, 0, &ierr);
-  if (ierr)
-    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize", path);
-  else
-    status = read_model (&R, kind, out);
-  gmshFinalize (&ierr);
-  if (ierr && !status)
+    return READ_FAIL (LAC_EINVAL, "no file name");
+  if (opts)
+    o = *opts;
+  if (o.max_memory <= 0)
+    o.max_memory = lac_mesh_default_memory ();
+  if ((status = file_kind (path, &kind)))
+    return status;
+  if (kind == LAC_GMSH_MSH && (status = lac_msh_check (path)))
+    return status;
+  arg = (session_arg) { path, kind, &o };
+  status = lac_mesh_child_run (kind == LAC_GMSH_GEO ? "mesh" : "read", path,
+                               session, &arg, o.max_memory, o.max_seconds,
+                               out);
+  if (!status && ((status = lac_mesh_validate (*out))
+                  || (status = lac_mesh_check_topology (*out))))
     {
+      status = with_path (path, status);
       lac_mesh_free (*out);
       *out = NULL;
-      status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to finalize", path);
     }
-  lac_gmsh_reader_free (&R);
   return status;
 }

@@ -200,6 +200,7 @@ fill_mesh (lac_gmsh_reader *R, const lac_gmsh_elements *E, size_t ncells,
   m = lac_mesh_alloc (dim, nnodes, ncells, nconn);
   if (!m)
     return lac_gmsh_with_path (R, LAC_ENOMEM);
+  m->ndropped = R->nall - nnodes;
   for (size_t i = 0; i < R->nall; i++)
     if (R->index[i] != SIZE_MAX)
       {

@@ -18,7 +18,8 @@
 
 #include <stddef.h>
 
-#include "io/lac_mesh_gmsh.h"
+#include "fem/lac_mesh.h"
+#include "io/lac_mesh_opts.h"
 #include "base/lac_status.h"
 
 /* Messages name the public function, whatever helper sets them. */

@@ -8,14 +8,11 @@
  * body index.  CSV: one row per node (coordinates, displacement, stress,
  * von Mises).  Summary: "name = value" lines.
  *
- * Files of one run are written as a batch: each under a temporary name in
- * the output directory, renamed to the final names only by
- * lac_output_commit, so a run that fails leaves the files of an earlier
- * run untouched.  Renaming follows the order the files were added, so the
- * summary, added last, is the last to appear.
+ * The files of one run are written through a batch (lac_output_batch.h),
+ * which publishes them together or not at all.  A writer that fails
+ * (a full disk) says so: every write is checked when the file is closed.
  *
- * Ownership: the fields are borrowed; a batch is freed with
- * lac_output_batch_free, which removes temporary files not committed.
+ * Ownership: the fields are borrowed.
  */
 #ifndef LAC_OUTPUT_H
 #define LAC_OUTPUT_H
@@ -43,19 +40,5 @@ int lac_output_vtu (const char *path, const lac_output_fields *f);
 int lac_output_csv (const char *path, const lac_output_fields *f);
 int lac_output_summary (const char *path, size_t n, const char *const *key,
                         const char *const *val);
-
-/* batches of files that appear together */
-typedef struct lac_output_batch lac_output_batch;
-
-/* Create the directory dir (and its parents) if needed. */
-lac_output_batch *lac_output_batch_alloc (const char *dir);
-void lac_output_batch_free (lac_output_batch *b);   /* NULL allowed */
-/* The temporary path to write the file `name` of the batch to (owned by
- * the batch).  NULL with a message on failure. */
-const char *lac_output_batch_add (lac_output_batch *b, const char *name);
-/* Rename every temporary file to its final name, in the order added. */
-int lac_output_commit (lac_output_batch *b);
-/* Final path of the k-th file (after commit: the file's name). */
-const char *lac_output_batch_path (const lac_output_batch *b, size_t k);
 
 #endif /* LAC_OUTPUT_H */

@@ -21,6 +21,7 @@
 #include "io/lac_scene_ini.h"
 #include "io/lac_scene_keys.h"
 #include "base/lac_mem.h"
+#include "base/lac_text.h"
 #include "base/lac_status.h"
 
 static int
@@ -50,6 +51,38 @@ set_names (lac_scene *sc, const char *path)
   return LAC_SUCCESS;
 }
 
+/* The text of a scene (or of a --set) holds no byte a text file does not:
+ * NUL, control characters, a carriage return alone, bytes not UTF-8. */
+static int
+check_text (const char *path, const char *text, size_t len)
+{
+  const char *what, *start;
+  size_t off = lac_text_check (text, len, &what), n;
+  if (off == len)
+    return LAC_SUCCESS;
+  for (start = text + off; start > text && start[-1] != '\n'; start--)
+    ;
+  for (n = 0; start + n < text + len && start[n] != '\n' && start[n] != '\r'
+       && start[n] != '\0' && n < 40; n++)
+    ;
+  return lac_scene_where_error (path, (int) lac_text_line (text, off),
+                                LAC_EINVAL, "%s%s%.*s%s", what,
+                                n ? ", in '" : "", (int) n, start,
+                                n == 40 ? "...'" : n ? "'" : "");
+}
+
+static int
+check_sets (size_t nset, const char *const *set)
+{
+  for (size_t k = 0; k < nset; k++)
+    {
+      const char *what;
+      if (lac_text_check (set[k], strlen (set[k]), &what) < strlen (set[k]))
+        return lac_error_set (LAC_EINVAL, "--set", "'%s': %s", set[k], what);
+    }
+  return LAC_SUCCESS;
+}
+
 int
 lac_scene_read_string (const char *text, const char *path, size_t nset,
                        const char *const *set, lac_scene **out)
@@ -57,6 +90,9 @@ lac_scene_read_string (const char *text, const char *path, size_t nset,
   lac_scene *sc;
   int status;
   *out = NULL;
+  if ((status = check_text (path, text, strlen (text)))
+      || (status = check_sets (nset, set)))
+    return status;
   if (!(sc = lac_calloc (1, sizeof *sc)))
     LAC_ERROR (LAC_ENOMEM, "out of memory");
   lac_scene_section_defaults (SEC_SCENE, &sc->scene.sec);
@@ -111,7 +147,7 @@ lac_scene_read (const char *path, size_t nset, const char *const *set,
   if (status)
     status = lac_error_set (LAC_EIO, path, "cannot read scene file (%s)",
                             strerror (status));
-  else
+  else if (!(status = check_text (path, text, len)))     /* NUL bytes */
     status = lac_scene_read_string (text, path, nset, set, out);
   lac_free (text);
   return status;

@@ -103,6 +103,20 @@ finish_mesh (lac_scene *sc)
   return LAC_SUCCESS;
 }
 
+/* nu in (LAC_SCENE_NU_MAX, 0.5): incompressible to rounding. */
+static int
+check_nu (lac_scene *sc, lac_scene_section *sec, double nu)
+{
+  if (nu <= LAC_SCENE_NU_MAX)
+    return LAC_SUCCESS;
+  return lac_scene_error (sc, sec, "nu", LAC_EINVAL, "too close to 0.5: "
+                          "lambda / mu = 2 nu / (1 - 2 nu) = %.3g, the "
+                          "material is incompressible to rounding and its "
+                          "stiffness singular in double precision; lac "
+                          "takes nu <= %.9g (lambda / mu <= 1e8)",
+                          2 * nu / (1 - 2 * nu), LAC_SCENE_NU_MAX);
+}
+
 static int
 finish_materials (lac_scene *sc)
 {
@@ -117,7 +131,8 @@ finish_materials (lac_scene *sc)
       const lac_scene_material *m = &sc->material[k];
       if ((status = require (sc, &m->sec, "E", "Young's modulus > 0"))
           || (status = require (sc, &m->sec, "nu", "Poisson's ratio in "
-                                "(-1, 0.5)")))
+                                "(-1, 0.5)"))
+          || (status = check_nu (sc, &sc->material[k].sec, m->nu)))
         return status;
       if (!m->group && nogroup)
         return lac_scene_error (sc, &m->sec, NULL, LAC_EINVAL, "no group, "
@@ -327,6 +342,8 @@ finish_exact (lac_scene *sc)
     if (exact_needs (need, keys[k])
         && (status = require (sc, &x->sec, keys[k], "a number")))
       return status;
+  if (exact_needs (need, "nu") && (status = check_nu (sc, &x->sec, x->nu)))
+    return status;
   if (exact_needs (need, "a") && x->a >= x->b)
     return lac_scene_error (sc, &x->sec, "b", LAC_EINVAL, "expected b > a "
                             "= %g", x->a);

@@ -396,6 +396,31 @@ in_range (const key_spec *ks, double x)
   return 1;
 }
 
+/* |x| <= LAC_SCENE_NUM_MAX, and x >= 1 / LAC_SCENE_NUM_MAX for a value
+ * that must be > 0 (see lac_scene_types.h). */
+static int
+in_scale (const key_spec *ks, double x)
+{
+  int positive = ks->type != K_VEC && ks->lo == 0 && (ks->open & 1);
+  return fabs (x) <= LAC_SCENE_NUM_MAX
+         && (!positive || x >= 1 / LAC_SCENE_NUM_MAX);
+}
+
+static int
+out_of_scale (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
+              double x)
+{
+  char range[64];
+  if (fabs (x) > LAC_SCENE_NUM_MAX)
+    snprintf (range, sizeof range, "at most %g", LAC_SCENE_NUM_MAX);
+  else
+    snprintf (range, sizeof range, "at least %g", 1 / LAC_SCENE_NUM_MAX);
+  return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s of "
+                          "magnitude %s: products with the other values of "
+                          "the scene could overflow or vanish in double "
+                          "precision", ks->expect, range);
+}
+
 /* The j-th name of an enum key (NULL past the last). */
 static const char *
 enum_name (const key_spec *ks, int j)
@@ -437,6 +462,8 @@ store_vec (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
     if (*n == 3 || !parse_number (tok, &v[(*n)++]))
       return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                               ks->expect);
+    else if (!in_scale (ks, v[*n - 1]))
+      return out_of_scale (sc, s, ks, v[*n - 1]);
   if (*n < 1)             /* the count is checked against the model later */
     return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                             ks->expect);
@@ -469,6 +496,8 @@ store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
           || (ks->type == K_INT && x != floor (x)))
         return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                                 ks->expect);
+      if (ks->type == K_NUM && !in_scale (ks, x))
+        return out_of_scale (sc, s, ks, x);
       if (ks->type == K_INT)
         *(int *) (base + ks->off) = (int) x;
       else

@@ -20,6 +20,17 @@
 
 #define LAC_SCENE_MAX_KEYS 16
 
+/* Every real value of a scene is at most LAC_SCENE_NUM_MAX in magnitude,
+ * and a value that must be > 0 at least 1 / LAC_SCENE_NUM_MAX: products
+ * of moduli, loads, lengths and displacements then stay far from the
+ * overflow of a double (1.8e308) and from its underflow. */
+#define LAC_SCENE_NUM_MAX 1e30
+
+/* nu may come this close to 0.5: lambda / mu = 2 nu / (1 - 2 nu) stays
+ * below 1e8, where the stiffness of displacement elements is still
+ * solved to some digits (it is singular to rounding at 1e12-1e15). */
+#define LAC_SCENE_NU_MAX 0.499999995
+
 /* Where a section and each of its keys came from: line numbers in the
  * scene file, LAC_SCENE_FROM_SET for --set, 0 when not given. */
 #define LAC_SCENE_FROM_SET (-1)

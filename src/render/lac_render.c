@@ -16,6 +16,8 @@
  * Link with -lOSMesa only, never -lGL: glvnd's libGL would shadow OSMesa's
  * gl* entry points and leave the buffer black (deps.md, OSMesa gotchas).
  */
+#include <unistd.h>
+#include <errno.h>
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <math.h>
@@ -589,24 +591,43 @@ lac_render_points_rgba (const lac_mesh *m, const double *u, size_t n,
 
 /* ---- PNG --------------------------------------------------------------- */
 
+/* The picture goes to a temporary file beside path, renamed to path when
+ * it is whole: a failed write (libpng removes the file it was writing)
+ * leaves an earlier picture of that name as it was. */
 int
 lac_render_write_png (const char *path, int width, int height,
                       const unsigned char *rgba)
 {
   png_image img;
+  char tmp[4200];
+  const char *slash;
   if (!path || !rgba || width <= 0 || height <= 0)
     LAC_ERROR (LAC_EINVAL, "no path, no image or bad size %d x %d", width,
                height);
+  slash = strrchr (path, '/');
+  if ((size_t) snprintf (tmp, sizeof tmp, "%.*s.%s.lac-tmp-%ld",
+                         slash ? (int) (slash + 1 - path) : 0, path,
+                         slash ? slash + 1 : path, (long) getpid ())
+      >= sizeof tmp)
+    LAC_ERROR (LAC_EINVAL, "'%s': path too long", path);
   memset (&img, 0, sizeof img);
   img.version = PNG_IMAGE_VERSION;
   img.width = (png_uint_32) width;
   img.height = (png_uint_32) height;
   img.format = PNG_FORMAT_RGBA;
-  if (!png_image_write_to_file (&img, path, 0, rgba, 0, NULL))
+  if (!png_image_write_to_file (&img, tmp, 0, rgba, 0, NULL))
     {
       int status = LAC_ERRMSG (LAC_EIO, "cannot write '%s': %s", path,
                                img.message);
       png_image_free (&img);
+      unlink (tmp);
+      return status;
+    }
+  if (rename (tmp, path) != 0)
+    {
+      int status = LAC_ERRMSG (LAC_EIO, "cannot write '%s' (%s)", path,
+                               strerror (errno));
+      unlink (tmp);
       return status;
     }
   return LAC_SUCCESS;

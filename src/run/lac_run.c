@@ -45,8 +45,8 @@ large (const lac_run *r)
 static int
 stage_mesh (lac_run *r)
 {
-  return lac_run_mesh (r->scene, r->model, &r->mesh, r->progress,
-                       sizeof r->progress);
+  return lac_run_mesh (r->scene, r->model, r->opts.max_memory, &r->mesh,
+                       r->progress, sizeof r->progress);
 }
 
 static int
@@ -150,7 +150,8 @@ stage_output (lac_run *r)
 {
   lac_run_output_in in = { r->scene, r->model, r->mesh, &r->mat, &r->setup,
                            &r->sys, r->sol.u, large (r) ? NULL : &r->sol,
-                           large (r) ? &r->nl : NULL, &r->res, r->out_dir };
+                           large (r) ? &r->nl : NULL, &r->res, r->out_dir,
+                           r->opts.stop };
   int status = r->opts.timings ? add_timings (r) : LAC_SUCCESS;
   if (status || r->opts.no_output)
     {

@@ -40,6 +40,7 @@
 #ifndef LAC_RUN_H
 #define LAC_RUN_H
 
+#include <signal.h>
 #include <stddef.h>
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
@@ -64,6 +65,13 @@ typedef struct lac_run_opts
   int no_output;         /* skip the output stage (no files at all)     */
   int strategy;          /* lac_strategy_kind; LAC_STRATEGY_AUTO: the
                             scene's [contact] strategy                   */
+  double max_memory;     /* bytes a mesh may need (gmsh's limit and the
+                            size estimate of a .geo, io/lac_mesh_opts.h);
+                            0: 80 % of the machine's memory              */
+  const volatile sig_atomic_t *stop;  /* a flag a signal handler sets: the
+                            output stage then stops between two files and
+                            publishes nothing (io/lac_output_batch.h);
+                            NULL: never                                  */
 } lac_run_opts;
 
 #define LAC_RUN_MAX_EFFECTS 8

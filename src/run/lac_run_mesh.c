@@ -65,11 +65,12 @@ check_mesh (const lac_scene *sc, lac_model model, const lac_mesh *m)
 }
 
 int
-lac_run_mesh (const lac_scene *sc, lac_model model, lac_mesh **mesh,
-              char *progress, size_t size)
+lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
+              lac_mesh **mesh, char *progress, size_t size)
 {
   lac_mesh_opts o;
   char msg[700];
+  size_t n;
   int status;
   memset (&o, 0, sizeof o);
   o.size = sc->mesh.size;
@@ -80,11 +81,11 @@ lac_run_mesh (const lac_scene *sc, lac_model model, lac_mesh **mesh,
   o.level = sc->mesh.level;
   o.numbers = sc->mesh.numbers;
   o.flip_inverted = sc->mesh.inverted == 0;
+  o.max_memory = max_memory;
   status = lac_mesh_read (sc->mesh.path, &o, mesh);
   if (status)
     {
       char quoted[600];
-      size_t n;
       lac_run_inner_message (msg, sizeof msg);
       n = (size_t) snprintf (quoted, sizeof quoted, "'%s': ", sc->mesh.path);
       return lac_scene_error (sc, &sc->mesh.sec, "file", status, "%s",
@@ -92,10 +93,14 @@ lac_run_mesh (const lac_scene *sc, lac_model model, lac_mesh **mesh,
     }
   if ((status = check_mesh (sc, model, *mesh)))
     return status;
-  snprintf (progress, size, "%zu nodes, %zu cells (%s), %zu groups",
-            (*mesh)->nnodes, (*mesh)->ncells, (*mesh)->ncells
-            ? lac_refelem_get ((*mesh)->type[0])->name : "-",
-            (*mesh)->ngroups);
+  n = (size_t) snprintf (progress, size, "%zu nodes, %zu cells (%s), %zu "
+                        "groups", (*mesh)->nnodes, (*mesh)->ncells,
+                        (*mesh)->ncells ? lac_refelem_get ((*mesh)->type[0])
+                        ->name : "-", (*mesh)->ngroups);
+  if ((*mesh)->ndropped && n < size)
+    snprintf (progress + n, size - n, "; warning: %zu node%s of the file "
+              "in no cell, left out", (*mesh)->ndropped,
+              (*mesh)->ndropped > 1 ? "s" : "");
   return LAC_SUCCESS;
 }
 

@@ -15,8 +15,9 @@
 #include "io/lac_scene.h"
 
 /* *mesh (owned by the caller, lac_mesh_free); a progress line in
- * progress[size]. */
-int lac_run_mesh (const lac_scene *sc, lac_model model, lac_mesh **mesh,
-                  char *progress, size_t size);
+ * progress[size].  max_memory: bytes the mesh may need (0: the default of
+ * io/lac_mesh_opts.h). */
+int lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
+                  lac_mesh **mesh, char *progress, size_t size);
 
 #endif /* LAC_RUN_MESH_H */

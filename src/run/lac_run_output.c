@@ -7,6 +7,8 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_output.h"
+#include "io/lac_output_batch.h"
+#include "run/lac_run_scene.h"
 
 /* ---- linear runs ------------------------------------------------------ */
 
@@ -256,12 +258,20 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
 int
 lac_run_output (const lac_run_output_in *in, char *progress, size_t size)
 {
-  lac_output_batch *b = lac_output_batch_alloc (in->dir);
+  lac_output_batch *b = lac_output_batch_alloc (in->dir, in->stop);
   int status;
   if (!b)
     return LAC_EIO;
   status = in->nl ? output_nonlinear (in, b, progress, size)
                   : output_linear (in, b, progress, size);
   lac_output_batch_free (b);
+  if (status && !(in->stop && *in->stop))
+    {
+      char msg[700];
+      lac_run_inner_message (msg, sizeof msg);
+      status = lac_error_set (status, in->sc->path, "%s; nothing was "
+                              "published: the files in '%s' are those of the "
+                              "earlier run", msg, in->dir);
+    }
   return status;
 }

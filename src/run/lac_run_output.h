@@ -13,6 +13,7 @@
 #ifndef LAC_RUN_OUTPUT_H
 #define LAC_RUN_OUTPUT_H
 
+#include <signal.h>
 #include <stddef.h>
 #include "run/lac_run_post.h"
 
@@ -30,6 +31,8 @@ typedef struct lac_run_output_in
   const lac_run_nl *nl;            /* large deformation, else NULL        */
   const lac_run_results *res;
   const char *dir;                 /* the output directory                */
+  const volatile sig_atomic_t *stop;  /* set by a signal handler: stop
+                                     and publish nothing (NULL: never)    */
 } lac_run_output_in;
 
 int lac_run_output (const lac_run_output_in *in, char *progress,

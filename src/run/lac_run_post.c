@@ -305,6 +305,53 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
   return LAC_SUCCESS;
 }
 
+/* The first entry of v[n] that is not finite, or n. */
+static size_t
+first_bad (const double *v, size_t n)
+{
+  size_t i = 0;
+  while (i < n && isfinite (v[i]))
+    i++;
+  return i;
+}
+
+/* Everything the output stage would write is finite: the displacement,
+ * the multipliers, the nodal stresses.  With the scene's values bounded
+ * (io/lac_scene_types.h) an overflow is not expected; this is the net
+ * under it and under a solver that failed without saying so. */
+static int
+check_finite (const lac_run_post_in *in, const lac_run_results *res)
+{
+  const lac_mesh *m = in->mesh;
+  const char *comp = in->model == LAC_AXISYMMETRIC ? "rz" : "xyz";
+  size_t d = (size_t) m->dim, ns = (size_t) lac_model_nstress (in->model);
+  size_t n = m->nnodes * d, i = first_bad (in->u, n);
+  const char *what = "the displacement is", *after = "";
+  char where[96];
+  const lac_newton *nt = in->sol ? in->sol->newton : NULL;
+  if (i < n)
+    snprintf (where, sizeof where, "u_%c = %g at node %zu", comp[i % d],
+              in->u[i], m->node_tag[i / d]);
+  else if (nt && (i = first_bad (nt->lambda, nt->k)) < nt->k)
+    snprintf (where, sizeof where, "lambda = %g for multiplier %zu of %zu",
+              nt->lambda[i], i + 1, nt->k),
+      what = "the contact multipliers are";
+  else if ((i = first_bad (res->sigma, m->nnodes * ns)) < m->nnodes * ns)
+    snprintf (where, sizeof where, "stress component %zu = %g at node %zu",
+              i % ns + 1, res->sigma[i], m->node_tag[i / ns]),
+      what = "the stresses are", after = " (the displacement is finite)";
+  else if ((i = first_bad (res->vm, m->nnodes)) < m->nnodes)
+    snprintf (where, sizeof where, "von Mises = %g at node %zu",
+              res->vm[i], m->node_tag[i]), what = "the stresses are";
+  else
+    return LAC_SUCCESS;
+  return lac_error_set (LAC_ESING, in->sc->path, "%s not finite: %s%s; "
+                        "nothing is written (the loads or prescribed "
+                        "displacements are too large for the stiffness, or "
+                        "the solver failed without saying so)", what, where,
+                        after);
+}
+
 int
 lac_run_post (const lac_run_post_in *in, lac_run_results *res,
               char *progress, size_t size)
@@ -315,6 +362,7 @@ lac_run_post (const lac_run_post_in *in, lac_run_results *res,
   res->vm = lac_malloc (m->nnodes * sizeof *res->vm);
   if (!res->sigma || !res->vm)
     LAC_ERROR (LAC_ENOMEM, "nodal stresses of %zu nodes", m->nnodes);
-  return in->nl ? post_nonlinear (in, res, progress, size)
-                : post_linear (in, res, progress, size);
+  int status = in->nl ? post_nonlinear (in, res, progress, size)
+                      : post_linear (in, res, progress, size);
+  return status ? status : check_finite (in, res);
 }

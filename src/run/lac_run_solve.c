@@ -2,6 +2,7 @@
  *                    (see lac_run_solve.h)        [LAC (8), §4.5, Alg. 1]
  */
 #include "run/lac_run_solve.h"
+#include <math.h>
 
 #include <stdio.h>
 #include <string.h>
@@ -51,6 +52,34 @@ solve_plain_petsc (const lac_run_system *sys, lac_run_solution *sol,
   return status;
 }
 
+/* K is singular although stage 4 found every body held against rigid
+ * motion (lac_run_system.c): the solver's hint about rigid motions is
+ * replaced by what remains, rounding, and the numbers that cause it. */
+static int
+singular_by_rounding (const lac_scene *sc, lac_solver_kind kind)
+{
+  static const char hint[] = "; is the body fixed against rigid motion?";
+  char msg[600];
+  double emin = HUGE_VAL, emax = 0, numax = -1;
+  size_t n;
+  lac_run_inner_message (msg, sizeof msg);
+  n = strlen (msg);
+  if (n >= sizeof hint - 1 && !strcmp (msg + n - (sizeof hint - 1), hint))
+    msg[n - (sizeof hint - 1)] = '\0';
+  for (size_t k = 0; k < sc->nmaterial; k++)
+    {
+      emin = fmin (emin, sc->material[k].E);
+      emax = fmax (emax, sc->material[k].E);
+      numax = fmax (numax, sc->material[k].nu);
+    }
+  return lac_error_set (LAC_ESING, sc->path, "stiffness is singular (%s "
+                        "solver): %s; every body is held against rigid "
+                        "motion, so K is singular to rounding: E from %g to "
+                        "%g, nu up to %g (a contrast of E above about 1e12, "
+                        "or cells of very different sizes, does this)",
+                        lac_solver_kind_name (kind), msg, emin, emax, numax);
+}
+
 /* K u = b, no contact. */
 static int
 solve_plain (const lac_scene *sc, const lac_run_system *sys,
@@ -64,13 +93,7 @@ solve_plain (const lac_scene *sc, const lac_run_system *sys,
     return LAC_ENOMEM;
   status = lac_solver_factor (s, sys->K);                /* K = L U, L L^T */
   if (status == LAC_ESING)
-    {
-      char msg[600];
-      lac_run_inner_message (msg, sizeof msg);
-      status = lac_error_set (status, sc->path, "stiffness is singular"
-                              " (%s solver): %s", lac_solver_kind_name (kind),
-                              msg);
-    }
+    status = singular_by_rounding (sc, kind);
   if (!status)
     status = lac_solver_solve (s, sys->b, sol->u);       /* u = K^-1 b */
   if (!status && lac_solver_get_info (s, &info) == LAC_SUCCESS)

@@ -1,8 +1,11 @@
 /* t702: output files -- VTU and CSV contents, batches that appear together
  *
  * A 2 x 1 box of quad8 cells (lac_mesh_box) with a linear displacement is
- * written to a temporary directory; the files appear only on commit, a
- * batch freed without commit leaves the earlier files and no temporaries.
+ * written through a batch: the files appear only on commit, all at once;
+ * a batch freed without commit or interrupted leaves the earlier files and
+ * no temporaries; a new run's files replace the earlier run's (no mixed
+ * set), files a run never writes are kept, and what a killed run left
+ * beside the directory is cleaned up by the next batch.
  */
 #include <dirent.h>
 #include <stdio.h>
@@ -11,10 +14,13 @@
 #include <unistd.h>
 #include "check.h"
 #include "base/lac_mem.h"
+#include <signal.h>
+#include <sys/stat.h>
 #include "io/lac_output.h"
+#include "io/lac_output_batch.h"
 #include "base/lac_status.h"
 
-static char dir[64];
+static char dir[64], base[32];
 
 static char *
 slurp (const char *name)
@@ -33,10 +39,11 @@ slurp (const char *name)
   return buf;
 }
 
+/* Entries of path (but . and ..); -1 if it is no directory. */
 static int
-count_files (void)
+count_in (const char *path)
 {
-  DIR *d = opendir (dir);
+  DIR *d = opendir (path);
   struct dirent *e;
   int n = 0;
   while (d && (e = readdir (d)) != NULL)
@@ -44,7 +51,27 @@ count_files (void)
                                  && strcmp (e->d_name, ".."));
   if (d)
     closedir (d);
-  return n;
+  return d ? n : -1;
+}
+
+static int
+count_files (void)
+{
+  return count_in (dir);
+}
+
+/* Write a small file in dir. */
+static void
+put (const char *d, const char *name, const char *text)
+{
+  char path[160];
+  FILE *f;
+  snprintf (path, sizeof path, "%s/%s", d, name);
+  if ((f = fopen (path, "w")))
+    {
+      fputs (text, f);
+      fclose (f);
+    }
 }
 
 static size_t
@@ -63,7 +90,7 @@ test_files (const lac_mesh *m)
   double *sig = lac_calloc (m->nnodes * 4, sizeof *sig);
   double *vm = lac_calloc (m->nnodes, sizeof *vm);
   lac_output_fields f = { m, LAC_PLANE_STRAIN, u, NULL, sig, vm };
-  lac_output_batch *b = lac_output_batch_alloc (dir);
+  lac_output_batch *b = lac_output_batch_alloc (dir, NULL);
   const char *key[] = { "nodes", "title" }, *val[] = { "21", "a box" };
   const char *p1, *p2, *p3;
   char *vtu, *csv, *sum;
@@ -78,12 +105,14 @@ test_files (const lac_mesh *m)
   check_status (lac_output_vtu (p1, &f), LAC_SUCCESS, "vtu");
   check_status (lac_output_csv (p2, &f), LAC_SUCCESS, "csv");
   check_status (lac_output_summary (p3, 2, key, val), LAC_SUCCESS, "summary");
-  check_int (count_files (), 3, "three temporaries before commit");
+  check_int (count_files (), -1, "no directory before commit");
+  check_int (count_in (base), 1, "the temporary directory beside it");
   check_true (!(vtu = slurp ("solution.vtu")), "no solution.vtu yet");
   free (vtu);
   check_status (lac_output_commit (b), LAC_SUCCESS, "commit");
   lac_output_batch_free (b);
   check_int (count_files (), 3, "three files after commit");
+  check_int (count_in (base), 1, "no temporary left beside");
 
   vtu = slurp ("solution.vtu");
   csv = slurp ("nodes.csv");
@@ -109,7 +138,7 @@ test_files (const lac_mesh *m)
   free (vtu), free (csv), free (sum);
 
   /* A batch that fails (freed without commit) changes nothing. */
-  b = lac_output_batch_alloc (dir);
+  b = lac_output_batch_alloc (dir, NULL);
   if (b)
     {
       p3 = lac_output_batch_add (b, "summary.txt");
@@ -120,17 +149,104 @@ test_files (const lac_mesh *m)
   check_true (sum && strcmp (sum, "nodes = 21\ntitle = a box\n") == 0,
               "earlier summary kept");
   check_int (count_files (), 3, "no temporary left");
+  check_int (count_in (base), 1, "no temporary left beside");
   free (sum);
 done:
   lac_free (u), lac_free (sig), lac_free (vm);
 }
 
+/* A pid that is not running (for temporaries a killed run left). */
+static long
+dead_pid (void)
+{
+  for (long pid = 4000000; pid > 1000; pid--)
+    if (kill ((pid_t) pid, 0) != 0)
+      return pid;
+  return 0;
+}
+
+static void
+test_batches (void)
+{
+  static volatile sig_atomic_t stop;
+  const char *key[] = { "run" }, *v2[] = { "2" };
+  char path[160], *sum;
+  long pid = dead_pid ();
+  lac_output_batch *b;
+
+  /* A new run: its files replace the earlier run's, all of them; a file
+   * a run never writes stays. */
+  put (dir, "notes.txt", "mine\n");
+  put (dir, "step_003.vtu", "old step\n");
+  b = lac_output_batch_alloc (dir, NULL);
+  if (b)
+    {
+      lac_output_summary (lac_output_batch_add (b, "summary.txt"), 1, key,
+                          v2);
+      check_status (lac_output_commit (b), LAC_SUCCESS, "second run");
+      lac_output_batch_free (b);
+    }
+  sum = slurp ("summary.txt");
+  check_true (sum && strcmp (sum, "run = 2\n") == 0, "the new summary");
+  free (sum);
+  check_int (count_files (), 2, "summary.txt and notes.txt, nothing of the "
+             "earlier run");
+  check_true ((sum = slurp ("notes.txt")) != NULL, "notes.txt kept");
+  free (sum);
+  check_int (count_in (base), 1, "no temporary beside");
+
+  /* Interrupted: nothing can be added or committed, nothing changes. */
+  b = lac_output_batch_alloc (dir, &stop);
+  if (b)
+    {
+      check_true (lac_output_batch_add (b, "summary.txt") != NULL, "before");
+      stop = SIGINT;
+      check_true (lac_output_batch_add (b, "nodes.csv") == NULL, "stopped");
+      check_message ("interrupted by signal 2", "stopped");
+      check_status (lac_output_commit (b), LAC_EIO, "no commit");
+      lac_output_batch_free (b);
+      stop = 0;
+    }
+  check_int (count_files (), 2, "interrupted: the earlier files");
+  check_int (count_in (base), 1, "interrupted: no temporary");
+
+  /* What a killed run left: its new directory, its old directory (with a
+   * picture of the user's), a file of the former scheme in DIR. */
+  snprintf (path, sizeof path, "%s/.sub.lac-new-%ld", base, pid);
+  mkdir (path, 0777);
+  put (path, "solution.vtu", "half\n");
+  snprintf (path, sizeof path, "%s/.sub.lac-old-%ld", base, pid);
+  mkdir (path, 0777);
+  put (path, "u.png", "picture\n");
+  put (path, "summary.txt", "run = 0\n");
+  snprintf (path, sizeof path, ".solution.vtu.tmp%ld", pid);
+  put (dir, path, "former\n");
+  b = lac_output_batch_alloc (dir, NULL);
+  lac_output_batch_free (b);
+  check_int (count_in (base), 1, "stale temporaries removed");
+  check_int (count_files (), 3, "summary.txt, notes.txt and u.png");
+  sum = slurp ("summary.txt");
+  check_true (sum && strcmp (sum, "run = 2\n") == 0, "summary kept");
+  free (sum);
+  check_true ((sum = slurp ("u.png")) != NULL, "the user's picture back");
+  free (sum);
+
+  /* DIR lost between the two renames of a killed run: put back. */
+  snprintf (path, sizeof path, "%s/.sub.lac-old-%ld", base, pid);
+  check_int (rename (dir, path), 0, "lose DIR");
+  b = lac_output_batch_alloc (dir, NULL);
+  lac_output_batch_free (b);
+  check_int (count_files (), 3, "DIR put back");
+  check_int (count_in (base), 1, "nothing else beside");
+}
+
 static void
 cleanup (void)
 {
-  const char *names[] = { "solution.vtu", "nodes.csv", "summary.txt" };
+  const char *names[] = { "solution.vtu", "nodes.csv", "summary.txt",
+                          "notes.txt", "u.png" };
   char path[128];
-  for (int k = 0; k < 3; k++)
+  for (int k = 0; k < 5; k++)
     {
       snprintf (path, sizeof path, "%s/%s", dir, names[k]);
       unlink (path);
@@ -146,7 +262,7 @@ main (void)
   lac_mesh *m = NULL;
   size_t n[2] = { 2, 1 };
   double L[2] = { 2, 1 };
-  char base[] = "/tmp/lac-t702-XXXXXX";
+  snprintf (base, sizeof base, "/tmp/lac-t702-XXXXXX");
   if (!mkdtemp (base))
     {
       check_true (0, "mkdtemp");
@@ -156,12 +272,13 @@ main (void)
   check_status (lac_mesh_box (LAC_QUAD8, n, L, 0, &m), LAC_SUCCESS, "box");
   if (m)
     test_files (m);
+  test_batches ();
   lac_mesh_free (m);
   cleanup ();
   rmdir (base);
 
   /* A directory that cannot be made: a message, no crash. */
-  check_true (lac_output_batch_alloc ("/proc/lac-t702/x") == NULL,
+  check_true (lac_output_batch_alloc ("/proc/lac-t702/x", NULL) == NULL,
               "uncreatable directory");
   check_message ("cannot create directory", "message");
   return check_summary ();

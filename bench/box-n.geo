@@ -1,0 +1,21 @@
+// box-n.geo -- a 2 x 1 rectangle of 2n x n squares cut in triangles, for
+// bench_mesh_read: n = 2 gives 15 nodes, n = 160 gives 51,681.
+If (!Exists(n))
+  n = 2;
+EndIf
+Point(1) = {0, 0, 0, 1};
+Point(2) = {2, 0, 0, 1};
+Point(3) = {2, 1, 0, 1};
+Point(4) = {0, 1, 0, 1};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = 2 * n + 1;
+Transfinite Curve{2, 4} = n + 1;
+Transfinite Surface{1};
+Physical Surface("body") = {1};
+Physical Curve("left") = {4};
+Physical Curve("right") = {2};

@@ -1,0 +1,105 @@
+/* lac_text.c -- text that can be read and shown (see lac_text.h)
+ *
+ * UTF-8 (RFC 3629, table 3-7 of the Unicode standard): the first byte says
+ * how many follow (0xC2-0xDF: 1, 0xE0-0xEF: 2, 0xF0-0xF4: 3), each
+ * following byte is 0x80-0xBF, and the second byte is narrower after 0xE0
+ * (0xA0-0xBF, no overlong form), 0xED (0x80-0x9F, no surrogate), 0xF0
+ * (0x90-0xBF) and 0xF4 (0x80-0x8F, nothing above U+10FFFF).
+ */
+#include "base/lac_text.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* The length of the UTF-8 sequence at s (n bytes left), 0 if invalid. */
+static size_t
+utf8_len (const unsigned char *s, size_t n)
+{
+  unsigned char lo = 0x80, hi = 0xBF;
+  size_t len;
+  if (s[0] < 0x80)
+    return 1;
+  if (s[0] < 0xC2 || s[0] > 0xF4)
+    return 0;
+  len = s[0] < 0xE0 ? 2 : s[0] < 0xF0 ? 3 : 4;
+  if (s[0] == 0xE0)
+    lo = 0xA0;
+  else if (s[0] == 0xED)
+    hi = 0x9F;
+  else if (s[0] == 0xF0)
+    lo = 0x90;
+  else if (s[0] == 0xF4)
+    hi = 0x8F;
+  if (n < len || s[1] < lo || s[1] > hi)
+    return 0;
+  for (size_t k = 2; k < len; k++)
+    if (s[k] < 0x80 || s[k] > 0xBF)
+      return 0;
+  return len;
+}
+
+/* Is the byte at s[i] (n bytes in all) bad, and how long is it if not? */
+static const char *
+bad_byte (const unsigned char *s, size_t i, size_t n, size_t *len)
+{
+  *len = 1;
+  if (s[i] == '\0')
+    return "a NUL byte (is this a text file?)";
+  if (s[i] == '\r' && (i + 1 == n || s[i + 1] != '\n'))
+    return "a carriage return not followed by a line feed (old Mac line "
+           "ends? save the file with LF or CR LF line ends)";
+  if ((s[i] < 0x20 && s[i] != '\t' && s[i] != '\n' && s[i] != '\r')
+      || s[i] == 0x7F)
+    return "a control character (is this a text file?)";
+  if (s[i] >= 0x80 && !(*len = utf8_len (s + i, n - i)))
+    return "bytes that are not UTF-8 (save the file as UTF-8 or ASCII)";
+  return NULL;
+}
+
+size_t
+lac_text_check (const char *text, size_t len, const char **what)
+{
+  const unsigned char *s = (const unsigned char *) text;
+  size_t i = 0, step;
+  const char *w = NULL;
+  while (i < len && !(w = bad_byte (s, i, len, &step)))
+    i += step;
+  if (what)
+    *what = w;
+  return i;
+}
+
+long
+lac_text_line (const char *text, size_t off)
+{
+  long line = 1;
+  for (size_t i = 0; i < off; i++)
+    line += text[i] == '\n';
+  return line;
+}
+
+void
+lac_text_escape (char *dst, size_t size, const char *src)
+{
+  const unsigned char *s = (const unsigned char *) src;
+  size_t n = strlen (src), i = 0, o = 0, step;
+  while (i < n)
+    {
+      const char *w = bad_byte (s, i, n, &step);
+      if (w && s[i] != '\n')
+        {
+          if (o + 5 > size)
+            break;
+          snprintf (dst + o, 5, "\\x%02X", s[i]);
+          o += 4;
+          i++;
+          continue;
+        }
+      if (o + step + 1 > size)
+        break;
+      memcpy (dst + o, s + i, step);
+      o += step;
+      i += step;
+    }
+  dst[o < size ? o : size - 1] = '\0';
+}

@@ -1,0 +1,30 @@
+/* lac_text.h -- text that can be read and shown: UTF-8, no control bytes
+ *
+ * A scene file is text, and so is every message lac prints.  Two helpers:
+ *
+ *   lac_text_check   the first byte of a text that is not what a text
+ *                    file holds: NUL, a control character other than tab,
+ *                    line feed and a carriage return before a line feed,
+ *                    a carriage return alone (old Mac line ends), or bytes
+ *                    that are not UTF-8 (RFC 3629: no overlong forms, no
+ *                    surrogates, nothing above U+10FFFF);
+ *   lac_text_escape  a copy in which every such byte is written \xNN, so
+ *                    that a message never sends raw binary to a terminal.
+ */
+#ifndef LAC_TEXT_H
+#define LAC_TEXT_H
+
+#include <stddef.h>
+
+/* The offset of the first bad byte of text[0 .. len-1], or len if none;
+ * *what (may be NULL) says what it is, e.g. "a NUL byte". */
+size_t lac_text_check (const char *text, size_t len, const char **what);
+
+/* The line (1-based) of offset off in text: 1 + the line feeds before. */
+long lac_text_line (const char *text, size_t off);
+
+/* Copy the string src to dst (size > 0 bytes, always terminated, cut if
+ * needed), with bad bytes as \xNN; tab and line feed are kept. */
+void lac_text_escape (char *dst, size_t size, const char *src);
+
+#endif /* LAC_TEXT_H */

@@ -1,0 +1,31 @@
+/* lac_mesh_opts.h -- the options of a mesh read                  [LAC §2]
+ *
+ * What lac_mesh_read (lac_mesh_gmsh.h) is asked to do with a .msh or .geo
+ * file, in a header of its own so that the parts of the reader that run in
+ * the child process (lac_mesh_gmsh_session.h, lac_mesh_gmsh_reader.h) see
+ * the options without seeing the driver.  No .c file.
+ */
+#ifndef LAC_MESH_OPTS_H
+#define LAC_MESH_OPTS_H
+
+#define LAC_MESH_MAX_NUMBERS 16
+
+/* Options for reading or meshing (.geo) through gmsh. */
+typedef struct lac_mesh_opts
+{
+  double size;         /* characteristic length factor (.geo); 0: as is  */
+  int order;           /* 1 or 2 (.geo); 0: as in the file               */
+  int serendipity;     /* quad8/hex20 instead of quad9/hex27             */
+  int recombine;       /* quadrangles / hexahedra from .geo              */
+  int level;           /* exported to the .geo as the number `level`     */
+  const char *numbers; /* borrowed, NULL: more numbers for the .geo,
+                          "NAME=VALUE" pairs separated by blanks or
+                          commas (at most LAC_MESH_MAX_NUMBERS)          */
+  int flip_inverted;   /* 1: flip cells with det J < 0; 0: reject them   */
+  double max_memory;   /* bytes gmsh may use, and a .geo's estimated run
+                          may need; 0: lac_mesh_default_memory ()        */
+  double max_seconds;  /* wall-clock and CPU seconds for gmsh; 0:
+                          LAC_MESH_CHILD_SECONDS                         */
+} lac_mesh_opts;
+
+#endif /* LAC_MESH_OPTS_H */

@@ -1,0 +1,188 @@
+# tests/cases-bad.sh -- input made to break lac (sourced by tests/run.sh)
+#
+# Malformed and hostile meshes, scene values and scene text, each kept in
+# tests/bad/: every one must end with exactly one line "lac: ..." on stderr
+# that names what is wrong, exit status 1 (never a signal, never 0), and
+# leave the files of an earlier run in the same --out directory
+# byte-identical.  Chapter 01 (scene-format.md, "When the input is wrong")
+# explains each.  Uses $B, writes only under $B/cases-bad/; POSIX sh.
+
+B=${B:-build}
+RB="$B/cases-bad"
+LAC="$B/lac"
+rm -rf "$RB"
+mkdir -p "$RB"
+
+rb_ok () { pass=$((pass+1)); [ -n "$LAC_TEST_VERBOSE" ] && echo "ok   case $1"; return 0; }
+rb_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
+
+# Checksums of the files of the earlier run.
+rb_sums () { (cd "$RB/keep" && ls -A | sort && cksum * 2>/dev/null); }
+
+if "$LAC" run tests/bad/box-msh.scene --out "$RB/keep" --quiet > "$RB/keep.out" 2> "$RB/keep.err" \
+   && [ -f "$RB/keep/summary.txt" ]; then
+  rb_ok bad-keep
+else
+  rb_fail bad-keep "tests/bad/box-msh.scene did not run: $(head -1 "$RB/keep.err")"
+fi
+rb_sums > "$RB/keep.sums"
+
+# rbad NAME 'WORD|WORD...' ARGS...: lac ARGS exits with status 1, prints
+# one line on stderr, starting "lac: " and holding every WORD, and leaves
+# $RB/keep as it was.
+rbad () {
+  name=$1; words=$2; shift 2
+  "$LAC" "$@" > "$RB/$name.out" 2> "$RB/$name.err"
+  rc=$?
+  nl=$(wc -l < "$RB/$name.err")
+  msg=""
+  if [ "$rc" -ne 1 ]; then
+    msg="exit status $rc, expected 1"
+  elif [ "$nl" -ne 1 ]; then
+    msg="$nl lines on stderr, expected 1"
+  elif ! grep -q '^lac: ' "$RB/$name.err"; then
+    msg="stderr does not start with 'lac: '"
+  else
+    old_ifs=$IFS; IFS='|'
+    for w in $words; do
+      grep -qF -- "$w" "$RB/$name.err" || msg="message lacks '$w'"
+    done
+    IFS=$old_ifs
+  fi
+  if [ -z "$msg" ] && ! rb_sums | cmp -s - "$RB/keep.sums"; then
+    msg="the earlier files in $RB/keep changed"
+  fi
+  if [ -z "$msg" ]; then
+    rb_ok "bad-$name"
+  else
+    rb_fail "bad-$name" "$msg: $(head -3 "$RB/$name.err")"
+  fi
+}
+
+KB="--out $RB/keep --quiet"
+SB=tests/bad/box-msh.scene
+
+# ---- meshes: gmsh in its child process -----------------------------------
+rbad crash-segv "crash-segv.msh|gmsh could not read|killed by signal 11|malformed or truncated" \
+  run $SB $KB --set mesh.file=crash-segv.msh
+rbad crash-abort "crash-abort.msh|gmsh could not read|killed by signal 6|malformed or truncated" \
+  run $SB $KB --set mesh.file=crash-abort.msh
+
+# ---- meshes: the lines of a .msh file ------------------------------------
+rbad numtags "numtags.msh|line 51|element 19 (type 2) has 4 nodes after its tags" \
+  run $SB $KB --set mesh.file=numtags.msh
+rbad short-tri "short-tri.msh|line 51|element 19 (type 2) has 2 nodes after its tags" \
+  run $SB $KB --set mesh.file=short-tri.msh
+rbad huge-count "huge-count.msh|line 5|the file ends inside \$Nodes" \
+  run $SB $KB --set mesh.file=huge-count.msh
+
+# ---- meshes: the cells as a mesh -----------------------------------------
+rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
+  run $SB $KB --set mesh.file=dup-cell.msh
+rbad face3 "face3.msh|cells 15, 18 and 30 share a face" \
+  run $SB $KB --set mesh.file=face3.msh
+rbad folded "folded.msh|cells 18 and 19 overlap" \
+  run $SB $KB --set mesh.file=folded.msh
+rbad flat "flat.msh|cell 16 (tri3) is degenerate" \
+  run $SB $KB --set mesh.file=flat.msh
+
+# Nodes in no cell: a warning on the mesh line, the same answer.
+"$LAC" run $SB --set mesh.file=unused-node.msh --no-output > "$RB/unused.out" 2> "$RB/unused.err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q 'warning: 1 node of the file in no cell, left out' "$RB/unused.err" \
+   && cmp -s "$RB/unused.out" "$RB/keep.out"; then
+  rb_ok bad-unused-node
+else
+  rb_fail bad-unused-node "exit $rc, no warning or another answer: $(grep mesh "$RB/unused.err")"
+fi
+
+# ---- meshes: too large to make -------------------------------------------
+rbad level12 "[mesh] file = 'box.geo'|level = 12|an estimated 6.2e+08 nodes|--max-memory" \
+  run tests/bad/box.scene $KB --set level=12
+rbad max-memory "level = 2|an estimated|more than the limit of 0.1 GB" \
+  run tests/bad/box.scene $KB --set level=2 --max-memory 100M
+"$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M or 2e9, got 12Q" "$RB/mm-usage.err"; then
+  rb_ok bad-max-memory-usage
+else
+  rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
+fi
+
+# ---- numbers: finite and in range ----------------------------------------
+rbad E-huge "E-huge.scene:12:|E = '1e308'|magnitude at most 1e+30" \
+  run tests/bad/E-huge.scene $KB
+rbad nu-near-half "nu-near-half.scene:13:|nu = '0.4999999999999999'|too close to 0.5|lambda / mu" \
+  run tests/bad/nu-near-half.scene $KB
+rbad traction-huge "traction-huge.scene:21:|traction = '1e308 0'|magnitude at most 1e+30" \
+  run tests/bad/traction-huge.scene $KB
+rbad ux-huge "ux-huge.scene:17:|ux = '1e308'|magnitude at most 1e+30" \
+  run tests/bad/ux-huge.scene $KB
+rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
+  run tests/bad/box.scene $KB --set material.steel.E=1e-300
+rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
+  run tests/bad/contrast.scene $KB
+
+# ---- scene text ----------------------------------------------------------
+rbad nul-byte "nul-byte.scene:19:|a NUL byte" run tests/bad/nul-byte.scene $KB
+rbad cr-only "cr-only.scene:1:|a carriage return not followed by a line feed" \
+  run tests/bad/cr-only.scene $KB
+rbad latin1-key "latin1-key.scene:3:|not UTF-8|titr\\xE9" run tests/bad/latin1-key.scene $KB
+rbad binary-key "binary-key.scene:12:|a control character|E\\x1B[31m" \
+  run tests/bad/binary-key.scene $KB
+rbad set-binary "--set|a control character|title=a\\x1Bb" \
+  run tests/bad/box.scene $KB --set "$(printf 'title=a\033b')"
+
+# CR LF line ends read like LF: the same summary as box.scene.
+"$LAC" run tests/bad/box.scene --no-output --quiet > "$RB/lf.out" 2>&1
+"$LAC" run tests/bad/crlf.scene --no-output --quiet > "$RB/crlf.out" 2>&1
+if sed 1d "$RB/crlf.out" | cmp -s - "$(sed 1d "$RB/lf.out" > "$RB/lf1.out"; echo "$RB/lf1.out")"; then
+  rb_ok bad-crlf
+else
+  rb_fail bad-crlf "crlf.scene does not give the summary of box.scene: $(head -2 "$RB/crlf.out")"
+fi
+
+# No message of this file holds a byte that is not printable ASCII: what
+# the files held (binary, Latin-1) is shown as \xNN.
+raw=$(LC_ALL=C grep -l '[^ -~]' "$RB"/*.err 2>/dev/null)
+if [ -z "$raw" ]; then
+  rb_ok bad-no-raw-bytes
+else
+  rb_fail bad-no-raw-bytes "raw bytes in: $raw"
+fi
+
+# ---- outputs: all or nothing ---------------------------------------------
+# A write that fails half-way (file size limit: the write gets EFBIG): the
+# earlier results stay, byte for byte, and no temporary is left beside.
+# (SIGXFSZ ignored so that the write fails instead of killing lac.)
+(trap '' XFSZ; ulimit -f 2; "$LAC" run tests/bad/box-msh.scene --out "$RB/keep" --quiet \
+   --set mesh.file=box.msh --set material.steel.E=2000 > /dev/null 2> "$RB/efbig.err")
+rc=$?
+left=$(ls -A "$RB" | grep -E 'lac-(new|old)-')
+if [ $rc -eq 1 ] && grep -q "cannot write" "$RB/efbig.err" && rb_sums | cmp -s - "$RB/keep.sums" \
+   && [ -z "$left" ]; then
+  rb_ok bad-output-efbig
+else
+  rb_fail bad-output-efbig "exit $rc, temporaries '$left': $(head -1 "$RB/efbig.err")"
+fi
+
+# lac render: a PNG that cannot be written leaves the earlier one.
+"$LAC" render "$RB/keep" --field u --out "$RB/u.png" > /dev/null 2> "$RB/render1.err"
+cksum < "$RB/u.png" > "$RB/u.sum" 2> /dev/null
+(trap '' XFSZ; ulimit -f 4; "$LAC" render "$RB/keep" --field u --width 1600 --height 1200 \
+   --out "$RB/u.png" > /dev/null 2> "$RB/render2.err")
+rc=$?
+if [ -s "$RB/u.png" ] && [ $rc -eq 1 ] && cksum < "$RB/u.png" | cmp -s - "$RB/u.sum" \
+   && [ -z "$(ls -A "$RB" | grep lac-tmp)" ]; then
+  rb_ok bad-render-efbig
+else
+  rb_fail bad-render-efbig "exit $rc: $(head -1 "$RB/render1.err" "$RB/render2.err")"
+fi
+
+# SIGINT and SIGTERM at random moments (3 runs here; tests/interrupt.sh
+# does 20 on a larger run): one complete set of files, no temporaries.
+if sh tests/interrupt.sh "$B" 3 3 > "$RB/interrupt.out" 2>&1; then
+  rb_ok bad-interrupt
+else
+  rb_fail bad-interrupt "$(grep -E 'MIXED|TEMPORARIES|failed' "$RB/interrupt.out" | head -3)"
+fi
