@@ -4,7 +4,7 @@
 # nine element types of the paper in 2D and 3D, with the slave and master
 # surfaces as in the scene and swapped, through every strategy that
 # applies (the upper body is held by contact alone: dense, saddle,
-# augmented; schur is refused): the maximum relative errors of lambda and
+# augmented, split; schur is refused): the maximum relative errors of lambda and
 # of the stresses must be <= 1e-12 and the active set must settle in <= 3
 # iterations.  Same conventions as tests/cases.sh ($B, pass, fail).
 
@@ -40,7 +40,7 @@ taylor () {
   fi
 }
 
-for s in dense saddle augmented; do
+for s in dense saddle augmented split; do
   for e in tri3 quad4 tri6 quad8; do
     taylor taylor2d "$e" 0 "$s"
     taylor taylor2d "$e" 1 "$s"

@@ -308,7 +308,7 @@ main (int argc, char **argv)
         kind = (lac_strategy_kind) lac_strategy_from_name (argv[++k]);
       else
         {
-          fprintf (stderr, "usage: ex07 [--strategy dense|saddle|schur|augmented]\n");
+          fprintf (stderr, "usage: ex07 [--strategy dense|saddle|schur|augmented|split]\n");
           return 2;
         }
     }

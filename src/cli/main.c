@@ -69,8 +69,8 @@ static const char *help_text =
   "                   force = FX FY [FZ] (per unit volume; group optional)\n"
   "  [contact NAME]   slave = FACET_GROUP, master = FACET_GROUP,\n"
   "                   epsilon (0.01): admissibility threshold in (0, 1],\n"
-  "                   strategy = auto|dense|schur|augmented|saddle|petsc\n"
-  "                   (auto),\n"
+  "                   strategy = auto|dense|schur|augmented|split|saddle|\n"
+  "                   petsc (auto),\n"
   "                   max_iterations (50): active-set iterations at most\n"
   "  [exact]          solution = thick_sphere|thick_cylinder (a, b, p, E, nu)\n"
   "                   | taylor (p, E, nu: uniform pressure, patch test)\n"
@@ -91,9 +91,10 @@ static const char *help_text =
   "                    --set scene.solver=NAME; petsc: same as --strategy\n"
   "                    petsc\n"
   "  --strategy NAME   how each active set's system is solved: auto (the\n"
-  "                    default: dense for small systems, else augmented),\n"
-  "                    dense, schur (every body held by its Dirichlet\n"
-  "                    conditions), augmented, saddle, or petsc (Krylov\n"
+  "                    default: dense for small systems, else schur or\n"
+  "                    split), dense, schur (every body held by its\n"
+  "                    Dirichlet conditions), augmented, split (bodies\n"
+  "                    held by contact alone), saddle, or petsc (Krylov\n"
   "                    methods and algebraic multigrid, no factorization,\n"
   "                    on N MPI processes; also without contact); overrides\n"
   "                    the scene's [contact] strategy (chapters 07, 11)\n"
@@ -193,8 +194,8 @@ parse_run_args (int argc, char **argv, cmdline *c)
         {
           if ((c->strategy = lac_strategy_from_name (v)) < 0)
             return lac_cli_usage_error (NULL, "--strategy: expected auto, "
-                                        "dense, schur, augmented, saddle or "
-                                        "petsc, got", v);
+                                        "dense, schur, augmented, split, "
+                                        "saddle or petsc, got", v);
         }
       else if ((v = lac_cli_option_value (argc, argv, &k, "--petsc-options",
                                           &missing)))

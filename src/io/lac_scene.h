@@ -89,9 +89,9 @@
  *                          no macro-elements: violates Hypothesis 1) |
  *                          nts (node-to-segment / node-to-face
  *                          collocation): p0 and nts for comparisons  lac
- *     strategy             auto | dense | schur | augmented | saddle |
- *                          petsc: how each active set's system is
- *                          solved (solve/lac_strategy.h)        auto
+ *     strategy             auto | dense | schur | augmented | split |
+ *                          saddle | petsc: how each active set's
+ *                          system is solved (solve/lac_strategy.h) auto
  *     max_iterations       active-set iterations at most          50
  *     gap_bound            length added to the pairing distance (one
  *                          facet size) for curved bodies           0

@@ -109,7 +109,8 @@ static const key_spec exact_keys[] = {
 static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const char *const method_names[] = { "lac", "p0", "nts", NULL };
 static const char *const strategy_names[] =             /* lac_strategy.h */
-  { "auto", "dense", "schur", "augmented", "saddle", "petsc", NULL };
+  { "auto", "dense", "schur", "augmented", "saddle", "petsc", "split",
+    NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),

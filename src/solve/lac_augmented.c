@@ -113,44 +113,10 @@ alloc_arrays (lac_augmented *s, size_t n, size_t k)
   return LAC_SUCCESS;
 }
 
-/* s_i = c_i^T diag(K)^{-1} c_i: the scale of S_ii seen from K's diagonal
- * (partly covered macro-elements have small columns). */
-static void
-column_scales (lac_augmented *s)
-{
-  const lac_csc *K = s->sys->K, *C = s->sys->C;
-  for (size_t i = 0; i < s->k; i++)
-    s->s[i] = 0;
-  for (size_t j = 0; j < s->n; j++)
-    {
-      double kjj = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        if ((size_t) K->i[p] == j)
-          kjj = fabs (K->x[p]);
-      s->x[j] = kjj > 0 ? 1 / kjj : 0.0;           /* diag(K)^-1 */
-    }
-  for (size_t i = 0; i < s->k; i++)
-    for (int p = s->sys->C->p[i]; p < C->p[i + 1]; p++)
-      s->s[i] += C->x[p] * C->x[p] * s->x[C->i[p]];
-}
-
 static int
 factor (lac_augmented *s, const lac_csc *A)
 {
-  lac_solver_info info;
-  double t0 = lac_seconds ();
-  int status = lac_solver_refactor (s->chol, A);
-  s->counts.time_factor += lac_seconds () - t0;
-  if (status)
-    return status;
-  s->counts.factorizations++;
-  s->counts.solves += 2;                  /* the condition estimate's */
-  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS
-      && !info.analysis_reused)
-    s->counts.analyses++;
-  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS)
-    s->counts.rcond = info.rcond;
-  return LAC_SUCCESS;
+  return lac_solve_counts_factor (&s->counts, s->chol, A);
 }
 
 int
@@ -161,7 +127,7 @@ lac_augmented_set (lac_augmented *s, const lac_contact_system *sys)
     return status;
   s->sys = sys;
   s->have_factor = 0;
-  column_scales (s);
+  lac_system_column_scales (sys, s->x, s->s);
   if (s->omega == 0)                          /* K = L L^T, once */
     {
       if ((status = factor (s, sys->K)))

@@ -321,27 +321,6 @@ alloc_arrays (lac_petsc *s, size_t n, size_t k)
   return LAC_SUCCESS;
 }
 
-/* s_i = c_i^T diag(K)^-1 c_i, as in lac_augmented.c. */
-static void
-column_scales (lac_petsc *s)
-{
-  const lac_csc *K = s->sys->K, *C = s->sys->C;
-  for (size_t j = 0; j < s->n; j++)
-    {
-      double kjj = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        if ((size_t) K->i[p] == j)
-          kjj = fabs (K->x[p]);
-      s->xv[j] = kjj > 0 ? 1 / kjj : 0.0;
-    }
-  for (size_t i = 0; i < s->k; i++)
-    {
-      s->s[i] = 0;
-      for (int p = C->p[i]; p < C->p[i + 1]; p++)
-        s->s[i] += C->x[p] * C->x[p] * s->xv[C->i[p]];
-    }
-}
-
 static int
 cmp_int (const void *a, const void *b)
 {
@@ -873,7 +852,7 @@ lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
     }
   s->sys = sys;
   if (k)
-    column_scales (s);
+    lac_system_column_scales (s->sys, s->xv, s->s);
   s->new_numbers = 1;
   return LAC_SUCCESS;
 }

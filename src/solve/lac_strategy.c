@@ -2,7 +2,8 @@
  *                   (see lac_strategy.h)          [LAC (17), Alg. 1 l. 21]
  *
  * The choice of the strategy, the dispatch to solve/lac_saddle.c (dense,
- * saddle) or solve/lac_schur.c (schur, augmented), the check that the
+ * saddle), solve/lac_schur.c, solve/lac_augmented.c, solve/lac_split.c
+ * and solve/lac_petsc.c, the check that the
  * active multipliers hold the bodies held by contact alone, the
  * refinement of every solve, and the fallback to the LU of the whole
  * system when a Cholesky factorization fails.
@@ -18,10 +19,11 @@
 #include "solve/lac_saddle.h"
 #include "solve/lac_augmented.h"
 #include "solve/lac_schur.h"
+#include "solve/lac_split.h"
 #include "solve/lac_petsc.h"
 
 #define CG_RTOL 1e-10     /* relative residual of the conjugate gradients */
-#define CG_RTOL_REFINE 1e-6  /* ... in a refinement step (a correction) */
+#define CG_RTOL_REFINE 1e-3  /* ... in a refinement step (a correction) */
 #define MAX_REFINE 3
 #define MAX_REFINE_KRYLOV 2  /* petsc: a step costs half a solve, ...  */
 #define TOL_KRYLOV 1e-11     /* ... so only above this backward error    */
@@ -33,6 +35,7 @@ struct lac_strategy
   lac_saddle *saddle;              /* owned: dense, saddle, fallback      */
   lac_schur *schur;                /* owned: schur                        */
   lac_augmented *aug;              /* owned: augmented                    */
+  lac_split *split;                /* owned: split                        */
   lac_petsc *petsc;                /* owned: petsc                        */
   double *r, *g, *dU, *dl;         /* owned: residuals and corrections    */
   size_t n, k;
@@ -43,7 +46,7 @@ struct lac_strategy
 };
 
 static const char *const names[LAC_NSTRATEGIES] =
-  { "auto", "dense", "schur", "augmented", "saddle", "petsc" };
+  { "auto", "dense", "schur", "augmented", "saddle", "petsc", "split" };
 
 int
 lac_strategy_from_name (const char *name)
@@ -69,7 +72,7 @@ lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
       lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy schur "
                      "needs every body held by its Dirichlet conditions (K "
                      "positive definite); %zu rigid motion%s held by contact "
-                     "alone: use augmented, saddle or dense", nfree,
+                     "alone: use split, augmented, saddle or dense", nfree,
                      nfree == 1 ? " is" : "s are");
       return LAC_NSTRATEGIES;
     }
@@ -77,7 +80,7 @@ lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
     return want;
   if (n + k <= LAC_STRATEGY_DENSE_MAX)
     return LAC_STRATEGY_DENSE;
-  return nfree == 0 ? LAC_STRATEGY_SCHUR : LAC_STRATEGY_AUGMENTED;
+  return nfree == 0 ? LAC_STRATEGY_SCHUR : LAC_STRATEGY_SPLIT;
 }
 
 static int fall_back (lac_strategy *s);
@@ -101,9 +104,11 @@ lac_strategy_alloc (lac_strategy_kind kind)
     s->schur = lac_schur_alloc ();
   else if (kind == LAC_STRATEGY_PETSC)
     s->petsc = lac_petsc_alloc (LAC_PETSC_OMEGA);
+  else if (kind == LAC_STRATEGY_SPLIT)
+    s->split = lac_split_alloc (LAC_AUGMENT_OMEGA);
   else
     s->aug = lac_augmented_alloc (LAC_AUGMENT_OMEGA);
-  if (!s->saddle && !s->schur && !s->aug && !s->petsc)
+  if (!s->saddle && !s->schur && !s->aug && !s->petsc && !s->split)
     {
       lac_free (s);
       return NULL;
@@ -130,6 +135,7 @@ lac_strategy_free (lac_strategy *s)
   lac_saddle_free (s->saddle);
   lac_schur_free (s->schur);
   lac_augmented_free (s->aug);
+  lac_split_free (s->split);
   lac_petsc_free (s->petsc);
   lac_free (s);
 }
@@ -163,6 +169,7 @@ lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
   status = s->saddle ? lac_saddle_set (s->saddle, sys)
            : s->schur ? lac_schur_set (s->schur, sys)
            : s->petsc ? lac_petsc_set (s->petsc, sys)
+           : s->split ? lac_split_set (s->split, sys)
            : lac_augmented_set (s->aug, sys);
   s->counts.time_factor += lac_seconds () - t0;
   return status;
@@ -207,6 +214,8 @@ solve_once (lac_strategy *s, const char *active, const double *f,
     return lac_schur_solve (s->schur, active, f, g, U, lambda);
   if (s->petsc)
     return lac_petsc_solve (s->petsc, active, f, g, rtol, U, lambda);
+  if (s->split)
+    return lac_split_solve (s->split, active, f, g, rtol, U, lambda);
   return lac_augmented_solve (s->aug, active, f, g, rtol, U, lambda);
 }
 
@@ -221,12 +230,16 @@ fall_back (lac_strategy *s)
   lac_error_clear ();
   if (s->schur)
     lac_schur_get_counts (s->schur, &s->before);
+  else if (s->split)
+    lac_split_get_counts (s->split, &s->before);
   else
     lac_augmented_get_counts (s->aug, &s->before);
   lac_schur_free (s->schur);
   lac_augmented_free (s->aug);
+  lac_split_free (s->split);
   s->schur = NULL;
   s->aug = NULL;
+  s->split = NULL;
   s->kind = LAC_STRATEGY_SADDLE;
   if (!(s->saddle = lac_saddle_alloc (LAC_SOLVER_UMFPACK)))
     return LAC_ENOMEM;
@@ -278,7 +291,9 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
     return status;
   s->counts.solves++;
   status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
-  if (status == LAC_ESING && s->aug && lac_augmented_factor_failed (s->aug))
+  if (status == LAC_ESING && ((s->aug && lac_augmented_factor_failed (s->aug))
+                              || (s->split
+                                  && lac_split_factor_failed (s->split))))
     {
       if (!(status = fall_back (s)))
         status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
@@ -288,6 +303,8 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
       lac_solve_counts sc = { 0 };
       if (s->aug)
         lac_augmented_get_counts (s->aug, &sc);
+      if (s->split)
+        lac_split_get_counts (s->split, &sc);
       if (s->petsc)
         lac_petsc_get_counts (s->petsc, &sc);
       s->counts.last_iterations = sc.last_iterations;  /* before refine */
@@ -338,6 +355,8 @@ lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
     lac_schur_get_counts (s->schur, &sc);
   if (s->aug)
     lac_augmented_get_counts (s->aug, &sc);
+  if (s->split)
+    lac_split_get_counts (s->split, &sc);
   if (s->petsc)
     lac_petsc_get_counts (s->petsc, &sc);
   c->substitutions = sc.solves;

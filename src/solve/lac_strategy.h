@@ -18,7 +18,14 @@
  *                  definite as soon as the active multipliers hold the
  *                  bodies (also those held by contact alone), the
  *                  multipliers by conjugate gradients in about ten
- *                  iterations (solve/lac_schur.h);
+ *                  iterations (solve/lac_augmented.h);
+ *   split     (b') the same augmentation on the bodies held by contact
+ *                  alone only: one Cholesky factor for the bodies held by
+ *                  their Dirichlet conditions (once per scene), one for
+ *                  the others plus C_S,A W C_S,A^T (when the statuses
+ *                  change), the bodies never joined in one factor; the
+ *                  multipliers by GMRES in about ten iterations
+ *                  (solve/lac_split.h);
  *   saddle     (c) UMFPACK's LU of the whole system, METIS ordering: the
  *                  fallback and the reference (solve/lac_saddle.h);
  *   petsc      (e) no factorization: the augmented system of (b) by
@@ -30,7 +37,7 @@
  *
  * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur
  * when every body is held by its Dirichlet conditions (one factorization
- * for the whole active-set iteration), augmented when a body is held by
+ * for the whole active-set iteration), split when a body is held by
  * contact alone (chapter 07 has the measurements behind the rule).
  * Bodies held by contact alone are
  * known before anything is factorized (the system's N); (a) is refused
@@ -70,13 +77,15 @@ typedef enum
 {
   LAC_STRATEGY_AUTO, LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
   LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SADDLE, LAC_STRATEGY_PETSC,
-  LAC_NSTRATEGIES
+  LAC_STRATEGY_SPLIT, LAC_NSTRATEGIES
 } lac_strategy_kind;
 
 #define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
-#define LAC_STRATEGY_TOL 1e-16       /* backward error aimed at          */
+#define LAC_STRATEGY_TOL 1e-15       /* backward error aimed at: a few
+                                        units of rounding (2.2e-16)     */
 
-/* "auto" | "dense" | "schur" | "augmented" | "saddle" | "petsc" -> kind,
+/* "auto" | "dense" | "schur" | "augmented" | "saddle" | "petsc" |
+ * "split" -> kind,
  * -1 if unknown; and back. */
 int lac_strategy_from_name (const char *name);
 const char *lac_strategy_name (lac_strategy_kind kind);

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_eigen.h>
+#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -160,4 +161,45 @@ lac_system_check_held (const lac_contact_system *sys, const char *active)
   gsl_matrix_free (V);
   gsl_vector_free (ev);
   return status;
+}
+
+void
+lac_system_column_scales (const lac_contact_system *sys, double *work,
+                          double *s)
+{
+  const lac_csc *K = sys->K, *C = sys->C;
+  for (size_t j = 0; j < K->ncol; j++)
+    {
+      double kjj = 0;
+      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+        if ((size_t) K->i[p] == j)
+          kjj = fabs (K->x[p]);
+      work[j] = kjj > 0 ? 1 / kjj : 0.0;             /* diag(K)^-1 */
+    }
+  for (size_t i = 0; i < C->ncol; i++)
+    {
+      s[i] = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        s[i] += C->x[p] * C->x[p] * work[C->i[p]];
+    }
+}
+
+int
+lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
+                         const lac_csc *A)
+{
+  lac_solver_info info;
+  double t0 = lac_seconds ();
+  int status = lac_solver_refactor (chol, A);
+  c->time_factor += lac_seconds () - t0;
+  if (status)
+    return status;
+  c->factorizations++;
+  c->solves += 2;                         /* the condition estimate's */
+  if (lac_solver_get_info (chol, &info) == LAC_SUCCESS)
+    {
+      c->analyses += !info.analysis_reused;
+      c->rcond = info.rcond;
+    }
+  return LAC_SUCCESS;
 }

@@ -86,5 +86,17 @@ void lac_system_gaps (const lac_contact_system *sys, const double *U,
  * message naming the free motion (N_what) that no active multiplier
  * touches, and the number of active multipliers. */
 int lac_system_check_held (const lac_contact_system *sys, const char *active);
+/* The scale of each multiplier seen from K's diagonal,
+ *   s_i = c_i^T diag(K)^{-1} c_i   (k; partly covered macro-elements
+ * have small columns), which sets W_i = omega / s_i of the augmented
+ * strategies; work: n doubles (diag(K)^{-1} on return). */
+void lac_system_column_scales (const lac_contact_system *sys, double *work,
+                               double *s);
+/* A numeric factorization of A with `chol` (lac_solver_refactor: the
+ * analysis kept while the pattern is), counted in c: factorizations,
+ * analyses, the two solves of the condition estimate, its time and
+ * rcond. */
+int lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
+                             const lac_csc *A);
 
 #endif /* LAC_SYSTEM_H */

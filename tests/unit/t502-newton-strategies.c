@@ -6,12 +6,13 @@
  * (UMFPACK's LU of the whole system, the reference) to 1e-10 relative
  * (max |x - x_ref| / max |x_ref|), with the same statuses:
  *   - Taylor 2D quad8 and 3D hex8 (level 1, slave and master swapped):
- *     the upper body is held by contact alone; dense, augmented; schur is
- *     refused with a message before anything is factorized;
+ *     the upper body is held by contact alone; dense, augmented, split;
+ *     schur is refused with a message before anything is factorized;
  *   - the self-included spheres, axisymmetric quad8 and 3D tet10 (every
- *     body held by symmetry conditions): dense, schur, augmented;
+ *     body held by symmetry conditions): dense, schur, augmented, split
+ *     (with no body held by contact alone: GMRES on S itself);
  *   - the cylinder on a rigid flat of chapter 07 (level 3: several
- *     active-set iterations): dense, schur, augmented.
+ *     active-set iterations): dense, schur, augmented, split.
  */
 #include <math.h>
 #include <stdio.h>
@@ -89,10 +90,12 @@ int
 main (void)
 {
   lac_init ();
-  const int floating[] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_AUGMENTED, 0 };
+  const int floating[] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_AUGMENTED,
+                           LAC_STRATEGY_SPLIT, 0 };
   const int held[] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
-                       LAC_STRATEGY_AUGMENTED, 0 };
-  const int held_big[] = { LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED, 0 };
+                       LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SPLIT, 0 };
+  const int held_big[] = { LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED,
+                           LAC_STRATEGY_SPLIT, 0 };
   const char *t2[] = { "element=quad8" };
   const char *t3[] = { "element=hex8", "level=1",
                        "contact.interface.slave=lower_top",

@@ -1,0 +1,429 @@
+/* lac_split.c -- the augmented system on the bodies held by contact alone
+ *                only (see lac_split.h)           [LAC (17), Alg. 1 l. 21]
+ *
+ * set:   the parts H and S (connected components of K, S where N moves
+ *        them), K_HH, K_SS, C_H, C_S renumbered, K_HH = L L^T once, the
+ *        pattern of K_SS + C_S C_S^T;
+ * solve: 1. K~_SS for the statuses, factorized when they changed;
+ *        2. b = G_A - C_A^T U(0);
+ *        3. A lambda_A = b by GMRES preconditioned by W_A, from the given
+ *           lambda_A;
+ *        4. U = U(lambda_A).
+ */
+#include "solve/lac_split.h"
+
+#include <string.h>
+#include "base/lac_clock.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "linalg/lac_gmres.h"
+
+#define GMRES_RESTART 50
+#define GMRES_MAXIT 300     /* about ten are needed (lac_split.h) */
+
+/* One part of the unknowns: its dofs, its block of K, its rows of C, the
+ * factor, and two vectors of its size. */
+typedef struct part
+{
+  size_t n;                /* unknowns of the part                       */
+  size_t *dof;             /* owned, n: global dof of each local one     */
+  lac_csc *K, *C;          /* owned: K_PP, C_P (n x k)                   */
+  lac_solver *chol;        /* owned                                      */
+  double *x, *y;           /* owned, n: scratch                          */
+} part;
+
+struct lac_split
+{
+  double omega;
+  const lac_contact_system *sys;   /* borrowed                            */
+  size_t n, k;
+  part H, S;
+  lac_csc *KS;             /* owned: K~_SS in the pattern of K_SS + C_S C_S^T */
+  double *scale, *w;       /* owned, k: c_i^T diag(K)^-1 c_i, and W        */
+  char *factored_for;      /* owned, k: statuses of the factor of K~_SS    */
+  int have_factor, factor_failed;
+  size_t na, *idx;         /* owned, k: the active columns                 */
+  double *b, *lamA, *v;    /* owned, k: GMRES right side, unknown, scratch */
+  double *U0;              /* owned, n: U of the current product           */
+  lac_solve_counts counts;
+};
+
+lac_split *
+lac_split_alloc (double omega)
+{
+  lac_split *s = lac_calloc (1, sizeof *s);
+  if (!s)
+    LAC_ERROR_NULL (LAC_ENOMEM, "split solver");
+  s->omega = omega;
+  s->H.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+  s->S.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+  if (!s->H.chol || !s->S.chol)
+    {
+      lac_split_free (s);
+      return NULL;
+    }
+  return s;
+}
+
+static void
+part_clear (part *P)
+{
+  lac_free (P->dof);
+  lac_csc_free (P->K);
+  lac_csc_free (P->C);
+  lac_free (P->x);
+  lac_free (P->y);
+  P->dof = NULL;
+  P->K = P->C = NULL;
+  P->x = P->y = NULL;
+  P->n = 0;
+}
+
+static void
+free_arrays (lac_split *s)
+{
+  part_clear (&s->H);
+  part_clear (&s->S);
+  lac_csc_free (s->KS);
+  s->KS = NULL;
+  lac_free (s->scale);
+  lac_free (s->w);
+  lac_free (s->factored_for);
+  lac_free (s->idx);
+  lac_free (s->b);
+  lac_free (s->lamA);
+  lac_free (s->v);
+  lac_free (s->U0);
+  s->scale = s->w = s->b = s->lamA = s->v = s->U0 = NULL;
+  s->factored_for = NULL;
+  s->idx = NULL;
+}
+
+void
+lac_split_free (lac_split *s)
+{
+  if (!s)
+    return;
+  free_arrays (s);
+  lac_solver_free (s->H.chol);
+  lac_solver_free (s->S.chol);
+  lac_free (s);
+}
+
+void
+lac_split_get_counts (const lac_split *s, lac_solve_counts *c)
+{
+  *c = s->counts;
+}
+
+int
+lac_split_factor_failed (const lac_split *s)
+{
+  return s->factor_failed;
+}
+
+void
+lac_split_sizes (const lac_split *s, size_t *nH, size_t *nS)
+{
+  *nH = s->H.n;
+  *nS = s->S.n;
+}
+
+/* ---- the parts ---------------------------------------------------------- */
+
+static size_t
+find_root (size_t *up, size_t j)
+{
+  while (up[j] != j)
+    j = up[j] = up[up[j]];                        /* path halving */
+  return j;
+}
+
+/* in_S[j] = 1 for the dofs of the connected components of K's graph that
+ * a free rigid motion moves (the bodies held by contact alone). */
+static int
+floating_dofs (const lac_contact_system *sys, char *in_S)
+{
+  size_t n = sys->K->ncol;
+  size_t *up = lac_malloc (n * sizeof *up);
+  char *moved = lac_calloc (n, 1);
+  if (!up || !moved)
+    {
+      lac_free (up);
+      lac_free (moved);
+      LAC_ERROR (LAC_ENOMEM, "components of K, n = %zu", n);
+    }
+  for (size_t j = 0; j < n; j++)
+    up[j] = j;
+  for (size_t j = 0; j < n; j++)                  /* union of K's edges */
+    for (int p = sys->K->p[j]; p < sys->K->p[j + 1]; p++)
+      {
+        size_t a = find_root (up, j), b = find_root (up, sys->K->i[p]);
+        if (a != b)
+          up[a] = b;
+      }
+  for (size_t m = 0; m < sys->nfree; m++)
+    for (size_t j = 0; j < n; j++)
+      if (sys->N[m * n + j] != 0)
+        moved[find_root (up, j)] = 1;
+  for (size_t j = 0; j < n; j++)
+    in_S[j] = moved[find_root (up, j)];
+  lac_free (up);
+  lac_free (moved);
+  return LAC_SUCCESS;
+}
+
+/* The rows `loc` >= 0 of A's columns `cols` (ncols of them), renumbered:
+ * loc[j] is the local index of global row j, -1 if not in the part. */
+static lac_csc *
+submatrix (const lac_csc *A, const long *loc, size_t nrow,
+           const size_t *cols, size_t ncols)
+{
+  size_t nnz = 0, q = 0;
+  lac_csc *B;
+  for (size_t c = 0; c < ncols; c++)
+    for (int p = A->p[cols ? cols[c] : c]; p < A->p[(cols ? cols[c] : c) + 1]; p++)
+      nnz += loc[A->i[p]] >= 0;
+  if (!(B = lac_csc_alloc (nrow, ncols, nnz ? nnz : 1)))
+    return NULL;
+  for (size_t c = 0; c < ncols; c++)
+    {
+      size_t j = cols ? cols[c] : c;
+      for (int p = A->p[j]; p < A->p[j + 1]; p++)
+        if (loc[A->i[p]] >= 0)
+          {
+            B->i[q] = (int) loc[A->i[p]];
+            B->x[q++] = A->x[p];
+          }
+      B->p[c + 1] = (int) q;
+    }
+  return B;
+}
+
+/* The part of the dofs with in_S[j] == want: dofs, K_PP, C_P, vectors. */
+static int
+make_part (part *P, const lac_contact_system *sys, const char *in_S,
+           char want, long *loc)
+{
+  size_t n = sys->K->ncol;
+  P->n = 0;
+  for (size_t j = 0; j < n; j++)
+    loc[j] = in_S[j] == want ? (long) P->n++ : -1;
+  P->dof = lac_malloc ((P->n ? P->n : 1) * sizeof *P->dof);
+  P->x = lac_malloc ((P->n ? P->n : 1) * sizeof *P->x);
+  P->y = lac_malloc ((P->n ? P->n : 1) * sizeof *P->y);
+  if (!P->dof || !P->x || !P->y)
+    LAC_ERROR (LAC_ENOMEM, "split solver, part of %zu unknowns", P->n);
+  for (size_t j = 0; j < n; j++)
+    if (loc[j] >= 0)
+      P->dof[loc[j]] = j;
+  P->K = submatrix (sys->K, loc, P->n, P->dof, P->n);
+  P->C = P->K ? submatrix (sys->C, loc, P->n, NULL, sys->C->ncol) : NULL;
+  return P->K && P->C ? LAC_SUCCESS : LAC_ENOMEM;
+}
+
+static int
+alloc_arrays (lac_split *s, size_t n, size_t k)
+{
+  size_t k1 = k ? k : 1;
+  free_arrays (s);
+  s->scale = lac_malloc (k1 * sizeof *s->scale);
+  s->w = lac_calloc (k1, sizeof *s->w);
+  s->factored_for = lac_calloc (k1, 1);
+  s->idx = lac_malloc (k1 * sizeof *s->idx);
+  s->b = lac_malloc (k1 * sizeof *s->b);
+  s->lamA = lac_malloc (k1 * sizeof *s->lamA);
+  s->v = lac_malloc (k1 * sizeof *s->v);
+  s->U0 = lac_malloc (n * sizeof *s->U0);
+  if (!s->scale || !s->w || !s->factored_for || !s->idx || !s->b
+      || !s->lamA || !s->v || !s->U0)
+    LAC_ERROR (LAC_ENOMEM, "split solver, n = %zu, k = %zu", n, k);
+  s->n = n;
+  s->k = k;
+  return LAC_SUCCESS;
+}
+
+static int
+factor (lac_split *s, lac_solver *chol, const lac_csc *A)
+{
+  int status = lac_solve_counts_factor (&s->counts, chol, A);
+  s->factor_failed = status != LAC_SUCCESS;
+  return status;
+}
+
+int
+lac_split_set (lac_split *s, const lac_contact_system *sys)
+{
+  size_t n = sys->K->ncol, k = sys->C->ncol;
+  char *in_S;
+  long *loc;
+  int status = alloc_arrays (s, n, k);
+  if (status)
+    return status;
+  s->sys = sys;
+  s->have_factor = s->factor_failed = 0;
+  in_S = lac_malloc (n ? n : 1);
+  loc = lac_malloc ((n ? n : 1) * sizeof *loc);
+  status = !in_S || !loc ? LAC_ERRMSG (LAC_ENOMEM, "split solver, n = %zu",
+                                       n)
+           : floating_dofs (sys, in_S);
+  if (!status)
+    status = make_part (&s->H, sys, in_S, 0, loc);
+  if (!status)
+    status = make_part (&s->S, sys, in_S, 1, loc);
+  lac_free (in_S);
+  lac_free (loc);
+  if (status)
+    return status;
+  lac_system_column_scales (sys, s->U0, s->scale);
+  if (s->S.n && !(s->KS = lac_csc_augment_pattern (s->S.K, s->S.C)))
+    return LAC_ENOMEM;
+  return s->H.n ? factor (s, s->H.chol, s->H.K) : LAC_SUCCESS;
+}
+
+/* ---- solve -------------------------------------------------------------- */
+
+/* 1. K~_SS = K_SS + C_S,A W_A C_S,A^T, factorized if the statuses changed. */
+static int
+factor_floating (lac_split *s, const char *active)
+{
+  int status;
+  if (!s->S.n || (s->have_factor && memcmp (active, s->factored_for, s->k)
+                                    == 0))
+    return LAC_SUCCESS;
+  for (size_t i = 0; i < s->k; i++)
+    s->w[i] = active[i] && s->scale[i] > 0 ? s->omega / s->scale[i] : 0.0;
+  if ((status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->w))
+      || (status = factor (s, s->S.chol, s->KS)))
+    return status;
+  memcpy (s->factored_for, active, s->k);
+  s->have_factor = 1;
+  return LAC_SUCCESS;
+}
+
+/* P.x += C_P,A c: c one entry per active column. */
+static void
+add_columns (part *P, const lac_split *s, const double *c)
+{
+  for (size_t a = 0; a < s->na; a++)
+    for (int p = P->C->p[s->idx[a]]; p < P->C->p[s->idx[a] + 1]; p++)
+      P->x[P->C->i[p]] += P->C->x[p] * c[a];
+}
+
+/* U = U(lambda_A) of the triangular system of lac_split.h, with the
+ * right-hand sides f, g (both NULL: the homogeneous map U_0). */
+static int
+triangular_solve (lac_split *s, const double *f, const double *g,
+                  const double *lamA, double *U)
+{
+  part *H = &s->H, *S = &s->S;
+  int status;
+  for (size_t j = 0; j < H->n; j++)                      /* U_H */
+    H->x[j] = f ? f[H->dof[j]] : 0.0;
+  add_columns (H, s, lamA);
+  if (H->n && (s->counts.solves++,
+               (status = lac_solver_solve (H->chol, H->x, H->y))))
+    return status;
+  for (size_t j = 0; j < H->n; j++)
+    U[H->dof[j]] = H->y[j];
+  for (size_t a = 0; a < s->na; a++)     /* W_A (g_A - C_H,A^T U_H) + lambda_A */
+    {
+      size_t i = s->idx[a];
+      double cu = 0;
+      for (int p = H->C->p[i]; p < H->C->p[i + 1]; p++)
+        cu += H->C->x[p] * H->y[H->C->i[p]];
+      s->v[a] = s->w[i] * ((g ? g[i] : 0.0) - cu) + lamA[a];
+    }
+  for (size_t j = 0; j < S->n; j++)                      /* U_S */
+    S->x[j] = f ? f[S->dof[j]] : 0.0;
+  add_columns (S, s, s->v);
+  if (S->n && (s->counts.solves++,
+               (status = lac_solver_solve (S->chol, S->x, S->y))))
+    return status;
+  for (size_t j = 0; j < S->n; j++)
+    U[S->dof[j]] = S->y[j];
+  return LAC_SUCCESS;
+}
+
+/* q_a = (C_A^T U)_a */
+static void
+constraint_values (const lac_split *s, const double *U, double *q)
+{
+  const lac_csc *C = s->sys->C;
+  for (size_t a = 0; a < s->na; a++)
+    {
+      double sum = 0;
+      for (int p = C->p[s->idx[a]]; p < C->p[s->idx[a] + 1]; p++)
+        sum += C->x[p] * U[C->i[p]];
+      q[a] = sum;
+    }
+}
+
+/* q = A v = C_A^T U_0(v): GMRES's operator. */
+static int
+product (void *ctx, const double *v, double *q)
+{
+  lac_split *s = ctx;
+  int status = triangular_solve (s, NULL, NULL, v, s->U0);
+  if (!status)
+    constraint_values (s, s->U0, q);
+  return status;
+}
+
+/* z = W_A r (the column scales alone if there is no S). */
+static int
+precondition (void *ctx, const double *r, double *z)
+{
+  const lac_split *s = ctx;
+  for (size_t a = 0; a < s->na; a++)
+    {
+      size_t i = s->idx[a];
+      z[a] = s->w[i] > 0 ? s->w[i] * r[a]
+             : s->scale[i] > 0 ? s->omega * r[a] / s->scale[i] : r[a];
+    }
+  return LAC_SUCCESS;
+}
+
+int
+lac_split_solve (lac_split *s, const char *active, const double *f,
+                 const double *g, double rtol, double *U, double *lambda)
+{
+  lac_gmres_info info;
+  int status;
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_split_set was not called");
+  s->factor_failed = 0;
+  f = f ? f : s->sys->F;
+  g = g ? g : s->sys->G;
+  if ((status = factor_floating (s, active)))             /* 1. */
+    return status;
+  s->na = 0;
+  for (size_t i = 0; i < s->k; i++)
+    if (active[i])
+      s->lamA[s->na] = lambda[i], s->idx[s->na++] = i;
+  memset (s->v, 0, s->k * sizeof *s->v);
+  if ((status = triangular_solve (s, f, g, s->v, U)))     /* 2. U(0) */
+    return status;
+  constraint_values (s, U, s->b);
+  for (size_t a = 0; a < s->na; a++)
+    s->b[a] = g[s->idx[a]] - s->b[a];
+  status = lac_gmres (s->na, product, precondition, s, s->b, s->lamA, rtol,
+                      GMRES_RESTART, GMRES_MAXIT, &info);  /* 3. */
+  s->counts.iterations += info.iterations;
+  s->counts.last_iterations = info.iterations;
+  s->counts.last_residual = info.residual;
+  if (status == LAC_EMAXITER)
+    return LAC_ERRMSG (LAC_ESING, "the multipliers of the %zu active "
+                       "macro-elements are not determined (%s): their "
+                       "system is singular, the contact constraints are "
+                       "linearly dependent "
+                       "(inf-sup condition [LAC (10)])", s->na,
+                       lac_error_message ());
+  if (status)
+    return status;
+  for (size_t i = 0; i < s->k; i++)
+    lambda[i] = 0;
+  for (size_t a = 0; a < s->na; a++)
+    lambda[s->idx[a]] = s->lamA[a];
+  return triangular_solve (s, f, g, s->lamA, U);            /* 4. */
+}
