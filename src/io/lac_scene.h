@@ -119,10 +119,12 @@
  *                          derivatives of the contact terms, or without
  *                          (frozen geometry)                  consistent
  *   [output]
- *     vtu                  yes | no: solution.vtu     yes
+ *     vtu                  yes | no: solution.vtu (and contact.vtu)  yes
  *     csv                  yes | no: nodes.csv        yes
  *     matrix               yes | no: K.mtx (Matrix Market, stiffness before
  *                          the Dirichlet conditions)  no
+ *     vtu_format           binary | ascii: VTU arrays as appended raw
+ *                          bytes or as text (io/lac_vtu.h)   binary
  *
  * Overrides (`lac run --set KEY=VALUE`) are applied after the file is read
  * and checked like file entries; messages about them say "--set".  KEY is

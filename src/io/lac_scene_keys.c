@@ -136,10 +136,12 @@ static const key_spec steps_keys[] = {
   INT (lac_scene_steps, vtu_every, 0, 100000, "an integer in 0..100000"),
   ENUM (lac_scene_steps, tangent, tangent_names),
 };
+static const char *const vtu_format_names[] = { "binary", "ascii", NULL };
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),
   BOOL (lac_scene_output, csv),
   BOOL (lac_scene_output, matrix),
+  ENUM (lac_scene_output, vtu_format, vtu_format_names),
 };
 
 #define NK(a) ((int) (sizeof a / sizeof a[0]))

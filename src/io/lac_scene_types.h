@@ -158,6 +158,7 @@ typedef struct lac_scene_output          /* [output] */
 {
   lac_scene_section sec;
   int vtu, csv, matrix;
+  int vtu_format;       /* 0 binary (appended raw), 1 ascii               */
 } lac_scene_output;
 
 typedef struct lac_scene
