@@ -61,12 +61,21 @@
  *     ramp                 yes | no: with [steps], the values grow with
  *                          the load factor t (yes) or are imposed whole
  *                          from the first step (no)   yes
- *   [load NAME]            exactly one of:
- *     group                boundary group (pressure, traction) or volume
- *                          group (force; all cells if absent)
+ *   [load NAME]            exactly one of pressure, traction, force,
+ *                          exact, total_force, point_force:
+ *     group                boundary group (pressure, traction,
+ *                          total_force), volume group (force; all cells
+ *                          if absent) or point group (point_force)
  *     pressure             p: traction -p n on the group (p > 0 pushes)
  *     traction             tx ty [tz]: traction per unit area
  *     force                fx fy [fz]: force per unit volume
+ *     total_force          Fx Fy [Fz]: a total force on a boundary group,
+ *                          spread uniformly (traction F / |group|)
+ *     plate                yes: with total_force, the group moves as one
+ *                          rigid plate (translation) carrying the force
+ *                          (run/lac_run_plate.h)             no
+ *     point_force          Fx Fy [Fz]: a force at the node of a point
+ *                          group (a gmsh Physical Point of one point)
  *     exact                traction | tangential | force: the traction
  *                          sigma(u) n (or its tangential part, for a
  *                          contact side) or the body force -div sigma(u)

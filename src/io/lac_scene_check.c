@@ -242,6 +242,27 @@ finish_dirichlet (lac_scene *sc, lac_scene_dirichlet *d)
   return LAC_SUCCESS;
 }
 
+/* total_force (on a boundary group, or a rigid plate) or point_force (on
+ * a point group); the group's dimension is checked with the mesh. */
+static int
+finish_total (lac_scene *sc, lac_scene_load *l, int dim)
+{
+  int point = given (&l->sec, "point_force");
+  const char *key = point ? "point_force" : "total_force";
+  if ((point ? l->npoint_force : l->ntotal_force) != dim)
+    return lac_scene_error (sc, &l->sec, key, LAC_EINVAL, "expected %d "
+                            "numbers for model = %s", dim,
+                            lac_scene_model_names[sc->scene.model]);
+  if (l->plate && sc->scene.large_deformation)
+    return lac_scene_error (sc, &l->sec, "plate", LAC_EINVAL, "a rigid "
+                            "plate needs a linear scene (large_deformation "
+                            "= no)");
+  l->kind = point ? LAC_LOAD_POINT : LAC_LOAD_TOTAL;
+  memcpy (l->vec, point ? l->point_force : l->total_force, sizeof l->vec);
+  return require (sc, &l->sec, "group", point ? "point physical group"
+                  : "boundary physical group");
+}
+
 static int
 finish_load (lac_scene *sc, lac_scene_load *l)
 {
@@ -250,9 +271,17 @@ finish_load (lac_scene *sc, lac_scene_load *l)
   nkind += given (&l->sec, "traction");
   nkind += given (&l->sec, "force");
   nkind += given (&l->sec, "exact");
+  nkind += given (&l->sec, "total_force");
+  nkind += given (&l->sec, "point_force");
   if (nkind != 1)
     return lac_scene_error (sc, &l->sec, NULL, LAC_EINVAL, "give exactly "
-                            "one of pressure, traction, force, exact");
+                            "one of pressure, traction, force, exact, "
+                            "total_force, point_force");
+  if (given (&l->sec, "plate") && !given (&l->sec, "total_force"))
+    return lac_scene_error (sc, &l->sec, "plate", LAC_EINVAL, "a plate "
+                            "carries a total_force: give total_force");
+  if (given (&l->sec, "total_force") || given (&l->sec, "point_force"))
+    return finish_total (sc, l, dim);
   if (given (&l->sec, "exact"))
     {
       if (sc->exact.sec.line == 0)

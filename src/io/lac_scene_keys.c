@@ -96,6 +96,9 @@ static const key_spec load_keys[] = {
   VEC (lac_scene_load, traction, ntraction),
   VEC (lac_scene_load, force, nforce),
   ENUM (lac_scene_load, exact, load_exact_names),
+  VEC (lac_scene_load, total_force, ntotal_force),
+  BOOL (lac_scene_load, plate),
+  VEC (lac_scene_load, point_force, npoint_force),
 };
 static const key_spec exact_keys[] = {
   { "solution", K_ENUM, F (lac_scene_exact, solution), 0,    /* lac_exact.h */

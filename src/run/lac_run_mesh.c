@@ -29,10 +29,22 @@ check_groups (const lac_scene *sc, const lac_mesh *m)
     {
       const lac_scene_load *l = &sc->load[k];
       int vol = l->kind == LAC_LOAD_FORCE || l->kind == LAC_LOAD_EXACT_FORCE;
-      int want = vol ? d : d - 1;
-      if (l->group && !lac_run_group (sc, m, &l->sec, l->group, want,
-                                   vol ? "a volume force" : "a surface load"))
+      int point = l->kind == LAC_LOAD_POINT;
+      int want = vol ? d : point ? 0 : d - 1;
+      const lac_group *g;
+      if (l->group && !(g = lac_run_group (sc, m, &l->sec, l->group, want,
+                                           vol ? "a volume force" : point
+                                           ? "point_force (a point group)"
+                                           : l->kind == LAC_LOAD_TOTAL
+                                           ? "total_force (a boundary "
+                                             "group; force: per unit "
+                                             "volume)"
+                                           : "a surface load")))
         return LAC_EINVAL;
+      if (l->group && point && g->nnodes != 1)
+        return lac_scene_error (sc, &l->sec, "group", LAC_EINVAL, "a point "
+                                "group of %zu nodes; point_force acts on "
+                                "one point", g->nnodes);
     }
   return LAC_SUCCESS;
 }
