@@ -103,3 +103,31 @@ loads_bad plate-alone "--set|[load tip] plate|give total_force" $BEAM --set load
 sed "s|^file = taylor2d.geo|file = $PWD/$T/taylor2d.geo|; s|^pressure = 25|total_force = 0 -1250\nplate = yes|; s|^group = upper_top|group = upper_bottom|" \
   "$T/taylor2d.scene" > "$C/plate-contact.scene"
 loads_bad plate-on-contact "plate-contact.scene|[load top] group = 'upper_bottom'|rigid plate on a contact surface" "$C/plate-contact.scene"
+
+# 5. several mesh files, one per body: tests/meshes/taylor-two-files.scene
+# (the Taylor patch test, each square from its own .geo) is as exact as the
+# one-file scene and has its nodes and cells; a group defined by two files,
+# a file that does not open and a broken second file are one-line errors
+# naming the files.
+for e in quad4 tri6 quad8; do
+  if "$LAC" run tests/meshes/taylor-two-files.scene --set element=$e --quiet --no-output \
+       > "$C/two-$e.out" 2> "$C/two-$e.err" \
+     && "$LAC" run chapters/08-experiments/taylor2d.scene --set element=$e --quiet --no-output \
+       > "$C/one-$e.out" 2> "$C/one-$e.err"; then
+    el=$(loads_value "$C/two-$e.out" max_rel_err_lambda)
+    if awk -v a="$el" 'BEGIN { exit !(a != "" && a <= 1e-12) }' \
+       && [ "$(loads_value "$C/two-$e.out" nodes)" = "$(loads_value "$C/one-$e.out" nodes)" ] \
+       && [ "$(loads_value "$C/two-$e.out" cells)" = "$(loads_value "$C/one-$e.out" cells)" ]; then
+      loads_ok "two-files-$e"
+    else
+      loads_fail "two-files-$e" "max_rel_err_lambda = $el; nodes/cells differ from taylor2d.scene's"
+    fi
+  else
+    loads_fail "two-files-$e" "lac run failed: $(tail -1 "$C/two-$e.err" "$C/one-$e.err")"
+  fi
+done
+TWO=tests/meshes/taylor-two-files.scene
+loads_bad same-group "--set|group 'upper_bottom'|defined in 'taylor-upper.geo' and in '$PWD/chapters/08-experiments/taylor2d.geo'|distinct group names" \
+  $TWO --set "mesh.file=taylor-upper.geo $PWD/chapters/08-experiments/taylor2d.geo"
+loads_bad second-missing "--set|[mesh] file|cannot open tests/meshes/nothere.geo" $TWO --set "mesh.file=taylor-upper.geo nothere.geo"
+loads_bad second-broken "--set|[mesh] file|garbage.msh: " $TWO --set "mesh.file=taylor-upper.geo garbage.msh"

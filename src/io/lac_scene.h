@@ -33,7 +33,10 @@
  *                          (lac_nonlinear.h)          no
  *   [mesh]
  *     file                 .geo or .msh, relative to the scene file's
- *                          directory                  (required)
+ *                          directory; or several separated by blanks (at
+ *                          most LAC_SCENE_MAX_MESHES, one per body, put
+ *                          side by side; no group name in two files)
+ *                                                     (required)
  *     size                 mesh size factor > 0 (.geo)            1
  *     order                1 | 2 (.geo)               from element, else 1
  *     level                refinement level 0..12, exported to the .geo as

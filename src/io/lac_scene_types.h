@@ -55,11 +55,17 @@ typedef struct lac_scene_main            /* [scene] */
   int large_deformation;  /* 1: the nonlinear run (lac_nonlinear.h) */
 } lac_scene_main;
 
+#define LAC_SCENE_MAX_MESHES 8     /* files of one [mesh] file = ...  */
+
 typedef struct lac_scene_mesh            /* [mesh] */
 {
   lac_scene_section sec;
   char *file;           /* owned: as written in the scene             */
-  char *path;           /* owned: resolved against the scene directory */
+  char *path;           /* owned: resolved against the scene directory
+                           (the first file)                            */
+  int nfiles;           /* files named (separated by blanks), >= 1      */
+  char *files[LAC_SCENE_MAX_MESHES];   /* owned: each name as written  */
+  char *paths[LAC_SCENE_MAX_MESHES];   /* owned: each resolved         */
   double size;
   int order;            /* 0: as the file / element says */
   int level;
