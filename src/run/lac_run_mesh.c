@@ -31,7 +31,7 @@ check_groups (const lac_scene *sc, const lac_mesh *m)
       int vol = l->kind == LAC_LOAD_FORCE || l->kind == LAC_LOAD_EXACT_FORCE;
       int point = l->kind == LAC_LOAD_POINT;
       int want = vol ? d : point ? 0 : d - 1;
-      const lac_group *g;
+      const lac_group *g = NULL;
       if (l->group && !(g = lac_run_group (sc, m, &l->sec, l->group, want,
                                            vol ? "a volume force" : point
                                            ? "point_force (a point group)"
@@ -41,7 +41,7 @@ check_groups (const lac_scene *sc, const lac_mesh *m)
                                              "volume)"
                                            : "a surface load")))
         return LAC_EINVAL;
-      if (l->group && point && g->nnodes != 1)
+      if (l->group && point && g && g->nnodes != 1)
         return lac_scene_error (sc, &l->sec, "group", LAC_EINVAL, "a point "
                                 "group of %zu nodes; point_force acts on "
                                 "one point", g->nnodes);
