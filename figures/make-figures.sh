@@ -104,13 +104,14 @@ if [ -f $RING ] && want 10; then
   if [ $QUICK = 1 ]; then
     # touch, then 10 mm of crushing in 4 steps (the pipeline, not the curve)
     RING_MESHES=${RING_MESHES:-"hex8:0"}
-    RING_SET="--set dirichlet.ends.uz=-30 --set steps.start=0.6666666666666666 --set steps.n=4 --set steps.vtu_every=2"
+    RING_SET="--set dirichlet.ends.uz=-30 --set steps.start=0.6666666666666666 --set steps.n=4 --set steps.vtu_every=2 --set output.vtu_format=ascii"
   else
     RING_MESHES=${RING_MESHES:-"hex8:0 hex20:0 hex8:1"}
-    RING_SET="--set steps.vtu_every=15"
+    RING_SET="--set steps.vtu_every=15 --set output.vtu_format=ascii"
   fi
   # steps.vtu_every: step_NNN.vtu every K-th load step and the last (61
-  # steps: 15, 30, 45, 60, 61; --quick, 5 steps: 2, 4, 5) for Figure 11
+  # steps: 15, 30, 45, 60, 61; --quick, 5 steps: 2, 4, 5) for Figure 11,
+  # in ASCII for vtu_extent below
   specs=$RING_MESHES
   RING_MESHES=
   for spec in $specs; do
@@ -327,7 +328,8 @@ fi
 # ---- Figures 10 and 11: ring on block [LAC §5.4] -------------------------
 # vtu_extent FILE...: "UMAX X0:X1:Y0:Y1:Z0:Z1", the largest |u| and the
 # bounding box of the deformed configurations x + u of VTU files, in one
-# pass (one point per line, as lac writes them)
+# pass (one point per line, as lac writes them with output.vtu_format =
+# ascii)
 vtu_extent () {
   awk '/<DataArray/ { c = /Name="coordinates"/; d = /Name="displacement"/
                       if (FNR == 1 || c) n = 0; m = 0; next }

@@ -167,7 +167,7 @@ curved () {
   na=$(value_of "$C/$name.out" active)
   nm=$(value_of "$C/$name.out" multipliers)
   kkt=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; next }
-    $col["multiplier"] >= 0 { n++; g[n] = $col["mean_gap"]; l[n] = $col["lambda"];
+    $col["multiplier"] != "" { n++; g[n] = $col["mean_gap"]; l[n] = $col["lambda"];
       a[n] = $col["active"]; m = (g[n] < 0 ? -g[n] : g[n]) > m ? (g[n] < 0 ? -g[n] : g[n]) : m }
     END { bad = 0; t = 1e-10 * m
       for (i = 1; i <= n; i++)
@@ -186,3 +186,102 @@ for l in 0 2 4; do
 done
 curved sphere-plane 0
 curved sphere-plane 1
+
+# ---- contact outputs: summary keys, contact.csv, contact.vtu -------------
+# The Taylor patch test, either body as slave, 2D and 3D: the upper body is
+# held by contact alone, so the resultant of the multipliers balances the
+# load p |top| exactly: contact_force = -p |top| to 1e-10 relative (the
+# sign of lambda), contact_area = |top|, max_contact_pressure = p, every
+# multiplier active; the force_* columns of contact.csv sum to the same
+# resultant along contact_axis.
+balance () {
+  name="balance-$1-$2-swap$3"
+  swap=""
+  [ "$3" = 1 ] && swap="--set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom"
+  # shellcheck disable=SC2086
+  if ! "$LAC" run "chapters/08-experiments/$1.scene" --set element="$2" $swap \
+       --quiet --out "$C/$name" > "$C/$name.out" 2> "$C/$name.err"; then
+    contact_fail "$name" "lac run failed: $(tail -1 "$C/$name.err")"
+    return
+  fi
+  f=$(value_of "$C/$name.out" contact_force); a=$(value_of "$C/$name.out" contact_area)
+  p=$(value_of "$C/$name.out" max_contact_pressure); ax=$(value_of "$C/$name.out" contact_axis)
+  na=$(value_of "$C/$name.out" active_macro_elements); nm=$(value_of "$C/$name.out" multipliers)
+  col=force_$(echo "$ax" | tr -d '+-')
+  sum=$(awk -F, -v c="$col" 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == c) j = k; next }
+        { s += $j } END { printf "%.17g", s }' "$C/$name/contact.csv")
+  case "$ax" in -*) sum=$(awk -v s="$sum" 'BEGIN { printf "%.17g", -s }') ;; esac
+  if awk -v f="$f" -v a="$a" -v p="$p" -v A="$4" -v s="$sum" -v na="$na" -v nm="$nm" 'BEGIN {
+       F = -25 * A; ok = f != "" && (f - F) ^ 2 <= (1e-10 * F) ^ 2
+       ok = ok && (a - A) ^ 2 <= (1e-10 * A) ^ 2 && (p - 25) ^ 2 <= 1e-18
+       ok = ok && (s - f) ^ 2 <= (1e-10 * F) ^ 2 && na == nm && na > 0
+       exit !ok }'; then
+    contact_ok "$name"
+  else
+    contact_fail "$name" "contact_force = $f (want -25 x $4), contact_area = $a, max_contact_pressure = $p, sum of $col = $sum, active $na of $nm"
+  fi
+}
+for sw in 0 1; do
+  balance taylor2d quad8 $sw 50
+  balance taylor2d tri3 $sw 50
+  balance taylor3d hex20 $sw 2500
+  balance taylor3d tet10 $sw 2500
+done
+
+# A rigid obstacle: the progress line counts the slave facets on it (no
+# "0 pairs"); contact.csv has a position and an abscissa on every row, z
+# empty (2D), lambda_exact empty (no [exact]), the multiplier columns empty
+# only where there is no multiplier, s growing with x along the arc from
+# the symmetry axis; contact.vtu: one cell per slave facet, its lambda that
+# of its macro-element in contact.csv.
+R="$C/curved-cylinder-flat-level2"
+"$LAC" run chapters/07-newton/cylinder-flat.scene --no-output > /dev/null 2> "$C/obstacle.err"
+if grep -q '\[2/7\] contact .* [1-9][0-9]* slave facets on the rigid obstacle ([1-9][0-9]* integration points)' \
+     "$C/obstacle.err" && ! grep -q '0 pairs' "$C/obstacle.err"; then
+  contact_ok obstacle-progress
+else
+  contact_fail obstacle-progress "$(grep '\[2/7\]' "$C/obstacle.err")"
+fi
+bad=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; next }
+  { if ($col["x"] == "" || $col["y"] == "" || $col["z"] != "" || $col["s"] == "" \
+        || $col["lambda_exact"] != "") b++
+    if (($col["multiplier"] == "") != ($col["lambda"] == "") \
+        || ($col["multiplier"] == "") != ($col["force_x"] == "")) b++
+    if (NR > 2 && ($col["s"] <= s || $col["x"] <= x)) b++
+    s = $col["s"]; x = $col["x"] }
+  END { print b + 0 }' "$R/contact.csv")
+if [ "$bad" = 0 ] && [ "$(wc -l < "$R/contact.csv")" -gt 2 ]; then
+  contact_ok obstacle-contact-csv
+else
+  contact_fail obstacle-contact-csv "$bad bad rows in $R/contact.csv"
+fi
+if command -v python3 > /dev/null 2>&1; then
+  msg=$(python3 - "$R/contact.vtu" "$R/contact.csv" <<'EOF' 2>&1
+import sys, csv, math
+sys.path.insert(0, "tests")
+from vtu import read
+piece, a = read(sys.argv[1])
+rows = list(csv.DictReader(open(sys.argv[2])))
+nc = int(piece.get("NumberOfCells"))
+assert nc >= len(rows), "a cell per slave facet"
+assert len(a["macro"]) == len(a["lambda"]) == len(a["status"]) == nc, "cell data"
+assert len(a["displacement"]) == 3 * int(piece.get("NumberOfPoints")), "displacement"
+assert set(a["types"]) == {21.0}, "seg3 cells"
+for m, lam, st in zip(a["macro"], a["lambda"], a["status"]):
+    r = rows[int(m)]
+    want = float(r["lambda"]) if r["lambda"] else math.nan
+    assert (math.isnan(lam) and math.isnan(want)) or abs(lam - want) <= 1e-9 * abs(want), "lambda of macro %d" % m
+    assert st == (int(r["active"]) if r["active"] else -1), "status of macro %d" % m
+EOF
+) && contact_ok obstacle-contact-vtu || contact_fail obstacle-contact-vtu "$msg"
+fi
+
+# With [exact] (Taylor): lambda_exact on every row with a multiplier.
+R="$C/balance-taylor2d-quad8-swap0"
+if awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; next }
+     $col["multiplier"] != "" && $col["lambda_exact"] == "" { b++ } END { exit b > 0 || NR < 2 }' \
+     "$R/contact.csv"; then
+  contact_ok taylor-lambda-exact
+else
+  contact_fail taylor-lambda-exact "empty lambda_exact in $R/contact.csv"
+fi

@@ -51,7 +51,7 @@ ring_golden () {
 
 # 1. the CI run
 if "$LAC" run chapters/08-experiments/ring.scene --set element=hex8 \
-     --set steps.n=6 --set steps.vtu_every=2 --out "$C/run" \
+     --set steps.n=6 --set steps.vtu_every=2 --set output.vtu_format=ascii --out "$C/run" \
      > "$C/run.out" 2> "$C/run.err"; then
   ring_ok ring-run
   nit=$(sed -n 's/^newton_iterations = //p' "$C/run.out")
@@ -85,7 +85,8 @@ else
 fi
 
 # 1b. the step files of vtu_every = 2 (7 steps: 2, 4, 6 and the last, 7)
-# vtu_u FILE: the displacement array of a VTU (ASCII), "ux uy uz" per node
+# vtu_u FILE: the displacement array of a VTU (ASCII: the run above asks
+# output.vtu_format = ascii for this reading), "ux uy uz" per node
 vtu_u () {
   awk '/<DataArray/ { on = /Name="displacement"/; next } /<\/DataArray>/ { on = 0 } on' "$1"
 }

@@ -85,24 +85,36 @@ else
   case_fail convergence "l2_err_u level 1 = '$e1', level 2 = '$e2': ratio not > 6"
 fi
 
-# VTU: well-formed XML, counts as in the summary.
+# VTU: well-formed XML, counts as in the summary; binary (appended raw,
+# the default) and ascii (output.vtu_format = ascii) hold the same values.
 nodes=$(summary_value "$C/demo.out" nodes); cells=$(summary_value "$C/demo.out" cells)
 vtu="$C/demo/solution.vtu"
+"$LAC" run chapters/01-problem/sphere-axi.scene --out "$C/demo-ascii" --quiet \
+  --set output.vtu_format=ascii > /dev/null 2> "$C/demo-ascii.err"
 if command -v python3 > /dev/null 2>&1; then
-  msg=$(python3 - "$vtu" "$nodes" "$cells" <<'EOF' 2>&1
-import sys, xml.etree.ElementTree as ET
-path, nodes, cells = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
+  msg=$(python3 - "$vtu" "$nodes" "$cells" "$C/demo-ascii/solution.vtu" <<'EOF' 2>&1
+import sys
+sys.path.insert(0, "tests")
+from vtu import read
+path, nodes, cells, apath = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+piece, arrays = read(path)
+assert piece.find("Points/DataArray").get("format") == "appended", "binary by default"
 assert int(piece.get("NumberOfPoints")) == nodes, "NumberOfPoints"
 assert int(piece.get("NumberOfCells")) == cells, "NumberOfCells"
-arrays = {a.get("Name"): a.text.split() for a in piece.iter("DataArray")}
 assert len(arrays["coordinates"]) == 3 * nodes, "coordinates"
 assert len(arrays["displacement"]) == 3 * nodes, "displacement"
 assert len(arrays["von_mises"]) == nodes, "von_mises"
-assert len(arrays["types"]) == cells and set(arrays["types"]) == {"22"}, "types"
+assert len(arrays["types"]) == cells and set(arrays["types"]) == {22.0}, "types"
 assert int(arrays["offsets"][-1]) == len(arrays["connectivity"]) == 6 * cells, "offsets"
 assert max(int(i) for i in arrays["connectivity"]) < nodes, "connectivity"
 assert len(arrays["body"]) == cells, "body"
+apiece, aarr = read(apath)
+assert apiece.find("Points/DataArray").get("format") == "ascii", "ascii on request"
+assert sorted(aarr) == sorted(arrays), "the same arrays"
+for name, v in arrays.items():
+    w = aarr[name]
+    assert len(v) == len(w), name
+    assert all(abs(x - y) <= 1e-9 * max(1.0, abs(x)) for x, y in zip(v, w)), name
 EOF
 ) && case_ok vtu || case_fail vtu "solution.vtu: $msg"
 else
@@ -212,6 +224,7 @@ bad missing-group run "missing-group.scene:11:|[dirichlet left] group = 'leftt'|
 bad unknown-key run "unknown-key.scene:4:|levle|unknown key|level" run $D/unknown-key.scene $K
 bad unknown-section run "unknown-section.scene:9:|[boundary left]|unknown section" run $D/unknown-section.scene $K
 bad wrong-type run "wrong-type.scene:6:|E = 'abc'|expected a number" run $D/wrong-type.scene $K
+bad vtu-format run "--set|[output] vtu_format = 'xml'|binary, ascii" run $D/box.scene $K --set output.vtu_format=xml
 bad negative-E run "negative-E.scene:6:|E = '-1000'|> 0" run $D/negative-E.scene $K
 bad nu-half run "nu-half.scene:7:|nu = '0.5'|(-1, 0.5)" run $D/nu-half.scene $K
 bad singular run "singular.scene|singular|body 'body'|rigid motion" run $D/singular.scene $K

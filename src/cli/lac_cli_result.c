@@ -134,11 +134,16 @@ lac_cli_result_contact (const char *dir, macro_rows *r)
     {
       double v[8] = { 0, 0, 0, 0, 0, 0, NAN, 0 };
       int k = 0;
-      for (char *t = strtok (line, ",\r\n"); t; t = strtok (NULL, ",\r\n"),
-           k++)
-        for (int i = 0; i < 8; i++)
-          if (col[i] == k)
-            v[i] = strtod (t, NULL);
+      for (char *t = line; t; k++)          /* empty fields: no value */
+        {
+          char *e = t + strcspn (t, ",\r\n");
+          int last = *e != ',';
+          *e = '\0';
+          for (int i = 0; i < 8; i++)
+            if (col[i] == k && *t)
+              v[i] = strtod (t, NULL);
+          t = last ? NULL : e + 1;
+        }
       if (v[4] != 0)
         status = rows_add (r, &cap, v);
     }

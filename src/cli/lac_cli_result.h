@@ -17,8 +17,9 @@ typedef struct macro_rows
 /* The scene's title from DIR/summary.txt, else DIR's last name. */
 void lac_cli_result_title (const char *dir, char *buf, size_t len);
 
-/* The admissible rows of DIR/contact.csv into *r (lambda_exact NaN when
- * the file has no such column); LAC_EIO (no file, missing column),
+/* The admissible rows of DIR/contact.csv into *r (an empty field is no
+ * value: 0 for a coordinate, NaN for lambda_exact, also when the file has
+ * no such column); LAC_EIO (no file, missing column),
  * LAC_EINVAL (no admissible row), LAC_ENOMEM.  Free with
  * lac_cli_result_contact_free, also after an error. */
 int lac_cli_result_contact (const char *dir, macro_rows *r);

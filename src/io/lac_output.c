@@ -14,6 +14,7 @@
 #include "base/lac_mem.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
+#include "io/lac_vtu.h"
 
 static const char *const stress_plane[] = { "xx", "yy", "zz", "xy" };
 static const char *const stress_axi[] = { "rr", "zz", "tt", "rz" };
@@ -46,124 +47,93 @@ check_fields (const lac_output_fields *f)
 
 /* ---- VTU -------------------------------------------------------------- */
 
-/* A point-data array of ncomp components taken from v (stride, first). */
-static void
-vtu_point_array (FILE *fp, const char *name, size_t n, int ncomp,
-                 const double *v, int stride, int first)
-{
-  fprintf (fp, "        <DataArray type=\"Float64\" Name=\"%s\"", name);
-  if (ncomp > 1)
-    fprintf (fp, " NumberOfComponents=\"%d\"", ncomp);
-  fprintf (fp, " format=\"ascii\">\n");
-  for (size_t a = 0; a < n; a++)
-    {
-      fprintf (fp, "         ");
-      for (int k = 0; k < ncomp; k++)
-        fprintf (fp, " %.10e", (first + k < stride)
-                 ? v[a * (size_t) stride + (size_t) (first + k)] : 0.0);
-      fprintf (fp, "\n");
-    }
-  fprintf (fp, "        </DataArray>\n");
-}
-
-static void
-vtu_points (FILE *fp, const lac_mesh *m)
-{
-  fprintf (fp, "      <Points>\n");
-  vtu_point_array (fp, "coordinates", m->nnodes, 3, m->x, m->dim, 0);
-  fprintf (fp, "      </Points>\n");
-}
-
+/* The cells of m in VTK node order (io/lac_vtu.h). */
 static int
-vtu_cells (FILE *fp, const lac_mesh *m)
+vtu_cells (lac_vtu *v, const lac_mesh *m)
 {
-  size_t off = 0;
-  fprintf (fp, "      <Cells>\n        <DataArray type=\"Int64\" "
-           "Name=\"connectivity\" format=\"ascii\">\n");
-  for (size_t c = 0; c < m->ncells; c++)
+  size_t nc = m->ncells, nconn = m->ptr[nc];
+  long *conn = lac_malloc ((nconn + 1) * sizeof *conn);
+  long *off = lac_malloc ((nc + 1) * sizeof *off);
+  unsigned char *types = lac_malloc (nc + 1);
+  int status = conn && off && types ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "VTU cells of %zu cells", nc);
+  for (size_t c = 0; c < nc && !status; c++)
     {
       const lac_refelem *re = lac_refelem_get (m->type[c]);
       if (!re)
-        LAC_ERROR (LAC_ESANITY, "cell %zu has no reference element", c);
-      fprintf (fp, "         ");
+        {
+          status = LAC_ERRMSG (LAC_ESANITY, "cell %zu has no reference "
+                               "element", c);
+          break;
+        }
       for (int k = 0; k < re->nnodes; k++)      /* VTK node k = gmsh node */
-        fprintf (fp, " %d", m->conn[m->ptr[c] + (size_t) re->vtk_perm[k]]);
-      fprintf (fp, "\n");
+        conn[m->ptr[c] + (size_t) k] =
+          m->conn[m->ptr[c] + (size_t) re->vtk_perm[k]];
+      off[c] = (long) m->ptr[c + 1];
+      types[c] = (unsigned char) re->vtk_type;
     }
-  fprintf (fp, "        </DataArray>\n        <DataArray type=\"Int64\" "
-           "Name=\"offsets\" format=\"ascii\">\n");
-  for (size_t c = 0; c < m->ncells; c++)
-    {
-      off += m->ptr[c + 1] - m->ptr[c];
-      fprintf (fp, "          %zu\n", off);
-    }
-  fprintf (fp, "        </DataArray>\n        <DataArray type=\"UInt8\" "
-           "Name=\"types\" format=\"ascii\">\n");
-  for (size_t c = 0; c < m->ncells; c++)
-    fprintf (fp, "          %d\n", lac_refelem_get (m->type[c])->vtk_type);
-  fprintf (fp, "        </DataArray>\n      </Cells>\n");
-  return LAC_SUCCESS;
+  if (!status)
+    status = lac_vtu_cells (v, conn, off, types);
+  lac_free (conn);
+  lac_free (off);
+  lac_free (types);
+  return status;
 }
 
-static void
-vtu_point_data (FILE *fp, const lac_output_fields *f)
+static int
+vtu_point_data (lac_vtu *v, const lac_output_fields *f)
 {
   const lac_mesh *m = f->mesh;
-  int ns = lac_model_nstress (f->model);
+  int ns = lac_model_nstress (f->model), status;
   const char *const *names = lac_output_stress_names (f->model);
   char name[32];
-  fprintf (fp, "      <PointData Vectors=\"displacement\"%s>\n",
-           f->vm ? " Scalars=\"von_mises\"" : "");
-  vtu_point_array (fp, "displacement", m->nnodes, 3, f->u, m->dim, 0);
-  if (f->u_exact)
-    vtu_point_array (fp, "displacement_exact", m->nnodes, 3, f->u_exact,
-                     m->dim, 0);
-  for (int k = 0; f->sigma && k < ns; k++)
+  lac_vtu_defaults (v, "displacement", f->vm ? "von_mises" : NULL, "body");
+  status = lac_vtu_f64 (v, LAC_VTU_POINT_DATA, "displacement", 3, f->u,
+                        m->dim, 0);
+  if (!status && f->u_exact)
+    status = lac_vtu_f64 (v, LAC_VTU_POINT_DATA, "displacement_exact", 3,
+                          f->u_exact, m->dim, 0);
+  for (int k = 0; !status && f->sigma && k < ns; k++)
     {
       snprintf (name, sizeof name, "stress_%s", names[k]);
-      vtu_point_array (fp, name, m->nnodes, 1, f->sigma, ns, k);
+      status = lac_vtu_f64 (v, LAC_VTU_POINT_DATA, name, 1, f->sigma, ns, k);
     }
-  if (f->vm)
-    vtu_point_array (fp, "von_mises", m->nnodes, 1, f->vm, 1, 0);
-  fprintf (fp, "      </PointData>\n");
+  if (!status && f->vm)
+    status = lac_vtu_f64 (v, LAC_VTU_POINT_DATA, "von_mises", 1, f->vm, 1,
+                          0);
+  return status;
 }
 
-static void
-vtu_cell_data (FILE *fp, const lac_mesh *m)
+static int
+vtu_cell_data (lac_vtu *v, const lac_mesh *m)
 {
-  fprintf (fp, "      <CellData Scalars=\"body\">\n        <DataArray "
-           "type=\"Int32\" Name=\"body\" format=\"ascii\">\n");
-  for (size_t c = 0; c < m->ncells; c++)
-    fprintf (fp, "          %d\n", m->body ? m->body[c] : 0);
-  fprintf (fp, "        </DataArray>\n      </CellData>\n");
+  int *body = lac_calloc (m->ncells + 1, sizeof *body), status;
+  if (!body)
+    LAC_ERROR (LAC_ENOMEM, "VTU body of %zu cells", m->ncells);
+  for (size_t c = 0; m->body && c < m->ncells; c++)
+    body[c] = m->body[c];
+  status = lac_vtu_i32 (v, LAC_VTU_CELL_DATA, "body", body);
+  lac_free (body);
+  return status;
 }
 
 /* lac_output_vtu: write the mesh and the nodal fields as a VTU file. */
 int
 lac_output_vtu (const char *path, const lac_output_fields *f)
 {
-  FILE *fp;
+  lac_vtu *v;
   int status;
   if ((status = check_fields (f)))
     return status;
-  if (!(fp = fopen (path, "w")))
-    LAC_ERROR (LAC_EIO, "cannot create '%s' (%s)", path, strerror (errno));
-  fprintf (fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\""
-           " version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
-           "    <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n",
-           f->mesh->nnodes, f->mesh->ncells);
-  vtu_points (fp, f->mesh);
-  status = vtu_cells (fp, f->mesh);
-  vtu_point_data (fp, f);
-  vtu_cell_data (fp, f->mesh);
-  fprintf (fp, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
-  if (status)
-    {
-      fclose (fp);
-      return status;
-    }
-  return close_checked (fp, path);
+  if (!(v = lac_vtu_alloc (f->mesh->nnodes, f->mesh->ncells, f->vtu_ascii)))
+    LAC_ERROR (LAC_ENOMEM, "VTU of %zu nodes", f->mesh->nnodes);
+  if (!(status = lac_vtu_points (v, f->mesh->x, f->mesh->dim))
+      && !(status = vtu_cells (v, f->mesh))
+      && !(status = vtu_point_data (v, f))
+      && !(status = vtu_cell_data (v, f->mesh)))
+    status = lac_vtu_write (v, path);
+  lac_vtu_free (v);
+  return status;
 }
 
 /* ---- CSV -------------------------------------------------------------- */

@@ -1,6 +1,7 @@
 /* lac_output.h -- result files: VTU for ParaView, CSV tables, summaries
  *
- * VTU: one XML UnstructuredGrid piece in ASCII; points always have three
+ * VTU (io/lac_vtu.h): one XML UnstructuredGrid piece, binary (appended
+ * raw) unless vtu_ascii asks for text; points always have three
  * coordinates; quadratic cells are written as VTK quadratic cells (cell
  * type and node order from lac_refelem's vtk_type and vtk_perm).  Point
  * data: displacement (3 components), the exact displacement when there is
@@ -30,6 +31,7 @@ typedef struct lac_output_fields
   const double *u_exact;    /* borrowed, nnodes*dim, or NULL          */
   const double *sigma;      /* borrowed, nnodes*ns, or NULL           */
   const double *vm;         /* borrowed, nnodes, or NULL              */
+  int vtu_ascii;            /* 1: ASCII VTU, 0: binary (the default)  */
 } lac_output_fields;
 
 /* Names of the stress components of a model ("xx", "rr", ...), ns of them. */

@@ -46,6 +46,7 @@ lac_output_batch_ours (const char *name)
 {
   static const char *const fixed[] = {
     "solution.vtu", "nodes.csv", "contact.csv", "contact_steps.csv",
+    "contact.vtu",
     "curve.csv", "K.mtx", "summary.txt", "steps.pvd" };
   size_t k;
   for (k = 0; k < sizeof fixed / sizeof fixed[0]; k++)

@@ -177,6 +177,8 @@ lac_scene_free (lac_scene *sc)
   section_free (&sc->output.sec);
   section_free (&sc->steps.sec);
   lac_free (sc->mesh.path);
+  for (int k = 0; k < sc->mesh.nfiles; k++)
+    lac_free (sc->mesh.files[k]), lac_free (sc->mesh.paths[k]);
   for (size_t k = 0; k < sc->nmaterial; k++)
     section_free (&sc->material[k].sec);
   for (size_t k = 0; k < sc->ndirichlet; k++)

@@ -33,7 +33,10 @@
  *                          (lac_nonlinear.h)          no
  *   [mesh]
  *     file                 .geo or .msh, relative to the scene file's
- *                          directory                  (required)
+ *                          directory; or several separated by blanks (at
+ *                          most LAC_SCENE_MAX_MESHES, one per body, put
+ *                          side by side; no group name in two files)
+ *                                                     (required)
  *     size                 mesh size factor > 0 (.geo)            1
  *     order                1 | 2 (.geo)               from element, else 1
  *     level                refinement level 0..12, exported to the .geo as
@@ -61,12 +64,21 @@
  *     ramp                 yes | no: with [steps], the values grow with
  *                          the load factor t (yes) or are imposed whole
  *                          from the first step (no)   yes
- *   [load NAME]            exactly one of:
- *     group                boundary group (pressure, traction) or volume
- *                          group (force; all cells if absent)
+ *   [load NAME]            exactly one of pressure, traction, force,
+ *                          exact, total_force, point_force:
+ *     group                boundary group (pressure, traction,
+ *                          total_force), volume group (force; all cells
+ *                          if absent) or point group (point_force)
  *     pressure             p: traction -p n on the group (p > 0 pushes)
  *     traction             tx ty [tz]: traction per unit area
  *     force                fx fy [fz]: force per unit volume
+ *     total_force          Fx Fy [Fz]: a total force on a boundary group,
+ *                          spread uniformly (traction F / |group|)
+ *     plate                yes: with total_force, the group moves as one
+ *                          rigid plate (translation) carrying the force
+ *                          (run/lac_run_plate.h)             no
+ *     point_force          Fx Fy [Fz]: a force at the node of a point
+ *                          group (a gmsh Physical Point of one point)
  *     exact                traction | tangential | force: the traction
  *                          sigma(u) n (or its tangential part, for a
  *                          contact side) or the body force -div sigma(u)
@@ -119,10 +131,12 @@
  *                          derivatives of the contact terms, or without
  *                          (frozen geometry)                  consistent
  *   [output]
- *     vtu                  yes | no: solution.vtu     yes
+ *     vtu                  yes | no: solution.vtu (and contact.vtu)  yes
  *     csv                  yes | no: nodes.csv        yes
  *     matrix               yes | no: K.mtx (Matrix Market, stiffness before
  *                          the Dirichlet conditions)  no
+ *     vtu_format           binary | ascii: VTU arrays as appended raw
+ *                          bytes or as text (io/lac_vtu.h)   binary
  *
  * Overrides (`lac run --set KEY=VALUE`) are applied after the file is read
  * and checked like file entries; messages about them say "--set".  KEY is

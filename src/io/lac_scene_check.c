@@ -56,14 +56,66 @@ finish_scene (lac_scene *sc)
   return LAC_SUCCESS;
 }
 
+
+/* One name of [mesh] file: its path, relative to the scene's directory,
+ * checked to open. */
+static int
+mesh_path (lac_scene *sc, lac_scene_mesh *m, const char *name, char **path)
+{
+  size_t len = strlen (sc->dir) + strlen (name) + 2;
+  FILE *f;
+  if (!(*path = lac_malloc (len)))
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  if (name[0] == '/')
+    snprintf (*path, len, "%s", name);
+  else
+    snprintf (*path, len, "%s/%s", sc->dir, name);
+  if (!(f = fopen (*path, "r")))
+    return lac_scene_error (sc, &m->sec, "file", LAC_EIO, "cannot open %s "
+                            "(%s)", *path, strerror (errno));
+  fclose (f);
+  return LAC_SUCCESS;
+}
+
+/* [mesh] file: one name, or several separated by blanks (one mesh per
+ * body, read one after the other and put side by side). */
+static int
+mesh_files (lac_scene *sc, lac_scene_mesh *m)
+{
+  const char *p = m->file;
+  int status = LAC_SUCCESS;
+  for (int k = 0; k < m->nfiles; k++)
+    lac_free (m->files[k]), lac_free (m->paths[k]);
+  m->nfiles = 0;
+  lac_free (m->path);
+  m->path = NULL;
+  while (!status && *(p += strspn (p, " \t")))
+    {
+      size_t n = strcspn (p, " \t");
+      if (m->nfiles == LAC_SCENE_MAX_MESHES)
+        return lac_scene_error (sc, &m->sec, "file", LAC_EINVAL, "more than "
+                                "%d mesh files", LAC_SCENE_MAX_MESHES);
+      if (!(m->files[m->nfiles] = lac_malloc (n + 1)))
+        LAC_ERROR (LAC_ENOMEM, "out of memory");
+      memcpy (m->files[m->nfiles], p, n);
+      m->files[m->nfiles][n] = '\0';
+      status = mesh_path (sc, m, m->files[m->nfiles], &m->paths[m->nfiles]);
+      m->nfiles++;
+      p += n;
+    }
+  if (!status && m->nfiles == 0)
+    return lac_scene_error (sc, &m->sec, "file", LAC_EINVAL, "no file name");
+  if (!status && !(m->path = lac_strdup (m->paths[0])))
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  return status;
+}
+
 static int
 finish_mesh (lac_scene *sc)
 {
   const lac_scene_element_spec *info = lac_scene_elements;
   const char *const *names = lac_scene_element_names;
   lac_scene_mesh *m = &sc->mesh;
-  FILE *f;
-  size_t len;
   int el = -1, status;
   if (m->sec.line == 0)
     return lac_scene_where_error (sc->path, 0, LAC_EINVAL, "no [mesh] "
@@ -88,19 +140,8 @@ finish_mesh (lac_scene *sc)
       m->recombine = info[el].recombine;
     }
 
-  /* The file, relative to the scene's directory. */
-  len = strlen (sc->dir) + strlen (m->file) + 2;
-  if (!(m->path = lac_malloc (len)))
-    LAC_ERROR (LAC_ENOMEM, "out of memory");
-  if (m->file[0] == '/')
-    snprintf (m->path, len, "%s", m->file);
-  else
-    snprintf (m->path, len, "%s/%s", sc->dir, m->file);
-  if (!(f = fopen (m->path, "r")))
-    return lac_scene_error (sc, &m->sec, "file", LAC_EIO, "cannot open %s "
-                            "(%s)", m->path, strerror (errno));
-  fclose (f);
-  return LAC_SUCCESS;
+  /* The files, relative to the scene's directory. */
+  return mesh_files (sc, m);
 }
 
 /* nu in (LAC_SCENE_NU_MAX, 0.5): incompressible to rounding. */
@@ -242,6 +283,27 @@ finish_dirichlet (lac_scene *sc, lac_scene_dirichlet *d)
   return LAC_SUCCESS;
 }
 
+/* total_force (on a boundary group, or a rigid plate) or point_force (on
+ * a point group); the group's dimension is checked with the mesh. */
+static int
+finish_total (lac_scene *sc, lac_scene_load *l, int dim)
+{
+  int point = given (&l->sec, "point_force");
+  const char *key = point ? "point_force" : "total_force";
+  if ((point ? l->npoint_force : l->ntotal_force) != dim)
+    return lac_scene_error (sc, &l->sec, key, LAC_EINVAL, "expected %d "
+                            "numbers for model = %s", dim,
+                            lac_scene_model_names[sc->scene.model]);
+  if (l->plate && sc->scene.large_deformation)
+    return lac_scene_error (sc, &l->sec, "plate", LAC_EINVAL, "a rigid "
+                            "plate needs a linear scene (large_deformation "
+                            "= no)");
+  l->kind = point ? LAC_LOAD_POINT : LAC_LOAD_TOTAL;
+  memcpy (l->vec, point ? l->point_force : l->total_force, sizeof l->vec);
+  return require (sc, &l->sec, "group", point ? "point physical group"
+                  : "boundary physical group");
+}
+
 static int
 finish_load (lac_scene *sc, lac_scene_load *l)
 {
@@ -250,9 +312,17 @@ finish_load (lac_scene *sc, lac_scene_load *l)
   nkind += given (&l->sec, "traction");
   nkind += given (&l->sec, "force");
   nkind += given (&l->sec, "exact");
+  nkind += given (&l->sec, "total_force");
+  nkind += given (&l->sec, "point_force");
   if (nkind != 1)
     return lac_scene_error (sc, &l->sec, NULL, LAC_EINVAL, "give exactly "
-                            "one of pressure, traction, force, exact");
+                            "one of pressure, traction, force, exact, "
+                            "total_force, point_force");
+  if (given (&l->sec, "plate") && !given (&l->sec, "total_force"))
+    return lac_scene_error (sc, &l->sec, "plate", LAC_EINVAL, "a plate "
+                            "carries a total_force: give total_force");
+  if (given (&l->sec, "total_force") || given (&l->sec, "point_force"))
+    return finish_total (sc, l, dim);
   if (given (&l->sec, "exact"))
     {
       if (sc->exact.sec.line == 0)

@@ -96,6 +96,9 @@ static const key_spec load_keys[] = {
   VEC (lac_scene_load, traction, ntraction),
   VEC (lac_scene_load, force, nforce),
   ENUM (lac_scene_load, exact, load_exact_names),
+  VEC (lac_scene_load, total_force, ntotal_force),
+  BOOL (lac_scene_load, plate),
+  VEC (lac_scene_load, point_force, npoint_force),
 };
 static const key_spec exact_keys[] = {
   { "solution", K_ENUM, F (lac_scene_exact, solution), 0,    /* lac_exact.h */
@@ -137,10 +140,12 @@ static const key_spec steps_keys[] = {
   INT (lac_scene_steps, vtu_every, 0, 100000, "an integer in 0..100000"),
   ENUM (lac_scene_steps, tangent, tangent_names),
 };
+static const char *const vtu_format_names[] = { "binary", "ascii", NULL };
 static const key_spec output_keys[] = {
   BOOL (lac_scene_output, vtu),
   BOOL (lac_scene_output, csv),
   BOOL (lac_scene_output, matrix),
+  ENUM (lac_scene_output, vtu_format, vtu_format_names),
 };
 
 #define NK(a) ((int) (sizeof a / sizeof a[0]))

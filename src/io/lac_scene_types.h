@@ -55,11 +55,17 @@ typedef struct lac_scene_main            /* [scene] */
   int large_deformation;  /* 1: the nonlinear run (lac_nonlinear.h) */
 } lac_scene_main;
 
+#define LAC_SCENE_MAX_MESHES 8     /* files of one [mesh] file = ...  */
+
 typedef struct lac_scene_mesh            /* [mesh] */
 {
   lac_scene_section sec;
   char *file;           /* owned: as written in the scene             */
-  char *path;           /* owned: resolved against the scene directory */
+  char *path;           /* owned: resolved against the scene directory
+                           (the first file)                            */
+  int nfiles;           /* files named (separated by blanks), >= 1      */
+  char *files[LAC_SCENE_MAX_MESHES];   /* owned: each name as written  */
+  char *paths[LAC_SCENE_MAX_MESHES];   /* owned: each resolved         */
   double size;
   int order;            /* 0: as the file / element says */
   int level;
@@ -101,7 +107,11 @@ typedef enum
   LAC_LOAD_PRESSURE, LAC_LOAD_TRACTION, LAC_LOAD_FORCE,
   LAC_LOAD_EXACT_TRACTION,    /* sigma(u) n of the [exact] solution        */
   LAC_LOAD_EXACT_TANGENTIAL,  /* its tangential part (on a contact side)   */
-  LAC_LOAD_EXACT_FORCE        /* -div sigma(u) of the [exact] solution     */
+  LAC_LOAD_EXACT_FORCE,       /* -div sigma(u) of the [exact] solution     */
+  LAC_LOAD_TOTAL,             /* a total force on a boundary group: spread
+                                 uniformly (traction F / |group|) or, with
+                                 plate, through a rigid plate              */
+  LAC_LOAD_POINT              /* a force on the node of a point group      */
 } lac_load_kind;
 
 typedef struct lac_scene_load            /* [load NAME] */
@@ -113,6 +123,10 @@ typedef struct lac_scene_load            /* [load NAME] */
   double vec[3];        /* traction or force, model components */
   double traction[3], force[3];     /* raw key values (table storage)  */
   int ntraction, nforce;
+  double total_force[3], point_force[3];   /* raw key values            */
+  int ntotal_force, npoint_force;
+  int plate;            /* total_force: 1: the group moves as one rigid
+                           plate (translation), the force on the plate   */
   int exact;                        /* 0 none, 1 traction, 2 tangential,
                                        3 force (table storage)          */
 } lac_scene_load;
@@ -158,6 +172,7 @@ typedef struct lac_scene_output          /* [output] */
 {
   lac_scene_section sec;
   int vtu, csv, matrix;
+  int vtu_format;       /* 0 binary (appended raw), 1 ascii               */
 } lac_scene_output;
 
 typedef struct lac_scene

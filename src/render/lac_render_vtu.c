@@ -1,12 +1,14 @@
 /* lac_render_vtu.c -- read back the VTU files lac writes; nodal fields
  *
- * lac_output_vtu writes one ASCII UnstructuredGrid piece: Points (three
- * coordinates), Cells (connectivity in VTK node order, offsets, types),
- * PointData (displacement, displacement_exact, stress_*, von_mises) and
- * CellData (body).  This reader takes the same subset of the format: one
- * piece, ascii DataArrays, any order of the sections and arrays, any
- * whitespace; it does not handle binary or appended data, compressed
- * files or polyhedra.  A cell's VTK type is mapped back to the lac type
+ * lac_output_vtu (io/lac_vtu.h) writes one UnstructuredGrid piece:
+ * Points (three coordinates), Cells (connectivity in VTK node order,
+ * offsets, types), PointData (displacement, displacement_exact, stress_*,
+ * von_mises) and CellData (body), either as ascii DataArrays or as
+ * appended raw binary data.  This reader takes the same subset of the
+ * format: one piece, ascii or appended raw DataArrays (Float32/64,
+ * Int8..64, UInt8..64, headers UInt32 or UInt64, the machine's byte
+ * order), any order of the sections and arrays, any whitespace; it does
+ * not handle inline base64 ("binary") or compressed data, nor polyhedra.  A cell's VTK type is mapped back to the lac type
  * with the same vtk_type, and its nodes back to gmsh order through
  * vtk_perm (VTK node k is gmsh node vtk_perm[k]).
  *
@@ -15,6 +17,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +26,19 @@
 #include "base/lac_status.h"
 
 /* ---- reading the file -------------------------------------------------- */
+
+/* Bytes of a VTK scalar type name, 0 if unknown. */
+static size_t
+type_size (const char *t)
+{
+  static const char *const name[10] = { "Float64", "Float32", "Int64",
+    "UInt64", "Int32", "UInt32", "Int16", "UInt16", "Int8", "UInt8" };
+  static const size_t size[10] = { 8, 4, 8, 8, 4, 4, 2, 2, 1, 1 };
+  for (int k = 0; k < 10; k++)
+    if (!strcmp (t, name[k]))
+      return size[k];
+  return 0;
+}
 
 typedef struct vtu_array
 {
@@ -36,7 +52,10 @@ typedef struct vtu_array
 typedef struct vtu_file
 {
   const char *path;
-  char *text;         /* owned, NUL-terminated */
+  char *text;         /* owned, NUL-terminated (cut before AppendedData) */
+  const unsigned char *bin;  /* into text: the appended data after '_' */
+  size_t nbin;               /* its bytes (up to the end of the file)   */
+  int header64;              /* header_type UInt64 (else UInt32)        */
   size_t npoints, ncells;
   size_t narrays, cap;
   vtu_array *a;       /* owned */
@@ -58,6 +77,40 @@ line_of (const vtu_file *f, const char *p)
   for (const char *q = f->text; q < p; q++)
     line += *q == '\n';
   return line;
+}
+
+static int attr (const char *p, const char *name, char *buf, size_t len);
+
+/* The raw appended data, if any: after the '_' that follows
+ * <AppendedData encoding="raw">; the text is cut before the tag, so that
+ * the XML scan never reads binary bytes. */
+static int
+appended_start (vtu_file *f, size_t len)
+{
+  char *a = strstr (f->text, "<AppendedData");
+  const char *u, *end;
+  const uint16_t one = 1;
+  char buf[32];
+  if (strstr (f->text, "header_type=\"UInt64\""))
+    f->header64 = 1;
+  if (!a)
+    return LAC_SUCCESS;
+  if (!(end = strchr (a, '>')) || !(u = strchr (end, '_')))
+    LAC_ERROR (LAC_EIO, "%s:%d: AppendedData without its '_' marker",
+               f->path, line_of (f, a));
+  if (attr (a, "encoding", buf, sizeof buf) && strcmp (buf, "raw"))
+    LAC_ERROR (LAC_EIO, "%s:%d: AppendedData encoding \"%s\": only raw "
+               "appended data (as lac writes it) can be read", f->path,
+               line_of (f, a), buf);
+  if (strstr (f->text, *(const unsigned char *) &one
+                       ? "byte_order=\"BigEndian\""
+                       : "byte_order=\"LittleEndian\""))
+    LAC_ERROR (LAC_EIO, "'%s': binary data in the other byte order than "
+               "this machine's", f->path);
+  f->bin = (const unsigned char *) u + 1;
+  f->nbin = len - (size_t) (u + 1 - f->text);
+  *a = '\0';
+  return LAC_SUCCESS;
 }
 
 static int
@@ -87,7 +140,7 @@ slurp (vtu_file *f)
     }
   f->text[len] = '\0';
   fclose (fp);
-  return LAC_SUCCESS;
+  return appended_start (f, (size_t) len);
 }
 
 /* The value of attribute `name` of the tag starting at p (up to '>'),
@@ -113,6 +166,65 @@ attr (const char *p, const char *name, char *buf, size_t len)
   return 0;
 }
 
+/* Value k of a binary array of type t (its bytes at b). */
+static double
+binary_value (const char *t, const unsigned char *b, size_t k)
+{
+  union { double f64; float f32; int64_t i64; uint64_t u64; int32_t i32;
+          uint32_t u32; int16_t i16; uint16_t u16; int8_t i8; uint8_t u8; } v;
+  size_t w = type_size (t);
+  memcpy (&v, b + k * w, w);
+  return !strcmp (t, "Float64") ? v.f64 : !strcmp (t, "Float32") ? v.f32
+         : !strcmp (t, "Int64") ? (double) v.i64
+         : !strcmp (t, "UInt64") ? (double) v.u64
+         : !strcmp (t, "Int32") ? (double) v.i32 : !strcmp (t, "UInt32") ? (double) v.u32
+         : !strcmp (t, "Int16") ? (double) v.i16 : !strcmp (t, "UInt16") ? (double) v.u16
+         : !strcmp (t, "Int8") ? (double) v.i8 : (double) v.u8;
+}
+
+/* The values of an appended DataArray (tag at p): at offset bytes into
+ * the appended data, a header (the byte count) then the values. */
+static int
+read_appended (vtu_file *f, const char *p, vtu_array *a)
+{
+  char type[32], buf[32];
+  size_t w, hs = f->header64 ? 8 : 4;
+  uint64_t nb = 0;
+  unsigned long long off;
+  if (!f->bin)
+    LAC_ERROR (LAC_EIO, "%s:%d: DataArray \"%s\" is appended but the file "
+               "has no AppendedData", f->path, line_of (f, p), a->name);
+  if (!attr (p, "type", type, sizeof type)
+      || !(w = type_size (type)))
+    LAC_ERROR (LAC_EIO, "%s:%d: DataArray \"%s\" of unknown type",
+               f->path, line_of (f, p), a->name);
+  if (!attr (p, "offset", buf, sizeof buf)
+      || sscanf (buf, "%llu", &off) != 1 || off > f->nbin
+      || f->nbin - off < hs)
+    LAC_ERROR (LAC_EIO, "%s:%d: DataArray \"%s\": offset '%s' outside the "
+               "appended data (%zu bytes)", f->path, line_of (f, p), a->name,
+               buf, f->nbin);
+  if (f->header64)
+    memcpy (&nb, f->bin + off, 8);
+  else
+    {
+      uint32_t n32;
+      memcpy (&n32, f->bin + off, 4);
+      nb = n32;
+    }
+  if (nb % w || nb > f->nbin - off - hs)
+    LAC_ERROR (LAC_EIO, "%s:%d: DataArray \"%s\": %llu bytes of %s beyond "
+               "the end of the file", f->path, line_of (f, p), a->name,
+               (unsigned long long) nb, type);
+  a->n = (size_t) (nb / w);
+  lac_free (a->v);
+  if (!(a->v = lac_malloc ((a->n + 1) * sizeof *a->v)))
+    LAC_ERROR (LAC_ENOMEM, "out of memory reading '%s'", f->path);
+  for (size_t k = 0; k < a->n; k++)
+    a->v[k] = binary_value (type, f->bin + off + hs, k);
+  return LAC_SUCCESS;
+}
+
 /* Parse the numbers of the DataArray whose opening tag starts at p. */
 static int
 read_array (vtu_file *f, const char *p, int section, const char **next)
@@ -131,10 +243,11 @@ read_array (vtu_file *f, const char *p, int section, const char **next)
                line_of (f, p));
   else
     *next = end + 12;
-  if (attr (p, "format", buf, sizeof buf) && strcmp (buf, "ascii"))
-    LAC_ERROR (LAC_EIO, "%s:%d: DataArray format \"%s\": only ascii VTU "
-               "files (as lac writes them) can be read", f->path,
-               line_of (f, p), buf);
+  int app = attr (p, "format", buf, sizeof buf) && !strcmp (buf, "appended");
+  if (!app && attr (p, "format", buf, sizeof buf) && strcmp (buf, "ascii"))
+    LAC_ERROR (LAC_EIO, "%s:%d: DataArray format \"%s\": only ascii and "
+               "appended raw VTU files (as lac writes them) can be read",
+               f->path, line_of (f, p), buf);
   if (f->narrays == f->cap)
     {
       size_t nc = f->cap ? 2 * f->cap : 16;
@@ -156,6 +269,8 @@ read_array (vtu_file *f, const char *p, int section, const char **next)
   if (!(a->v = lac_malloc (cap * sizeof *a->v)))
     LAC_ERROR (LAC_ENOMEM, "out of memory reading '%s'", f->path);
   f->narrays++;
+  if (app)
+    return read_appended (f, p, a);
   for (q++; ; )
     {
       char *e;

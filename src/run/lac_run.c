@@ -75,8 +75,13 @@ static int
 stage_solve (lac_run *r)
 {
   if (!large (r))
-    return lac_run_solve (r->scene, r->opts.strategy, &r->sys, &r->sol,
-                          r->progress, sizeof r->progress);
+    {
+      int status = lac_run_solve (r->scene, r->opts.strategy, &r->sys,
+                                  &r->sol, r->progress, sizeof r->progress);
+      if (!status)
+        lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
+      return status;
+    }
   if (!r->sol.u && !(r->sol.u = lac_malloc (r->sys.ndof * sizeof *r->sol.u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", r->sys.ndof);
   return lac_run_nl_solve (r->scene, r->mesh, &r->mat, &r->setup, &r->sys,

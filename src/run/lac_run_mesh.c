@@ -29,10 +29,22 @@ check_groups (const lac_scene *sc, const lac_mesh *m)
     {
       const lac_scene_load *l = &sc->load[k];
       int vol = l->kind == LAC_LOAD_FORCE || l->kind == LAC_LOAD_EXACT_FORCE;
-      int want = vol ? d : d - 1;
-      if (l->group && !lac_run_group (sc, m, &l->sec, l->group, want,
-                                   vol ? "a volume force" : "a surface load"))
+      int point = l->kind == LAC_LOAD_POINT;
+      int want = vol ? d : point ? 0 : d - 1;
+      const lac_group *g = NULL;
+      if (l->group && !(g = lac_run_group (sc, m, &l->sec, l->group, want,
+                                           vol ? "a volume force" : point
+                                           ? "point_force (a point group)"
+                                           : l->kind == LAC_LOAD_TOTAL
+                                           ? "total_force (a boundary "
+                                             "group; force: per unit "
+                                             "volume)"
+                                           : "a surface load")))
         return LAC_EINVAL;
+      if (l->group && point && g && g->nnodes != 1)
+        return lac_scene_error (sc, &l->sec, "group", LAC_EINVAL, "a point "
+                                "group of %zu nodes; point_force acts on "
+                                "one point", g->nnodes);
     }
   return LAC_SUCCESS;
 }
@@ -64,6 +76,52 @@ check_mesh (const lac_scene *sc, lac_model model, const lac_mesh *m)
   return check_groups (sc, m);
 }
 
+/* Put the mesh of file k beside those of the files before it (one body
+ * per file, nothing glued); a group name defined by two files is an
+ * error naming both. */
+static int
+add_file (const lac_scene *sc, int k, size_t *gend, lac_mesh **mesh,
+          lac_mesh *one)
+{
+  lac_mesh *both = NULL;
+  int status;
+  if (!*mesh)
+    {
+      *mesh = one;
+      gend[0] = one->ngroups;
+      return LAC_SUCCESS;
+    }
+  for (size_t g = 0; g < one->ngroups; g++)
+    for (size_t h = 0; h < (*mesh)->ngroups; h++)
+      if (!strcmp (one->group[g].name, (*mesh)->group[h].name))
+        {
+          int j = 0;                 /* the file that has it: groups of
+                                        file j end before gend[j] */
+          while (j < k - 1 && h >= gend[j])
+            j++;
+          status = lac_scene_error (sc, &sc->mesh.sec, "file", LAC_EINVAL,
+                                    "group '%s' is defined in '%s' and in "
+                                    "'%s'; the files of one scene need "
+                                    "distinct group names",
+                                    one->group[g].name, sc->mesh.files[j],
+                                    sc->mesh.files[k]);
+          lac_mesh_free (one);
+          lac_mesh_free (*mesh);
+          *mesh = NULL;
+          return status;
+        }
+  status = lac_mesh_merge (*mesh, "", one, "", &both);
+  lac_mesh_free (one);
+  lac_mesh_free (*mesh);
+  *mesh = both;
+  if (both)
+    gend[k] = both->ngroups;
+  if (status)
+    return lac_scene_error (sc, &sc->mesh.sec, "file", status, "%s: %s",
+                            sc->mesh.files[k], lac_error_message ());
+  return LAC_SUCCESS;
+}
+
 int
 lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
               lac_mesh **mesh, char *progress, size_t size)
@@ -82,14 +140,27 @@ lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
   o.numbers = sc->mesh.numbers;
   o.flip_inverted = sc->mesh.inverted == 0;
   o.max_memory = max_memory;
-  status = lac_mesh_read (sc->mesh.path, &o, mesh);
-  if (status)
+  size_t gend[LAC_SCENE_MAX_MESHES];
+  *mesh = NULL;
+  for (int k = 0; k < sc->mesh.nfiles; k++)
     {
-      char quoted[600];
-      lac_run_inner_message (msg, sizeof msg);
-      n = (size_t) snprintf (quoted, sizeof quoted, "'%s': ", sc->mesh.path);
-      return lac_scene_error (sc, &sc->mesh.sec, "file", status, "%s",
-                              strncmp (msg, quoted, n) ? msg : msg + n);
+      lac_mesh *one = NULL;
+      status = lac_mesh_read (sc->mesh.paths[k], &o, &one);
+      if (status)
+        {
+          char quoted[600];
+          lac_mesh_free (*mesh);
+          *mesh = NULL;
+          lac_run_inner_message (msg, sizeof msg);
+          n = (size_t) snprintf (quoted, sizeof quoted, "'%s': ",
+                                 sc->mesh.paths[k]);
+          return lac_scene_error (sc, &sc->mesh.sec, "file", status, "%s%s%s",
+                                  sc->mesh.nfiles > 1 ? sc->mesh.files[k] : "",
+                                  sc->mesh.nfiles > 1 ? ": " : "",
+                                  strncmp (msg, quoted, n) ? msg : msg + n);
+        }
+      if ((status = add_file (sc, k, gend, mesh, one)))
+        return status;
     }
   if ((status = check_mesh (sc, model, *mesh)))
     return status;

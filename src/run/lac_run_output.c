@@ -8,37 +8,29 @@
 #include "base/lac_status.h"
 #include "io/lac_output.h"
 #include "io/lac_output_batch.h"
+#include "run/lac_run_contact_files.h"
 #include "run/lac_run_scene.h"
 
 /* ---- linear runs ------------------------------------------------------ */
 
-/* contact.csv, one line per macro-element. */
+/* contact.csv ([output] csv) and contact.vtu ([output] vtu). */
 static int
-contact_csv (const lac_run_output_in *in, const char *path)
+contact_files (const lac_run_output_in *in, lac_output_batch *b)
 {
-  const lac_contact *c = in->sys->contact;
-  const lac_newton *nw = in->sol->newton;
-  const lac_run_multipliers *mu = &in->res->mult;
-  FILE *f = fopen (path, "w");
-  if (!f)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
-  fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
-           "multiplier,lambda,lambda_exact,mean_gap,active\n");
-  for (size_t m = 0; m < c->nmacro; m++)
-    {
-      long i = c->mult[m];
-      const double *x = i >= 0 ? mu->x + 3 * i : NULL;
-      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%ld,%.10e,"
-               "%.10e,%.10e,%d\n", m, x ? x[0] : 0.0, x ? x[1] : 0.0,
-               x ? x[2] : 0.0, c->meas[m], c->covered[m], c->crit[m],
-               c->admissible[m], i, i >= 0 ? nw->lambda[i] : 0.0,
-               i >= 0 ? mu->exact[i] : 0.0,
-               i >= 0 && c->area[i] > 0 ? nw->d[i] / c->area[i] : 0.0,
-               i >= 0 ? nw->active[i] : 0);
-    }
-  if (fclose (f) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
-  return LAC_SUCCESS;
+  const lac_scene_output *o = &in->sc->output;
+  lac_run_contact_data d = { in->model, in->mesh, in->setup,
+                             in->sys->contact, in->sol->newton,
+                             &in->res->mult, &in->res->contact,
+                             in->sc->exact.sec.line != 0, in->u };
+  const char *path;
+  int status = LAC_SUCCESS;
+  if (o->csv)
+    status = (path = lac_output_batch_add (b, "contact.csv"))
+             ? lac_run_contact_csv (&d, path) : LAC_ENOMEM;
+  if (o->vtu && !status)
+    status = (path = lac_output_batch_add (b, "contact.vtu"))
+             ? lac_run_contact_vtu (&d, o->vtu_format, path) : LAC_ENOMEM;
+  return status;
 }
 
 /* solution.vtu and nodes.csv, as [output] asks, into the batch b. */
@@ -128,7 +120,8 @@ static int
 write_step_vtu (const lac_run_output_in *in, lac_output_batch *b, size_t j,
                 const double *u, const double *sigma, const double *vm)
 {
-  lac_output_fields f = { in->mesh, in->model, u, NULL, sigma, vm };
+  lac_output_fields f = { in->mesh, in->model, u, NULL, sigma, vm,
+                          in->sc->output.vtu_format };
   char name[64];
   const char *path;
   snprintf (name, sizeof name, "step_%03zu.vtu", j + 1);
@@ -201,20 +194,19 @@ output_linear (const lac_run_output_in *in, lac_output_batch *b,
   const char *path = "";
   int contact = in->sys->contact != NULL;
   lac_output_fields f = { in->mesh, in->model, in->u, res->u_exact,
-                          res->sigma, res->vm };
+                          res->sigma, res->vm, o->vtu_format };
   int status = write_fields (in, b, &f);
-  if (!status && o->csv && contact
-      && (!(path = lac_output_batch_add (b, "contact.csv"))
-          || (status = contact_csv (in, path))))
-    return status ? status : LAC_ENOMEM;
+  if (!status && contact)
+    status = contact_files (in, b);
   if (!status && o->matrix
       && (!(path = lac_output_batch_add (b, "K.mtx"))
           || (status = lac_csc_write_mm (in->sys->K0, path))))
     return status ? status : LAC_ENOMEM;
   if (!status && !(status = write_summary (in, b)))
-    snprintf (progress, size, "%s/: %s%s%s%ssummary.txt", in->dir,
+    snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
               o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
               o->csv && contact ? "contact.csv, " : "",
+              o->vtu && contact ? "contact.vtu, " : "",
               o->matrix ? "K.mtx, " : "");
   return status;
 }
@@ -230,7 +222,7 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
   int macro = in->setup->macro != NULL;
   char nsteps[64];
   lac_output_fields f = { in->mesh, in->model, in->u, NULL, in->res->sigma,
-                          in->res->vm };
+                          in->res->vm, o->vtu_format };
   int status = write_fields (in, b, &f);
   if (!status && (!(path = lac_output_batch_add (b, curve))
                   || (status = write_curve (in, path))))

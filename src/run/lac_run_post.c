@@ -18,6 +18,7 @@ lac_run_results_clear (lac_run_results *res)
   lac_free (res->vm);
   lac_free (res->u_exact);
   lac_run_multipliers_clear (&res->mult);
+  lac_run_contact_clear (&res->contact);
   lac_summary_clear (&res->summary);
   memset (res, 0, sizeof *res);
 }
@@ -278,6 +279,11 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
                                              in->sys->contact,
                                              in->sol->newton, &e, res->sigma,
                                              &res->mult, &res->summary)))
+    return status;
+  if (in->sys->contact
+      && (status = lac_run_contact_post (in->model, in->mesh, in->setup,
+                                         in->sys->contact, in->sol->newton,
+                                         &res->contact, &res->summary)))
     return status;
   if ((status = lac_run_solve_summary (in->sol, &res->summary)))
     return status;

@@ -7,7 +7,8 @@
  * Out: nodal stresses and von Mises (linear: fem/lac_post.h; large
  *      deformation: Cauchy stresses), errors in L2 and H1 against the
  *      exact solution, the multipliers' positions and errors
- *      (run/lac_run_multipliers.h), and the summary: "name = value" lines
+ *      (run/lac_run_multipliers.h), where the macro-elements are and the
+ *      contact forces (run/lac_run_contact.h), and the summary: "name = value" lines
  *      in fixed formats (run/lac_summary.h).  For the radial solutions the
  *      summary also has the mean radial displacement on the inner and
  *      outer surfaces.
@@ -17,6 +18,7 @@
 
 #include <stddef.h>
 #include "io/lac_scene.h"
+#include "run/lac_run_contact.h"
 #include "run/lac_run_material.h"
 #include "run/lac_run_multipliers.h"
 #include "run/lac_run_nonlinear.h"
@@ -32,6 +34,7 @@ typedef struct lac_run_results
   double *u_exact;         /* owned, ndof, or NULL without [exact]        */
   double err_l2, err_h1, norm_l2, norm_h1;
   lac_run_multipliers mult;   /* with contact (linear scenes)           */
+  lac_run_contact contact;    /* positions, forces (linear, contact)    */
   lac_summary summary;
 } lac_run_results;
 

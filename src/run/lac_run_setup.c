@@ -72,6 +72,10 @@ report (const lac_scene *sc, const lac_run_setup *s, int large,
   if (large)
     snprintf (progress + n, size - (size_t) n, "pairing with %s at every "
               "Newton iteration", with);
+  else if (!c->master)                  /* no pairs: every facet covered */
+    snprintf (progress + n, size - (size_t) n, "%zu slave facets on the "
+              "rigid obstacle (%zu integration points)",
+              s->pairing->nslave, s->pairing->npoints);
   else if (s->pairing->nfail)
     snprintf (progress + n, size - (size_t) n, "%zu pairs with %s; %zu "
               "pairs dropped (projection failed)", s->pairing->npairs, with,

@@ -20,6 +20,7 @@ lac_run_system_clear (lac_run_system *sys)
   lac_dirichlet_free (sys->dir);
   lac_contact_free (sys->contact);
   lac_bodies_free (sys->bodies);
+  lac_run_plate_clear (&sys->ties);
   lac_free (sys->N);
   for (size_t j = 0; sys->N_what && j < sys->nfree; j++)
     lac_free (sys->N_what[j]);
@@ -44,6 +45,31 @@ const_field (const double *x, void *ctx, double *out)
     out[i] = c->v[i];
 }
 
+/* A total force F on a boundary group, spread uniformly: the traction
+ * F / |g|, |g| = sum of the x entries of the load of a unit traction
+ * (the shape functions sum to one; axisymmetric: 2 pi r dGamma). */
+static int
+total_force (const lac_mesh *m, lac_model model, const lac_group *g,
+             const double *force, double *F)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes;
+  double *one = lac_calloc (ndof, sizeof *one), area = 0;
+  const_ctx c = { m->dim, { 1, 0, 0 } };
+  int status = one ? lac_assembly_traction (m, model, g, const_field, &c, one)
+                   : LAC_ERRMSG (LAC_ENOMEM, "area of group '%s'", g->name);
+  for (size_t a = 0; !status && a < m->nnodes; a++)
+    area += one[a * (size_t) m->dim];
+  lac_free (one);
+  if (status)
+    return status;
+  if (!(area > 0))
+    LAC_ERROR (LAC_EINVAL, "group '%s' has no area to spread a force on",
+               g->name);
+  for (int i = 0; i < m->dim; i++)
+    c.v[i] = force[i] / area;
+  return lac_assembly_traction (m, model, g, const_field, &c, F);
+}
+
 static int
 add_loads (const lac_scene *sc, lac_model model, const lac_mesh *m,
            double *F)
@@ -66,6 +92,11 @@ add_loads (const lac_scene *sc, lac_model model, const lac_mesh *m,
       else if (l->kind == LAC_LOAD_EXACT_FORCE)
         status = lac_assembly_volume_force (m, model, g,
                                             lac_exact_force, &e, F);
+      else if (l->kind == LAC_LOAD_TOTAL)
+        status = total_force (m, model, g, l->vec, F);
+      else if (l->kind == LAC_LOAD_POINT)
+        for (int i = 0; i < m->dim; i++)               /* one node */
+          F[g->node[0] * (size_t) m->dim + (size_t) i] += l->vec[i];
       else if (l->kind == LAC_LOAD_PRESSURE)
         status = lac_assembly_pressure (m, model, g, l->pressure,
                                         F);
@@ -267,6 +298,9 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
       goto done;
     }
+  if ((status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
+                                   &sys->ties)))
+    goto done;
   if (!(sys->K = lac_csc_from_triplet (T)))
     {
       status = LAC_ENOMEM;
@@ -276,8 +310,13 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
   T = NULL;
   if ((status = eliminate (sc, sys)))
     goto done;
-  snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K",
-            sys->ndof, sys->nfixed, sys->nnz);
+  if (sys->ties.n)
+    snprintf (progress, size, "%zu dofs (%zu fixed, %zu tied to %zu rigid "
+              "plates), %zu nonzeros in K", sys->ndof, sys->nfixed,
+              sys->ties.n, sys->ties.nplates, sys->nnz);
+  else
+    snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K",
+              sys->ndof, sys->nfixed, sys->nnz);
 done:
   if (!status && sc->scene.large_deformation)
     snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "

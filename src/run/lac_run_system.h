@@ -9,7 +9,8 @@
  *      leave free (fem/lac_rigid.h).  A body that touches no contact
  *      surface and is not fixed is an error naming it and its free motion;
  *      the free motions of bodies held by contact alone are N, for the
- *      solve (solve/lac_system.h).
+ *      solve (solve/lac_system.h).  Rigid plates ([load] plate = yes)
+ *      condensed into K and F (run/lac_run_plate.h).
  */
 #ifndef LAC_RUN_SYSTEM_H
 #define LAC_RUN_SYSTEM_H
@@ -20,6 +21,7 @@
 #include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
+#include "run/lac_run_plate.h"
 #include "run/lac_run_setup.h"
 
 typedef struct lac_run_system
@@ -35,6 +37,7 @@ typedef struct lac_run_system
   size_t nfree;            /* free motions of bodies held by contact     */
   double *N;               /* owned, ndof x nfree                        */
   char **N_what;           /* owned, nfree descriptions                  */
+  lac_run_ties ties;       /* rigid plates: dofs that follow a plate's  */
   int coord_dim;           /* components per node                       */
   const double *x;         /* borrowed: the mesh's coordinates (ndof), for
                               the rigid motions of the petsc strategy's

@@ -89,7 +89,7 @@ test_files (const lac_mesh *m)
   double *u = lac_malloc (m->nnodes * 2 * sizeof *u);
   double *sig = lac_calloc (m->nnodes * 4, sizeof *sig);
   double *vm = lac_calloc (m->nnodes, sizeof *vm);
-  lac_output_fields f = { m, LAC_PLANE_STRAIN, u, NULL, sig, vm };
+  lac_output_fields f = { m, LAC_PLANE_STRAIN, u, NULL, sig, vm, 1 };
   lac_output_batch *b = lac_output_batch_alloc (dir, NULL);
   const char *key[] = { "nodes", "title" }, *val[] = { "21", "a box" };
   const char *p1, *p2, *p3;

@@ -8,6 +8,8 @@
  * comparison is to 1e-12; a distorted mesh is compared to the writer's 11
  * significant digits.  Then the scalar fields by name and alias (components,
  * magnitudes, radial stress, error), the list of names, and bad files.
+ * Every type again in binary (appended raw, the default): every bit kept
+ * (tolerance 0); bad binary files (cut short, offsets past the data).
  */
 #include <math.h>
 #include <stdio.h>
@@ -114,7 +116,7 @@ compare (const lac_mesh *m, const data *d, lac_model model,
 }
 
 static void
-round_trip (lac_elem_type t, double distort, double tol)
+round_trip (lac_elem_type t, double distort, double tol, int ascii)
 {
   const lac_refelem *re = lac_refelem_get (t);
   size_t n[3] = { 4, 2, 2 };
@@ -127,7 +129,8 @@ round_trip (lac_elem_type t, double distort, double tol)
   data d;
   char name[64];
   const char *path = t8_path ("t803.vtu");
-  snprintf (name, sizeof name, "%s distort %g", re->name, distort);
+  snprintf (name, sizeof name, "%s distort %g %s", re->name, distort,
+            ascii ? "ascii" : "binary");
   if (lac_mesh_box (t, n, L, distort, &m))
     {
       check_true (0, "%s: box: %s", name, lac_error_message ());
@@ -143,6 +146,7 @@ round_trip (lac_elem_type t, double distort, double tol)
   f.u_exact = d.ue;
   f.sigma = d.sigma;
   f.vm = d.vm;
+  f.vtu_ascii = ascii;
   check_status (lac_output_vtu (path, &f), LAC_SUCCESS, "%s: write", name);
   check_status (lac_render_result_read (path, &r), LAC_SUCCESS, "%s: read",
                 name);
@@ -259,6 +263,54 @@ test_bad_files (void)
   check_true (r == NULL, "no result on failure");
 }
 
+/* The binary encoding; a file cut short, an offset past the data, appended arrays
+ * without AppendedData, base64 appended data: one-line errors. */
+static void
+test_bad_appended (void)
+{
+  static const char head[] =
+    "<VTKFile type=\"UnstructuredGrid\" header_type=\"UInt64\">\n"
+    "<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n"
+    "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+    "format=\"appended\" offset=\"%d\"/></Points></Piece>\n"
+    "</UnstructuredGrid>\n";
+  lac_render_result *r = NULL;
+  const char *path = t8_path ("t803-bad.vtu");
+  char text[2048];
+  snprintf (text, sizeof text, head, 0);
+  write_text (path, text);
+  check_status (lac_render_result_read (path, &r), LAC_EIO, "no data");
+  check_message ("has no AppendedData", "no data: message");
+  {
+    char t2[512];
+    snprintf (t2, sizeof t2, head, 0);
+    snprintf (text, sizeof text, "%s<AppendedData encoding=\"raw\">_"
+              "\030\001\001\001\001\001\001\001abc", t2);
+  }
+  write_text (path, text);
+  check_status (lac_render_result_read (path, &r), LAC_EIO, "cut short");
+  check_message ("beyond the end of the file", "cut short: message");
+  {
+    char t2[512];
+    snprintf (t2, sizeof t2, head, 99);
+    snprintf (text, sizeof text, "%s<AppendedData encoding=\"raw\">_"
+              "abcdefgh", t2);
+  }
+  write_text (path, text);
+  check_status (lac_render_result_read (path, &r), LAC_EIO, "offset");
+  check_message ("offset '99' outside the appended data", "offset: message");
+  {
+    char t2[512];
+    snprintf (t2, sizeof t2, head, 0);
+    snprintf (text, sizeof text, "%s<AppendedData encoding=\"base64\">_"
+              "AAAA", t2);
+  }
+  write_text (path, text);
+  check_status (lac_render_result_read (path, &r), LAC_EIO, "base64");
+  check_message ("only raw", "base64: message");
+  check_true (r == NULL, "no result on failure");
+}
+
 int
 main (void)
 {
@@ -268,9 +320,15 @@ main (void)
   };
   lac_init ();
   for (size_t k = 0; k < sizeof types / sizeof *types; k++)
-    round_trip (types[k], 0, 1e-12);
-  round_trip (LAC_TET10, 0.2, 1e-10);
-  round_trip (LAC_QUAD8, 0.2, 1e-10);
+    {
+      round_trip (types[k], 0, 1e-12, 1);
+      round_trip (types[k], 0, 0, 0);        /* binary: every bit kept */
+    }
+  round_trip (LAC_TET10, 0.2, 1e-10, 1);
+  round_trip (LAC_QUAD8, 0.2, 1e-10, 1);
+  round_trip (LAC_TET10, 0.2, 0, 0);
+  round_trip (LAC_QUAD8, 0.2, 0, 0);
+  test_bad_appended ();
   test_fields ();
   test_bad_files ();
   return check_summary ();

@@ -1,0 +1,307 @@
+/* lac_run_contact.c -- where the contact is and what it carries
+ *                      (see lac_run_contact.h)       [LAC (16)-(18); §5]
+ */
+#include "run/lac_run_contact.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "contact/lac_contact_facet.h"
+#include "fem/lac_quadrature.h"
+
+void
+lac_run_contact_clear (lac_run_contact *rc)
+{
+  lac_free (rc->x);
+  lac_free (rc->s);
+  lac_free (rc->force);
+  memset (rc, 0, sizeof *rc);
+}
+
+/* ---- positions -------------------------------------------------------- */
+
+/* The centroid of macro-element mm (a rule of degree 4 on each facet). */
+static int
+macro_centroid (const lac_mesh *m, const lac_macro *M, size_t mm,
+                lac_quad_cache *qc, double *xc)
+{
+  int nodes[LAC_MAX_FACE_NODES], dim = m->dim;
+  double wsum = 0;
+  lac_elem_type ft;
+  lac_map mp;
+  xc[0] = xc[1] = xc[2] = 0;
+  for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
+    {
+      if (lac_mesh_facet_nodes (m, M->cell[j], M->face[j], nodes, &ft) <= 0)
+        LAC_ERROR (LAC_ESANITY, "macro-element %zu: no facet", mm);
+      const lac_quad *q = lac_quad_cache_get (qc, lac_refelem_get (ft)->shape,
+                                              4);
+      if (!q)
+        return LAC_ENOMEM;
+      for (int p = 0; p < q->n; p++)
+        {
+          int nn = lac_contact_facet_eval (m, M->cell[j], M->face[j],
+                                           q->xi + p * (dim - 1), nodes, &mp);
+          if (nn < 0)
+            return -nn;
+          wsum += q->w[p] * mp.detJ;
+          for (int k = 0; k < dim; k++)
+            xc[k] += q->w[p] * mp.detJ * mp.x[k];
+        }
+    }
+  for (int k = 0; k < dim; k++)
+    xc[k] /= wsum;
+  if (dim == 2)
+    xc[2] = 0;
+  return LAC_SUCCESS;
+}
+
+static int
+positions (const lac_mesh *m, const lac_run_setup *st, const lac_contact *c,
+           lac_run_contact *rc)
+{
+  lac_quad_cache qc;
+  int status = LAC_SUCCESS;
+  memset (&qc, 0, sizeof qc);
+  for (size_t i = 0; i < 3 * rc->n; i++)
+    rc->x[i] = NAN;
+  if (c->xpt)                          /* node-to-segment: the nodes */
+    {
+      for (size_t i = 0; i < c->k; i++)
+        memcpy (rc->x + 3 * c->macro[i], c->xpt + 3 * i, 3 * sizeof (double));
+      return LAC_SUCCESS;
+    }
+  for (size_t mm = 0; mm < rc->n && !status; mm++)
+    status = macro_centroid (m, st->macro, mm, &qc, rc->x + 3 * mm);
+  lac_quad_cache_free (&qc);
+  return status;
+}
+
+/* ---- the curvilinear abscissa (2D) ----------------------------------- */
+
+typedef struct chain
+{
+  size_t nf;            /* facets                                  */
+  int *a, *b;           /* their end nodes                         */
+  long *f1, *f2;        /* per node: the (at most two) facets on it */
+  double *len;          /* facet lengths                           */
+  double *mid;          /* out: abscissa of each facet's middle    */
+  char *seen;
+} chain;
+
+/* The free (or, closed, any) unseen node of smallest x, then y; -1. */
+static long
+chain_start (const chain *ch, const lac_mesh *m, int free_only)
+{
+  long best = -1;
+  for (size_t f = 0; f < ch->nf; f++)
+    {
+      if (ch->seen[f])
+        continue;
+      for (int e = 0; e < 2; e++)
+        {
+          int v = e ? ch->b[f] : ch->a[f];
+          if (free_only && ch->f2[v] >= 0)
+            continue;
+          const double *x = m->x + 2 * (size_t) v;
+          const double *y = best >= 0 ? m->x + 2 * (size_t) best : x;
+          if (best < 0 || x[0] < y[0] || (x[0] == y[0] && x[1] < y[1]))
+            best = v;
+        }
+    }
+  return best;
+}
+
+/* Walk from node v along unseen facets, s growing from *s. */
+static void
+chain_walk (chain *ch, long v, double *s)
+{
+  long f = ch->f1[v];
+  if (f >= 0 && ch->seen[f])
+    f = ch->f2[v];
+  while (f >= 0 && !ch->seen[f])
+    {
+      ch->seen[f] = 1;
+      ch->mid[f] = *s + 0.5 * ch->len[f];
+      *s += ch->len[f];
+      v = ch->a[f] == v ? ch->b[f] : ch->a[f];
+      f = ch->f1[v] == f ? ch->f2[v] : ch->f1[v];
+    }
+}
+
+static int
+chain_fill (chain *ch, const lac_mesh *m, const lac_macro *M,
+            const lac_pairing *P)
+{
+  int nodes[LAC_MAX_FACE_NODES];
+  lac_elem_type ft;
+  for (size_t v = 0; v < m->nnodes; v++)
+    ch->f1[v] = ch->f2[v] = -1;
+  for (size_t f = 0; f < ch->nf; f++)
+    {
+      if (lac_mesh_facet_nodes (m, M->cell[f], M->face[f], nodes, &ft) < 2)
+        LAC_ERROR (LAC_ESANITY, "slave facet %zu has no end nodes", f);
+      ch->a[f] = nodes[0];
+      ch->b[f] = nodes[1];
+      ch->len[f] = P->measure[f];
+      for (int e = 0; e < 2; e++)
+        {
+          int v = nodes[e];
+          if (ch->f1[v] < 0)
+            ch->f1[v] = (long) f;
+          else
+            ch->f2[v] = (long) f;
+        }
+    }
+  return LAC_SUCCESS;
+}
+
+static int
+abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
+           lac_run_contact *rc)
+{
+  chain ch = { M->ptr[M->n], 0, 0, 0, 0, 0, 0, 0 };
+  double s = 0;
+  long v;
+  int status = LAC_SUCCESS;
+  ch.a = lac_malloc ((ch.nf + 1) * sizeof *ch.a);
+  ch.b = lac_malloc ((ch.nf + 1) * sizeof *ch.b);
+  ch.f1 = lac_malloc ((m->nnodes + 1) * sizeof *ch.f1);
+  ch.f2 = lac_malloc ((m->nnodes + 1) * sizeof *ch.f2);
+  ch.len = lac_malloc ((ch.nf + 1) * sizeof *ch.len);
+  ch.mid = lac_malloc ((ch.nf + 1) * sizeof *ch.mid);
+  ch.seen = lac_calloc (ch.nf + 1, 1);
+  if (!ch.a || !ch.b || !ch.f1 || !ch.f2 || !ch.len || !ch.mid || !ch.seen)
+    status = LAC_ERRMSG (LAC_ENOMEM, "abscissae of %zu facets", ch.nf);
+  if (!status && !(status = chain_fill (&ch, m, M, P)))
+    while ((v = chain_start (&ch, m, 1)) >= 0
+           || (v = chain_start (&ch, m, 0)) >= 0)
+      chain_walk (&ch, v, &s);
+  for (size_t mm = 0; !status && mm < M->n; mm++)
+    {
+      double num = 0, den = 0;
+      for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
+        num += ch.mid[j] * ch.len[j], den += ch.len[j];
+      rc->s[mm] = den > 0 ? num / den : NAN;
+    }
+  lac_free (ch.a), lac_free (ch.b), lac_free (ch.f1), lac_free (ch.f2);
+  lac_free (ch.len), lac_free (ch.mid), lac_free (ch.seen);
+  return status;
+}
+
+/* ---- forces ------------------------------------------------------------ */
+
+/* f_i = lambda_i int_{T^m_i cap Gamma_C} n^S (model weight). */
+static int
+forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
+        const lac_contact *c, const double *lambda, lac_run_contact *rc)
+{
+  const lac_macro *M = st->macro;
+  const lac_pairing *P = st->pairing;
+  int dim = m->dim, nodes[LAC_MAX_FACE_NODES];
+  lac_map mp;
+  for (size_t i = 0; i < c->k; i++)
+    {
+      double *f = rc->force + 3 * i, n[3] = { 0, 0, 0 };
+      if (c->xpt)                                  /* collocation */
+        for (int k = 0; k < 3; k++)
+          n[k] = c->area[i] * c->npt[3 * i + k];
+      for (size_t j = M->ptr[c->macro[i]];
+           !c->xpt && j < M->ptr[c->macro[i] + 1]; j++)
+        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
+          {
+            int nn = lac_contact_facet_eval (m, M->cell[j], M->face[j],
+                                             P->xs + p * (dim - 1), nodes, &mp);
+            if (nn < 0)
+              return -nn;
+            double w = P->w[p] * lac_model_weight (model, mp.x);
+            for (int k = 0; k < dim; k++)
+              n[k] += w * mp.normal[k];
+          }
+      for (int k = 0; k < 3; k++)
+        {
+          f[k] = lambda[i] * n[k] + 0.0;        /* no -0 when lambda = 0 */
+          rc->resultant[k] += f[k];
+        }
+    }
+  return LAC_SUCCESS;
+}
+
+/* ---- the summary ------------------------------------------------------- */
+
+/* The axis e (index, sign) nearest to the mean slave normal of the active
+ * multipliers, f_i / lambda_i summed (see lac_run_contact.h). */
+static void
+contact_axis (lac_model model, const lac_run_setup *st, const lac_contact *c,
+              const lac_newton *nw, const lac_run_contact *rc, int *axis,
+              int *sign)
+{
+  int dim = lac_model_dim (model);
+  double n[3] = { 0, 0, 0 };
+  for (size_t i = 0; i < c->k; i++)
+    for (int k = 0; k < 3 && nw->active[i] && nw->lambda[i] != 0; k++)
+      n[k] += rc->force[3 * i + k] / nw->lambda[i];
+  *axis = 0;
+  for (int k = 1; k < dim; k++)
+    if (fabs (n[k]) > fabs (n[*axis]))
+      *axis = k;
+  if (model == LAC_AXISYMMETRIC)
+    *axis = 1;
+  *sign = n[*axis] < 0 ? -1 : 1;
+  if (st->master.n == 0)                    /* rigid obstacle below */
+    *axis = dim - 1, *sign = -1;
+}
+
+static int
+summary (lac_model model, const lac_run_setup *st, const lac_contact *c,
+         const lac_newton *nw, const lac_run_contact *rc, lac_summary *sum)
+{
+  static const char *const ax[2][3] = { { "x", "y", "z" }, { "r", "z", "" } };
+  int axis, sign, status;
+  size_t nact = 0;
+  double area = 0, pmax = 0;
+  for (size_t i = 0; i < c->k; i++)
+    if (nw->active[i])
+      {
+        nact++;
+        area += c->area[i];
+        pmax = fmax (pmax, -nw->lambda[i]);
+      }
+  contact_axis (model, st, c, nw, rc, &axis, &sign);
+  if ((status = lac_summary_add (sum, "contact_force", "%.10e",
+                                 sign * rc->resultant[axis]))
+      || (status = lac_summary_add (sum, "contact_axis", "%s%s",
+                                    sign < 0 ? "-" : "+",
+                                    ax[model == LAC_AXISYMMETRIC][axis]))
+      || (status = lac_summary_add (sum, "contact_area", "%.10e", area))
+      || (status = lac_summary_add (sum, "max_contact_pressure", "%.10e",
+                                    pmax)))
+    return status;
+  return lac_summary_add (sum, "active_macro_elements", "%zu", nact);
+}
+
+int
+lac_run_contact_post (lac_model model, const lac_mesh *m,
+                      const lac_run_setup *setup, const lac_contact *c,
+                      const lac_newton *nw, lac_run_contact *rc,
+                      lac_summary *sum)
+{
+  int status;
+  memset (rc, 0, sizeof *rc);
+  rc->n = c->nmacro;
+  rc->k = c->k;
+  rc->x = lac_malloc ((3 * rc->n + 1) * sizeof *rc->x);
+  rc->s = lac_malloc ((rc->n + 1) * sizeof *rc->s);
+  rc->force = lac_calloc (3 * rc->k + 1, sizeof *rc->force);
+  if (!rc->x || !rc->s || !rc->force)
+    LAC_ERROR (LAC_ENOMEM, "contact results of %zu macro-elements", rc->n);
+  for (size_t i = 0; i < rc->n; i++)
+    rc->s[i] = NAN;
+  if ((status = positions (m, setup, c, rc))
+      || (m->dim == 2 && !c->xpt
+          && (status = abscissae (m, setup->macro, setup->pairing, rc)))
+      || (status = forces (model, m, setup, c, nw->lambda, rc)))
+    return status;
+  return summary (model, setup, c, nw, rc, sum);
+}

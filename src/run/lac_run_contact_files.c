@@ -1,0 +1,220 @@
+/* lac_run_contact_files.c -- contact.csv and contact.vtu
+ *                            (see lac_run_contact_files.h)
+ */
+#include "run/lac_run_contact_files.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "io/lac_vtu.h"
+
+/* ",value" or "," for a value that does not exist (NAN). */
+static void
+field (FILE *f, double v)
+{
+  if (isnan (v))
+    fputc (',', f);
+  else
+    fprintf (f, ",%.10e", v);
+}
+
+/* The multiplier columns of row m (empty without a multiplier). */
+static void
+multiplier_fields (FILE *f, const lac_run_contact_data *d, size_t m)
+{
+  const lac_contact *c = d->contact;
+  long i = c->mult[m];
+  if (i < 0)
+    {
+      fprintf (f, ",,,,,");
+      return;
+    }
+  fprintf (f, ",%ld", i);
+  field (f, d->newton->lambda[i]);
+  field (f, d->has_exact ? d->mult->exact[i] : NAN);
+  field (f, c->area[i] > 0 ? d->newton->d[i] / c->area[i] : NAN);
+  fprintf (f, ",%d", d->newton->active[i]);
+}
+
+int
+lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
+{
+  const lac_contact *c = d->contact;
+  const lac_run_contact *w = d->where;
+  int dim = d->mesh->dim;
+  FILE *f = fopen (path, "w");
+  if (!f)
+    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+  fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
+           "multiplier,lambda,lambda_exact,mean_gap,active,s,force_x,"
+           "force_y,force_z\n");
+  for (size_t m = 0; m < c->nmacro; m++)
+    {
+      long i = c->mult[m];
+      fprintf (f, "%zu", m);
+      for (int k = 0; k < 3; k++)
+        field (f, k < dim ? w->x[3 * m + (size_t) k] : NAN);
+      fprintf (f, ",%.10e,%.10e,%.10e,%d", c->meas[m], c->covered[m],
+               c->crit[m], c->admissible[m]);
+      multiplier_fields (f, d, m);
+      field (f, w->s[m]);
+      for (int k = 0; k < 3; k++)
+        field (f, i >= 0 && k < dim ? w->force[3 * (size_t) i + (size_t) k]
+                                    : NAN);
+      fputc ('\n', f);
+    }
+  int bad = ferror (f);
+  if (fclose (f) != 0 || bad)
+    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+  return LAC_SUCCESS;
+}
+
+/* ---- contact.vtu ------------------------------------------------------- */
+
+typedef struct surface
+{
+  size_t nf, np;        /* facets, points                            */
+  long *local;          /* owned, nnodes: point of a mesh node, -1   */
+  long *conn, *off;     /* owned: VTK cells                          */
+  unsigned char *type;  /* owned                                     */
+  int *node;            /* owned, np: the mesh node of a point       */
+} surface;
+
+static void
+surface_free (surface *s)
+{
+  lac_free (s->local), lac_free (s->conn), lac_free (s->off);
+  lac_free (s->type), lac_free (s->node);
+}
+
+/* The slave sub-facets as VTK cells on their own points. */
+static int
+surface_build (const lac_mesh *m, const lac_macro *M, surface *s)
+{
+  int nodes[LAC_MAX_FACE_NODES];
+  lac_elem_type ft;
+  size_t nc = 0;
+  s->nf = M->ptr[M->n];
+  s->local = lac_malloc ((m->nnodes + 1) * sizeof *s->local);
+  s->conn = lac_malloc ((s->nf * LAC_MAX_FACE_NODES + 1) * sizeof *s->conn);
+  s->off = lac_malloc ((s->nf + 1) * sizeof *s->off);
+  s->type = lac_malloc (s->nf + 1);
+  s->node = lac_malloc ((s->nf * LAC_MAX_FACE_NODES + 1) * sizeof *s->node);
+  if (!s->local || !s->conn || !s->off || !s->type || !s->node)
+    LAC_ERROR (LAC_ENOMEM, "contact surface of %zu facets", s->nf);
+  for (size_t a = 0; a < m->nnodes; a++)
+    s->local[a] = -1;
+  for (size_t j = 0; j < s->nf; j++)
+    {
+      int n = lac_mesh_facet_nodes (m, M->cell[j], M->face[j], nodes, &ft);
+      const lac_refelem *re = lac_refelem_get (ft);
+      if (n <= 0 || !re)
+        LAC_ERROR (LAC_ESANITY, "slave facet %zu has no nodes", j);
+      for (int k = 0; k < n; k++)              /* VTK node k = gmsh node */
+        {
+          int a = nodes[re->vtk_perm[k]];
+          if (s->local[a] < 0)
+            {
+              s->node[s->np] = a;
+              s->local[a] = (long) s->np++;
+            }
+          s->conn[nc++] = s->local[a];
+        }
+      s->off[j] = (long) nc;
+      s->type[j] = (unsigned char) re->vtk_type;
+    }
+  return LAC_SUCCESS;
+}
+
+/* Per facet (LAC) or per node (nts): lambda, mean gap, status. */
+static void
+status_of (const lac_run_contact_data *d, size_t m, double *lam, double *gap,
+           int *st)
+{
+  const lac_contact *c = d->contact;
+  long i = m < c->nmacro ? c->mult[m] : -1;
+  *lam = i >= 0 ? d->newton->lambda[i] : NAN;
+  *gap = i >= 0 && c->area[i] > 0 ? d->newton->d[i] / c->area[i] : NAN;
+  *st = i >= 0 ? d->newton->active[i] : -1;
+}
+
+static int
+surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
+{
+  const lac_macro *M = d->setup->macro;
+  const lac_contact *c = d->contact;
+  int nts = c->xpt != NULL, dim = d->mesh->dim, status;
+  size_t n = nts ? s->np : s->nf;
+  double *u = lac_calloc (3 * s->np + 1, sizeof *u);
+  double *lam = lac_malloc ((n + 1) * sizeof *lam);
+  double *gap = lac_malloc ((n + 1) * sizeof *gap);
+  int *st = lac_malloc ((n + 1) * sizeof *st), *mac = lac_malloc ((n + 1)
+                                                                 * sizeof *mac);
+  lac_vtu_section sec = nts ? LAC_VTU_POINT_DATA : LAC_VTU_CELL_DATA;
+  status = u && lam && gap && st && mac ? LAC_SUCCESS
+           : LAC_ERRMSG (LAC_ENOMEM, "contact.vtu fields");
+  for (size_t p = 0; !status && p < s->np; p++)
+    for (int k = 0; k < dim; k++)
+      u[3 * p + (size_t) k] = d->u[(size_t) s->node[p] * (size_t) dim
+                                   + (size_t) k];
+  for (size_t j = 0; !status && j < n; j++)
+    mac[j] = -1;
+  for (size_t m = 0; !status && !nts && m < M->n; m++)
+    for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)    /* its facets */
+      mac[j] = (int) m;
+  for (size_t m = 0; !status && nts && m < c->nmacro; m++)
+    if (c->admissible[m] && s->local[c->inode[m]] >= 0)   /* its node */
+      mac[s->local[c->inode[m]]] = (int) m;
+  for (size_t j = 0; !status && j < n; j++)
+    status_of (d, mac[j] >= 0 ? (size_t) mac[j] : SIZE_MAX, lam + j,
+               gap + j, st + j);
+  if (!status)
+    status = lac_vtu_f64 (v, LAC_VTU_POINT_DATA, "displacement", 3, u, 3, 0);
+  if (!status)
+    status = lac_vtu_i32 (v, sec, "macro", mac);
+  if (!status)
+    status = lac_vtu_f64 (v, sec, "lambda", 1, lam, 1, 0);
+  if (!status)
+    status = lac_vtu_f64 (v, sec, "mean_gap", 1, gap, 1, 0);
+  if (!status)
+    status = lac_vtu_i32 (v, sec, "status", st);
+  lac_free (u), lac_free (lam), lac_free (gap), lac_free (st), lac_free (mac);
+  return status;
+}
+
+int
+lac_run_contact_vtu (const lac_run_contact_data *d, int ascii,
+                     const char *path)
+{
+  surface s;
+  lac_vtu *v = NULL;
+  double *x = NULL;
+  int status, dim = d->mesh->dim;
+  memset (&s, 0, sizeof s);
+  status = surface_build (d->mesh, d->setup->macro, &s);
+  if (!status && (!(v = lac_vtu_alloc (s.np, s.nf, ascii))
+                  || !(x = lac_malloc ((3 * s.np + 1) * sizeof *x))))
+    status = LAC_ERRMSG (LAC_ENOMEM, "contact.vtu of %zu points", s.np);
+  for (size_t p = 0; !status && p < s.np; p++)
+    for (int k = 0; k < 3; k++)
+      x[3 * p + (size_t) k] = k < dim ? d->mesh->x[(size_t) s.node[p]
+                                                   * (size_t) dim
+                                                   + (size_t) k] : 0.0;
+  if (!status)
+    {
+      lac_vtu_defaults (v, "displacement", d->contact->xpt ? "lambda" : NULL,
+                        d->contact->xpt ? NULL : "lambda");
+      if (!(status = lac_vtu_points (v, x, 3))
+          && !(status = lac_vtu_cells (v, s.conn, s.off, s.type))
+          && !(status = surface_fields (d, &s, v)))
+        status = lac_vtu_write (v, path);
+    }
+  lac_free (x);
+  lac_vtu_free (v);
+  surface_free (&s);
+  return status;
+}
