@@ -99,13 +99,15 @@ child_run (const args *a, FILE *out)
   if (r->sol.newton)
     lac_strategy_get_counts (r->sol.newton->strategy, &c);
   e = lac_run_summary_get (r, "max_rel_err_lambda");
-  fprintf (out, "%zu %zu %.3f %.3f %.3f %.3f %.3f %.3f %.3f %zu %d %d %s %s\n",
+  fprintf (out, "%zu %zu %.3f %.3f %.3f %.3f %.3f %.3f %.3f %zu %d %d %s %s "
+           "%.6g\n",
            r->sys.ndof, r->sol.newton ? r->sol.newton->k : 0,
            r->time[LAC_STAGE_MESH], r->time[LAC_STAGE_CONTACT],
            r->time[LAC_STAGE_ASSEMBLE], r->time[LAC_STAGE_SOLVE],
            c.time_factor, c.time_solve, r->time[LAC_STAGE_POST],
            r->sol.newton ? r->sol.newton->nhist : 0, c.factorizations,
-           c.iterations, lac_strategy_name (r->sol.strategy), e ? e : "-");
+           c.iterations, lac_strategy_name (r->sol.strategy), e ? e : "-",
+           c.flops);
   lac_run_free (r);
   lac_scene_free (sc);
   return 0;
@@ -143,7 +145,9 @@ child_yardstick (const args *a, FILE *out)
       fprintf (stderr, "bench_contact: yardstick: %s\n", lac_error_message ());
       return 1;
     }
-  fprintf (out, "%.3f\n", now () - t0);
+  lac_solver_info info;
+  fprintf (out, "%.3f %.6g\n", now () - t0,
+           lac_solver_get_info (s, &info) == LAC_SUCCESS ? info.flops : 0.0);
   lac_solver_free (s);
   lac_csc_free (K);
   lac_scene_free (sc);
@@ -188,9 +192,10 @@ static void
 header (void)
 {
   printf ("%-14s %8s %5s %6s %6s %6s %7s %7s %6s %5s %4s %4s %4s %-9s %7s"
-          " %6s %6s %8s %8s %9s\n", "case", "dofs", "mult", "mesh", "setup",
-          "assem", "solve", "factor", "subst", "post", "its", "fact", "cg",
-          "strategy", "yardst", "ratio", "total", "peak_MB", "yard_MB", "err_lam");
+          " %6s %6s %8s %8s %9s %7s %7s\n", "case", "dofs", "mult", "mesh",
+          "setup", "assem", "solve", "factor", "subst", "post", "its", "fact",
+          "cg", "strategy", "yardst", "ratio", "total", "peak_MB", "yard_MB",
+          "err_lam", "Gflop", "yGflop");
 }
 
 /* One case: a->repeat pairs of children, run and yardstick in turn (on
@@ -201,6 +206,7 @@ bench_case (const char *label, const args *a)
 {
   char run[512], yard[128], strat[32], err[32];
   double peak = 0, ypeak = 0, t[7], ty = 0, best[7], peak1, ypeak1, ty1;
+  double fl = 0, yfl = 0;
   size_t ndof, k, its;
   int nfact, ncg;
   for (int r = 0; r < (a->repeat > 0 ? a->repeat : 1); r++)
@@ -208,10 +214,10 @@ bench_case (const char *label, const args *a)
       if (in_child (child_run, a, run, sizeof run, &peak1)
           || in_child (child_yardstick, a, yard, sizeof yard, &ypeak1)
           || sscanf (run, "%zu %zu %lf %lf %lf %lf %lf %lf %lf %zu %d %d "
-                     "%31s %31s", &ndof, &k, &best[0], &best[1], &best[2],
+                     "%31s %31s %lf", &ndof, &k, &best[0], &best[1], &best[2],
                      &best[3], &best[4], &best[5], &best[6], &its, &nfact,
-                     &ncg, strat, err) != 14
-          || sscanf (yard, "%lf", &ty1) != 1)
+                     &ncg, strat, err, &fl) != 15
+          || sscanf (yard, "%lf %lf", &ty1, &yfl) != 2)
         {
           fprintf (stderr, "bench_contact: %s failed\n", label);
           return 1;
@@ -224,10 +230,10 @@ bench_case (const char *label, const args *a)
       ypeak = fmax (ypeak, ypeak1);
     }
   printf ("%-14s %8zu %5zu %6.2f %6.2f %6.2f %7.2f %7.2f %6.2f %5.2f %4zu"
-          " %4d %4d %-9s %7.2f %6.2f %6.1f %8.0f %8.0f %9s\n", label, ndof,
-          k, t[0], t[1], t[2], t[3], t[4], t[5], t[6], its, nfact, ncg,
-          strat, ty, t[3] / ty, t[0] + t[1] + t[2] + t[3] + t[6], peak,
-          ypeak, err);
+          " %4d %4d %-9s %7.2f %6.2f %6.1f %8.0f %8.0f %9s %7.1f %7.1f\n",
+          label, ndof, k, t[0], t[1], t[2], t[3], t[4], t[5], t[6], its,
+          nfact, ncg, strat, ty, t[3] / ty, t[0] + t[1] + t[2] + t[3] + t[6],
+          peak, ypeak, err, fl * 1e-9, yfl * 1e-9);
   fflush (stdout);
   return 0;
 }
@@ -276,7 +282,10 @@ bench_default (void)
           "refinement; its = active-set iterations, fact = factorizations, "
           "cg = Krylov iterations (CG, GMRES for split); yardst = one CHOLMOD factorization of K + "
           "delta I of the same mesh; ratio = solve / yardst; total = every "
-          "stage; peaks of the run and of the yardstick's process)\n");
+          "stage; peaks of the run and of the yardstick's process; Gflop = "
+          "the run's numeric factorizations, yGflop = the yardstick's, "
+          "as counted by the analyses: what the times would be on an idle "
+          "machine)\n");
   return failed;
 }
 

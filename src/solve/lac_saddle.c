@@ -10,7 +10,6 @@
 
 #include <math.h>
 #include <string.h>
-#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -24,9 +23,7 @@ struct lac_saddle
   int have_factor;
   double *D;                       /* owned, n + k: the scaling            */
   double *work;                    /* owned, 2 (n + k)                     */
-  int factorizations, analyses;
-  double rcond;                    /* of the last factorization           */
-  double time_factor;              /* seconds in lac_solver_refactor      */
+  lac_solve_counts counts;         /* factorizations (solves: not counted) */
 };
 
 lac_saddle *
@@ -142,15 +139,11 @@ static int
 factorize (lac_saddle *s, const char *active)
 {
   lac_csc *A;
-  lac_solver_info info;
-  double t0;
   int status;
   saddle_scaling (s, active);
   if (!(A = saddle_matrix (s, active)))
     return LAC_ENOMEM;
-  t0 = lac_seconds ();
-  status = lac_solver_refactor (s->solver, A);
-  s->time_factor += lac_seconds () - t0;
+  status = lac_solve_counts_factor (&s->counts, s->solver, A);
   lac_csc_free (A);
   if (status == LAC_ESING)
     {
@@ -164,12 +157,6 @@ factorize (lac_saddle *s, const char *active)
     }
   if (status)
     return status;
-  s->factorizations++;
-  if (lac_solver_get_info (s->solver, &info) == LAC_SUCCESS
-      && !info.analysis_reused)
-    s->analyses++;
-  if (lac_solver_get_info (s->solver, &info) == LAC_SUCCESS)
-    s->rcond = info.rcond;
   memcpy (s->factored_for, active, s->k);
   s->have_factor = 1;
   return LAC_SUCCESS;
@@ -205,11 +192,7 @@ lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
 }
 
 void
-lac_saddle_counts (const lac_saddle *s, int *factorizations, int *analyses,
-                   double *rcond, double *time_factor)
+lac_saddle_get_counts (const lac_saddle *s, lac_solve_counts *c)
 {
-  *time_factor = s->time_factor;
-  *factorizations = s->factorizations;
-  *analyses = s->analyses;
-  *rcond = s->rcond;
+  *c = s->counts;
 }

@@ -33,9 +33,9 @@ int lac_saddle_set (lac_saddle *s, const lac_contact_system *sys);
  * statuses changed since the last factorization. */
 int lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
                       const double *g, double *U, double *lambda);
-/* Numeric factorizations and symbolic analyses made so far, and the
- * condition estimate of the last factorization. */
-void lac_saddle_counts (const lac_saddle *s, int *factorizations,
-                        int *analyses, double *rcond, double *time_factor);
+/* Numeric factorizations, symbolic analyses, their time and flops made so
+ * far, and the condition estimate of the last factorization (the solves
+ * and iterations are not counted: 0). */
+void lac_saddle_get_counts (const lac_saddle *s, lac_solve_counts *c);
 
 #endif /* LAC_SADDLE_H */

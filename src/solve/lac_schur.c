@@ -6,7 +6,6 @@
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
-#include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -65,9 +64,6 @@ int
 lac_schur_set (lac_schur *s, const lac_contact_system *sys)
 {
   size_t n = sys->K->ncol, k = sys->C->ncol;
-  lac_solver_info info;
-  double t0;
-  int status;
   if (!s->x || s->n != n || s->k != k)
     {
       free_arrays (s);
@@ -81,19 +77,7 @@ lac_schur_set (lac_schur *s, const lac_contact_system *sys)
     }
   s->sys = sys;
   memset (s->have, 0, k);
-  t0 = lac_seconds ();
-  status = lac_solver_refactor (s->chol, sys->K);          /* K = L L^T */
-  s->counts.time_factor += lac_seconds () - t0;
-  if (status)
-    return status;
-  s->counts.factorizations++;
-  s->counts.solves += 2;                  /* the condition estimate's */
-  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS
-      && !info.analysis_reused)
-    s->counts.analyses++;
-  if (lac_solver_get_info (s->chol, &info) == LAC_SUCCESS)
-    s->counts.rcond = info.rcond;
-  return LAC_SUCCESS;
+  return lac_solve_counts_factor (&s->counts, s->chol, sys->K); /* K = LL^T */
 }
 
 int

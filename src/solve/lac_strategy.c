@@ -365,14 +365,16 @@ lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
   c->analyses = sc.analyses;
   c->rcond = sc.rcond;
   c->time_factor = sc.time_factor;
+  c->flops = sc.flops;
   if (s->saddle)
     {
-      int f, a;
-      double t;
-      lac_saddle_counts (s->saddle, &f, &a, &c->rcond, &t);
-      c->factorizations += f;
-      c->analyses += a;
-      c->time_factor += t;
+      lac_solve_counts sd;
+      lac_saddle_get_counts (s->saddle, &sd);
+      c->factorizations += sd.factorizations;
+      c->analyses += sd.analyses;
+      c->rcond = sd.rcond;
+      c->time_factor += sd.time_factor;
+      c->flops += sd.flops;
     }
   c->time_solve = s->counts.time_solve + s->counts.time_factor
                   - c->time_factor;

@@ -109,6 +109,7 @@ typedef struct lac_strategy_counts
   double backward_error; /* of the last solve, after refinement            */
   double rcond;        /* condition estimate of the last factorization     */
   double time_factor;  /* seconds in analyses and factorizations          */
+  double flops;        /* of the numeric factorizations, summed           */
   double time_solve;   /* seconds in the rest of set and of the solves    */
   int last_iterations; /* Krylov iterations of the last solve of (*),
                           before refinement (schur, augmented, petsc)      */

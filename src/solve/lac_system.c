@@ -200,6 +200,7 @@ lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
     {
       c->analyses += !info.analysis_reused;
       c->rcond = info.rcond;
+      c->flops += info.flops;
     }
   return LAC_SUCCESS;
 }

@@ -63,6 +63,8 @@ typedef struct lac_solve_counts
   int iterations;      /* conjugate-gradient iterations, all solves      */
   double rcond;        /* condition estimate of the last factorization   */
   double time_factor;  /* seconds in analyses and factorizations         */
+  double flops;        /* floating-point operations of the numeric
+                          factorizations, summed (the analyses' counts)  */
   int last_iterations; /* Krylov iterations of the last solve            */
   double last_residual; /* its relative residual ||b - A x|| / ||b||      */
 } lac_solve_counts;
@@ -94,8 +96,8 @@ void lac_system_column_scales (const lac_contact_system *sys, double *work,
                                double *s);
 /* A numeric factorization of A with `chol` (lac_solver_refactor: the
  * analysis kept while the pattern is), counted in c: factorizations,
- * analyses, the two solves of the condition estimate, its time and
- * rcond. */
+ * analyses, the two solves of the condition estimate, its time, rcond
+ * and flops. */
 int lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
                              const lac_csc *A);
 
