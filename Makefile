@@ -134,9 +134,13 @@ test-asan:
 demo: all
 	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo
 
-# The ring on block, coarse and fine hex20 (about 25 minutes; also in bench).
+# The ring on block, coarse and fine hex20 (about 25 minutes; also in bench);
+# the fine one alone (about 20 minutes).
 bench-ring: all
 	sh bench/ring.sh $(B)
+
+bench-ring-fine: all
+	sh bench/ring.sh $(B) hex20 1
 
 bench: all $(BENCH)
 	@for b in $(BENCH); do echo "== $$b"; ./$$b || exit 1; done
@@ -152,5 +156,5 @@ clean:
 help:
 	@sed -n '3,9p' Makefile
 
-.PHONY: all deps test test-asan demo bench bench-ring figures clean help
+.PHONY: all deps test test-asan demo bench bench-ring bench-ring-fine figures clean help
 .DELETE_ON_ERROR:

@@ -16,8 +16,8 @@
 # The data: BUILD_DIR/figures-work/ring-newton/{frozen,consistent}.csv
 # (step, iteration, residual; iteration 0 is the residual the step ended
 # with, written last) and .sum (the runs' summaries); the table
-# iterations-per-step is printed.  The coarse hex20 runs take about 8 and
-# 3 minutes on 2 cores.
+# iterations-per-step is printed.  The coarse hex20 runs take about 6 and
+# 2 minutes on 2 cores.
 B=build
 QUICK=0
 OUT=figures

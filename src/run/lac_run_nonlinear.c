@@ -277,12 +277,13 @@ report_iter (const lac_run_nl *nl, size_t j, char *progress, size_t size)
 {
   const lac_nl *s = nl->s;
   const lac_nl_iter *r = &s->iters[s->niters - 1];
-  char cut[160] = "", gm[32] = "";
+  char cut[160] = "", gm[48] = "";
   if (r->cuts > nl->cuts_seen)
     snprintf (cut, sizeof cut, "; sub-step cut (%.100s), now to t = %.4f",
               s->cut_msg, r->t);
   if (r->krylov > 0)
-    snprintf (gm, sizeof gm, ", %d GMRES", r->krylov);
+    snprintf (gm, sizeof gm, ", %d GMRES%s", r->krylov,
+              r->factored ? " (K_T factored)" : "");
   snprintf (progress, size, "step %zu/%zu iteration %d: residual %.1e, %zu "
             "status%s changed, %zu/%zu active%s, %.2f s%s", j + 1,
             nl->nfactor, s->ls.iters, r->residual, r->nchanged,

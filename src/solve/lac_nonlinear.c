@@ -22,9 +22,11 @@
 #define LS_HALVINGS 4     /* line search: a step halved at most this often   */
 #define DIVERGED 1e3      /* a residual this much above the best of the step:
                              no convergence                                 */
-#define LAG_RATIO 0.5     /* K_T's factorization is kept from iteration to
+#define LAG_ITERATIONS 6  /* K_T's factorization is kept from iteration to
                              iteration while the consistent step's GMRES
-                             takes less than this times a factorization    */
+                             takes at most this many iterations: about half
+                             a factorization (one costs 12 GMRES iterations
+                             on the coarse hex20 ring, 13 on the fine one) */
 #define ETA_FIRST 1e-5    /* the accuracy of the first step of a sub-step  */
 #define LAZY_K 1e-5       /* see evaluate ()                                 */
 #define ETA_FACTOR 1e-2  /* accuracy of the consistent step: this times    */
@@ -525,9 +527,8 @@ consistent (lac_nl *s, lac_nl_iter *rec)
     return status;
   lac_consistent cs = { &s->sys, s->strategy, s->tangent, s->fixed, s->kgap,
                         s->kact, s->eta, 0 };
-  double t1 = lac_seconds ();
   status = lac_consistent_solve (&cs, s->dU, s->klam, &info);
-  s->time_gmres_last = lac_seconds () - t1;
+  s->gmres_last = info.iterations;
   rec->krylov = info.iterations;
   rec->krylov_residual = info.residual;
   return status;
@@ -564,15 +565,11 @@ solve_contact (lac_nl *s, const lac_dirichlet *inc, lac_nl_iter *rec)
     }
   memset (s->dU, 0, s->ndof * sizeof *s->dU);
   double t0 = lac_seconds ();
-  if (s->opts.frozen || !s->strategy_set
-      || s->time_gmres_last > LAG_RATIO * s->time_factor_last)
+  if (s->opts.frozen || !s->strategy_set || s->gmres_last > LAG_ITERATIONS)
     {
-      /* the first factorization includes the ordering and the symbolic
-       * analysis: its time is no measure, the next iteration factors again */
       status = lac_strategy_set (s->strategy, &s->sys);   /* factor K_T */
-      s->time_factor_last = s->strategy_set ? lac_seconds () - t0 : 0.0;
       s->strategy_set = !status;
-      s->time_gmres_last = 0;
+      s->gmres_last = 0;
     }
   else
     status = lac_strategy_reset (s->strategy, &s->sys, &kept);

@@ -52,9 +52,10 @@
  * the step exact whatever the preconditioner, the factorization of K_T
  * need not be new: with the schur strategy it is kept from iteration to
  * iteration (and step to step; lac_strategy_reset: only the Schur columns
- * of the new C are made) and renewed when the last GMRES took more than
- * half the time of a factorization; the other strategies factor at every
- * iteration, and the frozen tangent always does.  The statuses follow
+ * of the new C are made) and renewed when the last GMRES took more than 6
+ * iterations, about half the time of a factorization (a count, not a
+ * time: the same path on a busy machine); the other strategies factor at
+ * every iteration, and the frozen tangent always does.  The statuses follow
  * the rule of solve/lac_complementarity.h, the rule of the linear active
  * set.  Without any admissible macro-element (bodies apart) step 5 is
  * K_T dU = t F - F_int(U).
@@ -290,8 +291,8 @@ typedef struct lac_nl
   lac_contact_tangent *tangent; /* owned: H and B of the last solve       */
   double eta;            /* accuracy asked of the consistent step          */
   int strategy_set;      /* the strategy holds a factorization of K_T      */
-  double time_factor_last; /* seconds: the last factorization, and the     */
-  double time_gmres_last;  /*   consistent step since (0: none)            */
+  int gmres_last;        /* GMRES iterations of the last consistent step
+                            since the last factorization (0: none)        */
   double *r, *Fint, *dU; /* owned, ndof                                     */
   double *U_save, *lambda_save;  /* owned: state at the step's beginning    */
   char *active_save;
