@@ -120,6 +120,8 @@ rbad ux-huge "ux-huge.scene:17:|ux = '1e308'|magnitude at most 1e+30" \
   run tests/bad/ux-huge.scene $KB
 rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
   run tests/bad/box.scene $KB --set material.steel.E=1e-300
+rbad normal-two-bodies "--set|normal = 'slave'|an obstacle only" \
+  run chapters/08-experiments/taylor2d.scene $KB --set contact.interface.normal=slave
 rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
   run tests/bad/contrast.scene $KB
 

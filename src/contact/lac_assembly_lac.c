@@ -12,7 +12,8 @@
  *
  * so that (C^T U)_i = int [u_N] with [u_N] = (u^S - u^M).n^S (lac_newton.h).
  * Against a rigid obstacle (lac_obstacle.h) the points have no master
- * facet and C^M = 0.  Axisymmetric: w carries 2 pi r.  The variation of
+ * facet, C^M = 0, and the direction is the obstacle's, nu = -n^O (from
+ * P->normal) in place of n^S, with g0 the signed distance.  Axisymmetric: w carries 2 pi r.  The variation of
  * C and G with the coordinates (large deformations) is in
  * lac_contact_tangent.h.
  */
@@ -27,8 +28,8 @@
 static int
 add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
            size_t scell, int sface, const double *xs, size_t mcell,
-           int mface, const double *xm, double w, double g, size_t i,
-           double *Gi, double *areai)
+           int mface, const double *xm, const double *nu, double w,
+           double g, size_t i, double *Gi, double *areai)
 {
   int sn[LAC_MAX_FACE_NODES], mn[LAC_MAX_FACE_NODES];
   lac_map ms, mm;
@@ -39,10 +40,12 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
   if (ns < 0 || nm < 0)
     return ns < 0 ? -ns : -nm;
   w *= lac_model_weight (model, ms.x);                    /* 2 pi r dGamma */
+  if (!nu)
+    nu = ms.normal;                                       /* n^S */
   for (int a = 0; !st && a < ns; a++)
     for (int c = 0; !st && c < dim; c++)                  /* C^S */
       st = lac_triplet_add (T, (size_t) sn[a] * dim + c, i,
-                            w * ms.N[a] * ms.normal[c]);
+                            w * ms.N[a] * nu[c]);
   for (int b = 0; !st && mcell != (size_t) -1 && b < nm; b++)
     for (int c = 0; !st && c < dim; c++)                  /* -C^M */
       st = lac_triplet_add (T, (size_t) mn[b] * dim + c, i,
@@ -77,6 +80,8 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
                             P->xs + p * dimf,
                             rigid ? (size_t) -1 : master->cell[f],
                             rigid ? -1 : master->face[f], P->xm + p * dimf,
+                            P->normal ? P->normal + p * (size_t) P->dim
+                                      : NULL,
                             P->w[p], P->gap[p], i, &c->G[i], &c->area[i]);
           }
     }

@@ -27,15 +27,18 @@ typedef struct point
   double phi[LAC_MAX_FACE_NODES], dphi[LAC_MAX_FACE_NODES * 2];
   double psi[LAC_MAX_FACE_NODES], dpsi[LAC_MAX_FACE_NODES * 2];
   double xs[3], nu[3], n[3], J, g, w, rho;
+  double cv[3];               /* C's vector: nu, or -J n^O (obstacle)        */
   double Minv[9];             /* [t_1 .. -n]^-1 (deformable master)         */
-  double grad[3];             /* grad F at x_m (obstacle)                   */
+  double nO[3], dnO[9];       /* obstacle: n^O and dn^O/dx_s (row-major)     */
+  int slave_dir;              /* obstacle along n^S (lac_obstacle.h)        */
+  double grad[3];             /* ... then grad F at x_m, F = v - h(w)       */
 } point;
 
 /* The derivatives of one point along its dofs q (slave node a, component
  * c at q = a dim + c; master node b at (ns + b) dim + c). */
 typedef struct derivs
 {
-  double nu[3][NQ], eta[2][NQ], g[NQ], rho[NQ];
+  double nu[3][NQ], cv[3][NQ], eta[2][NQ], g[NQ], rho[NQ];
 } derivs;
 
 /* One sub-facet's block under construction. */
@@ -123,17 +126,26 @@ master_eval (const lac_mesh *mesh, const lac_pairing_facets *master,
 {
   int dim = pt->dim;
   double xm[3], tm[2][3], A[9];
+  for (int c = 0; c < 3; c++)
+    pt->cv[c] = pt->nu[c];
   if (!master || f >= master->n)                     /* rigid obstacle */
     {
       if (!ob)
         LAC_ERROR (LAC_EINVAL, "a point without master facet and no obstacle");
       pt->nm = 0;
-      for (int c = 0; c < dim; c++)
-        xm[c] = pt->xs[c] + pt->g * pt->n[c];
-      for (int k = 0; k < dim - 1; k++)             /* F = v - h(w) */
-        pt->grad[k] = -2 * ob->curv[k] * (xm[k] - ob->center[k]);
-      pt->grad[dim - 1] = 1;
-      return LAC_SUCCESS;
+      if ((pt->slave_dir = ob->slave_normal))       /* the paper's n^S */
+        {
+          for (int c = 0; c < dim; c++)
+            xm[c] = pt->xs[c] + pt->g * pt->n[c];
+          for (int k = 0; k < dim - 1; k++)
+            pt->grad[k] = -2 * ob->curv[k] * (xm[k] - ob->center[k]);
+          pt->grad[dim - 1] = 1;
+          return LAC_SUCCESS;
+        }
+      int st = lac_obstacle_project (ob, pt->xs, &pt->g, pt->nO, pt->dnO);
+      for (int c = 0; c < dim; c++)                 /* nu = -n^O, times J */
+        pt->cv[c] = -pt->J * pt->nO[c];
+      return st;
     }
   pt->nm = facet_eval (mesh, master->cell[f], master->face[f], eta,
                        pt->mnode, pt->psi, pt->dpsi, xm, tm);
@@ -243,9 +255,9 @@ point_derivs (const lac_mesh *mesh, lac_model model, const point *pt,
         for (int r = 0; r < dim; r++)
           for (int s = 0; s < dim; s++)
             z[r] += pt->Minv[r * dim + s] * rhs[s];
-      else
+      else if (pt->slave_dir)    /* d.g = -grad F.(..) / grad F.n */
         {
-          double gr = 0, gn = 0;          /* d.g = -grad.(..) / grad.n */
+          double gr = 0, gn = 0;
           for (int r = 0; r < dim; r++)
             {
               gr += pt->grad[r] * rhs[r];
@@ -253,8 +265,16 @@ point_derivs (const lac_mesh *mesh, lac_model model, const point *pt,
             }
           z[dim - 1] = -gr / gn;
         }
+      else                       /* obstacle: d.g = n^O . d.x_s */
+        z[dim - 1] = pt->nO[c] * pt->phi[node];
+      int own = pt->nm == 0 && !pt->slave_dir;     /* cv = -J n^O */
       for (int r = 0; r < 3; r++)
-        d->nu[r][q] = dnu[r];
+        {
+          d->nu[r][q] = dnu[r];
+          d->cv[r][q] = !own || r >= dim ? dnu[r]
+                        : -ndnu * pt->nO[r]
+                          - pt->J * pt->dnO[r * dim + c] * pt->phi[node];
+        }
       for (int k = 0; k < dim - 1; k++)
         d->eta[k][q] = z[k];
       d->g[q] = z[dim - 1];
@@ -315,7 +335,7 @@ point_add (const point *pt, const derivs *d, const size_t *loc, double lam,
       for (int r = 0; r < dim; r++)
         {
           dJ += pt->n[r] * d->nu[r][q];
-          e[r][q] = d->rho[q] * pt->nu[r] + pt->rho * d->nu[r][q];
+          e[r][q] = d->rho[q] * pt->cv[r] + pt->rho * d->cv[r][q];
         }
       bk->b[loc[q]] -= pt->w * (d->rho[q] * pt->g * pt->J       /* B */
                                 + pt->rho * (d->g[q] * pt->J + pt->g * dJ));

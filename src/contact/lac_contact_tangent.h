@@ -28,8 +28,13 @@
  *   d.n    = (I - n n^T) d.nu / J,
  * and eta, g from the projection x_m(eta) = x_s + g n:
  *   [t_1 .. t_{dim-1}  -n] [d.eta; d.g] = d.x_s + g d.n - sum_b psi_b d.y_b
- * (t_k = dx_m/deta_k), or, against a rigid obstacle F(x) = 0
- * (lac_obstacle.h), d.g = -grad F . (d.x_s + g d.n) / (grad F . n).  Then
+ * (t_k = dx_m/deta_k).  Against a rigid obstacle (lac_obstacle.h) g is
+ * the signed distance and the vector nu of C is replaced by -J n^O (n^O
+ * the obstacle's normal at the closest point of x_s):
+ *   d.g = n^O . d.x_s,   d.(-J n^O) = -d.J n^O - J (dn^O/dx) d.x_s;
+ * with the obstacle's slave_normal flag (the paper's manufactured scenes)
+ * g is measured along n, x_m = x_s + g n on the graph F(x) = 0:
+ *   d.g = -grad F . (d.x_s + g d.n) / (grad F . n).  Then
  *   B(:,i) = -d(d_i)/dU = -sum_p w^ (d.rho g J + rho (d.g J + g d.J)),
  *   H = d(C lambda)/dU:  rows of slave node a   lambda w^ phi_a d.(rho nu),
  *                        rows of master node b  -lambda w^ (psi_b d.(rho nu)

@@ -53,8 +53,134 @@ lac_obstacle_gap (const lac_obstacle *o, const double *x, const double *n,
 }
 
 /* Allocate the arrays of a pairing with np points on ns slave facets. */
+
+/* The graph's point X(w), its tangents t_k = e_k + h_k e_v and the
+ * un-normalized outward normal m = (-grad h, 1) at w. */
+static void
+graph_at (const lac_obstacle *o, const double *w, double *X, double t[2][3],
+          double *m)
+{
+  int v = o->dim - 1;
+  X[v] = lac_obstacle_height (o, w);
+  m[v] = 1;
+  for (int k = 0; k < v; k++)
+    {
+      double hk = 2 * o->curv[k] * (w[k] - o->center[k]);
+      X[k] = w[k];
+      m[k] = -hk;
+      for (int c = 0; c <= v; c++)
+        t[k][c] = c == k ? 1 : c == v ? hk : 0;
+    }
+}
+
+/* A = T T^T - (x_v - h) 2 diag(curv): minus the derivative of the
+ * residual R_k = (x - X).t_k with respect to w (nv = dim - 1 rows). */
+static void
+newton_matrix (const lac_obstacle *o, const double *x, const double *X,
+               double t[2][3], double *A)
+{
+  int v = o->dim - 1;
+  for (int k = 0; k < v; k++)
+    for (int l = 0; l < v; l++)
+      {
+        double s = 0;
+        for (int c = 0; c <= v; c++)
+          s += t[k][c] * t[l][c];
+        A[k * v + l] = s - (k == l ? 2 * o->curv[k] * (x[v] - X[v]) : 0);
+      }
+}
+
+/* Solve A z = r for 1 or 2 unknowns; 0 unless A is positive definite. */
+static int
+solve_spd (int nv, const double *A, const double *r, double *z)
+{
+  if (nv == 1)
+    {
+      if (!(A[0] > 0))
+        return 0;
+      z[0] = r[0] / A[0];
+      return 1;
+    }
+  double det = A[0] * A[3] - A[1] * A[2];
+  if (!(A[0] > 0 && det > 0))
+    return 0;
+  z[0] = (A[3] * r[0] - A[1] * r[1]) / det;
+  z[1] = (A[0] * r[1] - A[2] * r[0]) / det;
+  return 1;
+}
+
+int
+lac_obstacle_project (const lac_obstacle *o, const double *x, double *g,
+                      double *n, double *dndx)
+{
+  int v = o->dim - 1, it;
+  double w[2] = { 0, 0 }, X[3], t[2][3], m[3], A[4], r[2], z[2], step = 1;
+  for (int k = 0; k < v; k++)
+    w[k] = x[k];                                   /* vertical projection */
+  for (it = 0; it < 60 && step > 0; it++)
+    {
+      graph_at (o, w, X, t, m);
+      newton_matrix (o, x, X, t, A);
+      double scale = fabs (o->height);       /* the lengths of the scene */
+      for (int c = 0; c <= v; c++)
+        scale = fmax (scale, fmax (fabs (x[c]), fabs (X[c])));
+      for (int k = 0; k < v; k++)
+        {
+          r[k] = 0;
+          for (int c = 0; c <= v; c++)
+            r[k] += (x[c] - X[c]) * t[k][c];
+          scale = fmax (scale, fabs (o->center[k]));
+        }
+      if (!solve_spd (v, A, r, z))
+        LAC_ERROR (LAC_EINVAL, "the point (%g, %g%s) has no unique closest "
+                   "point on the obstacle", x[0], x[1], v == 2 ? ", ..." : "");
+      step = 0;
+      for (int k = 0; k < v; k++)
+        {
+          w[k] += z[k];
+          step = fmax (step, fabs (z[k]));
+        }
+      if (step <= 1e-14 * scale)              /* g is stationary in w */
+        step = 0;
+    }
+  if (step > 0)
+    LAC_ERROR (LAC_EINVAL, "the closest point of (%g, %g) on the obstacle "
+               "did not converge", x[0], x[1]);
+  graph_at (o, w, X, t, m);
+  newton_matrix (o, x, X, t, A);
+  double len = 0;
+  for (int c = 0; c <= v; c++)
+    len += m[c] * m[c];
+  len = sqrt (len);
+  *g = 0;
+  for (int c = 0; c <= v; c++)
+    {
+      n[c] = m[c] / len;
+      *g += (x[c] - X[c]) * n[c];
+    }
+  if (!dndx)
+    return LAC_SUCCESS;
+  /* dw/dx = A^-1 T;  dn/dw_l = (I - n n^T) (-2 curv_l e_l) / |m| */
+  for (int c = 0; c <= v; c++)
+    {
+      double rc[2] = { 0, 0 }, dw[2] = { 0, 0 };
+      for (int k = 0; k < v; k++)
+        rc[k] = t[k][c];
+      solve_spd (v, A, rc, dw);
+      for (int r2 = 0; r2 <= v; r2++)
+        {
+          double s = 0;
+          for (int l = 0; l < v; l++)
+            s += ((r2 == l) - n[r2] * n[l]) * (-2 * o->curv[l]) / len * dw[l];
+          dndx[r2 * o->dim + c] = s;
+        }
+    }
+  return LAC_SUCCESS;
+}
+
+/* Allocate the arrays of a pairing with np points on ns slave facets. */
 static lac_pairing *
-pairing_alloc (int dim, size_t ns, size_t np)
+pairing_alloc (int dim, size_t ns, size_t np, int along_n)
 {
   lac_pairing *P = lac_calloc (1, sizeof *P);
   if (!P)
@@ -68,12 +194,15 @@ pairing_alloc (int dim, size_t ns, size_t np)
   P->master = lac_calloc (np + 1, sizeof *P->master);
   P->w = lac_calloc (np + 1, sizeof *P->w);
   P->gap = lac_calloc (np + 1, sizeof *P->gap);
+  P->normal = along_n ? NULL
+                      : lac_calloc (np * (size_t) dim + 1, sizeof *P->normal);
   P->covered = lac_calloc (ns + 1, sizeof *P->covered);
   P->measure = lac_calloc (ns + 1, sizeof *P->measure);
   P->pair_ptr = lac_calloc (ns + 1, sizeof *P->pair_ptr);
   P->pair_pt = lac_calloc (1, sizeof *P->pair_pt);
   if (!P->ptr || !P->xs || !P->xm || !P->master || !P->w || !P->gap
-      || !P->covered || !P->measure || !P->pair_ptr || !P->pair_pt)
+      || (!along_n && !P->normal) || !P->covered || !P->measure || !P->pair_ptr
+      || !P->pair_pt)
     {
       lac_pairing_free (P);
       return NULL;
@@ -87,6 +216,7 @@ lac_obstacle_pairing (const lac_pairing_facets *slave,
 {
   const lac_mesh *m = slave->mesh;
   int dim = m->dim, nodes[LAC_MAX_FACE_NODES], st = LAC_SUCCESS;
+  double no[3] = { 0, 0, 0 };
   lac_quad *q = NULL;
   lac_map mp;
   *out = NULL;
@@ -104,7 +234,8 @@ lac_obstacle_pairing (const lac_pairing_facets *slave,
    * the type (order) may differ: one rule per shape, checked below */
   if (!(q = lac_quad_alloc (fre->shape, degree + 2 * fre->order)))
     return LAC_ENOMEM;
-  lac_pairing *P = pairing_alloc (dim, slave->n, slave->n * (size_t) q->n);
+  lac_pairing *P = pairing_alloc (dim, slave->n, slave->n * (size_t) q->n,
+                                  o->slave_normal);
   if (!P)
     {
       lac_quad_free (q);
@@ -124,8 +255,12 @@ lac_obstacle_pairing (const lac_pairing_facets *slave,
                                            xi, nodes, &mp);
           if (nn < 0)
             st = -nn;
-          else
+          else if (o->slave_normal)
             st = lac_obstacle_gap (o, mp.x, mp.normal, &P->gap[np]);
+          else
+            st = lac_obstacle_project (o, mp.x, &P->gap[np], no, NULL);
+          for (int c = 0; P->normal && c < dim; c++)      /* nu = -n^O */
+            P->normal[np * (size_t) dim + c] = -no[c];
           memcpy (P->xs + np * (dim - 1), xi, (size_t) (dim - 1) * sizeof *xi);
           P->master[np] = LAC_OBSTACLE_MASTER;
           P->w[np] = q->w[p] * mp.detJ;                   /* dGamma */

@@ -320,6 +320,7 @@ lac_pairing_free (lac_pairing *P)
     return;
   lac_free (P->ptr), lac_free (P->xs), lac_free (P->xm);
   lac_free (P->master), lac_free (P->w), lac_free (P->gap);
+  lac_free (P->normal);
   lac_free (P->covered), lac_free (P->measure);
   lac_free (P->pair_ptr), lac_free (P->pair_master);
   lac_free (P->pair_measure), lac_free (P->pair_pt);

@@ -98,6 +98,10 @@ typedef struct lac_pairing
                             (reference weight x sub-cell Jacobian x slave
                             surface element)                              */
   double *gap;           /* owned, npoints: normal gap g, X_m = x_s + g n_s */
+  double *normal;        /* owned or NULL, npoints*dim: the direction of
+                            the constraint when it is not n_s (a rigid
+                            obstacle, lac_obstacle.h: nu = -n^O, and g the
+                            signed distance); NULL: n_s everywhere        */
 
   double *covered;       /* owned, nslave: sum of w over the facet's points */
   double *measure;       /* owned, nslave: |T^s| (a rule of degree

@@ -94,6 +94,10 @@
  *                          (w_k - center_k)^2 (v = y in 2D, z in 3D; w the
  *                          other coordinates)          (one of the two)
  *     height curvature center   the graph (0; 0 [0]; 0 [0])
+ *     normal               obstacle | slave: the gap and the constraint
+ *                          against the obstacle along its normal at the
+ *                          closest point, or along the slave normal (the
+ *                          paper's manufactured solutions)   obstacle
  *     epsilon              admissibility threshold in (0, 1] [LAC Def. 1]
  *                          (0 in the struct when not given: the
  *                          method's default LAC_EPSILON_DEFAULT)   0.01

@@ -450,6 +450,10 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
     return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "only one "
                             "[contact] section is supported (the first is "
                             "[contact %s])", sc->contact[0].sec.name);
+  if (c->normal == 1 && c->master)
+    return lac_scene_error (sc, &c->sec, "normal", LAC_EINVAL, "applies to "
+                            "an obstacle only (two bodies meet along the "
+                            "slave normal)");
   if (c->method == 2 && !c->master)
     return lac_scene_error (sc, &c->sec, "method", LAC_EINVAL, "nts needs a "
                             "master group (not an obstacle)");

@@ -110,6 +110,7 @@ static const key_spec exact_keys[] = {
   NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
 };
 static const char *const obstacle_names[] = { "none", "graph", NULL };
+static const char *const normal_names[] = { "obstacle", "slave", NULL };
 static const char *const method_names[] = { "lac", "p0", "nts", NULL };
 static const char *const strategy_names[] =             /* lac_strategy.h */
   { "auto", "dense", "schur", "augmented", "saddle", "petsc", "split",
@@ -121,6 +122,7 @@ static const key_spec contact_keys[] = {
   NUM (lac_scene_contact, height, -HUGE_VAL, HUGE_VAL, 0, "a number"),
   VEC12 (lac_scene_contact, curvature, ncurvature),
   VEC12 (lac_scene_contact, center, ncenter),
+  ENUM (lac_scene_contact, normal, normal_names),
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
   ENUM (lac_scene_contact, method, method_names),
   ENUM (lac_scene_contact, strategy, strategy_names),

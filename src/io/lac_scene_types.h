@@ -147,6 +147,8 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double height;        /* obstacle: v <= height + sum curv_k (w_k - c_k)^2 */
   double curvature[3], center[3];    /* (room for 3: the parser's limit) */
   int ncurvature, ncenter;
+  int normal;           /* obstacle: gap and constraint along 0 the
+                           obstacle's normal, 1 the slave's (lac_obstacle.h) */
   double epsilon;       /* admissibility threshold [LAC Def. 1]; 0: not
                            given (the method's default)                    */
   int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */

@@ -192,7 +192,8 @@ abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
 
 /* ---- forces ------------------------------------------------------------ */
 
-/* f_i = lambda_i int_{T^m_i cap Gamma_C} n^S (model weight). */
+/* f_i = lambda_i int_{T^m_i cap Gamma_C} n^S (model weight); against a
+ * rigid obstacle the direction of the constraint nu = -n^O (P->normal). */
 static int
 forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
         const lac_contact *c, const double *lambda, lac_run_contact *rc)
@@ -216,8 +217,10 @@ forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
             if (nn < 0)
               return -nn;
             double w = P->w[p] * lac_model_weight (model, mp.x);
+            const double *nu = P->normal ? P->normal + p * (size_t) dim
+                                         : mp.normal;
             for (int k = 0; k < dim; k++)
-              n[k] += w * mp.normal[k];
+              n[k] += w * nu[k];
           }
       for (int k = 0; k < 3; k++)
         {

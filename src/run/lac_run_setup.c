@@ -120,7 +120,8 @@ lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
     }
   s->obstacle = (lac_obstacle) { (*mesh)->dim, c->height,
                                  { c->curvature[0], c->curvature[1] },
-                                 { c->center[0], c->center[1] } };
+                                 { c->center[0], c->center[1] },
+                                 c->normal == 1 };
   if ((status = mark_contact_nodes (*mesh, gs, gm, s))
       || (!large && (status = pair (sc, *mesh, s))))
     return status;

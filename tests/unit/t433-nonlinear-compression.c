@@ -149,7 +149,7 @@ compress (lac_elem_type type, run rn)
   snprintf (g2, sizeof g2, "%s%s", two ? "up." : "", vmax);
   fix (D, m, g2, v, -rn.delta);
   /* 4. the problem */
-  lac_obstacle ob = { dim, -rn.gap, { 0, 0 }, { 0, 0 } };
+  lac_obstacle ob = { dim, -rn.gap, { 0, 0 }, { 0, 0 }, 0 };
   lac_pairing_facets master = { 0 };
   if (two)
     {

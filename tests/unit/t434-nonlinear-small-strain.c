@@ -55,7 +55,7 @@ limit (lac_elem_type type)
   if (dim == 3)
     fix (D, m, "ymin", 1, 0);
   fix (D, m, dim == 2 ? "ymax" : "zmax", v, -DELTA);
-  lac_obstacle ob = { dim, 0.0, { CURV, dim == 3 ? CURV : 0 }, { 0, 0 } };
+  lac_obstacle ob = { dim, 0.0, { CURV, dim == 3 ? CURV : 0 }, { 0, 0 }, 0 };
   lac_pairing_facets S = { m, M->ptr[M->n], M->cell, M->face };
 
   /* 1. the linear chain */

@@ -14,7 +14,9 @@
  *   2. 3D, hex8 on hex8 (slave faces cut into triangles by the macro-mesh),
  *      the slave randomly deformed, the master by an affine map;
  *   3. 2D axisymmetric, quad8 against a curved rigid obstacle;
- *   4. 3D, hex20 against a curved rigid obstacle.
+ *   4. 3D, hex20 against a curved rigid obstacle;
+ *   5-6. cases 3 and 4 with the gap along the slave normal (the
+ *      obstacle's slave_normal flag) instead of the obstacle's normal.
  * The slave lies inside the master surface (the edge of the contact zone
  * is not differentiated), and the pairs are exact for the quadrature
  * (flat slave sub-facets, masters flat or rigid), so the differences
@@ -294,7 +296,8 @@ deformed (const lac_mesh *m, int two, unsigned seed)
 }
 
 static void
-run_case (const char *name, lac_elem_type type, int two, lac_model model)
+run_case (const char *name, lac_elem_type type, int two, lac_model model,
+          int slave_normal)
 {
   fdcase fc;
   memset (&fc, 0, sizeof fc);
@@ -308,7 +311,8 @@ run_case (const char *name, lac_elem_type type, int two, lac_model model)
   if (two)
     fc.master = lac_pairing_facets_of (fc.m, lac_mesh_group (fc.m, dim == 2
                                        ? "lo.ymax" : "lo.zmax"));
-  fc.ob = (lac_obstacle) { dim, -0.01, { -0.05, -0.08 }, { 0.7, 0.6 } };
+  fc.ob = (lac_obstacle) { dim, -0.01, { -0.05, -0.08 }, { 0.7, 0.6 },
+                          slave_normal };
   fc.E = malloc (fc.m->ncells * sizeof *fc.E);
   fc.nu = malloc (fc.m->ncells * sizeof *fc.nu);
   for (size_t c = 0; c < fc.m->ncells; c++)
@@ -342,10 +346,12 @@ int
 main (void)
 {
   lac_init ();
-  run_case ("2D quad4 / quad4", LAC_QUAD4, 1, LAC_PLANE_STRAIN);
-  run_case ("3D hex8 / hex8", LAC_HEX8, 1, LAC_SOLID3D);
-  run_case ("axisym. quad8 / obstacle", LAC_QUAD8, 0, LAC_AXISYMMETRIC);
-  run_case ("3D hex20 / obstacle", LAC_HEX20, 0, LAC_SOLID3D);
+  run_case ("2D quad4 / quad4", LAC_QUAD4, 1, LAC_PLANE_STRAIN, 0);
+  run_case ("3D hex8 / hex8", LAC_HEX8, 1, LAC_SOLID3D, 0);
+  run_case ("axisym. quad8 / obstacle", LAC_QUAD8, 0, LAC_AXISYMMETRIC, 0);
+  run_case ("3D hex20 / obstacle", LAC_HEX20, 0, LAC_SOLID3D, 0);
+  run_case ("axisym. quad8 / obst. n^S", LAC_QUAD8, 0, LAC_AXISYMMETRIC, 1);
+  run_case ("3D hex20 / obst. n^S", LAC_HEX20, 0, LAC_SOLID3D, 1);
   lac_finalize ();
   return check_summary ();
 }

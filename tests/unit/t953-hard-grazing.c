@@ -113,7 +113,7 @@ obstacle (const char *name, lac_elem_type t, size_t n, double beta_min)
   sp.up.shift[dim - 1] = 50;
   sp.slave = dim == 2 ? "ymin" : "zmin";
   sp.ob = (lac_obstacle) { dim, 50.0, { -KAPPA, dim == 3 ? -KAPPA : 0 },
-                           { 0, 0 } };
+                           { 0, 0 }, 0 };
   sp.load = dim == 2 ? "ymax" : "zmax";
   sp.p = HARD_P;
   sp.fix[sp.nfix++] = (hard_fix) { "xmin", 0, 0 };

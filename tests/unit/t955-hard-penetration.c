@@ -115,7 +115,7 @@ obstacle (const char *name, lac_elem_type t, double frac, double beta_min)
   sp.up.shift[dim - 1] = 50;
   double g0 = frac * 12.5;
   sp.slave = dim == 2 ? "ymin" : "zmin";
-  sp.ob = (lac_obstacle) { dim, 50.0 + g0, { 0, 0 }, { 0, 0 } };
+  sp.ob = (lac_obstacle) { dim, 50.0 + g0, { 0, 0 }, { 0, 0 }, 0 };
   sp.load = dim == 2 ? "ymax" : "zmax";
   sp.p = HARD_P;
   sp.fix[sp.nfix++] = (hard_fix) { "xmin", 0, 0 };

@@ -44,7 +44,7 @@ grazing (const char *name, lac_elem_type t, double beta_min)
   sp.up = (hard_body) { t, { 10, 10, 1 }, { 50, 50, 50 }, { 0, 50, 0 },
                         2000, 0.499, NULL, NULL };
   sp.slave = "ymin";
-  sp.ob = (lac_obstacle) { 2, 50.0, { -0.002, 0 }, { 0, 0 } };
+  sp.ob = (lac_obstacle) { 2, 50.0, { -0.002, 0 }, { 0, 0 }, 0 };
   sp.load = "ymax";
   sp.p = HARD_P;
   sp.fix[sp.nfix++] = (hard_fix) { "xmin", 0, 0 };
