@@ -37,6 +37,7 @@
 #include <math.h>
 #include <string.h>
 #include "base/lac_mem.h"
+#include "fem/lac_pattern.h"
 #include "fem/lac_quadrature.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
@@ -274,6 +275,50 @@ lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
     }
   lac_quad_cache_free (&qc);
   lac_free (Ke);
+  return status;
+}
+
+/* lac_assembly_stiffness_csc: K = sum_c Ke over the cells with E[c] > 0,
+ * assembled into the pattern of those cells (lac_pattern.h).
+ *   [in]  m, mat
+ *   [out] K   ndof x ndof, new
+ *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
+int
+lac_assembly_stiffness_csc (const lac_mesh *m, const lac_elastic *mat,
+                            lac_csc **K)
+{
+  lac_quad_cache qc;
+  lac_pattern *P = NULL;
+  int status = check_elastic (m, mat);
+  *K = NULL;
+  if (status)
+    return status;
+  char *cells = lac_malloc (m->ncells + 1);
+  double *Ke = lac_malloc (LAC_MAX_NODES * 3 * LAC_MAX_NODES * 3
+                           * sizeof *Ke);
+  if (!cells || !Ke)
+    {
+      lac_free (cells);
+      lac_free (Ke);
+      LAC_ERROR (LAC_ENOMEM, "the stiffness of %zu cells", m->ncells);
+    }
+  for (size_t c = 0; c < m->ncells; c++)
+    cells[c] = mat->E[c] > 0.0;            /* the cells of elastic bodies */
+  if (!(P = lac_pattern_build (m, cells)))
+    status = LAC_ENOMEM;        /* or too many entries: its message says */
+  memset (&qc, 0, sizeof qc);
+  for (size_t c = 0; c < m->ncells && !status; c++)
+    if (cells[c] && !(status = cell_stiffness (m, mat, c, &qc, Ke)))
+      lac_pattern_add (P, m, c, Ke);                          /* K += Ke */
+  lac_quad_cache_free (&qc);
+  lac_free (Ke);
+  lac_free (cells);
+  if (!status)
+    {
+      *K = P->K;                              /* the matrix is the caller's */
+      P->K = NULL;
+    }
+  lac_pattern_free (P);
   return status;
 }
 

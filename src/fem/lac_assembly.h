@@ -43,6 +43,12 @@ int lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
 /* K += sum_c Ke (all cells with E[c] > 0). */
 int lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
                             lac_triplet *K);
+/* The same K, built straight into its compressed columns: the pattern
+ * from the mesh, then each Ke added in place (fem/lac_pattern.h: no
+ * triplet list, no sort; the same entries and sums as through triplets).
+ * *K: a new ndof x ndof matrix, the caller's to free. */
+int lac_assembly_stiffness_csc (const lac_mesh *m, const lac_elastic *mat,
+                                lac_csc **K);
 
 /* F += int_{cells of group g (or all cells if g == NULL)} f . v */
 int lac_assembly_volume_force (const lac_mesh *m, lac_model model,

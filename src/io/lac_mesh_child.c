@@ -55,6 +55,7 @@ lac_mesh_default_memory (void)
 /* the child                                                               */
 /* ---------------------------------------------------------------------- */
 
+#ifndef LAC_ASAN   /* (under ASan the child gets no RLIMIT_AS) */
 /* The address space the process holds now (bytes), from /proc. */
 static double
 address_space (void)
@@ -69,6 +70,7 @@ address_space (void)
     }
   return (double) pages * (double) sysconf (_SC_PAGESIZE);
 }
+#endif
 
 static void
 set_limit (int resource, double value)

@@ -255,6 +255,20 @@ eliminate (const lac_scene *sc, lac_run_system *sys)
   return lac_dirichlet_apply (sys->dir, sys->K, sys->b);
 }
 
+/* The stiffness triplets' list, sized for every cell block (the rigid
+ * plates' condensation works on it). */
+static lac_triplet *
+alloc_triplets (const lac_mesh *m, size_t ndof)
+{
+  size_t cap = 0;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      size_t nc = (m->ptr[c + 1] - m->ptr[c]) * (size_t) m->dim;
+      cap += nc * nc;                          /* entries of K_e */
+    }
+  return lac_triplet_alloc (ndof, ndof, cap ? cap : 1);
+}
+
 int
 lac_run_system_build (const lac_scene *sc, lac_model model,
                       const lac_mesh *m, const lac_run_material *mat,
@@ -262,50 +276,44 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
                       char *progress, size_t size)
 {
   lac_triplet *T = NULL;
-  size_t cap = 0;
-  int status = LAC_SUCCESS;
+  int status = LAC_SUCCESS, large = sc->scene.large_deformation, plates = 0;
   memset (sys, 0, sizeof *sys);
   sys->ndof = (size_t) m->dim * m->nnodes;
   sys->coord_dim = m->dim;
   sys->x = model == LAC_AXISYMMETRIC ? NULL : m->x;
-  for (size_t c = 0; c < m->ncells; c++)
-    {
-      size_t nc = (m->ptr[c + 1] - m->ptr[c]) * (size_t) m->dim;
-      cap += nc * nc;                          /* entries of K_e */
-    }
-  if (sc->scene.large_deformation)
-    cap = 0;                  /* K_T is assembled by the Newton loop */
-  T = lac_triplet_alloc (sys->ndof, sys->ndof, cap ? cap : 1);
+  for (size_t k = 0; !large && k < sc->nload; k++)
+    plates |= sc->load[k].plate != 0;
   sys->F = lac_calloc (sys->ndof, sizeof *sys->F);
   sys->b = lac_malloc (sys->ndof * sizeof *sys->b);
   sys->dir = lac_dirichlet_alloc ();
-  if (!T || !sys->F || !sys->b || !sys->dir)
-    {
-      lac_triplet_free (T);
-      LAC_ERROR (LAC_ENOMEM, "system of %zu dofs", sys->ndof);
-    }
-  if ((!sc->scene.large_deformation
-       && (status = lac_assembly_stiffness (m, &mat->elastic, T)))
+  if (plates)
+    T = alloc_triplets (m, sys->ndof);
+  if (!sys->F || !sys->b || !sys->dir || (plates && !T))
+    LAC_ERROR (LAC_ENOMEM, "system of %zu dofs", sys->ndof);
+  /* K in its compressed columns straight away (no triplet list: the peak
+   * of the assembly is K and the map of the cells), but through triplets
+   * when rigid plates condense it; the Newton loop of large deformation
+   * assembles K_T itself. */
+  if ((!large && (status = plates
+                  ? lac_assembly_stiffness (m, &mat->elastic, T)
+                  : lac_assembly_stiffness_csc (m, &mat->elastic, &sys->K)))
       || (status = add_loads (sc, model, m, sys->F))          /* F = l(v)    */
       || (status = add_dirichlet (sc, model, m, sys->dir))
       || (status = find_bodies (sc, model, m, setup, sys))
       || (status = count_fixed (sys))
-      || (sc->ncontact && !sc->scene.large_deformation    /* C, G (else: */
+      || (sc->ncontact && !large                           /* C, G (else: */
           && (status = contact_matrices (sc, model, m, setup, sys))))
     goto done;                                       /* per Newton it.) */
-  if (sc->scene.large_deformation)        /* the Newton loop's affair */
+  if (large)                              /* the Newton loop's affair */
     {
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
       goto done;
     }
-  if ((status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
-                                   &sys->ties)))
+  if (plates
+      && ((status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
+                                       &sys->ties))
+          || (!(sys->K = lac_csc_from_triplet (T)) && (status = LAC_ENOMEM))))
     goto done;
-  if (!(sys->K = lac_csc_from_triplet (T)))
-    {
-      status = LAC_ENOMEM;
-      goto done;
-    }
   lac_triplet_free (T);
   T = NULL;
   if ((status = eliminate (sc, sys)))
@@ -318,7 +326,7 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
     snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K",
               sys->ndof, sys->nfixed, sys->nnz);
 done:
-  if (!status && sc->scene.large_deformation)
+  if (!status && large)
     snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "
               "at every Newton iteration)", sys->ndof);
   lac_triplet_free (T);

@@ -11,11 +11,14 @@
  *           the root makes for every row, the near-null space, the
  *           solvers (projected: the multigrid of K_W, CG on P K_W;
  *           fieldsplit: the nest [K_W B; B^T D], GMRES);
- *   update  the values: the root inserts every row of K_W (new numbers)
- *           or its contact rows (K + C_A W_A C_A^T changes only there),
- *           and B for the statuses; PETSc sends each process its rows in
- *           the assembly; then B^T B + D (projected) or D and the Schur
- *           preconditioner Sp (fieldsplit), D = 1 on the inactive;
+ *   update  the values: every row of K_W (new numbers) or its contact
+ *           rows (K + C_A W_A C_A^T changes only there): the root inserts
+ *           its own and sends each process its rows in messages of at most
+ *           `chunk` entries (compressed rows), which that process inserts
+ *           (one message per chunk, not PETSc's stash of single entries);
+ *           B for the statuses (through PETSc's assembly); then B^T B + D
+ *           (projected) or D and the Schur preconditioner Sp
+ *           (fieldsplit), D = 1 on the inactive;
  *   solve   the right-hand side and the start from the root, one Krylov
  *           solve, its true residual, the solution back to the root.
  *
@@ -105,6 +108,9 @@ _Static_assert (sizeof (PetscScalar) == sizeof (double), "real PETSc");
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
+#define ROWS_CHUNK (1 << 18)  /* entries of K_W per message, at least    */
+#define TAG_ROWS 7301         /* the messages of K_W's rows: indices     */
+#define TAG_VALS 7302         /*   and values                            */
 
 enum { PROJECTED, FIELDSPLIT };   /* the contact solvers (-lac_contact)  */
 
@@ -145,6 +151,14 @@ struct lac_petsc
   Vec useq, lseq;                  /* U, lambda whole on the root (empty
                                       elsewhere)                          */
   VecScatter gu, gl;               /* distributed <-> root                */
+  Mat Bl, Gl;                      /* projected, N > 1: the own rows of
+                                      B (k columns), a copy of G          */
+  KSP kl;                          /*   its LU (prefix gram_local_)       */
+  Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)       */
+  int chunk;                       /* entries per message of K_W's rows  */
+  PetscInt *mi;                    /* owned, 3 + 3 chunk: a message's
+                                      rows, lengths, columns (N > 1)      */
+  double *mx;                      /* owned, chunk: its values            */
   lac_solve_counts counts;
   char method[200];
 };
@@ -214,6 +228,18 @@ free_petsc (lac_petsc *s)
   VecDestroy (&s->lseq);
   VecScatterDestroy (&s->gu);
   VecScatterDestroy (&s->gl);
+  KSPDestroy (&s->kl);
+  MatDestroy (&s->Bl);
+  MatDestroy (&s->Gl);
+  VecDestroy (&s->vl);
+  VecDestroy (&s->ul);
+  VecDestroy (&s->tl);
+  VecDestroy (&s->tg);
+  VecDestroy (&s->sl);
+  lac_free (s->mi);
+  lac_free (s->mx);
+  s->mi = NULL;
+  s->mx = NULL;
   s->built = 0;
 }
 
@@ -614,13 +640,74 @@ create_ku (lac_petsc *s)
 /* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
  * of C_A (l2-orthogonal projection on the null space of C_A^T). */
 static PetscErrorCode
+project_local (lac_petsc *s, Vec v);
+
+static PetscErrorCode
 project (lac_petsc *s, Vec v)
 {
+  if (s->kl)
+    return project_local (s, v);
   PetscCall (MatMultTranspose (s->B, v, s->tk));
   PetscCall (KSPSolve (s->kg, s->tk, s->sk));
   PetscCall (MatMult (s->B, s->sk, s->tu));
   PetscCall (VecAXPY (v, -1.0, s->tu));
   return 0;
+}
+
+/* The same on N > 1 processes with one reduction: each process makes
+ * B_own^T v_own from its rows, one MPI_Allreduce sums them, each solves
+ * with its own copy of G and subtracts B_own s from its rows (instead of
+ * the scatters of B^T v, of PCREDUNDANT and of B s: fewer waits for the
+ * other processes, twice per CG iteration). */
+static PetscErrorCode
+project_local (lac_petsc *s, Vec v)
+{
+  PetscScalar *a, *g;
+  const PetscScalar *t;
+  PetscCall (VecGetArray (v, &a));
+  PetscCall (VecPlaceArray (s->vl, a));
+  PetscCall (MatMultTranspose (s->Bl, s->vl, s->tl));
+  PetscCall (VecGetArrayRead (s->tl, &t));
+  PetscCall (VecGetArray (s->tg, &g));
+  PetscCallMPI (MPI_Allreduce (t, g, (int) s->k, MPIU_SCALAR, MPIU_SUM,
+                               PETSC_COMM_WORLD));
+  PetscCall (VecRestoreArray (s->tg, &g));
+  PetscCall (VecRestoreArrayRead (s->tl, &t));
+  PetscCall (KSPSolve (s->kl, s->tg, s->sl));
+  PetscCall (MatMult (s->Bl, s->sl, s->ul));
+  PetscCall (VecAXPY (s->vl, -1.0, s->ul));
+  PetscCall (VecResetArray (s->vl));
+  PetscCall (VecRestoreArray (v, &a));
+  return 0;
+}
+
+/* N > 1: the own rows of B and a copy of G on every process, G's LU
+ * there (after each new G). */
+static int
+update_local (lac_petsc *s)
+{
+  PC pc;
+  PetscInt nl = s->r1 - s->r0;
+  TRY (MatMPIAIJGetLocalMat (s->B, s->Bl ? MAT_REUSE_MATRIX
+                             : MAT_INITIAL_MATRIX, &s->Bl));
+  TRY (MatCreateRedundantMatrix (s->G, s->size, MPI_COMM_NULL, s->Gl
+                                 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
+                                 &s->Gl));
+  if (!s->kl)
+    {
+      TRY (KSPCreate (PetscObjectComm ((PetscObject) s->Gl), &s->kl));
+      TRY (KSPSetOptionsPrefix (s->kl, "gram_local_"));
+      TRY (KSPSetType (s->kl, KSPPREONLY));
+      TRY (KSPGetPC (s->kl, &pc));
+      TRY (PCSetType (pc, PCLU));
+      TRY (KSPSetFromOptions (s->kl));
+      TRY (MatCreateVecs (s->Gl, &s->sl, &s->tg));
+      TRY (VecCreateSeqWithArray (PETSC_COMM_SELF, 1, nl, NULL, &s->vl));
+      TRY (VecCreateSeq (PETSC_COMM_SELF, nl, &s->ul));
+      TRY (VecCreateSeq (PETSC_COMM_SELF, (PetscInt) s->k, &s->tl));
+    }
+  TRY (KSPSetOperators (s->kl, s->Gl, s->Gl));
+  return LAC_SUCCESS;
 }
 
 /* The operator of the projected CG: y = P K_W x. */
@@ -780,6 +867,13 @@ build (lac_petsc *s, const lac_petsc_command *c)
   l_range (s, s->rank, &s->l0, &s->l1);
   if ((status = create_rows (s, 0, &s->Kw)))
     return status;
+  s->chunk = c->chunk;
+  if (s->size > 1
+      && (!(s->mi = lac_malloc ((3 + 3 * (size_t) s->chunk) * sizeof *s->mi))
+          || !(s->mx = lac_malloc ((size_t) s->chunk * sizeof *s->mx))))
+    LAC_ERROR (LAC_ENOMEM, "the messages of K_W's rows, %d entries",
+               s->chunk);
+  TRY (MatSetOption (s->Kw, MAT_NO_OFF_PROC_ENTRIES, PETSC_TRUE));
   TRY (MatSetOption (s->Kw, MAT_SYMMETRIC, PETSC_TRUE));
   TRY (MatSetOption (s->Kw, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
   TRY (MatCreateVecs (s->Kw, &s->xu, &s->bu));
@@ -797,6 +891,21 @@ build (lac_petsc *s, const lac_petsc_command *c)
   s->built = 1;
   s->counts.analyses++;
   return describe (s);
+}
+
+/* The root: the entries per message of K_W's rows, ROWS_CHUNK or the
+ * longest row (after contact_pattern). */
+static int
+chunk_size (const lac_petsc *s)
+{
+  PetscInt c = 0, longest = ROWS_CHUNK;
+  for (PetscInt j = 0; j < (PetscInt) s->n; j++)
+    {
+      const PetscInt *cols;
+      PetscInt m = row_pattern (s, j, &c, &cols);
+      longest = m > longest ? m : longest;
+    }
+  return (int) longest;
 }
 
 /* The root: its arrays for a new pattern, then the build command. */
@@ -823,8 +932,10 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   s->k = k;
   if (k && !(s->Ct = lac_csc_transpose (sys->C)))
     LAC_ERROR (LAC_ENOMEM, "C^T, k = %zu", k);
-  if ((status = contact_pattern (s))
-      || (status = lac_petsc_command_send (&c)))
+  if ((status = contact_pattern (s)))
+    return status;
+  c.chunk = chunk_size (s);
+  if ((status = lac_petsc_command_send (&c)))
     return status;
   return build (s, &c);
 }
@@ -882,27 +993,118 @@ contact_values (lac_petsc *s, PetscInt c)
     }
 }
 
-/* The root: every row of K_W (new numbers) or its contact rows. */
+/* The root: message `last` (1: the last one) of the rows packed in mi,
+ * mx for process p: mi = [rows, entries, last | the rows | their lengths
+ * | their columns], mx = their values. */
+static int
+send_rows (lac_petsc *s, int p, int last)
+{
+  PetscInt nr = s->mi[0], nz = s->mi[1];
+  s->mi[2] = last;
+  memmove (s->mi + 3 + nr, s->mi + 3 + s->chunk,       /* the lengths,   */
+           (size_t) nr * sizeof *s->mi);
+  memmove (s->mi + 3 + 2 * nr, s->mi + 3 + 2 * s->chunk,
+           (size_t) nz * sizeof *s->mi);               /* then columns   */
+  if (MPI_Send (s->mi, (int) (3 + 2 * nr + nz), MPI_INT, p, TAG_ROWS,
+                PETSC_COMM_WORLD)
+      || MPI_Send (s->mx, (int) nz, MPI_DOUBLE, p, TAG_VALS,
+                   PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Send of the rows of K_W to process %d", p);
+  s->mi[0] = s->mi[1] = 0;
+  return LAC_SUCCESS;
+}
+
+/* The root: row j (m entries) into the message for process p, the
+ * message sent first if it is full.  While packing, the rows are at mi +
+ * 3, the lengths at mi + 3 + chunk, the columns at mi + 3 + 2 chunk. */
+static int
+pack_row (lac_petsc *s, int p, PetscInt j, PetscInt m, const PetscInt *cols,
+          const double *x)
+{
+  int status;
+  if ((s->mi[0] == s->chunk || s->mi[1] + m > s->chunk)
+      && (status = send_rows (s, p, 0)))
+    return status;
+  PetscInt nr = s->mi[0], nz = s->mi[1];
+  s->mi[3 + nr] = j;
+  s->mi[3 + s->chunk + nr] = m;
+  memcpy (s->mi + 3 + 2 * s->chunk + nz, cols, (size_t) m * sizeof *cols);
+  memcpy (s->mx + nz, x, (size_t) m * sizeof *x);
+  s->mi[0] = nr + 1;
+  s->mi[1] = nz + m;
+  return LAC_SUCCESS;
+}
+
+/* The root: every row of K_W (new numbers) or its contact rows; its own
+ * inserted, the others' sent to their processes.  After an error the
+ * other processes still get their last (empty) message. */
 static int
 insert_kw (lac_petsc *s, int all)
 {
   const lac_csc *K = s->sys->K;
   PetscInt c = 0;
-  for (PetscInt j = 0; j < (PetscInt) s->n; j++)
+  int status = LAC_SUCCESS;
+  for (int p = 0; p < s->size; p++)
     {
-      const PetscInt *cols;
-      PetscInt c0 = c, m = row_pattern (s, j, &c, &cols);
-      if (c > c0)
+      PetscInt a, b;
+      u_range (s, p, &a, &b);
+      if (s->mi)
+        s->mi[0] = s->mi[1] = 0;
+      for (PetscInt j = a; !status && j < b; j++)
         {
-          contact_values (s, c0);
-          TRY (MatSetValues (s->Kw, 1, &j, m, cols, s->cx + s->cp[c0],
-                             INSERT_VALUES));
+          const PetscInt *cols;
+          PetscInt c0 = c, m = row_pattern (s, j, &c, &cols);
+          const double *x = c > c0 ? s->cx + s->cp[c0] : K->x + K->p[j];
+          if (c > c0)
+            contact_values (s, c0);
+          else if (!all)
+            continue;
+          if (p > 0)
+            status = pack_row (s, p, j, m, cols, x);
+          else
+            {
+              PetscErrorCode e = MatSetValues (s->Kw, 1, &j, m, cols, x,
+                                               INSERT_VALUES);
+              if (e)
+                status = lac_petsc_fail ((int) e, __func__, "MatSetValues");
+            }
         }
-      else if (all)
-        TRY (MatSetValues (s->Kw, 1, &j, m, cols, K->x + K->p[j],
-                           INSERT_VALUES));
+      if (p > 0)
+        {
+          if (status)
+            s->mi[0] = s->mi[1] = 0;
+          int st = send_rows (s, p, 1);
+          status = status ? status : st;
+        }
     }
-  return LAC_SUCCESS;
+  return status;
+}
+
+/* The others: their rows of K_W from the root's messages. */
+static int
+receive_rows (lac_petsc *s)
+{
+  int last = 0, status = LAC_SUCCESS;
+  while (!last)
+    {
+      if (MPI_Recv (s->mi, 3 + 3 * s->chunk, MPI_INT, 0, TAG_ROWS,
+                    PETSC_COMM_WORLD, MPI_STATUS_IGNORE)
+          || MPI_Recv (s->mx, s->chunk, MPI_DOUBLE, 0, TAG_VALS,
+                       PETSC_COMM_WORLD, MPI_STATUS_IGNORE))
+        LAC_ERROR (LAC_EDEP, "MPI_Recv of the rows of K_W");
+      PetscInt nr = s->mi[0], off = 0;
+      const PetscInt *rows = s->mi + 3, *len = rows + nr, *cols = len + nr;
+      last = (int) s->mi[2];
+      for (PetscInt r = 0; !status && r < nr; off += len[r++])
+        {
+          PetscErrorCode e = MatSetValues (s->Kw, 1, rows + r, len[r],
+                                           cols + off, s->mx + off,
+                                           INSERT_VALUES);
+          if (e)
+            status = lac_petsc_fail ((int) e, __func__, "MatSetValues");
+        }
+    }
+  return status;
 }
 
 /* The root: B = -C_A (the inactive columns are zeros); fieldsplit: D = 1
@@ -952,6 +1154,8 @@ update_projected (lac_petsc *s)
     return status;
   TRY (MatDiagonalSet (s->G, s->dk, ADD_VALUES));
   TRY (KSPSetOperators (s->kg, s->G, s->G));
+  if (s->size > 1 && (status = update_local (s)))
+    return status;
   TRY (PCSetOperators (s->pg, s->Kw, s->Kw));
   return LAC_SUCCESS;
 }
@@ -962,7 +1166,8 @@ update_projected (lac_petsc *s)
 static int
 update_values (lac_petsc *s, const lac_petsc_command *c)
 {
-  int status = s->root ? insert_kw (s, c->all) : LAC_SUCCESS, st;
+  int status = s->root ? insert_kw (s, c->all)
+               : s->size > 1 ? receive_rows (s) : LAC_SUCCESS, st;
   if ((st = assemble (s->Kw)))
     return st;
   if (s->B && !status && s->root)

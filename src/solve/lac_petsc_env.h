@@ -60,6 +60,7 @@ typedef struct lac_petsc_command
   int mode, bs, coords;     /* build: the contact solver (-lac_contact),
                                block size, coordinates given              */
   int all;                  /* update: every row (new numbers)            */
+  int chunk;                /* build: entries per message of K_W's rows   */
   int warm;                 /* solve: the start is the last solution      */
   long long n, k;           /* build: displacements, multipliers          */
   double rtol;              /* solve: relative residual                   */
