@@ -76,6 +76,15 @@ lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
                      nfree == 1 ? " is" : "s are");
       return LAC_NSTRATEGIES;
     }
+  if (want == LAC_STRATEGY_SPLIT && nfree == 0)
+    {
+      lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy split "
+                     "needs a body held by contact alone (it augments the "
+                     "equations of those bodies only); every body is held "
+                     "by its Dirichlet conditions: use schur, augmented, "
+                     "saddle or dense");
+      return LAC_NSTRATEGIES;
+    }
   if (want != LAC_STRATEGY_AUTO)
     return want;
   if (n + k <= LAC_STRATEGY_DENSE_MAX)

@@ -41,7 +41,9 @@
  * contact alone (chapter 07 has the measurements behind the rule).
  * Bodies held by contact alone are
  * known before anything is factorized (the system's N); (a) is refused
- * for them, and before (b) factorizes, lac_system_check_held says whether
+ * for them, (b') for scenes without them (nothing to augment: the
+ * multipliers would be left to GMRES on S itself), and before (b) or (b')
+ * factorizes, lac_system_check_held says whether
  * the active multipliers hold them (else a message naming the body and
  * its free motion, never NaN).  If the factorization of K + C_A W C_A^T
  * fails all the same (a large-deformation tangent past a limit point),

@@ -9,10 +9,10 @@
  *     the upper body is held by contact alone; dense, augmented, split;
  *     schur is refused with a message before anything is factorized;
  *   - the self-included spheres, axisymmetric quad8 and 3D tet10 (every
- *     body held by symmetry conditions): dense, schur, augmented, split
- *     (with no body held by contact alone: GMRES on S itself);
+ *     body held by symmetry conditions): dense, schur, augmented; split
+ *     is refused (no body held by contact alone);
  *   - the cylinder on a rigid flat of chapter 07 (level 3: several
- *     active-set iterations): dense, schur, augmented, split.
+ *     active-set iterations): dense, schur, augmented.
  */
 #include <math.h>
 #include <stdio.h>
@@ -93,9 +93,8 @@ main (void)
   const int floating[] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_AUGMENTED,
                            LAC_STRATEGY_SPLIT, 0 };
   const int held[] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_SCHUR,
-                       LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SPLIT, 0 };
-  const int held_big[] = { LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED,
-                           LAC_STRATEGY_SPLIT, 0 };
+                       LAC_STRATEGY_AUGMENTED, 0 };
+  const int held_big[] = { LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED, 0 };
   const char *t2[] = { "element=quad8" };
   const char *t3[] = { "element=hex8", "level=1",
                        "contact.interface.slave=lower_top",
@@ -121,6 +120,16 @@ main (void)
                     LAC_STRATEGY_SCHUR, &sc, &st);
   check_status (st, LAC_EINVAL, "taylor2d: schur refused");
   check_message ("held by contact alone", "taylor2d: schur's message");
+  lac_run_free (r);
+  lac_scene_free (sc);
+
+  /* split on bodies all held by their Dirichlet conditions: refused */
+  sc = NULL;
+  r = run ("chapters/08-experiments/spheres-axi.scene", 1, sa,
+           LAC_STRATEGY_SPLIT, &sc, &st);
+  check_status (st, LAC_EINVAL, "spheres-axi: split refused");
+  check_message ("needs a body held by contact alone",
+                 "spheres-axi: split's message");
   lac_run_free (r);
   lac_scene_free (sc);
   lac_finalize ();
