@@ -7,7 +7,8 @@
  * lambda per multiplier) to draw the real contact surface:
  *
  *   figrun SCENE [--set KEY=VALUE]... [--solver NAME] [--strategy NAME]
- *          [--out DIR] [--no-output] [--timings] [--quiet]
+ *          [--max-memory SIZE] [--out DIR] [--no-output] [--timings]
+ *          [--quiet]
  *          [drawing options, then --draw KIND FILE.png]...
  *
  * KIND
@@ -31,7 +32,8 @@
  * solver_used (with contact, the strategy that solved the system: the one
  * auto chose, or saddle after a fallback; without contact, the solver).
  * --strategy is that of `lac run` (auto, dense, schur, augmented, split,
- * saddle, petsc: solve/lac_strategy.h).
+ * saddle, petsc: solve/lac_strategy.h); --max-memory too (bytes, or with
+ * a suffix K, M, G: 64G).
  *
  * Exit status: 0 success, 1 the run or a drawing failed, 2 bad usage.
  */
@@ -58,7 +60,8 @@ static int
 usage (const char *msg)
 {
   fprintf (stderr, "figrun: %s\nusage: figrun SCENE [--set K=V]... "
-           "[--solver NAME] [--strategy NAME] [--out DIR] [--no-output] "
+           "[--solver NAME] [--strategy NAME] [--max-memory SIZE] [--out DIR] "
+           "[--no-output] "
            "[--timings] [--quiet] [--scale S] [--az A] [--el E] [--width W] "
            "[--height H] [--title T] [--label L] [--units U] "
            "[--range A:B] [--edges] [--draw lambda|gap|u_R|u FILE.png]...\n",
@@ -221,6 +224,17 @@ main (int argc, char **argv)
           if ((opts.strategy = lac_strategy_from_name (v)) < 0)
             return usage ("--strategy: auto, dense, schur, augmented, "
                           "split, saddle or petsc");
+          a++;
+        }
+      else if (strcmp (s, "--max-memory") == 0)
+        {
+          NEED (1);
+          char *end;
+          double b = strtod (v, &end);
+          b *= *end == 'K' ? 1e3 : *end == 'M' ? 1e6 : *end == 'G' ? 1e9 : 1;
+          if (!(b > 0) || (*end && end[1]) || (*end && !strchr ("KMG", *end)))
+            return usage ("--max-memory: bytes, or a number with K, M or G");
+          opts.max_memory = b;
           a++;
         }
       else if (strcmp (s, "--out") == 0)
