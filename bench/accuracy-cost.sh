@@ -1,7 +1,7 @@
 #!/bin/sh
 # accuracy-cost.sh -- what accuracy costs in time           [LAC §5.2-5.3; ch. 10]
 #
-#   sh bench/accuracy-cost.sh [BUILD_DIR] [--quick] [--out DIR]
+#   sh bench/accuracy-cost.sh [BUILD_DIR] [--quick] [--out DIR] [--from CSV]
 #
 # Runs the self-included spheres (axisymmetric tri6, quad8; 3D tet10, hex20,
 # hex27) and the manufactured convergence problems (2D tri3, tri6, quad4,
@@ -47,7 +47,11 @@
 #   timed by this script (adds the program start, about 0.1 s, mostly
 #   gmsh's initialisation).
 #
-# Environment: STRATEGIES ("dense schur augmented split saddle"), tried
+# --from CSV: no runs, the table and charts from a CSV of this script
+# (e.g. the rows of two runs put together).
+# Environment: MAX_MEMORY (figrun's --max-memory, e.g. 64G: the estimate
+# of a .geo's mesh refuses the 3D spheres at level 2 under the default,
+# 80 % of the machine, though they run in a few GB); STRATEGIES ("dense schur augmented split saddle"), tried
 # after auto; DENSE_MAX (6000; 1500 with --quick) dofs for dense;
 # SADDLE_MAX3D (40000) dofs for saddle in 3D; REPEAT (3; 1 with --quick)
 # runs of each case under a second; CASES to run a subset
@@ -57,10 +61,12 @@ ARGS="$*"
 B=build
 QUICK=0
 OUT=
+FROM=
 while [ $# -gt 0 ]; do
   case $1 in
     --quick) QUICK=1 ;;
     --out) shift; OUT=${1:?--out needs a directory} ;;
+    --from) shift; FROM=${1:?--from needs a CSV file} ;;
     -*) echo "accuracy-cost.sh: unknown option '$1'" >&2; exit 2 ;;
     *) B=$1 ;;
   esac
@@ -109,7 +115,8 @@ one () {
     k=$((k + 1))
     t1=$(now)
     if ! "$FIGRUN" "$D/$exp.scene" --set element="$el" --set level="$lv" \
-         --strategy "$st" --timings --no-output --quiet > "$f.try" 2> "$f.err"; then
+         --strategy "$st" ${MAX_MEMORY:+--max-memory "$MAX_MEMORY"} \
+         --timings --no-output --quiet > "$f.try" 2> "$f.err"; then
       grep -q "needs every body held by its Dirichlet conditions" "$f.err" && return 3
       echo "accuracy-cost.sh: $exp $el level $lv $st failed: $(tail -1 "$f.err")" >&2
       return 1
@@ -142,6 +149,7 @@ one () {
 }
 
 nfail=0
+[ -n "$FROM" ] && { cp "$FROM" "$CSV" || exit 1; CASES=; }
 for c in $CASES; do
   exp=${c%%:*}; r=${c#*:}; el=${r%%:*}; lv=${r#*:}
   [ "$lv" = "$r" ] && lv=0-2
