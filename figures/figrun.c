@@ -6,8 +6,9 @@
  * and then uses what only a live run has (the macro-elements' sub-facets,
  * lambda per multiplier) to draw the real contact surface:
  *
- *   figrun SCENE [--set KEY=VALUE]... [--solver NAME] [--out DIR]
- *          [--no-output] [--timings] [--quiet]
+ *   figrun SCENE [--set KEY=VALUE]... [--solver NAME] [--strategy NAME]
+ *          [--max-memory SIZE] [--out DIR] [--no-output] [--timings]
+ *          [--quiet]
  *          [drawing options, then --draw KIND FILE.png]...
  *
  * KIND
@@ -28,8 +29,11 @@
  * microseconds instead of milliseconds (the library rounds them to
  * 0.001 s, too coarse for the small meshes of an accuracy-cost study), and
  * adds time_total (the stages mesh .. post, the output stage excluded) and
- * solver_used (the solver that solved the system: a contact scene whose
- * body is held by contact alone falls back from cholmod to umfpack).
+ * solver_used (with contact, the strategy that solved the system: the one
+ * auto chose, or saddle after a fallback; without contact, the solver).
+ * --strategy is that of `lac run` (auto, dense, schur, augmented, split,
+ * saddle, petsc: solve/lac_strategy.h); --max-memory too (bytes, or with
+ * a suffix K, M, G: 64G).
  *
  * Exit status: 0 success, 1 the run or a drawing failed, 2 bad usage.
  */
@@ -40,6 +44,7 @@
 #include "render/lac_render.h"
 #include "run/lac_run.h"
 #include "io/lac_scene.h"
+#include "solve/lac_strategy.h"
 #include "base/lac_status.h"
 
 #define MAX_SET 64
@@ -55,8 +60,9 @@ static int
 usage (const char *msg)
 {
   fprintf (stderr, "figrun: %s\nusage: figrun SCENE [--set K=V]... "
-           "[--solver NAME] [--out DIR] [--no-output] [--timings] "
-           "[--quiet] [--scale S] [--az A] [--el E] [--width W] "
+           "[--solver NAME] [--strategy NAME] [--max-memory SIZE] [--out DIR] "
+           "[--no-output] "
+           "[--timings] [--quiet] [--scale S] [--az A] [--el E] [--width W] "
            "[--height H] [--title T] [--label L] [--units U] "
            "[--range A:B] [--edges] [--draw lambda|gap|u_R|u FILE.png]...\n",
            msg);
@@ -210,6 +216,25 @@ main (int argc, char **argv)
           if (nset == MAX_SET)
             return usage ("too many --set");
           set[nset++] = solver_set;
+          a++;
+        }
+      else if (strcmp (s, "--strategy") == 0)
+        {
+          NEED (1);
+          if ((opts.strategy = lac_strategy_from_name (v)) < 0)
+            return usage ("--strategy: auto, dense, schur, augmented, "
+                          "split, saddle or petsc");
+          a++;
+        }
+      else if (strcmp (s, "--max-memory") == 0)
+        {
+          NEED (1);
+          char *end;
+          double b = strtod (v, &end);
+          b *= *end == 'K' ? 1e3 : *end == 'M' ? 1e6 : *end == 'G' ? 1e9 : 1;
+          if (!(b > 0) || (*end && end[1]) || (*end && !strchr ("KMG", *end)))
+            return usage ("--max-memory: bytes, or a number with K, M or G");
+          opts.max_memory = b;
           a++;
         }
       else if (strcmp (s, "--out") == 0)

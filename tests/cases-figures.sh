@@ -90,16 +90,25 @@ fi
 if CASES="manufactured2d:quad4:0-1 spheres-axi:tri6:0-1 manufactured3d:hex8:0-1" \
    sh bench/accuracy-cost.sh "$B" --quick --out "$C/ac" > "$C/ac.out" 2> "$C/ac.err"; then
   rows=$(($(wc -l < "$C/ac/accuracy-cost.csv") - 1))
-  # 3 cases x 2 levels x 3 solvers
-  if [ "$rows" = 18 ] && grep -q "^## 3. where the time goes" "$C/ac/accuracy-cost.txt" \
-     && awk -F, 'NR > 1 && !($10 > 0 && $10 < 1 && $22 > 0) { bad = 1 } END { exit bad }' "$C/ac/accuracy-cost.csv"; then
+  # 3 cases x 2 levels x 5 strategies (auto, then dense, schur, augmented,
+  # split, saddle but the one auto chose); errors in (0, 1), times > 0
+  if [ "$rows" = 30 ] && grep -q "^## 3. where the time goes" "$C/ac/accuracy-cost.txt" \
+     && awk -F, 'NR > 1 && !($10 > 0 && $10 < 1 && $23 > 0) { bad = 1 } END { exit bad }' "$C/ac/accuracy-cost.csv"; then
     fig_ok accuracy-cost-table
   else
-    fig_fail accuracy-cost-table "$rows rows in accuracy-cost.csv (want 18), or no time split in accuracy-cost.txt, or an error/time out of range"
+    fig_fail accuracy-cost-table "$rows rows in accuracy-cost.csv (want 30), or no time split in accuracy-cost.txt, or an error/time out of range"
   fi
+  # one auto row per run, and every strategy of a run gives its errors
+  # (7 digits in the CSV) to a relative 1e-6
+  bad=$(awk -F, 'NR > 1 { k = $1 " " $2 " " $3; na[k] += ($4 == "auto")
+      if (k in u) { if ($10 < u[k] * (1 - 1e-6) || $10 > u[k] * (1 + 1e-6) || $12 < l[k] * (1 - 1e-6) || $12 > l[k] * (1 + 1e-6)) print k, $4 }
+      else { u[k] = $10; l[k] = $12 } }
+    END { for (k in na) if (na[k] != 1) print k, na[k], "auto rows" }' "$C/ac/accuracy-cost.csv")
+  if [ -z "$bad" ]; then fig_ok accuracy-cost-strategies-agree
+  else fig_fail accuracy-cost-strategies-agree "$(echo "$bad" | head -3)"; fi
   png_check accuracy-cost-dofs "$C/ac/accuracy-cost-dofs.png" 1800 950 0.02 50
   png_check accuracy-cost-time "$C/ac/accuracy-cost-time.png" 1800 950 0.02 50
-  png_check accuracy-cost-solvers "$C/ac/accuracy-cost-solvers.png" 1400 620 0.02 20
+  png_check accuracy-cost-strategies "$C/ac/accuracy-cost-strategies.png" 1400 620 0.02 20
   png_check accuracy-cost-split "$C/ac/accuracy-cost-split.png" 1800 800 0.10 20
 else
   fig_fail accuracy-cost-quick "exit status $?: $(tail -3 "$C/ac.err")"
