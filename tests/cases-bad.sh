@@ -75,6 +75,11 @@ rbad short-tri "short-tri.msh|line 51|element 19 (type 2) has 2 nodes after its 
   run $SB $KB --set mesh.file=short-tri.msh
 rbad huge-count "huge-count.msh|line 5|the file ends inside \$Nodes" \
   run $SB $KB --set mesh.file=huge-count.msh
+# found by fuzz_mesh (make fuzz): a type or a tag count beyond int
+rbad huge-type "huge-type.msh|line 51|element 19 has type 24989999994" \
+  run $SB $KB --set mesh.file=huge-type.msh
+rbad huge-tags "huge-tags.msh|line 51|integer '2000000000000000000' is too large" \
+  run $SB $KB --set mesh.file=huge-tags.msh
 
 # ---- meshes: the cells as a mesh -----------------------------------------
 rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
