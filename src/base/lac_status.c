@@ -73,7 +73,7 @@ lac_error_set (int status, const char *func, const char *fmt, ...)
       vsnprintf (buf + n, sizeof buf - (size_t) n, fmt, ap);
       va_end (ap);
     }
-  lac_text_escape (last_message, sizeof last_message, buf);
+  lac_text_escape_line (last_message, sizeof last_message, buf);
   return status;
 }
 

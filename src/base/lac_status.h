@@ -7,8 +7,9 @@
  * the objects the caller owns.
  *
  * A message stored with LAC_ENOMEM always says "out of memory".
- * Messages hold text only: control bytes and bytes that are not UTF-8
- * are stored as \xNN (base/lac_text.h).
+ * Messages hold one line of text only: control bytes and bytes that are
+ * not UTF-8 are stored as \xNN (base/lac_text.h); a line feed quoted
+ * from a file (a group name, gmsh's words) is stored as \x01.
  *
  * lac_init switches GSL's aborting error handler off (GSL would otherwise
  * abort on a singular matrix); lac_finalize restores it.
