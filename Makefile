@@ -6,6 +6,7 @@
 #   make test-asan   the test suite under -fsanitize=address,undefined
 #   make bench       benchmarks (not in CI): sizes, times, memory
 #   make figures     regenerate figures/ (pictures of the experiments)
+#   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
 #   make help        all targets
 #
 # Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
@@ -93,6 +94,9 @@ $(B)/tests/check.o: tests/check.c tests/check.h | $(B)/.deps-ok
 $(B)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(B)/tests/check.o $(CLILIB) $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(B)/tests/check.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
+$(B)/tests/replay_%: fuzz/replay.c fuzz/fuzz_%.c fuzz/fuzz_check.h $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Ifuzz $(CFLAGS) $(LDFLAGS) fuzz/replay.c fuzz/fuzz_$*.c $(LIB) $(LDLIBS) -o $@
 $(B)/tests/numcmp: tests/numcmp.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
@@ -113,7 +117,9 @@ $(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
 
 # ---- tests ---------------------------------------------------------------
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
-test: all $(UNIT) $(NUMCMP) $(FIGPROG)
+# the harnesses of make fuzz on the inputs that once crashed them
+REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh
+test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY)
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).
@@ -153,8 +159,35 @@ figures: all $(FIGPROG)
 clean:
 	rm -rf build
 
-help:
-	@sed -n '3,9p' Makefile
+# ---- fuzzing (chapter 01, bad-input.md; fuzz/README.md) --------------------
+# The library again with clang, coverage for libFuzzer and the sanitizers
+# (in build/fuzz), the harnesses fuzz/fuzz_*.c linked with libFuzzer, seed
+# corpora from the scenes and meshes of the project, then FUZZ_SECONDS of
+# fuzzing per harness (FUZZ_HARNESSES: a subset).  Crashes go to
+# build/fuzz/crashes/; the status is 1 if there is any.
+FUZZ_SECONDS   ?= 60
+FUZZ_HARNESSES ?= scene mesh gmsh
+FUZZ_B   := build/fuzz
+FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all \
+            -fno-omit-frame-pointer
+FUZZ_PROG := $(patsubst fuzz/%.c,$(FUZZ_B)/bin/%,$(wildcard fuzz/fuzz_*.c))
+fuzz: all $(B)/tools/make_seeds
+	$(MAKE) B=$(FUZZ_B) CC=clang PETSC=$(PETSC) \
+	  CFLAGS="-std=c11 -O1 -g -Wall -Wextra -fsanitize=fuzzer-no-link $(FUZZ_SAN)" \
+	  $(FUZZ_PROG)
+	ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1 \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	sh fuzz/run.sh $(FUZZ_B) $(FUZZ_SECONDS) $(B) $(FUZZ_HARNESSES)
+$(FUZZ_B)/bin/%: fuzz/%.c fuzz/fuzz_check.h $(LIB)
+	@mkdir -p $(@D)
+	clang $(CPPFLAGS) -Ifuzz -std=c11 -O1 -g -fsanitize=fuzzer $(FUZZ_SAN) \
+	  $< $(LIB) $(LDLIBS) -o $@
+$(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
-.PHONY: all deps test test-asan demo bench bench-ring bench-ring-fine figures clean help
+help:
+	@sed -n '3,10p' Makefile
+
+.PHONY: all deps test test-asan demo bench bench-ring bench-ring-fine figures fuzz clean help
 .DELETE_ON_ERROR:

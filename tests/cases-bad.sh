@@ -193,3 +193,18 @@ if sh tests/interrupt.sh "$B" 3 3 > "$RB/interrupt.out" 2>&1; then
 else
   rb_fail bad-interrupt "$(grep -E 'MIXED|TEMPORARIES|failed' "$RB/interrupt.out" | head -3)"
 fi
+
+# The inputs that once crashed a harness of make fuzz (fuzz/README.md),
+# replayed by the same harness built without libFuzzer.
+for d in tests/bad/fuzz/*/; do
+  h=$(basename "$d")
+  [ -x "$B/tests/replay_$h" ] || continue
+  for f in "$d"*; do
+    [ -f "$f" ] || continue
+    if "$B/tests/replay_$h" "$f" > "$RB/replay.out" 2>&1; then
+      rb_ok "bad-fuzz-$h-$(basename "$f")"
+    else
+      rb_fail "bad-fuzz-$h-$(basename "$f")" "$(head -2 "$RB/replay.out")"
+    fi
+  done
+done
