@@ -99,7 +99,9 @@ make_dirs (const char *dir)
   return status;
 }
 
-/* Unlink the regular files of dir, then remove it if it is empty. */
+/* Unlink the regular files of dir, then remove it if it is empty.  No
+ * allocation of lac (the *at calls name a file by its directory and its
+ * name), so that out of memory cannot leave the files behind. */
 static void
 remove_files (const char *dir)
 {
@@ -109,40 +111,48 @@ remove_files (const char *dir)
     return;
   while ((e = readdir (d)))
     {
-      char *p = join (dir, e->d_name);
       struct stat st;
-      if (p && lstat (p, &st) == 0 && !S_ISDIR (st.st_mode))
-        unlink (p);
-      lac_free (p);
+      if (fstatat (dirfd (d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0
+          && !S_ISDIR (st.st_mode))
+        unlinkat (dirfd (d), e->d_name, 0);
     }
   closedir (d);
   rmdir (dir);
 }
 
 /* The earlier files, now in old: what a run never writes goes back into
- * dir (unless dir has its own), the rest is removed, then old itself. */
+ * dir (unless dir has its own), the rest is removed, then old itself.  No
+ * allocation of lac: out of memory must not lose a foreign file. */
 static void
 finish_old (const char *old, const char *dir)
 {
   DIR *d = opendir (old);
+  int to = open (dir, O_RDONLY | O_DIRECTORY);
   struct dirent *e;
-  if (!d)
-    return;
+  if (!d || to < 0)
+    {
+      if (d)
+        closedir (d);
+      if (to >= 0)
+        close (to);
+      return;                   /* old stays: the next run finishes it */
+    }
   while ((e = readdir (d)))
     {
-      char *from, *to;
       struct stat st;
-      if (!strcmp (e->d_name, ".") || !strcmp (e->d_name, ".."))
+      if (!strcmp (e->d_name, ".") || !strcmp (e->d_name, "..")
+          || lac_output_batch_ours (e->d_name))
         continue;
-      from = join (old, e->d_name);
-      to = join (dir, e->d_name);
-      if (from && to && !lac_output_batch_ours (e->d_name)
-          && lstat (to, &st) != 0)
-        rename (from, to);
-      lac_free (from);
-      lac_free (to);
+      if (fstatat (to, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0
+          && renameat (dirfd (d), e->d_name, to, e->d_name) != 0)
+        {
+          closedir (d);         /* a foreign file could not go back: keep */
+          close (to);           /* old (the next run tries again)       */
+          return;
+        }
     }
   closedir (d);
+  close (to);
   remove_files (old);
 }
 
