@@ -194,12 +194,10 @@ clean_beside (const char *parent, const char *name, const char *dir)
           || (strncmp (kind, NEW, 9) && strncmp (kind, OLD, 9))
           || !gone (name_pid (kind + 9)) || !(p = join (parent, s)))
         continue;
-      if (kind[5] == 'n')
-        remove_files (p);
-      else if (lstat (dir, &st) != 0)
-        rename (p, dir);            /* lost between two renames: back */
-      else
-        finish_old (p, dir);
+      if (lstat (dir, &st) != 0)   /* new: never published; old: lost */
+        kind[5] == 'n' ? remove_files (p) : (void) rename (p, dir);
+      else                          /* new after the exchange holds the */
+        finish_old (p, dir);        /* earlier files: as old             */
       lac_free (p);
     }
   closedir (d);
