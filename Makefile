@@ -4,6 +4,7 @@
 #   make test        set up, build, run the whole test suite
 #   make             build build/liblac.a and build/lac
 #   make test-asan   the test suite under -fsanitize=address,undefined
+#   make test-nomem  out of memory at every allocation of two contact runs
 #   make bench       benchmarks (not in CI): sizes, times, memory
 #   make figures     regenerate figures/ (pictures of the experiments)
 #   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
@@ -97,6 +98,11 @@ $(B)/tests/%: tests/unit/%.c $(wildcard tests/unit/*.h) $(B)/tests/check.o $(CLI
 $(B)/tests/replay_%: fuzz/replay.c fuzz/fuzz_%.c fuzz/fuzz_check.h $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Ifuzz $(CFLAGS) $(LDFLAGS) fuzz/replay.c fuzz/fuzz_$*.c $(LIB) $(LDLIBS) -o $@
+$(B)/tests/lac_main.o: src/cli/main.c | $(B)/.deps-ok
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -Dmain=lac_cli_main -c $< -o $@
+$(B)/tests/nomem_lac: tests/nomem_lac.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/numcmp: tests/numcmp.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
@@ -119,7 +125,7 @@ $(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
 # the harnesses of make fuzz on the inputs that once crashed them
 REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh
-test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY)
+test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).
@@ -136,6 +142,13 @@ test-asan:
 	UBSAN_OPTIONS=print_stacktrace=1 \
 	$(MAKE) B=build/asan LDFLAGS="-fsanitize=address,undefined" \
 	  CFLAGS="-std=c11 -O1 -g -Wall -Wextra -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" test
+
+# Out of memory at every allocation of two whole contact runs (the demo,
+# the 3D Taylor patch test; a few minutes; cases-bad.sh does every 15th of
+# the demo): exit status 1 and one line each time, never a signal.
+test-nomem: all $(B)/tests/nomem_lac
+	sh tests/nomem.sh $(B) 1 500 chapters/01-problem/sphere-axi.scene
+	sh tests/nomem.sh $(B) 1 500 chapters/08-experiments/taylor3d.scene
 
 demo: all
 	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo
@@ -187,7 +200,7 @@ $(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 help:
-	@sed -n '3,10p' Makefile
+	@sed -n '3,11p' Makefile
 
-.PHONY: all deps test test-asan demo bench bench-ring bench-ring-fine figures fuzz clean help
+.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help
 .DELETE_ON_ERROR:

@@ -208,3 +208,12 @@ for d in tests/bad/fuzz/*/; do
     fi
   done
 done
+
+# Out of memory at every 15th allocation of the demo (make test-nomem: at
+# every one, and of a 3D contact run too): exit status 1, one line, the
+# earlier files intact, never a signal.
+if sh tests/nomem.sh "$B" 15 0 chapters/01-problem/sphere-axi.scene > "$RB/nomem.out" 2>&1; then
+  rb_ok bad-nomem
+else
+  rb_fail bad-nomem "$(grep -v '^nomem: [0-9]* allocations' "$RB/nomem.out" | head -3)"
+fi
