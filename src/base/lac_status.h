@@ -33,6 +33,9 @@ enum
 };
 
 const char *lac_strerror (int status);
+/* The status of a failed system call from its errno: LAC_ENOMEM for
+ * ENOMEM (fopen, opendir need memory), LAC_EIO otherwise. */
+int lac_status_errno (int e);
 const char *lac_error_message (void);   /* last message, "" if none */
 void lac_error_clear (void);
 

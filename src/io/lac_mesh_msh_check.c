@@ -405,7 +405,8 @@ lac_msh_check (const char *path)
   size_t len = 0, cap = 0;
   int status = LAC_SUCCESS;
   if (!f)
-    return lac_error_set (LAC_EIO, "lac_mesh_read", "cannot open '%s': %s",
+    return lac_error_set (lac_status_errno (errno), "lac_mesh_read",
+                          "cannot open '%s': %s",
                           path, strerror (errno));
   for (;;)
     {

@@ -140,8 +140,8 @@ lac_scene_read (const char *path, size_t nset, const char *const *set,
   int status;
   *out = NULL;
   if (!(f = fopen (path, "r")))
-    return lac_error_set (LAC_EIO, path, "cannot open scene file (%s)",
-                          strerror (errno));
+    return lac_error_set (lac_status_errno (errno), path,
+                          "cannot open scene file (%s)", strerror (errno));
   do
     {
       if (cap - len < 4096)
