@@ -209,10 +209,10 @@ for d in tests/bad/fuzz/*/; do
   done
 done
 
-# Out of memory at every 15th allocation of the demo (make test-nomem: at
-# every one, and of a 3D contact run too): exit status 1, one line, the
-# earlier files intact, never a signal.
-if sh tests/nomem.sh "$B" 15 0 chapters/01-problem/sphere-axi.scene > "$RB/nomem.out" 2>&1; then
+# Out of memory at every 15th allocation of a contact run (make
+# test-nomem: at every one, of a 3D run too, and every malloc of the
+# process): exit status 1, one line, the earlier files intact, no signal.
+if sh tests/nomem.sh "$B" 15 0 chapters/08-experiments/taylor2d.scene > "$RB/nomem.out" 2>&1; then
   rb_ok bad-nomem
 else
   rb_fail bad-nomem "$(grep -v '^nomem: [0-9]* allocations' "$RB/nomem.out" | head -3)"
