@@ -67,6 +67,8 @@ rbad crash-segv "crash-segv.msh|gmsh could not read|killed by signal 11|malforme
   run $SB $KB --set mesh.file=crash-segv.msh
 rbad crash-abort "crash-abort.msh|gmsh could not read|killed by signal 6|malformed or truncated" \
   run $SB $KB --set mesh.file=crash-abort.msh
+rbad long-name "long-name.geo|gmsh could not mesh|killed by signal 6|beyond gmsh" \
+  run $SB $KB --set mesh.file=long-name.geo
 
 # ---- meshes: the lines of a .msh file ------------------------------------
 rbad numtags "numtags.msh|line 51|element 19 (type 2) has 4 nodes after its tags" \
