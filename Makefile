@@ -148,14 +148,16 @@ test-asan:
 # Out of memory at every allocation of two whole contact runs (the Taylor
 # patch tests in 2D and 3D; about 10 minutes; cases-bad.sh does every 15th
 # of the 2D one): exit status 1 and one line each time, never a signal.
-# First lac's own allocations (and the child's), then every malloc of
-# lac's process (tests/nomem_malloc.c; not under AddressSanitizer).
+# lac's own allocations (and the child's), then every malloc of lac's
+# process in 2D (tests/nomem_malloc.c; not under AddressSanitizer; in 3D
+# OpenBLAS and libgomp end the process with words of their own, chapter
+# 01, bad-input.md, section 9).
 NOMEM_SCENES := chapters/08-experiments/taylor2d.scene \
                 chapters/08-experiments/taylor3d.scene
 test-nomem: all $(B)/tests/nomem_lac $(B)/tests/nomem_lac_malloc
 	for s in $(NOMEM_SCENES); do sh tests/nomem.sh $(B) 1 500 $$s || exit 1; done
-	for s in $(NOMEM_SCENES); do NOMEM_LAC=nomem_lac_malloc \
-	  sh tests/nomem.sh $(B) 1 500 $$s || exit 1; done
+	NOMEM_LAC=nomem_lac_malloc sh tests/nomem.sh $(B) 1 500 \
+	  chapters/08-experiments/taylor2d.scene
 
 demo: all
 	$(B)/lac run chapters/01-problem/sphere-axi.scene --out $(B)/demo
