@@ -86,7 +86,7 @@ static const char *help_text =
   "                    SECTION.KEY (mesh.level=2), TYPE.NAME.KEY\n"
   "                    (material.steel.E=3000) or an alias: element, model,\n"
   "                    solver, out, level, order, size.  Repeatable.\n"
-  "  --solver NAME     dense (GSL LU), umfpack (sparse LU) or cholmod\n"
+  "  --solver NAME     dense (dense LU), umfpack (sparse LU) or cholmod\n"
   "                    (sparse Cholesky, the default): same as\n"
   "                    --set scene.solver=NAME; petsc: same as --strategy\n"
   "                    petsc\n"
