@@ -16,6 +16,9 @@ F=${2:?fuzz build directory}
 B=${3:?build directory}
 shift 3
 CHUNK=${FUZZ_CHUNK:-600}
+# the sanitizer options of make fuzz, unless given
+export ASAN_OPTIONS="${ASAN_OPTIONS:-alloc_dealloc_mismatch=0:detect_leaks=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0}"
 bad=0
 {
   echo "# sh fuzz/campaign.sh $OUT $F $B $*  (chunks of at most $CHUNK s)"
