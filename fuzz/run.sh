@@ -13,8 +13,10 @@
 #   gmsh   the .msh files as they are.
 # Each harness runs SECONDS (libFuzzer's -max_total_time), one process;
 # FUZZ_RUNS (environment), if set, stops it after that many executions.
-# Prints per harness the executions, the corpus size and the crashes; the
-# inputs that crashed are in FUZZ_BUILD/crashes/.  Exit status 1 if any.
+# Prints per harness the executions, the corpus size and the crashes
+# (libFuzzer's crash-, leak-, oom- and timeout- files; its slow-unit- files,
+# inputs slower than 10 s on a busy machine, are not); the inputs are in
+# FUZZ_BUILD/crashes/.  Exit status 1 if any.
 F=${1:?fuzz build directory}
 S=${2:-60}
 B=${3:-build}
@@ -61,14 +63,14 @@ bad=0
 for h in $H; do
   "seeds_$h"
   mkdir -p "$F/corpus/$h"
-  before=$(ls "$F/crashes" | grep -c "^$h-")
+  before=$(ls "$F/crashes" | grep -cE "^$h-(crash|leak|oom|timeout)-")
   "$F/bin/fuzz_$h" -max_total_time="$S" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} $(extra "$h") \
     -timeout=60 -rss_limit_mb=4096 \
     -artifact_prefix="$F/crashes/$h-" -print_final_stats=1 \
     "$F/corpus/$h" "$F/seeds/$h" > "$F/fuzz_$h.log" 2>&1
   rc=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$F/fuzz_$h.log")
-  after=$(ls "$F/crashes" | grep -c "^$h-")
+  after=$(ls "$F/crashes" | grep -cE "^$h-(crash|leak|oom|timeout)-")
   corpus=$(ls "$F/corpus/$h" | wc -l)
   echo "fuzz_$h: ${S} s, ${runs:-?} executions, corpus $corpus inputs, $((after - before)) crashes (exit $rc; log $F/fuzz_$h.log)"
   [ "$rc" -ne 0 ] || [ "$after" -gt "$before" ] && bad=1
