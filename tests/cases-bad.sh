@@ -67,6 +67,8 @@ rbad crash-segv "crash-segv.msh|gmsh could not read|killed by signal 11|malforme
   run $SB $KB --set mesh.file=crash-segv.msh
 rbad crash-abort "crash-abort.msh|gmsh could not read|killed by signal 6|malformed or truncated" \
   run $SB $KB --set mesh.file=crash-abort.msh
+rbad long-name "long-name.geo|gmsh could not mesh|killed by signal 6|beyond gmsh" \
+  run $SB $KB --set mesh.file=long-name.geo
 
 # ---- meshes: the lines of a .msh file ------------------------------------
 rbad numtags "numtags.msh|line 51|element 19 (type 2) has 4 nodes after its tags" \
@@ -75,6 +77,11 @@ rbad short-tri "short-tri.msh|line 51|element 19 (type 2) has 2 nodes after its 
   run $SB $KB --set mesh.file=short-tri.msh
 rbad huge-count "huge-count.msh|line 5|the file ends inside \$Nodes" \
   run $SB $KB --set mesh.file=huge-count.msh
+# found by fuzz_mesh (make fuzz): a type or a tag count beyond int
+rbad huge-type "huge-type.msh|line 51|element 19 has type 24989999994" \
+  run $SB $KB --set mesh.file=huge-type.msh
+rbad huge-tags "huge-tags.msh|line 51|integer '2000000000000000000' is too large" \
+  run $SB $KB --set mesh.file=huge-tags.msh
 
 # ---- meshes: the cells as a mesh -----------------------------------------
 rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
@@ -187,4 +194,28 @@ if sh tests/interrupt.sh "$B" 3 3 > "$RB/interrupt.out" 2>&1; then
   rb_ok bad-interrupt
 else
   rb_fail bad-interrupt "$(grep -E 'MIXED|TEMPORARIES|failed' "$RB/interrupt.out" | head -3)"
+fi
+
+# The inputs that once crashed a harness of make fuzz (fuzz/README.md),
+# replayed by the same harness built without libFuzzer.
+for d in tests/bad/fuzz/*/; do
+  h=$(basename "$d")
+  [ -x "$B/tests/replay_$h" ] || continue
+  for f in "$d"*; do
+    [ -f "$f" ] || continue
+    if "$B/tests/replay_$h" "$f" > "$RB/replay.out" 2>&1; then
+      rb_ok "bad-fuzz-$h-$(basename "$f")"
+    else
+      rb_fail "bad-fuzz-$h-$(basename "$f")" "$(head -2 "$RB/replay.out")"
+    fi
+  done
+done
+
+# Out of memory at every 15th allocation of a contact run (make
+# test-nomem: at every one, of a 3D run too, and every malloc of the
+# process): exit status 1, one line, the earlier files intact, no signal.
+if sh tests/nomem.sh "$B" 15 0 chapters/08-experiments/taylor2d.scene > "$RB/nomem.out" 2>&1; then
+  rb_ok bad-nomem
+else
+  rb_fail bad-nomem "$(grep -v '^nomem: [0-9]* allocations' "$RB/nomem.out" | head -3)"
 fi

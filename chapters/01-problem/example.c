@@ -9,7 +9,7 @@
  * Sample runs:
  *   build/ex01                          plane strain, quad8, CHOLMOD
  *   build/ex01 --dim 3                  3D, hex20
- *   build/ex01 --solver dense           the same with GSL's dense LU
+ *   build/ex01 --solver dense           the same with the dense LU
  * Description:
  *   A block 10 x 1 (x 1) clamped on its left end (Gamma_D, [LAC (4)]) and
  *   pressed on its top (Gamma_N, [LAC (3)]) by p = 0.01: a short cantilever

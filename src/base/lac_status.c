@@ -1,6 +1,7 @@
 /* lac_status.c -- status codes and the stored error message. */
 #include "base/lac_status.h"
 
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -10,6 +11,12 @@
 
 static _Thread_local char last_message[1024];
 static _Thread_local gsl_error_handler_t *saved_gsl_handler;
+
+int
+lac_status_errno (int e)
+{
+  return e == ENOMEM ? LAC_ENOMEM : LAC_EIO;
+}
 
 const char *
 lac_strerror (int status)
@@ -73,7 +80,7 @@ lac_error_set (int status, const char *func, const char *fmt, ...)
       vsnprintf (buf + n, sizeof buf - (size_t) n, fmt, ap);
       va_end (ap);
     }
-  lac_text_escape (last_message, sizeof last_message, buf);
+  lac_text_escape_line (last_message, sizeof last_message, buf);
   return status;
 }
 

@@ -7,8 +7,9 @@
  * the objects the caller owns.
  *
  * A message stored with LAC_ENOMEM always says "out of memory".
- * Messages hold text only: control bytes and bytes that are not UTF-8
- * are stored as \xNN (base/lac_text.h).
+ * Messages hold one line of text only: control bytes and bytes that are
+ * not UTF-8 are stored as \xNN (base/lac_text.h); a line feed quoted
+ * from a file (a group name, gmsh's words) is stored as \x01.
  *
  * lac_init switches GSL's aborting error handler off (GSL would otherwise
  * abort on a singular matrix); lac_finalize restores it.
@@ -32,6 +33,9 @@ enum
 };
 
 const char *lac_strerror (int status);
+/* The status of a failed system call from its errno: LAC_ENOMEM for
+ * ENOMEM (fopen, opendir need memory), LAC_EIO otherwise. */
+int lac_status_errno (int e);
 const char *lac_error_message (void);   /* last message, "" if none */
 void lac_error_clear (void);
 

@@ -78,15 +78,18 @@ lac_text_line (const char *text, size_t off)
   return line;
 }
 
-void
-lac_text_escape (char *dst, size_t size, const char *src)
+/* lac_text_escape (keep_lf) and lac_text_escape_line (not). */
+static void
+escape (char *dst, size_t size, const char *src, int keep_lf)
 {
   const unsigned char *s = (const unsigned char *) src;
   size_t n = strlen (src), i = 0, o = 0, step;
   while (i < n)
     {
       const char *w = bad_byte (s, i, n, &step);
-      if (w && s[i] != '\n')
+      if (s[i] == '\n')
+        w = keep_lf ? NULL : "a line feed", step = 1;
+      if (w)
         {
           if (o + 5 > size)
             break;
@@ -102,4 +105,16 @@ lac_text_escape (char *dst, size_t size, const char *src)
       i += step;
     }
   dst[o < size ? o : size - 1] = '\0';
+}
+
+void
+lac_text_escape (char *dst, size_t size, const char *src)
+{
+  escape (dst, size, src, 1);
+}
+
+void
+lac_text_escape_line (char *dst, size_t size, const char *src)
+{
+  escape (dst, size, src, 0);
 }

@@ -86,7 +86,7 @@ static const char *help_text =
   "                    SECTION.KEY (mesh.level=2), TYPE.NAME.KEY\n"
   "                    (material.steel.E=3000) or an alias: element, model,\n"
   "                    solver, out, level, order, size.  Repeatable.\n"
-  "  --solver NAME     dense (GSL LU), umfpack (sparse LU) or cholmod\n"
+  "  --solver NAME     dense (dense LU), umfpack (sparse LU) or cholmod\n"
   "                    (sparse Cholesky, the default): same as\n"
   "                    --set scene.solver=NAME; petsc: same as --strategy\n"
   "                    petsc\n"
@@ -288,6 +288,15 @@ catch_stop (int on)
   saved = 1;
 }
 
+/* The message of a failure, or what its status means if a library left
+ * none (one line in every case). */
+static void
+print_failure (int status)
+{
+  const char *m = lac_error_message ();
+  lac_cli_print_error (*m ? m : lac_strerror (status));
+}
+
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
  * summary. */
 static int
@@ -303,7 +312,7 @@ cmd_run (const cmdline *c)
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
   if (status)
     {
-      lac_cli_print_error (lac_error_message ());
+      print_failure (status);
       return LAC_CLI_FAILURE;
     }
   if (!(r = lac_run_alloc (sc, &opts)))
@@ -348,7 +357,7 @@ cmd_run (const cmdline *c)
     for (size_t k = 0; k < r->res.summary.n; k++)
       printf ("%s = %s\n", r->res.summary.key[k], r->res.summary.val[k]);
   else
-    lac_cli_print_error (lac_error_message ());
+    print_failure (status);
   lac_run_free (r);
   lac_scene_free (sc);
   catch_stop (0);

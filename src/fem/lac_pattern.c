@@ -179,7 +179,8 @@ lac_pattern_build (const lac_mesh *m, const char *cells)
 {
   graph nc = { NULL, NULL }, nb = { NULL, NULL };
   lac_pattern *p = lac_calloc (1, sizeof *p);
-  int status = p ? node_cells (m, cells, &nc) : LAC_ENOMEM;
+  int status = p ? node_cells (m, cells, &nc)
+                 : LAC_ERRMSG (LAC_ENOMEM, "the pattern of K");
   if (!status)
     status = neighbours (m, &nc, &nb);
   graph_free (&nc);

@@ -169,8 +169,9 @@ gauss_legendre (int n, double a, double b, double *x, double *w)
 {
   gsl_integration_glfixed_table *t =
     gsl_integration_glfixed_table_alloc ((size_t) n);
-  if (t == NULL)
-    LAC_ERROR (LAC_EDEP, "GSL: no %d-point Gauss-Legendre table", n);
+  if (t == NULL)             /* n >= 1 here: GSL could not allocate it */
+    LAC_ERROR (n > 0 ? LAC_ENOMEM : LAC_EDEP, "GSL's %d-point "
+               "Gauss-Legendre table", n);
   for (int i = 0; i < n; i++)
     gsl_integration_glfixed_point (a, b, (size_t) i, &x[i], &w[i], t);
   gsl_integration_glfixed_table_free (t);
@@ -184,8 +185,9 @@ gauss_jacobi01 (int n, int alpha, double *x, double *w)
   gsl_integration_fixed_workspace *ws =
     gsl_integration_fixed_alloc (gsl_integration_fixed_jacobi, (size_t) n,
                                  0.0, 1.0, (double) alpha, 0.0);
-  if (ws == NULL)
-    LAC_ERROR (LAC_EDEP, "GSL: no %d-point Gauss-Jacobi rule", n);
+  if (ws == NULL)            /* n >= 1 here: GSL could not allocate it */
+    LAC_ERROR (n > 0 ? LAC_ENOMEM : LAC_EDEP, "GSL's %d-point Gauss-Jacobi "
+               "rule", n);
   const double *gx = gsl_integration_fixed_nodes (ws);
   const double *gw = gsl_integration_fixed_weights (ws);
   for (int i = 0; i < n; i++)

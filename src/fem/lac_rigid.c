@@ -88,7 +88,7 @@ describe_mode (lac_model model, int nm, const double *v, const double *ctr,
 /* The free rigid motions of a body from the Gram matrix G of the modes
  * restricted to its fixed dofs: eigenvalues <= 1e-10 * max are free.
  * Describes them in buf, their coefficients in mode[]; returns their
- * number (-1: GSL failed). */
+ * number (-1: GSL failed, -2: GSL's allocations failed). */
 static int
 free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
             char *buf, size_t size, double (*mode)[6])
@@ -101,7 +101,9 @@ free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
   size_t len = 0;
   double lmax;
   buf[0] = '\0';
-  if (!ev || !V || !w || gsl_eigen_symmv (&A.matrix, ev, V, w))
+  if (!ev || !V || !w)
+    nfree = -2;
+  else if (gsl_eigen_symmv (&A.matrix, ev, V, w))
     nfree = -1;
   lmax = nfree ? 0 : gsl_vector_max (ev);
   for (int k = 0; nfree >= 0 && k < nm; k++)
@@ -231,6 +233,8 @@ describe_bodies (lac_bodies *B, const lac_mesh *m, const size_t *cell0,
       y->size = ctr[4 * b + 3];
       y->nfree = free_modes (B->model, B->nm, G + 36 * b, y->ctr, y->size,
                              y->desc, sizeof y->desc, y->mode);
+      if (y->nfree == -2)
+        LAC_ERROR (LAC_ENOMEM, "rigid motions of body %zu", b);
       if (y->nfree < 0)
         LAC_ERROR (LAC_EDEP, "rigid motions of body %zu: GSL's eigensolver "
                    "failed", b);

@@ -59,7 +59,7 @@ file_kind (const char *path, int *kind)
   else
     return READ_FAIL (LAC_EINVAL, "'%s': expected a .msh or .geo file", path);
   if (!(f = fopen (path, "r")))
-    return READ_FAIL (LAC_EIO, "cannot open '%s': %s", path,
+    return READ_FAIL (lac_status_errno (errno), "cannot open '%s': %s", path,
                       strerror (errno));
   fclose (f);
   return LAC_SUCCESS;

@@ -25,6 +25,9 @@ static const signed char type_nodes[32] = {
 };
 
 #define MAXTOK 64      /* numbers of one line that we look at */
+/* Integers beyond this are refused: every count and tag then fits a long
+ * long once converted back from the double it is kept in. */
+#define INT_TOO_LARGE 1e18
 
 typedef struct cur
 {
@@ -94,6 +97,9 @@ numbers (cur *c, int ints, int *status)
       if (len > 62 || *endp != '\0' || endp == word || (ints && errno == ERANGE))
         return *status = bad (c, "'%.20s' is not %s", word, ints
                               ? "an integer" : "a number"), 0;
+      if (ints && (v > INT_TOO_LARGE || v < -INT_TOO_LARGE))
+        return *status = bad (c, "the integer '%.20s' is too large", word),
+               0;
       if (c->ntok < MAXTOK)
         c->tok[c->ntok] = v;
       c->ntok++;
@@ -158,6 +164,13 @@ count_of (cur *c, const char *where, int nwant, long long *v, int *status)
   return 1;
 }
 
+/* t (a number read as an integer) is a gmsh element type of the table. */
+static int
+known_type (double t)
+{
+  return t >= 1 && t <= 31 && type_nodes[(int) t] != 0;
+}
+
 /* One element line: tag type ntags tags... then the nodes of type. */
 static int
 element_22 (cur *c)
@@ -168,13 +181,13 @@ element_22 (cur *c)
   if (c->ntok < 3)
     return bad (c, "an element line needs at least 3 numbers (tag, type, "
                 "number of tags), found %d", c->ntok);
+  if (!known_type (c->tok[1]))
+    return bad (c, "element %.0f has type %.0f, which lac does not read",
+                c->tok[0], c->tok[1]);
+  if (c->tok[2] < 0 || c->tok[2] > MAXTOK)
+    return bad (c, "element %.0f has %.0f tags", c->tok[0], c->tok[2]);
   type = (int) c->tok[1];
   ntags = (int) c->tok[2];
-  if (type < 1 || type > 31 || !type_nodes[type])
-    return bad (c, "element %.0f has type %d, which lac does not read",
-                c->tok[0], type);
-  if (ntags < 0 || ntags > MAXTOK)
-    return bad (c, "element %.0f has %d tags", c->tok[0], ntags);
   want = 3 + ntags + type_nodes[type];
   if (c->ntok != want)
     return bad (c, "element %.0f (type %d) has %d nodes after its tags, a "
@@ -281,9 +294,10 @@ elements_41 (cur *c)
       if (c->ntok != 4 || c->tok[3] < 0)
         return bad (c, "an element block header has 4 numbers (dimension, "
                     "entity, type, elements), found %d", c->ntok);
+      if (!known_type (c->tok[2]))
+        return bad (c, "element type %.0f, which lac does not read",
+                    c->tok[2]);
       type = (int) c->tok[2];
-      if (type < 1 || type > 31 || !type_nodes[type])
-        return bad (c, "element type %d, which lac does not read", type);
       n = (long long) c->tok[3];
       if ((total -= n) < 0)
         return bad (c, "the element blocks hold more elements than the "
@@ -391,7 +405,8 @@ lac_msh_check (const char *path)
   size_t len = 0, cap = 0;
   int status = LAC_SUCCESS;
   if (!f)
-    return lac_error_set (LAC_EIO, "lac_mesh_read", "cannot open '%s': %s",
+    return lac_error_set (lac_status_errno (errno), "lac_mesh_read",
+                          "cannot open '%s': %s",
                           path, strerror (errno));
   for (;;)
     {

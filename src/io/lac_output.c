@@ -33,7 +33,8 @@ close_checked (FILE *f, const char *path)
 {
   int bad = ferror (f);
   if (fclose (f) != 0 || bad)
-    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }
 
@@ -155,7 +156,8 @@ lac_output_csv (const char *path, const lac_output_fields *f)
   names = lac_output_stress_names (f->model);
   axi = f->model == LAC_AXISYMMETRIC;
   if (!(fp = fopen (path, "w")))
-    LAC_ERROR (LAC_EIO, "cannot create '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
+               strerror (errno));
   fprintf (fp, axi ? "node,r,z,theta,u_r,u_z" : dim == 2
            ? "node,x,y,z,u_x,u_y" : "node,x,y,z,u_x,u_y,u_z");
   for (int k = 0; f->sigma && k < ns; k++)
@@ -186,7 +188,8 @@ lac_output_summary (const char *path, size_t n, const char *const *key,
 {
   FILE *fp = fopen (path, "w");
   if (!fp)
-    LAC_ERROR (LAC_EIO, "cannot create '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
+               strerror (errno));
   for (size_t k = 0; k < n; k++)
     fprintf (fp, "%s = %s\n", key[k], val[k]);
   return close_checked (fp, path);

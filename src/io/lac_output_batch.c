@@ -99,51 +99,71 @@ make_dirs (const char *dir)
   return status;
 }
 
-/* Unlink the regular files of dir, then remove it if it is empty. */
+/* Unlink the regular files of the directory path that d reads, close d,
+ * then remove the directory if it is empty.  No allocation (the *at calls
+ * name a file by its directory and its name), so that out of memory
+ * cannot leave the files behind. */
+static void
+remove_in (DIR *d, const char *path)
+{
+  struct dirent *e;
+  while ((e = readdir (d)))
+    {
+      struct stat st;
+      if (fstatat (dirfd (d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0
+          && !S_ISDIR (st.st_mode))
+        unlinkat (dirfd (d), e->d_name, 0);
+    }
+  closedir (d);
+  rmdir (path);
+}
+
 static void
 remove_files (const char *dir)
 {
   DIR *d = opendir (dir);
-  struct dirent *e;
-  if (!d)
-    return;
-  while ((e = readdir (d)))
-    {
-      char *p = join (dir, e->d_name);
-      struct stat st;
-      if (p && lstat (p, &st) == 0 && !S_ISDIR (st.st_mode))
-        unlink (p);
-      lac_free (p);
-    }
-  closedir (d);
-  rmdir (dir);
+  if (d)
+    remove_in (d, dir);
 }
 
-/* The earlier files, now in old: what a run never writes goes back into
- * dir (unless dir has its own), the rest is removed, then old itself. */
+/* The earlier files, in the directory path that d reads: what a run never
+ * writes goes back into the directory `to` (unless it has its own), the
+ * rest is removed, then the directory itself; d and to are closed.  No
+ * allocation: out of memory must not lose a foreign file. */
+static void
+finish_in (DIR *d, int to, const char *path)
+{
+  struct dirent *e;
+  while ((e = readdir (d)))
+    {
+      struct stat st;
+      if (!strcmp (e->d_name, ".") || !strcmp (e->d_name, "..")
+          || lac_output_batch_ours (e->d_name))
+        continue;
+      if (fstatat (to, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0
+          && renameat (dirfd (d), e->d_name, to, e->d_name) != 0)
+        {
+          closedir (d);         /* a foreign file could not go back: keep */
+          close (to);           /* the directory (the next run tries)   */
+          return;
+        }
+    }
+  close (to);
+  rewinddir (d);
+  remove_in (d, path);
+}
+
 static void
 finish_old (const char *old, const char *dir)
 {
   DIR *d = opendir (old);
-  struct dirent *e;
-  if (!d)
-    return;
-  while ((e = readdir (d)))
-    {
-      char *from, *to;
-      struct stat st;
-      if (!strcmp (e->d_name, ".") || !strcmp (e->d_name, ".."))
-        continue;
-      from = join (old, e->d_name);
-      to = join (dir, e->d_name);
-      if (from && to && !lac_output_batch_ours (e->d_name)
-          && lstat (to, &st) != 0)
-        rename (from, to);
-      lac_free (from);
-      lac_free (to);
-    }
-  closedir (d);
-  remove_files (old);
+  int to = open (dir, O_RDONLY | O_DIRECTORY);
+  if (d && to >= 0)
+    finish_in (d, to, old);
+  else if (d)
+    closedir (d);
+  else if (to >= 0)
+    close (to);
 }
 
 /* The process id at the end of a temporary's name, or 0. */
@@ -184,12 +204,10 @@ clean_beside (const char *parent, const char *name, const char *dir)
           || (strncmp (kind, NEW, 9) && strncmp (kind, OLD, 9))
           || !gone (name_pid (kind + 9)) || !(p = join (parent, s)))
         continue;
-      if (kind[5] == 'n')
-        remove_files (p);
-      else if (lstat (dir, &st) != 0)
-        rename (p, dir);            /* lost between two renames: back */
-      else
-        finish_old (p, dir);
+      if (lstat (dir, &st) != 0)   /* new: never published; old: lost */
+        kind[5] == 'n' ? remove_files (p) : (void) rename (p, dir);
+      else                          /* new after the exchange holds the */
+        finish_old (p, dir);        /* earlier files: as old             */
       lac_free (p);
     }
   closedir (d);
@@ -298,7 +316,12 @@ lac_output_batch_free (lac_output_batch *b)
   if (!b)
     return;
   if (!b->committed)
-    remove_files (b->tmp);
+    {
+      for (size_t k = 0; k < b->n; k++)   /* no allocation needed here */
+        unlink (b->path[k]);
+      if (rmdir (b->tmp) != 0)
+        remove_files (b->tmp);
+    }
   for (size_t k = 0; k < b->n; k++)
     {
       lac_free (b->final[k]);
@@ -365,32 +388,54 @@ swap_by_renames (lac_output_batch *b)
       LAC_ERROR (LAC_EIO, "cannot rename '%s' to '%s' (%s)", b->tmp, b->dir,
                  strerror (e));
     }
-  finish_old (b->old, b->dir);
   return LAC_SUCCESS;
 }
 
+/* Publish: exchange tmp and DIR.  The earlier DIR and the new one are
+ * opened first, so that the earlier files can be finished after the
+ * exchange without an allocation (opendir needs one). */
 int
 lac_output_commit (lac_output_batch *b)
 {
+  DIR *old;
+  int to, status = LAC_SUCCESS;
+  const char *where = b->tmp;                /* the earlier files after */
   if (interrupted (b))
     return LAC_EIO;
-  if (renameat2 (AT_FDCWD, b->tmp, AT_FDCWD, b->dir, RENAME_EXCHANGE) == 0)
-    finish_old (b->tmp, b->dir);          /* tmp now holds the earlier */
-  else if (errno == ENOENT)
+  old = opendir (b->dir);
+  if (!old && errno != ENOENT)
+    LAC_ERROR (lac_status_errno (errno), "cannot read '%s' "
+               "(%s)", b->dir, strerror (errno));
+  if ((to = open (b->tmp, O_RDONLY | O_DIRECTORY)) < 0)
+    {
+      if (old)
+        closedir (old);
+      LAC_ERROR (LAC_EIO, "cannot open '%s' (%s)", b->tmp, strerror (errno));
+    }
+  if (!old)
     {
       if (rename (b->tmp, b->dir) != 0)
-        LAC_ERROR (LAC_EIO, "cannot rename '%s' to '%s' (%s)", b->tmp,
-                   b->dir, strerror (errno));
+        status = LAC_ERRMSG (LAC_EIO, "cannot rename '%s' to '%s' (%s)",
+                             b->tmp, b->dir, strerror (errno));
     }
-  else if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP)
+  else if (renameat2 (AT_FDCWD, b->tmp, AT_FDCWD, b->dir, RENAME_EXCHANGE)
+           != 0)
     {
-      int status = swap_by_renames (b);
-      if (status)
-        return status;
+      if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP)
+        status = swap_by_renames (b), where = b->old;
+      else
+        status = LAC_ERRMSG (LAC_EIO, "cannot exchange '%s' and '%s' (%s)",
+                             b->tmp, b->dir, strerror (errno));
     }
-  else
-    LAC_ERROR (LAC_EIO, "cannot exchange '%s' and '%s' (%s)", b->tmp,
-               b->dir, strerror (errno));
+  if (status || !old)
+    {
+      if (old)
+        closedir (old);
+      close (to);
+      b->committed = !status;
+      return status;
+    }
+  finish_in (old, to, where);     /* to is now DIR, old the earlier DIR */
   b->committed = 1;
   return LAC_SUCCESS;
 }

@@ -113,6 +113,24 @@ lac_scene_read_string (const char *text, const char *path, size_t nset,
 }
 
 int
+lac_scene_read_buffer (const char *text, size_t len, const char *path,
+                       size_t nset, const char *const *set, lac_scene **out)
+{
+  char *copy;
+  int status;
+  *out = NULL;
+  if ((status = check_text (path, text, len)))           /* NUL bytes */
+    return status;
+  if (!(copy = lac_malloc (len + 1)))
+    LAC_ERROR (LAC_ENOMEM, "out of memory reading %s", path);
+  memcpy (copy, text, len);
+  copy[len] = '\0';
+  status = lac_scene_read_string (copy, path, nset, set, out);
+  lac_free (copy);
+  return status;
+}
+
+int
 lac_scene_read (const char *path, size_t nset, const char *const *set,
                 lac_scene **out)
 {
@@ -122,8 +140,8 @@ lac_scene_read (const char *path, size_t nset, const char *const *set,
   int status;
   *out = NULL;
   if (!(f = fopen (path, "r")))
-    return lac_error_set (LAC_EIO, path, "cannot open scene file (%s)",
-                          strerror (errno));
+    return lac_error_set (lac_status_errno (errno), path,
+                          "cannot open scene file (%s)", strerror (errno));
   do
     {
       if (cap - len < 4096)
@@ -147,8 +165,8 @@ lac_scene_read (const char *path, size_t nset, const char *const *set,
   if (status)
     status = lac_error_set (LAC_EIO, path, "cannot read scene file (%s)",
                             strerror (status));
-  else if (!(status = check_text (path, text, len)))     /* NUL bytes */
-    status = lac_scene_read_string (text, path, nset, set, out);
+  else
+    status = lac_scene_read_buffer (text, len, path, nset, set, out);
   lac_free (text);
   return status;
 }

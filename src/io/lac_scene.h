@@ -168,6 +168,11 @@ int lac_scene_read (const char *path, size_t nset, const char *const *set,
 /* The same from a string; `path` is used for messages and relative paths. */
 int lac_scene_read_string (const char *text, const char *path, size_t nset,
                            const char *const *set, lac_scene **out);
+/* The same from the len bytes of text, which may hold anything (a NUL
+ * byte is an error with its line, as in a file). */
+int lac_scene_read_buffer (const char *text, size_t len, const char *path,
+                           size_t nset, const char *const *set,
+                           lac_scene **out);
 void lac_scene_free (lac_scene *sc);    /* NULL allowed */
 
 #endif /* LAC_SCENE_H */

@@ -71,7 +71,8 @@ mesh_path (lac_scene *sc, lac_scene_mesh *m, const char *name, char **path)
   else
     snprintf (*path, len, "%s/%s", sc->dir, name);
   if (!(f = fopen (*path, "r")))
-    return lac_scene_error (sc, &m->sec, "file", LAC_EIO, "cannot open %s "
+    return lac_scene_error (sc, &m->sec, "file", lac_status_errno (errno),
+                            "cannot open %s "
                             "(%s)", *path, strerror (errno));
   fclose (f);
   return LAC_SUCCESS;

@@ -237,7 +237,8 @@ lac_vtu_write (const lac_vtu *v, const char *path)
   uint64_t off = 0;
   FILE *fp = fopen (path, "wb");
   if (!fp)
-    LAC_ERROR (LAC_EIO, "cannot create '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
+               strerror (errno));
   fprintf (fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\""
            " version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
            "  <UnstructuredGrid>\n"
@@ -260,6 +261,7 @@ lac_vtu_write (const lac_vtu *v, const char *path)
   fprintf (fp, "</VTKFile>\n");
   int bad = ferror (fp);
   if (fclose (fp) != 0 || bad)
-    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }

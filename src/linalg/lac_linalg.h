@@ -5,7 +5,7 @@
  * each column, values x[nnz]), the layout of CSparse, UMFPACK and CHOLMOD.
  *
  * One solver interface, three back ends chosen at run time:
- *   dense    GSL LU with partial pivoting (classroom sizes, printable)
+ *   dense    LU with partial pivoting (classroom sizes, printable)
  *   umfpack  sparse LU (general, the default for saddle systems)
  *   cholmod  sparse Cholesky (symmetric positive definite matrices; the
  *            factor is kept so that repeated solves are cheap)

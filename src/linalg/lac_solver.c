@@ -1,7 +1,7 @@
 /* lac_solver.c -- one solver interface, three back ends (dense, UMFPACK,
  * CHOLMOD), chosen at run time
  *
- * factor  dense    copy A into an n x n array, GSL LU with partial pivoting
+ * factor  dense    copy A into an n x n array, LU with partial pivoting
  *         umfpack  copy A (64-bit indices), symbolic + numeric LU
  *         cholmod  copy the upper triangle (64-bit indices, stype = 1),
  *                  analyze (METIS/AMD) + factorize (supernodal LL' or
@@ -162,16 +162,52 @@ lac_solver_free (lac_solver *s)
   lac_free (s);
 }
 
-/* ---- dense: GSL LU ----------------------------------------------------- */
+/* ---- dense: LU with partial pivoting, solved by GSL ---------------------- */
+
+/* P A = L U in place (row-major a, n x n; L unit lower, U upper, as GSL
+ * stores them), row k of P A is row perm[k] of A (GSL's permutation, for
+ * gsl_linalg_LU_solve).  Golub and Van Loan, Algorithm 3.4.1.  Written
+ * out because gsl_linalg_LU_decomp (GSL 2.7) does not check an allocation
+ * of its own and crashes when memory runs out; this allocates nothing. */
+static void
+lu_decomp (double *a, size_t n, size_t *perm)
+{
+  for (size_t i = 0; i < n; i++)
+    perm[i] = i;
+  for (size_t k = 0; k < n; k++)
+    {
+      size_t p = k;
+      for (size_t i = k + 1; i < n; i++)            /* the pivot row */
+        if (fabs (a[i * n + k]) > fabs (a[p * n + k]))
+          p = i;
+      if (p != k)
+        {
+          size_t t = perm[k];
+          perm[k] = perm[p];
+          perm[p] = t;
+          for (size_t j = 0; j < n; j++)
+            {
+              double v = a[k * n + j];
+              a[k * n + j] = a[p * n + j];
+              a[p * n + j] = v;
+            }
+        }
+      if (a[k * n + k] == 0)                        /* singular: U_kk = 0 */
+        continue;
+      for (size_t i = k + 1; i < n; i++)
+        {
+          double l = a[i * n + k] /= a[k * n + k];  /* L_ik */
+          for (size_t j = k + 1; j < n; j++)
+            a[i * n + j] -= l * a[k * n + j];
+        }
+    }
+}
 
 static int
 dense_factor (lac_solver *s, const lac_csc *A)
 {
   size_t n = A->ncol, kmin = 0;
   double amax = 0, umin = HUGE_VAL;
-  gsl_matrix_view M;
-  gsl_permutation P;
-  int signum, gs;
 
   if (n > LAC_DENSE_NMAX)
     LAC_ERROR (LAC_EINVAL, "dense solver refuses n = %zu > %d (the n x n "
@@ -191,12 +227,7 @@ dense_factor (lac_solver *s, const lac_csc *A)
       }
   if (amax == 0)
     LAC_ERROR (LAC_ESING, "the %zu x %zu matrix is zero", n, n);
-  M = gsl_matrix_view_array (s->lu, n, n);
-  P.size = n;
-  P.data = s->perm;
-  gs = gsl_linalg_LU_decomp (&M.matrix, &P, &signum);  /* P A = L U */
-  if (gs)
-    LAC_ERROR (LAC_EDEP, "gsl_linalg_LU_decomp failed: %s", gsl_strerror (gs));
+  lu_decomp (s->lu, n, s->perm);                       /* P A = L U */
   for (size_t k = 0; k < n; k++)            /* min_k |U_kk| vs max |A_ij| */
     if (fabs (s->lu[k * n + k]) < umin)
       {
@@ -212,7 +243,7 @@ dense_factor (lac_solver *s, const lac_csc *A)
   s->info.nnz_factor = (double) n * (double) n;
   s->info.peak_bytes = 8.0 * (double) n * (double) n;
   s->info.flops = 2.0 / 3.0 * (double) n * (double) n * (double) n;
-  s->info.method = "LU, partial pivoting (GSL)";
+  s->info.method = "LU, partial pivoting";
   s->info.ordering = "";
   return LAC_SUCCESS;
 }

@@ -106,7 +106,7 @@ lac_solver_estimate (lac_solver_kind kind, const lac_csc *A,
       info->nnz_factor = n * n;
       info->peak_bytes = 8 * n * n;
       info->flops = 2.0 / 3.0 * n * n * n;
-      info->method = "LU, partial pivoting (GSL), estimate";
+      info->method = "LU, partial pivoting, estimate";
       info->ordering = "";
       return LAC_SUCCESS;
     case LAC_SOLVER_UMFPACK:

@@ -409,8 +409,8 @@ lac_csc_write_mm (const lac_csc *A, const char *path)
   FILE *f = fopen (path, "w");
   int ok;
   if (!f)
-    LAC_ERROR (LAC_EIO, "cannot open '%s' for writing: %s", path,
-               strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot open '%s' for writing: %s",
+               path, strerror (errno));
   ok = fprintf (f, "%%%%MatrixMarket matrix coordinate real general\n"
                 "%zu %zu %d\n", A->nrow, A->ncol, A->p[A->ncol]) > 0;
   for (size_t j = 0; ok && j < A->ncol; j++)

@@ -48,7 +48,8 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
   int dim = d->mesh->dim;
   FILE *f = fopen (path, "w");
   if (!f)
-    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
            "multiplier,lambda,lambda_exact,mean_gap,active,s,force_x,"
            "force_y,force_z\n");
@@ -69,7 +70,8 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
     }
   int bad = ferror (f);
   if (fclose (f) != 0 || bad)
-    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }
 

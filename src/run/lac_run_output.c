@@ -2,6 +2,7 @@
  */
 #include "run/lac_run_output.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include "base/lac_mem.h"
@@ -70,7 +71,8 @@ write_curve (const lac_run_output_in *in, const char *path)
   int dim = in->mesh->dim;
   FILE *f = fopen (path, "w");
   if (!f)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   fprintf (f, "step,load_factor,imposed,monitor_ux,monitor_uy%s,iterations,"
            "cuts,residual,multipliers,active,contact_force,lambda_min\n",
            dim == 3 ? ",monitor_uz" : "");
@@ -85,7 +87,8 @@ write_curve (const lac_run_output_in *in, const char *path)
                q->residual, q->k, q->nactive, q->force, q->lambda_min);
     }
   if (fclose (f) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }
 
@@ -96,7 +99,8 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
   const lac_run_nl *nl = in->nl;
   FILE *f = fopen (path, "w");
   if (!f)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active\n",
            last_only ? "" : "step,");
   for (size_t q = 0; q < nl->nmult; q++)
@@ -110,7 +114,8 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
                u->x[1], u->x[2], u->lambda, u->gap, u->active);
     }
   if (fclose (f) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }
 
@@ -138,7 +143,8 @@ write_pvd (const lac_run_output_in *in, const char *path)
   const lac_run_nl *nl = in->nl;
   FILE *f = fopen (path, "w");
   if (!f)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   fprintf (f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "  <Collection>\n");
@@ -148,7 +154,8 @@ write_pvd (const lac_run_output_in *in, const char *path)
                "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
   fprintf (f, "  </Collection>\n</VTKFile>\n");
   if (fclose (f) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
+    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
+               strerror (errno));
   return LAC_SUCCESS;
 }
 

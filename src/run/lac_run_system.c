@@ -161,7 +161,8 @@ check_bodies (const lac_scene *sc, const lac_mesh *m,
 {
   const lac_bodies *B = sys->bodies;
   char *held_by_contact = lac_calloc (B->n + 1, 1);
-  int status = held_by_contact ? LAC_SUCCESS : LAC_ENOMEM;
+  int status = held_by_contact ? LAC_SUCCESS
+               : lac_error_set (LAC_ENOMEM, sc->path, "checking the bodies");
   for (size_t b = 0; !status && b < B->n; b++)
     {
       const char *name = lac_bodies_name (B, m, b);

@@ -7,7 +7,7 @@
  * solve/lac_system.h for the statuses of the moment.  How is chosen once
  * per scene, from the problem:
  *
- *   dense      (d) GSL's LU of the whole system: classroom sizes, matrices
+ *   dense      (d) a dense LU of the whole system: classroom sizes, matrices
  *                  a student can print (solve/lac_saddle.h);
  *   schur      (a) every body held by its Dirichlet conditions: K = L L^T
  *                  once, the columns of S = C^T K^{-1} C of the active

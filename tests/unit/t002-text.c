@@ -46,6 +46,8 @@ main (void)
               out);
   lac_error_set (LAC_EINVAL, "f", "key '%s'", "r\xe9\x07");
   check_message ("key 'r\\xE9\\x07'", "stored message escaped");
+  lac_error_set (LAC_EINVAL, "f", "group 'a\nb'\tc");
+  check_message ("f: group 'a\\x0Ab'\tc", "stored message on one line");
   lac_error_set (LAC_ENOMEM, "f", "%zu nodes", (size_t) 7);
   check_message ("f: out of memory: 7 nodes", "ENOMEM says so");
   lac_error_set (LAC_ENOMEM, "f", "out of memory here");

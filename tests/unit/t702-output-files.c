@@ -210,11 +210,14 @@ test_batches (void)
   check_int (count_files (), 2, "interrupted: the earlier files");
   check_int (count_in (base), 1, "interrupted: no temporary");
 
-  /* What a killed run left: its new directory, its old directory (with a
-   * picture of the user's), a file of the former scheme in DIR. */
+  /* What a killed run left: its new directory (killed after the exchange:
+   * it holds the earlier files, a picture of the user's too), its old
+   * directory (with a picture of the user's), a file of the former scheme
+   * in DIR. */
   snprintf (path, sizeof path, "%s/.sub.lac-new-%ld", base, pid);
   mkdir (path, 0777);
   put (path, "solution.vtu", "half\n");
+  put (path, "ex.png", "earlier picture\n");
   snprintf (path, sizeof path, "%s/.sub.lac-old-%ld", base, pid);
   mkdir (path, 0777);
   put (path, "u.png", "picture\n");
@@ -224,11 +227,13 @@ test_batches (void)
   b = lac_output_batch_alloc (dir, NULL);
   lac_output_batch_free (b);
   check_int (count_in (base), 1, "stale temporaries removed");
-  check_int (count_files (), 3, "summary.txt, notes.txt and u.png");
+  check_int (count_files (), 4, "summary.txt, notes.txt, u.png, ex.png");
   sum = slurp ("summary.txt");
   check_true (sum && strcmp (sum, "run = 2\n") == 0, "summary kept");
   free (sum);
   check_true ((sum = slurp ("u.png")) != NULL, "the user's picture back");
+  free (sum);
+  check_true ((sum = slurp ("ex.png")) != NULL, "from new: picture back");
   free (sum);
 
   /* DIR lost between the two renames of a killed run: put back. */
@@ -236,7 +241,7 @@ test_batches (void)
   check_int (rename (dir, path), 0, "lose DIR");
   b = lac_output_batch_alloc (dir, NULL);
   lac_output_batch_free (b);
-  check_int (count_files (), 3, "DIR put back");
+  check_int (count_files (), 4, "DIR put back");
   check_int (count_in (base), 1, "nothing else beside");
 }
 
@@ -244,9 +249,9 @@ static void
 cleanup (void)
 {
   const char *names[] = { "solution.vtu", "nodes.csv", "summary.txt",
-                          "notes.txt", "u.png" };
+                          "notes.txt", "u.png", "ex.png" };
   char path[128];
-  for (int k = 0; k < 5; k++)
+  for (int k = 0; k < 6; k++)
     {
       snprintf (path, sizeof path, "%s/%s", dir, names[k]);
       unlink (path);
