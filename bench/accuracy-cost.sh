@@ -106,7 +106,8 @@ load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 # less than a second: the fastest is kept, the usual defence against the
 # noise of other jobs on the machine), append a CSV row; print the dofs
 # and the strategy used.  Status 3: the strategy does not apply (schur
-# with a body held by contact alone), no row.
+# with a body held by contact alone, split with every body held by its
+# Dirichlet conditions), no row.
 one () {
   exp=$1 el=$2 lv=$3 st=$4
   f=$W/$exp-$el-$lv-$st
@@ -118,6 +119,7 @@ one () {
          --strategy "$st" ${MAX_MEMORY:+--max-memory "$MAX_MEMORY"} \
          --timings --no-output --quiet > "$f.try" 2> "$f.err"; then
       grep -q "needs every body held by its Dirichlet conditions" "$f.err" && return 3
+      grep -q "needs a body held by contact alone" "$f.err" && return 3
       echo "accuracy-cost.sh: $exp $el level $lv $st failed: $(tail -1 "$f.err")" >&2
       return 1
     fi
