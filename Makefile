@@ -105,6 +105,9 @@ $(B)/tests/nomem_lac: tests/nomem_lac.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/nomem_lac_malloc: tests/nomem_lac.c tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -DNOMEM_MALLOC $(LDFLAGS) $< tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
+$(B)/tests/scene_keys: tests/scene_keys.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 $(B)/tests/numcmp: tests/numcmp.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $< -lm -o $@
@@ -127,7 +130,9 @@ $(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
 # the harnesses of make fuzz on the inputs that once crashed them
 REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh
-test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac
+# the key tables for the book's doc tests (tests/cases-doc.sh)
+DOCTEST  := $(B)/tests/scene_keys
+test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac $(DOCTEST)
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).

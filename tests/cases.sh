@@ -253,3 +253,17 @@ if [ "$(tail -1 "$C/noisy.err" | cut -c1-5)" = "lac: " ] \
 else
   case_fail error-last "the error is not the last line of stderr"
 fi
+
+# [mesh] size on a .geo whose curves are transfinite changes nothing: the
+# mesh line says so (and the mesh is the same); without size, no warning.
+"$LAC" run chapters/01-problem/sphere-axi.scene --set size=0.5 --no-output \
+  > "$C/size.out" 2> "$C/size.err"
+"$LAC" run chapters/01-problem/sphere-axi.scene --no-output \
+  > "$C/nosize.out" 2> "$C/nosize.err"
+if grep -q 'warning: \[mesh\] size = 0.5 does not change the transfinite curves of sphere-axi.geo' "$C/size.err" \
+   && ! grep -q 'size = ' "$C/nosize.err" \
+   && [ "$(summary_value "$C/size.out" nodes)" = "$(summary_value "$C/nosize.out" nodes)" ]; then
+  case_ok size-transfinite
+else
+  case_fail size-transfinite "no warning for [mesh] size on a transfinite .geo"
+fi

@@ -1,10 +1,9 @@
 /* LAC chapter 03 -- The macro-mesh of the slave surface
  *                                          [LAC Hyp. 1, Remark 1, §4.4, Fig. 2]
  *
- * Build:        make B=build/ch3 build/ch3/chapters/03-macromesh
- *               (plain `make` builds it as build/chapters/03-macromesh)
- * Sample runs:  build/ch3/chapters/03-macromesh          (hex8 -> 5 pyr5)
- *               build/ch3/chapters/03-macromesh --six    (hex8 -> 6 hex8)
+ * Build:        make build/chapters/03-macromesh
+ * Sample runs:  build/chapters/03-macromesh          (hex8 -> 5 pyr5)
+ *               build/chapters/03-macromesh --six    (hex8 -> 6 hex8)
  * Description:  Small box meshes of every family (tet4, hex8, tet10, hex20,
  *               hex27 in 3D; quad4, quad8 in 2D).  The macro-mesh T^M of
  *               the top face is built with lac_macromesh_build, and the

@@ -1,11 +1,10 @@
 /* LAC chapter 04 -- Pairing: search, projection, intersection    [LAC §4.6]
  *
- * Build:        make B=build/ch4 build/ch4/chapters/04-pairing
- *               (plain `make` builds it as build/chapters/04-pairing)
- * Sample runs:  build/ch4/chapters/04-pairing               (upper box turned 10 deg)
- *               build/ch4/chapters/04-pairing --angle 0     (aligned grids)
- *               build/ch4/chapters/04-pairing --robust      (grid query per facet)
- *               build/ch4/chapters/04-pairing --degree 2    (3 points per triangle)
+ * Build:        make build/chapters/04-pairing
+ * Sample runs:  build/chapters/04-pairing               (upper box turned 10 deg)
+ *               build/chapters/04-pairing --angle 0     (aligned grids)
+ *               build/chapters/04-pairing --robust      (grid query per facet)
+ *               build/chapters/04-pairing --degree 2    (3 points per triangle)
  * Description:  Two hex8 boxes stacked with non-matching meshes: the
  *               bottom of a 3 x 3 box (slave) lies 0.01 above the top of a
  *               2 x 2 box (master) and is turned about the vertical axis.

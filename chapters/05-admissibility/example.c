@@ -1,11 +1,10 @@
 /* LAC chapter 05 -- Admissible macro-elements              [LAC §3.1, Def. 1]
  *
- * Build:        make B=build/ch57 build/ch57/chapters/05-admissibility
- *               (plain `make` builds it as build/chapters/05-admissibility)
- * Sample runs:  build/ch57/chapters/05-admissibility           (quad8, L = 37)
- *               build/ch57/chapters/05-admissibility --elem quad4
- *               build/ch57/chapters/05-admissibility --master 31.5
- *               build/ch57/chapters/05-admissibility --strategy dense
+ * Build:        make build/chapters/05-admissibility
+ * Sample runs:  build/chapters/05-admissibility           (quad8, L = 37)
+ *               build/chapters/05-admissibility --elem quad4
+ *               build/chapters/05-admissibility --master 31.5
+ *               build/chapters/05-admissibility --strategy dense
  * Description:  Two plane-strain blocks, the upper (slave) one 50 wide, the
  *               lower (master) one only L = 37 wide: the contact zone
  *               Gamma_C = [0, L] cuts a macro-element of the slave surface.

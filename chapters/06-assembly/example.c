@@ -1,11 +1,10 @@
 /* LAC chapter 06 -- The LAC matrices C^S, C^M and the mean gaps
  *                                                  [LAC §4.3, (16)-(18)]
  *
- * Build:        make B=build/ch57 build/ch57/chapters/06-assembly
- *               (plain `make` builds it as build/chapters/06-assembly)
- * Sample runs:  build/ch57/chapters/06-assembly                 (flat, gap 0.5)
- *               build/ch57/chapters/06-assembly --slope 0.01    (gap 0.5 + 0.01 x)
- *               build/ch57/chapters/06-assembly --strategy dense
+ * Build:        make build/chapters/06-assembly
+ * Sample runs:  build/chapters/06-assembly                 (flat, gap 0.5)
+ *               build/chapters/06-assembly --slope 0.01    (gap 0.5 + 0.01 x)
+ *               build/chapters/06-assembly --strategy dense
  * Description:  The smallest two-body problem that shows every term: a
  *               lower block [0,30] x [0,10] of 3 quad4 (the master), an
  *               upper block [0,30] x [10.5,20.5] of 4 quad4 (the slave),

@@ -1,11 +1,10 @@
 /* LAC chapter 07 -- The generalized Newton method (active set)
  *                                               [LAC §4.5, (18), Alg. 1]
  *
- * Build:        make B=build/ch57 build/ch57/chapters/07-newton
- *               (plain `make` builds it as build/chapters/07-newton)
- * Sample runs:  build/ch57/chapters/07-newton                 (UMFPACK)
- *               build/ch57/chapters/07-newton --strategy dense
- *               build/ch57/chapters/07-newton --strategy schur   (part 1 refused)
+ * Build:        make build/chapters/07-newton
+ * Sample runs:  build/chapters/07-newton                 (UMFPACK)
+ *               build/chapters/07-newton --strategy dense
+ *               build/chapters/07-newton --strategy schur   (part 1 refused)
  * Description:  Part 1: a block [0,50] x [50,100] (quad8) rests on a lower
  *               block [0,50] x [0,50]; a pressure on the LEFT half of its
  *               top tilts it, so the right part of the interface opens.

@@ -17,7 +17,7 @@
  *   - size, order, serendipity and recombine apply to .geo files only; a
  *     .msh file is read as it is.
  *
- * gmsh 4.8 notes (see the project's dependency notes): gmshOpen on a missing
+ * gmsh 4.8 notes: gmshOpen on a missing
  * file reports no error, so existence is checked first (lac_mesh_read); the
  * number `level' reaches the .geo as a command-line "-setnumber level N"
  * passed to gmshInitialize (works with DefineConstant[] and with Exists());

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/lac_status.h"
 #include "io/lac_mesh_gmsh.h"
+#include "io/lac_scene_query.h"
 #include "run/lac_run_scene.h"
 
 /* ---- checks against the scene ----------------------------------------- */
@@ -122,6 +123,24 @@ add_file (const lac_scene *sc, int k, size_t *gend, lac_mesh **mesh,
   return LAC_SUCCESS;
 }
 
+/* 1 if the .geo file at path sets the number of nodes of curves
+ * ("Transfinite"): [mesh] size scales gmsh's element sizes, and changes
+ * nothing on such curves. */
+static int
+geo_transfinite (const char *path)
+{
+  char line[256];
+  size_t len = strlen (path);
+  int found = 0;
+  FILE *f;
+  if (len < 4 || strcmp (path + len - 4, ".geo") || !(f = fopen (path, "r")))
+    return 0;
+  while (!found && fgets (line, sizeof line, f))
+    found = strstr (line, "Transfinite") != NULL;
+  fclose (f);
+  return found;
+}
+
 int
 lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
               lac_mesh **mesh, char *progress, size_t size)
@@ -169,9 +188,18 @@ lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
                         (*mesh)->ncells ? lac_refelem_get ((*mesh)->type[0])
                         ->name : "-", (*mesh)->ngroups);
   if ((*mesh)->ndropped && n < size)
-    snprintf (progress + n, size - n, "; warning: %zu node%s of the file "
-              "in no cell, left out", (*mesh)->ndropped,
-              (*mesh)->ndropped > 1 ? "s" : "");
+    n += (size_t) snprintf (progress + n, size - n, "; warning: %zu node%s "
+                            "of the file in no cell, left out",
+                            (*mesh)->ndropped,
+                            (*mesh)->ndropped > 1 ? "s" : "");
+  for (int k = 0; k < sc->mesh.nfiles && n < size; k++)
+    if (lac_scene_key_line (&sc->mesh.sec, "size") && sc->mesh.size != 1
+        && geo_transfinite (sc->mesh.paths[k]))
+      n += (size_t) snprintf (progress + n, size - n, "; warning: [mesh] "
+                              "size = %g does not change the transfinite "
+                              "curves of %s (their number of nodes is "
+                              "fixed): use level or numbers",
+                              sc->mesh.size, sc->mesh.files[k]);
   return LAC_SUCCESS;
 }
 

@@ -2,7 +2,7 @@
  *       quadratic meshes read from the .geo files of chapter 01   [LAC §5.2]
  *
  * a = 20, b = 40, p = 25, E = 2000, nu = 0.3 and the exact radial
- * displacement (paper notes, item 1: b is the outer radius)
+ * displacement (chapter 01, erratum 1: b is the outer radius)
  *   u_r(R) = p a^3 / (E (b^3 - a^3)) ((1 - 2 nu) R + (1 + nu) b^3 / (2 R^2)),
  * u_r(20) = 0.2, u_r(40) = 0.075, and the radial stress
  *   sigma_RR(R) = -p a^3 / (b^3 - a^3) (b^3 / R^3 - 1).
