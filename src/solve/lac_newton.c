@@ -107,16 +107,18 @@ penetration (const lac_newton *s, size_t i)
 static size_t
 first_contact (const lac_newton *s, char *want)
 {
-  double pmax = 0;
+  double frac = s->held_start ? LAC_NEWTON_HELD_CONTACT
+                              : LAC_NEWTON_FIRST_CONTACT, pmax = 0;
   size_t nch = 0;
   for (size_t i = 0; i < s->k; i++)
-    if (want[i])
+    if (want[i] && !s->active[i])
       pmax = fmax (pmax, penetration (s, i));
   for (size_t i = 0; i < s->k; i++)
     {
-      if (want[i] && penetration (s, i) < LAC_NEWTON_FIRST_CONTACT * pmax)
+      if (want[i] && !s->active[i]
+          && penetration (s, i) < frac * pmax)
         want[i] = 0;
-      nch += want[i] != 0;
+      nch += want[i] != s->active[i];
     }
   return nch;
 }
@@ -157,6 +159,42 @@ push_record (lac_newton *s, const lac_newton_record *r)
   return LAC_SUCCESS;
 }
 
+static int
+cmp_gap (const void *a, const void *b)
+{
+  const double *x = a, *y = b;                 /* pairs (G_i, i) */
+  return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : 0;
+}
+
+/* Statuses that hold the bodies held by contact alone: the multipliers of
+ * the m smallest initial gaps, m = 1, 2, 4, ... until the active ones
+ * hold every body (lac_system_check_held); every multiplier if fewer do
+ * not.  Returns m. */
+static size_t
+hold_start (lac_newton *s)
+{
+  double *pair = s->work;                      /* (G_i, i), 2 k doubles */
+  size_t m = 1;
+  for (size_t i = 0; i < s->k; i++)
+    {
+      pair[2 * i] = s->sys->G[i];
+      pair[2 * i + 1] = (double) i;
+    }
+  qsort (pair, s->k, 2 * sizeof *pair, cmp_gap);
+  for (;; m = 2 * m < s->k ? 2 * m : s->k)
+    {
+      memset (s->active, 0, s->k);
+      for (size_t j = 0; j < m; j++)
+        s->active[(size_t) pair[2 * j + 1]] = 1;
+      if (m == s->k || !lac_system_check_held (s->sys, s->active))
+        break;
+      lac_error_clear ();
+    }
+  lac_error_clear ();
+  s->held_start = m;
+  return m;
+}
+
 int
 lac_newton_set (lac_newton *s, const lac_contact_system *sys,
                 const char *active0)
@@ -172,6 +210,7 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys,
   s->sys = sys;
   s->nhist = 0;
   s->restarted = 0;
+  s->held_start = 0;
   memset (s->U, 0, s->n * sizeof *s->U);
   memset (s->lambda, 0, s->k * sizeof *s->lambda);
   lac_system_norms (sys, &normK, &s->normC);
@@ -183,8 +222,8 @@ lac_newton_set (lac_newton *s, const lac_contact_system *sys,
     }
   if (sys->nfree > 0 && lac_system_check_held (sys, s->active))
     {
-      lac_error_clear ();       /* a body held by contact alone: all on */
-      memset (s->active, 1, s->k);
+      lac_error_clear ();       /* a body held by contact alone */
+      hold_start (s);
       s->restarted = 1;
     }
   if (!s->seen && !(s->seen = lac_malloc (sizeof *s->seen)))
@@ -235,7 +274,8 @@ update_status (lac_newton *s, int *damped)
           pair[2 * nch++ + 1] = (double) i;
         }
     }
-  if (s->nhist == 0 && nch > 0 && lac_newton_nactive (s) == 0)
+  if (s->nhist == 0 && nch > 0
+      && (lac_newton_nactive (s) == 0 || s->held_start > 0))
     nch = first_contact (s, want);
   if (nch == 0 || !seen_before (s, status_hash (want, s->k)))
     {
