@@ -8,6 +8,8 @@
 #   make bench       benchmarks (not in CI): sizes, times, memory
 #   make figures     regenerate figures/ (pictures of the experiments)
 #   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
+#   make doc         the book as HTML in build/doc (pandoc, MathML)
+#   make doc-test    make doc, then its pages checked in headless Chromium
 #   make help        all targets
 #
 # Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
@@ -186,6 +188,23 @@ figures: all $(FIGPROG)
 clean:
 	rm -rf build
 
+# ---- the book as HTML (chapters/html/README.md) ---------------------------
+# pandoc and chromium are installed like the packages above (as root), or
+# their apt-get line is printed; neither is needed by make test.
+DEB_DOC     := pandoc
+DEB_DOCTEST := chromium
+DOC_B    := $(B)/doc
+doc:
+	@sh tests/deps.sh $(DEB_DOC)
+	rm -rf $(DOC_B)
+	sh chapters/html/make-html.sh $(DOC_B)
+
+# The pages in headless Chromium: maths rendered, links and images resolve,
+# a screenshot of chapter 06 in $(DOC_B)/screenshot.png (about 10 s).
+doc-test: doc $(B)/figures/pngcheck
+	@sh tests/deps.sh $(DEB_DOCTEST)
+	sh tests/doc-browser.sh $(DOC_B) $(B)/figures/pngcheck
+
 # ---- fuzzing (chapter 01, bad-input.md; fuzz/README.md) --------------------
 # The library again with clang, coverage for libFuzzer and the sanitizers
 # (in build/fuzz), the harnesses fuzz/fuzz_*.c linked with libFuzzer, seed
@@ -214,7 +233,7 @@ $(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 help:
-	@sed -n '3,11p' Makefile
+	@sed -n '3,13p' Makefile
 
-.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help
+.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test
 .DELETE_ON_ERROR:
