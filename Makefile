@@ -17,16 +17,17 @@
 
 CC       ?= cc
 CFLAGS   ?= -std=c11 -O2 -g -Wall -Wextra
-CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse
+CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse \
+            -I/usr/include/freetype2
 LDFLAGS  += -Wl,--as-needed
 SS_LIBS  ?= -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig
 GSL_LIBS ?= -lgsl -lgslcblas
-LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lpng16 -lm
+LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lfreetype -lpng16 -lm
 
 # Debian 12 packages needed to build, test and draw.
 DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
-            libinih-dev gnuplot-nox
+            libinih-dev gnuplot-nox libfreetype-dev fonts-dejavu-core
 
 # PETSc and Open MPI: the petsc strategy and mpirun (chapter 11), installed
 # like the others.  PETSC=no builds without them (and does not install
