@@ -8,6 +8,8 @@
 #   make bench       benchmarks (not in CI): sizes, times, memory
 #   make figures     regenerate figures/ (pictures of the experiments)
 #   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
+#   make doc         the book as HTML in build/doc (pandoc, MathML)
+#   make doc-test    make doc, then its pages checked in headless Chromium
 #   make help        all targets
 #
 # Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
@@ -15,16 +17,17 @@
 
 CC       ?= cc
 CFLAGS   ?= -std=c11 -O2 -g -Wall -Wextra
-CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse
+CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse \
+            -I/usr/include/freetype2
 LDFLAGS  += -Wl,--as-needed
 SS_LIBS  ?= -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig
 GSL_LIBS ?= -lgsl -lgslcblas
-LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lpng16 -lm
+LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lfreetype -lpng16 -lm
 
 # Debian 12 packages needed to build, test and draw.
 DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
-            libinih-dev gnuplot-nox
+            libinih-dev gnuplot-nox libfreetype-dev fonts-dejavu-core
 
 # PETSc and Open MPI: the petsc strategy and mpirun (chapter 11), installed
 # like the others.  PETSC=no builds without them (and does not install
@@ -186,6 +189,23 @@ figures: all $(FIGPROG)
 clean:
 	rm -rf build
 
+# ---- the book as HTML (chapters/html/README.md) ---------------------------
+# pandoc and chromium are installed like the packages above (as root), or
+# their apt-get line is printed; neither is needed by make test.
+DEB_DOC     := pandoc
+DEB_DOCTEST := chromium
+DOC_B    := $(B)/doc
+doc:
+	@sh tests/deps.sh $(DEB_DOC)
+	rm -rf $(DOC_B)
+	sh chapters/html/make-html.sh $(DOC_B)
+
+# The pages in headless Chromium: maths rendered, links and images resolve,
+# a screenshot of chapter 06 in $(DOC_B)/screenshot.png (about 10 s).
+doc-test: doc $(B)/figures/pngcheck
+	@sh tests/deps.sh $(DEB_DOCTEST)
+	sh tests/doc-browser.sh $(DOC_B) $(B)/figures/pngcheck
+
 # ---- fuzzing (chapter 01, bad-input.md; fuzz/README.md) --------------------
 # The library again with clang, coverage for libFuzzer and the sanitizers
 # (in build/fuzz), the harnesses fuzz/fuzz_*.c linked with libFuzzer, seed
@@ -214,7 +234,7 @@ $(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 help:
-	@sed -n '3,11p' Makefile
+	@sed -n '3,13p' Makefile
 
-.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help
+.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test
 .DELETE_ON_ERROR:

@@ -154,8 +154,8 @@ typedef struct layout
 } layout;
 
 static void
-make_layout (const lac_render_opts *o, int has_field, double vmin,
-             double vmax, layout *L)
+make_layout (const lac_render_opts *o, lac_render_font *font, int has_field,
+             double vmin, double vmax, layout *L)
 {
   int W = o->width, H = o->height, ts, m, top, line;
   ts = ((W < H ? W : H) + 125) / 250;     /* 2 at 480 to 624 pixels */
@@ -172,7 +172,7 @@ make_layout (const lac_render_opts *o, int has_field, double vmin,
   if (!L->bar)
     return;
   L->bw = 5 * ts + W / 100;
-  L->bx = W - m - lac_render_colorbar_width (vmin, vmax, ts) - L->bw;
+  L->bx = W - m - lac_render_colorbar_width (font, vmin, vmax, ts) - L->bw;
   L->by = top + line + 6 * ts;
   L->bh = H - L->by - m - 4 * ts;
   if (L->bh > (H - top) * 3 / 4)
@@ -443,19 +443,20 @@ check_opts (const lac_render_opts *o)
 /* The title centred on top; one size smaller, then cut with "...", if it
  * is too wide. */
 static void
-draw_title (unsigned char *rgba, const lac_render_opts *o, const layout *L)
+draw_title (lac_render_font *font, unsigned char *rgba,
+            const lac_render_opts *o, const layout *L)
 {
   char buf[256];
   int ts = L->ts, avail = o->width - 2 * L->margin, tw;
   size_t n;
   snprintf (buf, sizeof buf, "%s", o->title);
-  if (ts > 2 && lac_render_text_width (buf, ts) > avail)
+  if (ts > 2 && lac_render_text_width (font, buf, ts) > avail)
     ts--;                                  /* one size smaller at most */
   n = strlen (buf);
-  while (n > 3 && lac_render_text_width (buf, ts) > avail)
+  while (n > 3 && lac_render_text_width (font, buf, ts) > avail)
     memcpy (buf + --n - 3, "...", 4);
-  tw = lac_render_text_width (buf, ts);
-  lac_render_text (rgba, o->width, o->height, (o->width - tw) / 2,
+  tw = lac_render_text_width (font, buf, ts);
+  lac_render_text (font, rgba, o->width, o->height, (o->width - tw) / 2,
                    L->margin + (L->ts - ts) * LAC_FONT_H / 2, ts, buf, INK);
 }
 
@@ -468,6 +469,7 @@ render_geom (const lac_render_geom *g, const lac_render_opts *o,
   double lo[3] = { INFINITY, INFINITY, INFINITY },
     hi[3] = { -INFINITY, -INFINITY, -INFINITY };
   int has_field, status;
+  lac_render_font *font = NULL;
   memset (&V, 0, sizeof V);
   V.dim = g->dim;
   V.ss = o->supersample;
@@ -481,17 +483,22 @@ render_geom (const lac_render_geom *g, const lac_render_opts *o,
     return status;
   if (!(lo[0] <= hi[0]))
     LAC_ERROR (LAC_EINVAL, "nothing to draw (no cell, face or point)");
-  make_layout (o, has_field, V.vmin, V.vmax, &L);
+  if ((status = lac_render_font_open (o->font, &font)))
+    return status;
+  make_layout (o, font, has_field, V.vmin, V.vmax, &L);
   V.thick = 2 + 2 * L.ts;
   fit_view (&V, &L, o, lo, hi);
-  if ((status = draw_gl (g, &V, o->width, o->height, rgba)))
-    return status;
-  if (o->title && *o->title)
-    draw_title (rgba, o, &L);
-  if (L.bar)
-    lac_render_colorbar (rgba, o->width, o->height, L.bx, L.by, L.bw, L.bh,
-                         V.vmin, V.vmax, o->label, o->units, L.ts);
-  return LAC_SUCCESS;
+  if (!(status = draw_gl (g, &V, o->width, o->height, rgba)))
+    {
+      if (o->title && *o->title)
+        draw_title (font, rgba, o, &L);
+      if (L.bar)
+        lac_render_colorbar (font, rgba, o->width, o->height, L.bx, L.by,
+                             L.bw, L.bh, V.vmin, V.vmax, o->label, o->units,
+                             L.ts);
+    }
+  lac_render_font_free (font);
+  return status;
 }
 
 /* Resolve the options (NULL: defaults; 0 supersample, subdiv: defaults)

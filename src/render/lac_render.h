@@ -18,7 +18,8 @@
  * the camera towards +x), with a light near the eye so that faces read as
  * a solid.  The frame is rendered at `supersample` times the size and
  * averaged down (anti-aliasing); text and the colour bar are then written
- * into the pixels with an embedded 5x7 bitmap font.
+ * into the pixels with FreeType and a TrueType font (DejaVu Sans), or
+ * with an embedded 5x7 bitmap font.
  *
  * Images are RGBA, 8 bits per channel, top row first (as in a PNG file).
  *
@@ -59,6 +60,11 @@ typedef struct lac_render_opts
   int colorbar;              /* 1: draw the colour bar when there is a field */
   int subdiv;                /* sub-segments per edge of a quadratic face (4) */
   int supersample;           /* anti-aliasing factor 1..4 (2)               */
+  const char *font;          /* borrowed: TrueType file of the text; NULL:
+                                DejaVu Sans (fonts-dejavu-core), or the 5x7
+                                bitmap font if it is not installed; "": the
+                                bitmap font; a file that cannot be read:
+                                LAC_EIO                                     */
 } lac_render_opts;
 
 /* Defaults in parentheses above; scale 0, edges 0, colorbar 1. */

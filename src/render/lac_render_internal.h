@@ -66,17 +66,38 @@ int lac_render_geom_facets (lac_render_geom *g, const lac_mesh *m,
 int lac_render_geom_discs (lac_render_geom *g, size_t n, const double *xyz,
                            const double *radius, const double *value);
 
+/* ---- lac_render_font.c ---- */
+#define LAC_RENDER_FONT_DEFAULT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
+
+/* A TrueType font opened with FreeType for one picture (not shared). */
+typedef struct lac_render_font lac_render_font;
+
+/* Open path (NULL: LAC_RENDER_FONT_DEFAULT) into *font.  *font is NULL,
+ * with success, for path "" and for a missing default file: the text is
+ * then drawn with the bitmap font.  A given path that cannot be opened or
+ * read: LAC_EIO naming it. */
+int lac_render_font_open (const char *path, lac_render_font **font);
+void lac_render_font_free (lac_render_font *f);          /* NULL allowed */
+/* Width of the UTF-8 string s in pixels, and s drawn with its line's top
+ * at y (baseline 7 * scale lower), at 10 * scale pixels per em. */
+int lac_render_font_width (lac_render_font *f, const char *s, int scale);
+void lac_render_font_draw (lac_render_font *f, unsigned char *rgba, int w,
+                           int h, int x, int y, int scale, const char *s,
+                           const unsigned char rgb[3]);
+
 /* ---- lac_render_text.c ---- */
 #define LAC_FONT_W 5        /* glyph cell: 5 x 9 (7 above the baseline)  */
 #define LAC_FONT_H 9
 #define LAC_FONT_ADVANCE 6
 #define LAC_FONT_LINE 11
 
-int lac_render_text_width (const char *s, int scale);
+/* With font NULL the bitmap font, otherwise FreeType's glyphs. */
+int lac_render_text_width (lac_render_font *font, const char *s, int scale);
 /* Write s with its top-left corner at (x, y) (top-down pixel rows),
  * clipped to the image. */
-void lac_render_text (unsigned char *rgba, int w, int h, int x, int y,
-                      int scale, const char *s, const unsigned char rgb[3]);
+void lac_render_text (lac_render_font *font, unsigned char *rgba, int w,
+                      int h, int x, int y, int scale, const char *s,
+                      const unsigned char rgb[3]);
 
 /* Nice ticks (1, 2, 5 x 10^k) inside [vmin, vmax]; returns their number
  * (at most max) and the step. */
@@ -87,11 +108,13 @@ void lac_render_tick_label (double v, double step, double vabs,
                             char *buf, size_t len);
 
 /* Width in pixels the colour bar needs right of the bar (ticks, labels). */
-int lac_render_colorbar_width (double vmin, double vmax, int scale);
+int lac_render_colorbar_width (lac_render_font *font, double vmin,
+                               double vmax, int scale);
 /* Draw the bar with its top-left corner at (x, y), bar width bw and
  * height bh, ticks and labels to its right, label/units above it. */
-void lac_render_colorbar (unsigned char *rgba, int w, int h, int x, int y,
-                          int bw, int bh, double vmin, double vmax,
-                          const char *label, const char *units, int scale);
+void lac_render_colorbar (lac_render_font *font, unsigned char *rgba, int w,
+                          int h, int x, int y, int bw, int bh, double vmin,
+                          double vmax, const char *label, const char *units,
+                          int scale);
 
 #endif /* LAC_RENDER_INTERNAL_H */

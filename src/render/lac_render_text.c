@@ -1,9 +1,10 @@
 /* lac_render_text.c -- colour map, bitmap font, ticks and the colour bar
  *
  * The text of a picture (title, colour bar labels) is written straight into
- * the RGBA pixels after OSMesa has drawn the mesh, with a 5x7 bitmap font
- * (printable ASCII, descenders on two extra rows) magnified by an integer
- * factor.  The glyphs were drawn for this file in the style of the
+ * the RGBA pixels after OSMesa has drawn the mesh, with a TrueType font
+ * through FreeType (lac_render_font.c) or, without one, with a 5x7 bitmap
+ * font (printable ASCII, descenders on two extra rows) magnified by an
+ * integer factor.  The glyphs were drawn for this file in the style of the
  * classic 5x7 dot-matrix character sets.
  *
  * The colour map is viridis (van der Walt and Smith, 2015): its published
@@ -51,7 +52,7 @@ lac_render_colormap (double t, unsigned char rgb[3])
 
 /* Rows top to bottom, bit 4 = left column; row 6 is the baseline row,
  * rows 7-8 the descenders.  Characters 32..126. */
-static const unsigned char font[95][LAC_FONT_H] = {
+static const unsigned char bitmap[95][LAC_FONT_H] = {
   { 0, 0, 0, 0, 0, 0, 0, 0, 0 },                               /* ' ' */
   { 0x04, 0x04, 0x04, 0x04, 0x04, 0x00, 0x04, 0, 0 },          /* !  */
   { 0x0a, 0x0a, 0x0a, 0x00, 0x00, 0x00, 0x00, 0, 0 },          /* "  */
@@ -150,9 +151,11 @@ static const unsigned char font[95][LAC_FONT_H] = {
 };
 
 int
-lac_render_text_width (const char *s, int scale)
+lac_render_text_width (lac_render_font *font, const char *s, int scale)
 {
   size_t n = strlen (s);
+  if (font)
+    return lac_render_font_width (font, s, scale);
   return n ? (int) n * LAC_FONT_ADVANCE * scale - scale : 0;
 }
 
@@ -180,13 +183,19 @@ fill_rect (unsigned char *rgba, int w, int h, int x, int y, int rw, int rh,
 }
 
 void
-lac_render_text (unsigned char *rgba, int w, int h, int x, int y, int scale,
-                 const char *s, const unsigned char rgb[3])
+lac_render_text (lac_render_font *font, unsigned char *rgba, int w, int h,
+                 int x, int y, int scale, const char *s,
+                 const unsigned char rgb[3])
 {
+  if (font)
+    {
+      lac_render_font_draw (font, rgba, w, h, x, y, scale, s, rgb);
+      return;
+    }
   for (; *s; s++, x += LAC_FONT_ADVANCE * scale)
     {
       int c = (unsigned char) *s;
-      const unsigned char *g = font[(c < 32 || c > 126 ? '?' : c) - 32];
+      const unsigned char *g = bitmap[(c < 32 || c > 126 ? '?' : c) - 32];
       for (int r = 0; r < LAC_FONT_H; r++)
         for (int k = 0; k < LAC_FONT_W; k++)
           if (g[r] & (0x10 >> k))
@@ -239,7 +248,7 @@ lac_render_tick_label (double v, double step, double vabs, char *buf,
 /* ---- colour bar -------------------------------------------------------- */
 
 static int
-labels_width (double vmin, double vmax, int scale)
+labels_width (lac_render_font *font, double vmin, double vmax, int scale)
 {
   double tick[16], step, vabs = fmax (fabs (vmin), fabs (vmax));
   size_t n = lac_render_ticks (vmin, vmax, tick, 16, &step);
@@ -249,22 +258,23 @@ labels_width (double vmin, double vmax, int scale)
     {
       int tw;
       lac_render_tick_label (tick[k], step, vabs, buf, sizeof buf);
-      tw = lac_render_text_width (buf, scale);
+      tw = lac_render_text_width (font, buf, scale);
       wmax = tw > wmax ? tw : wmax;
     }
   return wmax;
 }
 
 int
-lac_render_colorbar_width (double vmin, double vmax, int scale)
+lac_render_colorbar_width (lac_render_font *font, double vmin, double vmax,
+                           int scale)
 {
-  return 4 * scale + labels_width (vmin, vmax, scale);
+  return 4 * scale + labels_width (font, vmin, vmax, scale);
 }
 
 void
-lac_render_colorbar (unsigned char *rgba, int w, int h, int x, int y, int bw,
-                     int bh, double vmin, double vmax, const char *label,
-                     const char *units, int scale)
+lac_render_colorbar (lac_render_font *font, unsigned char *rgba, int w, int h,
+                     int x, int y, int bw, int bh, double vmin, double vmax,
+                     const char *label, const char *units, int scale)
 {
   static const unsigned char ink[3] = { 0, 0, 0 };
   double tick[16], step, vabs = fmax (fabs (vmin), fabs (vmax));
@@ -291,19 +301,20 @@ lac_render_colorbar (unsigned char *rgba, int w, int h, int x, int y, int bw,
       fill_rect (rgba, w, h, x + bw - 3 * scale, ty - scale / 2, 3 * scale,
                  scale, ink);
       lac_render_tick_label (tick[k], step, vabs, buf, sizeof buf);
-      lac_render_text (rgba, w, h, x + bw + 4 * scale, ty - 3 * scale, scale,
-                       buf, ink);
+      lac_render_text (font, rgba, w, h, x + bw + 4 * scale, ty - 3 * scale,
+                       scale, buf, ink);
     }
 
   /* "label (units)" above the bar, right-aligned with the labels. */
   if ((label && *label) || (units && *units))
     {
-      int tw, right = x + bw + 4 * scale + labels_width (vmin, vmax, scale);
+      int tw, right = x + bw + 4 * scale
+                      + labels_width (font, vmin, vmax, scale);
       snprintf (buf, sizeof buf, "%s%s%s%s", label ? label : "",
                 units && *units ? (label && *label ? " (" : "(") : "",
                 units && *units ? units : "", units && *units ? ")" : "");
-      tw = lac_render_text_width (buf, scale);
-      lac_render_text (rgba, w, h, right - tw < 2 ? 2 : right - tw,
+      tw = lac_render_text_width (font, buf, scale);
+      lac_render_text (font, rgba, w, h, right - tw < 2 ? 2 : right - tw,
                        y - 6 * scale - LAC_FONT_LINE * scale, scale, buf,
                        ink);
     }

@@ -162,7 +162,7 @@ test_ticks (void)
   check_true (!strcmp (buf, "1.5e-04"), "label '%s'", buf);
   lac_render_tick_label (0, 1e5, 4e5, buf, sizeof buf);
   check_true (!strcmp (buf, "0e+00"), "label '%s'", buf);
-  check_int (lac_render_text_width ("abc", 2), 34, "text width");
+  check_int (lac_render_text_width (NULL, "abc", 2), 34, "text width");
   {
     unsigned char c[3];
     lac_render_colormap (0, c);
@@ -174,6 +174,84 @@ test_ticks (void)
   }
 }
 
+/* Pixels of rows y0..y1-1: those of pure ink (0) and the grey ones between
+ * ink and paper (anti-aliased edges: FreeType's glyphs, not the bitmap's). */
+static void
+ink_and_grey (const unsigned char *img, int w, int y0, int y1, int *ink,
+              int *grey)
+{
+  *ink = *grey = 0;
+  for (int y = y0; y < y1; y++)
+    for (int x = 0; x < w; x++)
+      {
+        const unsigned char *p = img + 4 * ((size_t) y * (size_t) w + x);
+        *ink += p[0] == 0 && p[1] == 0 && p[2] == 0;
+        *grey += p[0] > 0 && p[0] < 255 && p[0] == p[1] && p[1] == p[2];
+      }
+}
+
+/* The title drawn with FreeType (DejaVu Sans, the default) and with the
+ * bitmap font (font ""); a font file that is not there. */
+static void
+test_font (void)
+{
+  size_t n[2] = { 2, 2 };
+  double L[2] = { 1, 1 };
+  lac_mesh *m = NULL;
+  lac_render_opts o;
+  lac_render_font *f = NULL;
+  unsigned char *img[2];
+  const char *fonts[2] = { NULL, "" };
+  int ink[2], grey[2];
+
+  check_status (lac_mesh_box (LAC_QUAD4, n, L, 0, &m), LAC_SUCCESS, "box");
+  lac_render_opts_init (&o);
+  o.width = 400;
+  o.height = 300;
+  o.title = "Title: sigma_rr (MPa), 0123456789";
+  for (int k = 0; k < 2; k++)
+    {
+      o.font = fonts[k];
+      img[k] = malloc (4 * 400 * 300);
+      check_status (lac_render_mesh_rgba (m, NULL, NULL, &o, img[k]),
+                    LAC_SUCCESS, "render with font %d", k);
+      ink_and_grey (img[k], 400, 0, 19, &ink[k], &grey[k]);  /* the title */
+    }
+  check_true (grey[0] > 100 && grey[0] > 5 * ink[0],
+              "FreeType's title: %d grey, %d ink pixels", grey[0], ink[0]);
+  check_true (grey[1] == 0 && ink[1] > 100,
+              "bitmap title: %d grey, %d ink pixels", grey[1], ink[1]);
+  free (img[0]);
+  free (img[1]);
+
+  o.font = "/nonexistent/font.ttf";
+  img[0] = malloc (4 * 400 * 300);
+  check_status (lac_render_mesh_rgba (m, NULL, NULL, &o, img[0]), LAC_EIO,
+                "missing font file");
+  check_message ("/nonexistent/font.ttf", "message names the font file");
+  o.font = "tests/unit/t801-render-mesh-2d.c";
+  check_status (lac_render_mesh_rgba (m, NULL, NULL, &o, img[0]), LAC_EIO,
+                "not a font");
+  check_message ("not a font", "message says it is not a font");
+  free (img[0]);
+
+  /* proportional glyphs, about the bitmap's size */
+  check_status (lac_render_font_open (NULL, &f), LAC_SUCCESS, "open DejaVu");
+  check_true (f != NULL, "the default font %s is installed",
+              LAC_RENDER_FONT_DEFAULT);
+  if (f)
+    {
+      int wi = lac_render_text_width (f, "iiii", 2),
+        wm = lac_render_text_width (f, "MMMM", 2),
+        wa = lac_render_text_width (f, "abc", 2);
+      check_true (wi < wm / 2, "proportional: iiii %d, MMMM %d", wi, wm);
+      check_true (wa > 25 && wa < 45, "abc at scale 2: %d pixels", wa);
+      check_int (lac_render_text_width (f, "", 2), 0, "empty text");
+    }
+  lac_render_font_free (f);
+  lac_mesh_free (m);
+}
+
 int
 main (void)
 {
@@ -181,5 +259,6 @@ main (void)
   test_annulus ();
   test_grey_deformed ();
   test_ticks ();
+  test_font ();
   return check_summary ();
 }
