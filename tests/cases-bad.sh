@@ -92,6 +92,10 @@ rbad folded "folded.msh|cells 18 and 19 overlap" \
   run $SB $KB --set mesh.file=folded.msh
 rbad flat "flat.msh|cell 16 (tri3) is degenerate" \
   run $SB $KB --set mesh.file=flat.msh
+# A ball in gmsh's all-hex subdivision: tangled, and the message says how
+# to mesh it (transfinite blocks, chapter 08).
+rbad ball-hex "ball-hex.geo|hex20) is degenerate or tangled|transfinite|chapter 08" \
+  run tests/bad/ball-hex.scene $KB
 
 # Nodes in no cell: a warning on the mesh line, the same answer.
 "$LAC" run $SB --set mesh.file=unused-node.msh --no-output > "$RB/unused.out" 2> "$RB/unused.err"

@@ -6,15 +6,21 @@
 # Runs the Hertz scenes of this chapter at each of LEVELS ("0 1 2 3 4")
 # for each case of CASES (default: the four 2D cases
 # "cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6"; in 3D
-# "sph-rigid:tet10 sph-rigid:hex20", the sphere on a rigid flat; those
-# runs take up to minutes) and prints one row per run: dofs, the peak pressure
+# sph-rigid (the sphere on a rigid flat) and sph-block (on an elastic
+# block), each :tet10 or :hex20; the finer 3D levels take up to a minute)
+# and prints one row per run: dofs, the peak pressure
 # max_contact_pressure against Hertz's p0, the half-width (radius in 3D)
 # a_h against Hertz's a, the contact force against the load, the time.
 # a_h comes from the second moment of the computed pressure over the
 # active macro-elements (contact.csv: centroid, measure, lambda), which
 # for Hertz's distribution is m2/m0 = a^2/4 in 2D and 2 a^2/5 in 3D, so
 # a_h = 2 sqrt(m2/m0) or sqrt(5 m2 / (2 m0)); each macro-element counts
-# with its centroid (2D: plus L^2/12 of its length L).  Hertz (E* the
+# with its centroid plus its own second moment about it (2D: L^2/12 of
+# its length L; 3D: A/6 of its area A, that of a square).  a_A(%) is the
+# error of the radius (2D: half-width) of the active area contact_area
+# instead, which moves by whole macro-elements.  The time t is
+# the wall-clock time of the run; LAC_ARGS adds options to every run
+# (LAC_ARGS="--strategy schur --timings").  Hertz (E* the
 # combined modulus 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)):
 #   2D, P per unit length: a = sqrt(4 P R / (pi E*)),  p0 = 2 P / (pi a);
 #   3D:                    a = (3 P R / (4 E*))^(1/3), p0 = 3 P / (2 pi a^2).
@@ -28,7 +34,7 @@ CASES=${1:-"cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6"}
 LEVELS=${2:-"0 1 2 3 4"}
 D8=chapters/08-experiments
 mkdir -p "$OUT"
-printf '%-16s %5s %8s %12s %9s %10s %9s %9s %6s\n' case level dofs p_max "err(%)" a_h "err(%)" "|F-P|/P" "t(s)"
+printf '%-16s %5s %8s %12s %9s %10s %9s %9s %9s %6s\n' case level dofs p_max "err(%)" a_h "err(%)" "a_A(%)" "|F-P|/P" "t(s)"
 for c in $CASES; do
   name=${c%%:*}; el=${c#*:}
   case $name in
@@ -36,6 +42,9 @@ for c in $CASES; do
     cyl-block) scene=hertz-cylinder-block; dim=2; P=700; Es=109890.10989010989; q=2; mesh= ;;
     sph-rigid) scene=hertz-sphere; dim=3; P=3600; Es=219780.21978021978; q=4
                mesh=hertz-sphere.geo; [ "$el" = tet10 ] || mesh=hertz-sphere-hex.geo ;;
+    sph-block) scene=hertz-sphere-block; dim=3; P=3600; Es=109890.10989010989; q=4
+               mesh="hertz-sphere.geo hertz-flat.geo"
+               [ "$el" = tet10 ] || mesh="hertz-sphere-hex.geo hertz-flat-hex.geo" ;;
     *) echo "hertz.sh: unknown case '$name'" >&2; exit 1 ;;
   esac
   for L in $LEVELS; do
@@ -43,10 +52,10 @@ for c in $CASES; do
     t0=$(date +%s.%N)
     if [ -n "$mesh" ]; then
       "$B/lac" run "$D8/$scene.scene" --set element="$el" --set level="$L" \
-        --set mesh.file="$mesh" --out "$d" --quiet > "$d.out"
+        --set mesh.file="$mesh" --out "$d" --quiet $LAC_ARGS > "$d.out"
     else
       "$B/lac" run "$D8/$scene.scene" --set element="$el" --set level="$L" \
-        --out "$d" --quiet > "$d.out"
+        --out "$d" --quiet $LAC_ARGS > "$d.out"
     fi
     t1=$(date +%s.%N)
     awk -F, -v dim="$dim" -v P="$P" -v Es="$Es" -v q="$q" -v name="$name:$el" \
@@ -58,15 +67,16 @@ for c in $CASES; do
         while ((getline line < sum) > 0) { split(line, kv, " = "); v[kv[1]] = kv[2] } }
       NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
       $col["active"] == 1 { x = $col["x"]; y = $col["y"]; m = $col["measure"]; l = -$col["lambda"]
-        r2 = dim == 2 ? x * x + m * m / 12 : x * x + y * y
+        r2 = dim == 2 ? x * x + m * m / 12 : x * x + y * y + m / 6
         m0 += l * m; m2 += l * m * r2 }
       $col["lambda"] != "" { r = dim == 2 ? x = $col["x"] : sqrt($col["x"] ^ 2 + $col["y"] ^ 2)
         e = r < a ? p0 * sqrt(1 - r * r / (a * a)) : 0
         printf "%.8g %.8g %.8g\n", r, -$col["lambda"], e > prof }
       END { ah = dim == 2 ? 2 * sqrt(m2 / m0) : sqrt(2.5 * m2 / m0)
+        aA = dim == 2 ? v["contact_area"] * q / 2 : sqrt(v["contact_area"] * q / pi)
         F = -v["contact_force"] * q; pm = v["max_contact_pressure"]
-        printf "%-16s %5d %8d %12.5f %9.4f %10.6f %9.4f %9.1e %6.1f\n", name, L, v["dofs"], pm,
-          100 * (pm / p0 - 1), ah, 100 * (ah / a - 1), (F > P ? F - P : P - F) / P, t }' "$d/contact.csv"
+        printf "%-16s %5d %8d %12.5f %9.4f %10.6f %9.4f %9.4f %9.1e %6.1f\n", name, L, v["dofs"], pm,
+          100 * (pm / p0 - 1), ah, 100 * (ah / a - 1), 100 * (aA / a - 1), (F > P ? F - P : P - F) / P, t }' "$d/contact.csv"
   done
 done
 

@@ -587,6 +587,14 @@ flip_maps (const lac_refelem *re, int *perm, int *fmap)
 
 enum { CELL_OK, CELL_INVERTED, CELL_BAD };
 
+/* Said of a tangled hexahedron: the usual cause is gmsh's all-hex mesh of a
+ * curved body (tetrahedra subdivided into hexahedra, tests/bad/ball-hex.geo),
+ * whose cells fold near the surface. */
+static const char hex_hint[] =
+  "; an all-hex mesh made by subdividing tetrahedra tangles cells near a "
+  "curved surface: cut the body into blocks of six four-sided faces and "
+  "make them transfinite (chapter 08, 'Hertz contact', hertz-sphere-hex.geo)";
+
 /* Sign of det J at the nodes (but a pyramid's apex) and at the points of
  * q: all positive, all negative, or mixed/vanishing. */
 static int
@@ -681,8 +689,9 @@ lac_mesh_check_orientation (lac_mesh *m, int flip, size_t *nflipped)
       sign = cell_sign (re, m->dim, xe, q);
       if (sign == CELL_BAD)
         status = LAC_ERRMSG (LAC_ESING, "cell %zu (tag %zu, %s) is degenerate "
-                             "or tangled: det J vanishes or changes sign",
-                             c, m->cell_tag[c], re->name);
+                             "or tangled: det J vanishes or changes sign%s",
+                             c, m->cell_tag[c], re->name,
+                             re->shape == LAC_SHAPE_HEX ? hex_hint : "");
       else if (sign == CELL_INVERTED && !flip)
         status = LAC_ERRMSG (LAC_EINVAL, "cell %zu (tag %zu, %s) is inverted "
                              "(det J < 0): its nodes turn clockwise; reverse "

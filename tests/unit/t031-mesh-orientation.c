@@ -1,5 +1,6 @@
 /* t031: inverted cells are flipped (facet groups follow) or rejected with
- * the cell tag; tangled cells are rejected  [LAC §2] */
+ * the cell tag; tangled cells are rejected, hexahedra with a word on
+ * how to mesh them  [LAC §2] */
 #include <stdio.h>
 #include <string.h>
 
@@ -160,6 +161,26 @@ main (void)
                 "bow tie rejected");
   check_message ("tag 77", "bow tie message names the tag");
   lac_mesh_free (m);
+  /* a tangled hexahedron: the message says how to mesh in hexahedra */
+  {
+    static const double x[24] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
+    m = lac_mesh_alloc (3, 8, 1, 8);
+    memcpy (m->x, x, sizeof x);
+    m->type[0] = LAC_HEX8;
+    m->ptr[1] = 8;
+    for (int a = 0; a < 8; a++)
+      m->conn[a] = a;
+    m->conn[6] = 7;                       /* top face a bow tie */
+    m->conn[7] = 6;
+    m->cell_tag[0] = 78;
+    check_status (lac_mesh_check_orientation (m, 1, &nflip), LAC_ESING,
+                  "tangled hex8 rejected");
+    check_message ("tag 78", "tangled hex8 message names the tag");
+    check_message ("transfinite", "tangled hex8 message says how to mesh");
+    check_message ("chapter 08", "tangled hex8 message names the chapter");
+    lac_mesh_free (m);
+  }
   /* a degenerate cell (two nodes at one place) too */
   m = one_quad (0);
   m->x[4] = m->x[6] = 0;
