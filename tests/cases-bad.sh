@@ -112,6 +112,53 @@ rbad level12 "[mesh] file = 'box.geo'|level = 12|an estimated 6.2e+08 nodes|--ma
   run tests/bad/box.scene $KB --set level=12
 rbad max-memory "level = 2|an estimated|more than the limit of 0.1 GB" \
   run tests/bad/box.scene $KB --set level=2 --max-memory 100M
+rbad huge-3d "[mesh] file = 'taylor3d.geo'|an estimated 1.6e+10 nodes|--max-memory" \
+  run chapters/08-experiments/taylor3d.scene $KB --set mesh.numbers=n=2000
+rbad large-petsc "--strategy petsc|large-deformation loop|dense, schur or saddle" \
+  run chapters/08-experiments/ring.scene $KB --strategy petsc
+
+# The estimate against the nodes gmsh makes (src/io/lac_mesh_gmsh_estimate.c):
+# within a factor of 2 for a transfinite hexahedral block (hex8, hex20,
+# hex27), an unstructured tetrahedral cube (tet4, tet10), and, estimate
+# only (too large to mesh here), the fine ring on block (hex20: 55,610
+# nodes) and the 1M-dof 3D Taylor patch test (hex8, n = 55: 56^3 + 55^3 =
+# 341,991 nodes), whose estimate with petsc stays below 8 GB and below
+# that of a Cholesky factor.
+est_line () { "$LAC" run "$@" --max-memory 100M --quiet --no-output 2>&1; }
+est_nodes () { est_line "$@" | sed -n 's/.*an estimated \([0-9.e+]*\) nodes.*/\1/p'; }
+est_gb () { est_line "$@" | sed -n 's/.*need about \([0-9.e+]*\) GB.*/\1/p'; }
+real_nodes () {
+  "$LAC" run "$@" --no-output 2>&1 | sed -n 's/.*\] mesh *\([0-9]*\) nodes.*/\1/p'
+}
+# within2 NAME ESTIMATE REAL
+within2 () {
+  if [ -n "$2" ] && [ -n "$3" ] \
+     && awk -v e="$2" -v r="$3" 'BEGIN { exit !(e <= 2 * r && r <= 2 * e) }'; then
+    rb_ok "estimate-$1"
+  else
+    rb_fail "estimate-$1" "estimated '$2' nodes, gmsh made '$3'"
+  fi
+}
+T3=chapters/08-experiments/taylor3d.scene
+for el in hex8 hex20 hex27; do
+  within2 "taylor3d-$el" "$(est_nodes $T3 --set mesh.numbers=n=8 --set element=$el)" \
+    "$(real_nodes $T3 --set mesh.numbers=n=8 --set element=$el)"
+done
+for el in tet4 tet10; do
+  within2 "tets-$el" "$(est_nodes tests/bad/cube-tets.scene --set level=1 --set element=$el)" \
+    "$(real_nodes tests/bad/cube-tets.scene --set level=1 --set element=$el)"
+done
+within2 ring-level1 "$(est_nodes chapters/08-experiments/ring.scene --set level=1)" 55610
+within2 taylor3d-n55 "$(est_nodes $T3 --set mesh.numbers=n=55 --strategy petsc)" 341991
+gp=$(est_gb $T3 --set mesh.numbers=n=55 --strategy petsc)
+gc=$(est_gb $T3 --set mesh.numbers=n=55 --strategy schur)
+if [ -n "$gp" ] && [ -n "$gc" ] \
+   && awk -v p="$gp" -v c="$gc" 'BEGIN { exit !(p < 8 && p < c) }'; then
+  rb_ok estimate-petsc-memory
+else
+  rb_fail estimate-petsc-memory "petsc '$gp' GB, Cholesky '$gc' GB"
+fi
+
 "$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
 rc=$?
 if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M or 2e9, got 12Q" "$RB/mm-usage.err"; then

@@ -1,33 +1,93 @@
 /* lac_mesh_gmsh_estimate.c -- the size of a .geo mesh before it is made
  *                                                 (lac_mesh_gmsh_estimate.h)
  *
- *   h      = total length of the 1D segments / their number;
- *   nodes  = c_d * sum over the entities of dimension d of
- *            measure(bounding box) / h^d, times 2^d for order 2,
- *            c_2 = 2/sqrt(3) (vertices per h^2 of equilateral triangles),
- *            c_3 = 1.4 (vertices per h^3 of a Delaunay tetrahedral mesh);
- *   bytes  = 1e8 + 4e3 nodes (2D), 1e8 + 1.2e3 k nodes^(4/3) (3D, k = 2 for
- *            order 2): the process itself, then lac's measured peaks.
+ * Where the counts come from.  gmsh 4.8's C API sets transfinite,
+ * recombine and extrusion constraints but reads none of them back (there
+ * is no getTransfinite...), and the unrolled .geo gmsh can write keeps
+ * the transfinite constraints but drops the extrusion layers.  lac parses
+ * neither: it meshes the curves, which costs little, and gmsh's 1D mesh
+ * already obeys every constraint a curve has -- a transfinite curve of
+ * N nodes has N - 1 segments, a curve swept by an extrusion with Layers
+ * has one segment per layer.  Per top-dimensional entity e, with C(e) its
+ * boundary curves, s_c segments and mean segment length h_c on curve c:
+ *
+ *   structured (the scene's cells are quadrilaterals or hexahedra: gmsh
+ *   makes an all-hexahedral mesh only of a transfinite or extruded
+ *   volume, lac asking no 3D recombination; a surface needs >= 3 curves)
+ *       nodes(e) = prod_c (s_c + 1)^(d/|C|)
+ *   exact for a transfinite quadrilateral or a hexahedral block (each of
+ *   the d directions has |C|/d curves of equal counts), and for a
+ *   quadrilateral extruded in layers; for order 2 times f(s)/(s+1)^d, s
+ *   the geometric mean of the s_c, f = (2s+1)^d (quad9, hex27),
+ *   (s+1)(3s+1) (quad8), (s+1)^2 (4s+1) (hex20): edge, face, centre
+ *   nodes of the s^d cells;
+ *
+ *   unstructured (triangles, tetrahedra: the Delaunay bound)
+ *       nodes(e) = c_d * measure(e) / h^d, h = exp(mean of log h_c),
+ *   c_2 = 2/sqrt(3) (1 for recombined quadrangles), c_3 = 1.4 (vertices per
+ *   h^3 of a Delaunay tetrahedral mesh), times 2^d for order 2; the
+ *   measure is the entity's area / volume for the OpenCASCADE kernel
+ *   (gmshModelOccGetMass), the measure of its bounding box otherwise.
+ *
+ * Memory of the run on n = dim * nodes dofs, with r nonzeros per row of K
+ * (by cell: the nodes a node shares a cell with, times dim; hex8 81),
+ *   bytes = 1e8 + 24 r n (K and its assembly)
+ *         + Cholesky  (cholmod; schur, augmented, split):
+ *              1.5e3 n (2D), 277 k n^(4/3) (3D; k = 2 for order 2),
+ *         + LU (umfpack; saddle): twice that,
+ *         + dense LU: 8 n^2,
+ *         + iterative (petsc): 36 r n + 200 n (PETSc's copy of K, the
+ *              multigrid hierarchy, K + C W C^T, vectors).
+ * The constants: lac run's peaks on tri6 and hex meshes (Cholesky, 3D:
+ * 1.2 kB x nodes^(4/3) per node^(4/3) of hex8), and the 5.1 GB summed
+ * over 2 processes of the 1M-dof 3D Taylor patch test with petsc.
  */
 #include "io/lac_mesh_gmsh_estimate.h"
 
 #include <gmshc.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "fem/lac_spaces.h"
 #include "io/lac_mesh_gmsh_cells.h"
 
-/* Number and total length of the segments of the 1D mesh. */
+/* The 1D mesh of one curve. */
+typedef struct
+{
+  int tag;
+  double seg, len;               /* segments, their total length          */
+} curve;
+
+/* The cells asked for: quadrilateral / hexahedral, order, serendipity. */
+typedef struct
+{
+  int quad, order, serendipity;
+} cells;
+
 static int
-segments (lac_gmsh_reader *R, double *nseg, double *len)
+by_tag (const void *a, const void *b)
+{
+  int x = ((const curve *) a)->tag, y = ((const curve *) b)->tag;
+  return (x > y) - (x < y);
+}
+
+static int
+int_cmp (const void *a, const void *b)
+{
+  int x = *(const int *) a, y = *(const int *) b;
+  return (x > y) - (x < y);
+}
+
+/* Segments and length of the 1D mesh of curve c (nodes read into R). */
+static int
+measure_curve (lac_gmsh_reader *R, curve *c)
 {
   lac_gmsh_elements E;
-  int status = lac_gmsh_read_nodes (R);
-  *nseg = *len = 0;
-  if (!status)
-    status = lac_gmsh_get_elements (R, &E, 1, -1);
+  int status = lac_gmsh_get_elements (R, &E, 1, c->tag);
+  c->seg = c->len = 0;
   for (size_t i = 0; !status && i < E.ntypes; i++)
     {
       size_t ne = E.etags_n[i], nn = ne ? E.ntags_n[i] / ne : 0;
@@ -40,77 +100,236 @@ segments (lac_gmsh_reader *R, double *nseg, double *len)
             continue;
           for (int k = 0; k < 3; k++)
             d2 += pow (R->coord[3 * a + k] - R->coord[3 * b + k], 2);
-          *len += sqrt (d2);
-          *nseg += 1;
+          c->len += sqrt (d2);
+          c->seg += 1;
         }
     }
   if (!status)
     lac_gmsh_elements_free (&E);
+  return status;
+}
+
+/* Every curve of the model with its 1D mesh, sorted by tag. */
+static int
+read_curves (lac_gmsh_reader *R, curve **out, size_t *n)
+{
+  int *dimtags = NULL, ierr = 0, status;
+  size_t nd = 0;
+  *out = NULL;
+  *n = 0;
+  if ((status = lac_gmsh_read_nodes (R)))
+    return status;
+  gmshModelGetEntities (&dimtags, &nd, 1, &ierr);
+  if (ierr)
+    status = lac_gmsh_fail (R, LAC_EDEP, "cannot get the curves");
+  else if (nd && !(*out = lac_malloc (nd / 2 * sizeof **out)))
+    status = lac_error_set (LAC_ENOMEM, "lac_mesh_read", "%zu curves",
+                            nd / 2);
+  for (size_t e = 0; !status && e + 1 < nd; e += 2)
+    {
+      (*out)[*n].tag = dimtags[e + 1];
+      status = measure_curve (R, &(*out)[(*n)++]);
+    }
+  gmshFree (dimtags);
   lac_free (R->tag), lac_free (R->index), lac_free (R->coord);
   R->tag = R->index = NULL;
   R->coord = NULL;
   R->nall = 0;
-  return status;
+  if (status)
+    {
+      lac_free (*out);
+      *out = NULL;
+      return status;
+    }
+  if (*n)
+    qsort (*out, *n, sizeof **out, by_tag);
+  return LAC_SUCCESS;
 }
 
-/* Sum over the entities of dimension dim of the measure of their
- * bounding boxes (the dim largest extents multiplied). */
+/* The distinct curves bounding entity (dim, tag): *tags (gmshFree), *n. */
 static int
-box_measure (lac_gmsh_reader *R, int dim, double *measure)
+entity_curves (const lac_gmsh_reader *R, int dim, int tag, int **tags,
+               size_t *n)
 {
-  int *dimtags = NULL, ierr = 0;
-  size_t n = 0;
-  *measure = 0;
-  gmshModelGetEntities (&dimtags, &n, dim, &ierr);
+  int one[2] = { dim, tag }, *b = NULL, *c = NULL, ierr = 0;
+  size_t nb = 0, nc = 0, k = 0;
+  gmshModelGetBoundary (one, 2, &b, &nb, 0, 0, 0, &ierr);
+  if (!ierr && dim == 3)
+    gmshModelGetBoundary (b, nb, &c, &nc, 0, 0, 0, &ierr);
+  if (dim != 3)
+    c = b, nc = nb, b = NULL;
+  gmshFree (b);
   if (ierr)
-    return lac_gmsh_fail (R, LAC_EDEP, "cannot get the entities");
-  for (size_t e = 0; e + 1 < n; e += 2)
     {
-      double lo[3], hi[3], ext[3], m = 1;
-      gmshModelGetBoundingBox (dim, dimtags[e + 1], &lo[0], &lo[1], &lo[2],
-                               &hi[0], &hi[1], &hi[2], &ierr);
-      if (ierr)
-        continue;
-      for (int k = 0; k < 3; k++)
-        ext[k] = isfinite (hi[k] - lo[k]) && hi[k] > lo[k] ? hi[k] - lo[k] : 0;
-      for (int i = 0; i < 3; i++)              /* largest first */
-        for (int j = i + 1; j < 3; j++)
-          if (ext[j] > ext[i])
-            {
-              double t = ext[i];
-              ext[i] = ext[j];
-              ext[j] = t;
-            }
-      for (int k = 0; k < dim; k++)
-        m *= ext[k];
-      *measure += m;
+      gmshFree (c);
+      return lac_gmsh_fail (R, LAC_EDEP, "cannot get the boundary curves");
     }
-  gmshFree (dimtags);
+  for (size_t i = 0; i + 1 < nc; i += 2)      /* keep the tags only */
+    c[i / 2] = abs (c[i + 1]);
+  nc /= 2;
+  if (nc)
+    qsort (c, nc, sizeof *c, int_cmp);
+  for (size_t i = 0; i < nc; i++)
+    if (k == 0 || c[i] != c[k - 1])
+      c[k++] = c[i];
+  *tags = c;
+  *n = k;
   return LAC_SUCCESS;
+}
+
+/* Area / volume of the entity: OpenCASCADE's, or its bounding box's
+ * (the dim largest extents multiplied). */
+static double
+entity_measure (int dim, int tag)
+{
+  double lo[3], hi[3], ext[3], m = 1;
+  int ierr = 0;
+  gmshModelOccGetMass (dim, tag, &m, &ierr);
+  if (!ierr && m > 0 && isfinite (m))
+    return m;
+  ierr = 0;
+  gmshModelGetBoundingBox (dim, tag, &lo[0], &lo[1], &lo[2], &hi[0],
+                           &hi[1], &hi[2], &ierr);
+  if (ierr)
+    return 0;
+  for (int k = 0; k < 3; k++)
+    ext[k] = isfinite (hi[k] - lo[k]) && hi[k] > lo[k] ? hi[k] - lo[k] : 0;
+  for (int i = 0; i < 3; i++)                  /* largest first */
+    for (int j = i + 1; j < 3; j++)
+      if (ext[j] > ext[i])
+        {
+          double t = ext[i];
+          ext[i] = ext[j];
+          ext[j] = t;
+        }
+  m = 1;
+  for (int k = 0; k < dim; k++)
+    m *= ext[k];
+  return m;
+}
+
+/* Nodes of entity (dim, tag) by the rules of the header comment. */
+static double
+entity_nodes (const curve *cv, size_t ncv, const int *tags, size_t n,
+              int dim, int tag, cells k)
+{
+  double lognodes = 0, logs = 0, logh = 0, s, f, m;
+  size_t used = 0;
+  for (size_t i = 0; i < n; i++)
+    {
+      curve key = { tags[i], 0, 0 };
+      const curve *c = bsearch (&key, cv, ncv, sizeof *cv, by_tag);
+      if (!c || c->seg < 1 || c->len <= 0)
+        continue;
+      lognodes += log (c->seg + 1);
+      logs += log (c->seg);
+      logh += log (c->len / c->seg);
+      used++;
+    }
+  if (used == 0)
+    return 0;
+  if (k.quad && (dim == 3 || used >= 3))
+    {
+      s = exp (logs / (double) used);
+      f = k.order < 2 ? pow (s + 1, dim)
+          : !k.serendipity ? pow (2 * s + 1, dim)
+          : dim == 2 ? (s + 1) * (3 * s + 1) : pow (s + 1, 2) * (4 * s + 1);
+      return exp (lognodes * dim / (double) used) * f / pow (s + 1, dim);
+    }
+  m = entity_measure (dim, tag);
+  f = k.order < 2 ? 1 : k.quad ? (k.serendipity ? 3 : 4) : pow (2, dim);
+  return (dim == 3 ? 1.4 : k.quad ? 1 : 2 / sqrt (3)) * m
+         / exp (logh / (double) used * dim) * f;
+}
+
+/* The cells of the scene (opts->element), else of the mesh options. */
+static cells
+cells_asked (const lac_mesh_opts *o)
+{
+  const lac_refelem *e = o->element >= 0 && o->element < LAC_NELEM_TYPES
+                         ? lac_refelem_get ((lac_elem_type) o->element)
+                         : NULL;
+  cells k = { o->recombine, o->order == 2 ? 2 : 1, o->serendipity };
+  if (e && e->dim >= 2)
+    {
+      k.quad = e->shape == LAC_SHAPE_QUAD || e->shape == LAC_SHAPE_HEX;
+      k.order = e->order;
+      k.serendipity = e->nnodes == 8 || e->nnodes == 20;
+    }
+  return k;
+}
+
+/* Nonzeros per row of K: the nodes a node shares a cell with, averaged
+ * over the vertex, edge, face and centre nodes, times dim. */
+static double
+row_nonzeros (int dim, cells k)
+{
+  static const double r[2][2][3] = {     /* [3D][quad][1, 2, serendipity] */
+    { { 14, 23, 23 }, { 18, 32, 31 } },
+    { { 44, 90, 90 }, { 81, 192, 175 } } };
+  return r[dim == 3][k.quad != 0][k.order < 2 ? 0 : k.serendipity ? 2 : 1];
+}
+
+/* lac_gmsh_run_bytes: see lac_mesh_gmsh_estimate.h. */
+double
+lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o)
+{
+  cells k = cells_asked (o);
+  double n = dim * nodes, r = row_nonzeros (dim, k), factor;
+  factor = dim == 2 ? 1.5e3 * n
+           : 277 * (k.order == 2 ? 2 : 1) * pow (n, 4.0 / 3);
+  switch (o->solve)
+    {
+    case LAC_MESH_SOLVE_LU:
+      factor *= 2;
+      break;
+    case LAC_MESH_SOLVE_DENSE:
+      factor = 8 * n * n;
+      break;
+    case LAC_MESH_SOLVE_ITERATIVE:
+      factor = 36 * r * n + 200 * n;
+      break;
+    default:
+      break;
+    }
+  return 1e8 + 24 * r * n + factor;
 }
 
 /* lac_gmsh_estimate: see lac_mesh_gmsh_estimate.h. */
 int
 lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes, double *bytes)
 {
-  double nseg, len, measure, h;
-  int ierr = 0, status, order2 = R->opts->order == 2;
+  curve *cv = NULL;
+  int *dimtags = NULL, ierr = 0, status;
+  size_t ncv = 0, nd = 0;
+  cells k = cells_asked (R->opts);
   *nodes = *bytes = 0;
   gmshModelMeshGenerate (1, &ierr);
   if (ierr)
     return lac_gmsh_fail (R, LAC_EDEP, "meshing the curves failed");
-  if ((status = segments (R, &nseg, &len))
-      || (status = box_measure (R, dim, &measure)))
+  if ((status = read_curves (R, &cv, &ncv)))
     return status;
-  if (nseg < 1 || len <= 0)
-    return LAC_SUCCESS;
-  h = len / nseg;
-  *nodes = (dim == 2 ? 2 / sqrt (3) : 1.4) * measure / pow (h, dim)
-           * (order2 ? pow (2, dim) : 1);
-  *bytes = 1e8 + (dim == 2 ? 4e3 * *nodes
-                  : 1.2e3 * (order2 ? 2 : 1) * pow (*nodes, 4.0 / 3));
-  return LAC_SUCCESS;
+  gmshModelGetEntities (&dimtags, &nd, dim, &ierr);
+  if (ierr)
+    status = lac_gmsh_fail (R, LAC_EDEP, "cannot get the entities");
+  for (size_t e = 0; !status && e + 1 < nd; e += 2)
+    {
+      int *tags = NULL;
+      size_t n = 0;
+      if (!(status = entity_curves (R, dim, dimtags[e + 1], &tags, &n)))
+        *nodes += entity_nodes (cv, ncv, tags, n, dim, dimtags[e + 1], k);
+      gmshFree (tags);
+    }
+  gmshFree (dimtags);
+  lac_free (cv);
+  if (!status && *nodes > 0)
+    *bytes = lac_gmsh_run_bytes (*nodes, dim, R->opts);
+  return status;
 }
+
+static const char *const solve_names[] = {
+  "a sparse Cholesky factor", "a sparse LU factor", "a dense LU factor",
+  "an iterative solve" };
 
 /* lac_gmsh_estimate_check: see lac_mesh_gmsh_estimate.h. */
 int
@@ -119,11 +338,13 @@ lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim)
   const lac_mesh_opts *o = R->opts;
   double nodes, bytes;
   int status = lac_gmsh_estimate (R, dim, &nodes, &bytes);
+  int s = o->solve >= 0 && o->solve <= LAC_MESH_SOLVE_ITERATIVE ? o->solve
+          : 0;
   if (status || o->max_memory <= 0 || bytes <= o->max_memory)
     return status;
   return READ_ERR (LAC_EINVAL, "'%s': level = %d, size = %g: an estimated "
-                   "%.2g nodes, which need about %.3g GB of memory, more "
-                   "than the limit of %.3g GB (--max-memory)", R->path,
+                   "%.2g nodes, which need about %.3g GB of memory with %s, "
+                   "more than the limit of %.3g GB (--max-memory)", R->path,
                    o->level, o->size > 0 ? o->size : 1, nodes, bytes / 1e9,
-                   o->max_memory / 1e9);
+                   solve_names[s], o->max_memory / 1e9);
 }

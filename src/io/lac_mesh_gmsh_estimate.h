@@ -4,18 +4,20 @@
  * `level = 12` asks a .geo of lac's chapters for 2^12 times more cells per
  * edge than level 0: billions of nodes, which gmsh would try to build until
  * it ran out of memory.  Meshing only the curves costs little (the number
- * of 1D nodes grows like 2^level, not 2^(d*level)) and tells the mesh
- * size h: the mean length of the curve segments.  From the measure of the
- * bounding box of each surface (2D) or volume (3D), h and the element
- * order, lac_gmsh_estimate gives the nodes to expect and the memory a
- * run of lac needs for them (measured with lac run on tri6 and hex meshes:
- * about 4 kB per node in 2D, 1.2 kB x nodes^(4/3) in 3D, twice that for
- * quadratic 3D cells, where the Cholesky factor dominates).  On the
- * scenes of the chapters at levels 0 to 2 the nodes are within 0.35 to 6
- * times those gmsh makes: low for coarse meshes (the boundary nodes are
- * not counted), near 1 for the structured ones as they grow, high for
- * curved shells (whose bounding box is much larger than the shell).  It
- * tells 10^5 from 10^9, which is what the limit needs.
+ * of 1D nodes grows like 2^level, not 2^(d*level)), and the 1D mesh obeys
+ * every transfinite and extrusion constraint of the .geo.  From it,
+ * lac_gmsh_estimate counts the nodes of each surface (2D) or volume (3D):
+ * exactly for structured quadrilaterals and hexahedra (transfinite blocks,
+ * extrusions in layers: the product of the curves' node counts), by the
+ * Delaunay bound (measure / h^d, h the curves' mesh size) for triangles
+ * and tetrahedra; then the memory a run of lac needs for them, by how it
+ * will solve (lac_mesh_solve: a Cholesky or LU factor with its fill, a
+ * dense matrix, or an iterative solve: the matrix, a multigrid hierarchy
+ * and a few vectors) and by the cells (dofs per node, nonzeros per row).
+ * Against the meshes gmsh makes: exact for the structured hexahedra of the
+ * chapters (the ring on block, the 3D Taylor patch test), within 1.5 for
+ * tetrahedra (the spheres); the memory within a factor of about 2 of what
+ * lac run measures.  The formulas are in lac_mesh_gmsh_estimate.c.
  */
 #ifndef LAC_MESH_GMSH_ESTIMATE_H
 #define LAC_MESH_GMSH_ESTIMATE_H
@@ -24,12 +26,18 @@
 
 /* Mesh the curves of the model (dimension dim) and estimate the nodes and
  * the bytes of a run on the mesh of dimension dim; 0 and 0 when the
- * model has no curves to measure h on. */
+ * model has no curves to count on. */
 int lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes,
                        double *bytes);
 
-/* lac_gmsh_estimate, and an error (LAC_EINVAL, naming level, size, the
- * nodes and the memory) when the bytes exceed R->opts->max_memory. */
+/* Bytes a run of lac needs on a mesh of `nodes` nodes of dimension dim,
+ * with o->element's cells (or o->recombine, o->order, o->serendipity)
+ * solved as o->solve says. */
+double lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o);
+
+/* lac_gmsh_estimate, and an error (LAC_EINVAL, naming the file, level,
+ * size, the nodes, the memory and how the run solves) when the bytes
+ * exceed R->opts->max_memory. */
 int lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim);
 
 #endif /* LAC_MESH_GMSH_ESTIMATE_H */

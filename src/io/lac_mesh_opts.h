@@ -10,6 +10,17 @@
 
 #define LAC_MESH_MAX_NUMBERS 16
 
+/* How the run will solve, for the memory part of a .geo's size estimate
+ * (lac_mesh_gmsh_estimate.h): a sparse Cholesky factor (cholmod, and the
+ * strategies schur, augmented, split), a sparse LU (umfpack, saddle),
+ * a dense LU, or no factorization (petsc: a sparse matrix, a multigrid
+ * hierarchy and a few vectors). */
+typedef enum
+{
+  LAC_MESH_SOLVE_CHOLESKY, LAC_MESH_SOLVE_LU, LAC_MESH_SOLVE_DENSE,
+  LAC_MESH_SOLVE_ITERATIVE
+} lac_mesh_solve;
+
 /* Options for reading or meshing (.geo) through gmsh. */
 typedef struct lac_mesh_opts
 {
@@ -26,6 +37,10 @@ typedef struct lac_mesh_opts
                           may need; 0: lac_mesh_default_memory ()        */
   double max_seconds;  /* wall-clock and CPU seconds for gmsh; 0:
                           LAC_MESH_CHILD_SECONDS                         */
+  int element;         /* the scene's cells (lac_elem_type of a 2D or 3D
+                          cell) for the estimate; anything else: from
+                          recombine, order and serendipity             */
+  int solve;           /* lac_mesh_solve, for the estimate             */
 } lac_mesh_opts;
 
 #endif /* LAC_MESH_OPTS_H */

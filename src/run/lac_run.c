@@ -14,6 +14,7 @@
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "io/lac_scene_query.h"
 #include "run/lac_run_mesh.h"
 #include "run/lac_run_output.h"
 #include "solve/lac_petsc_env.h"
@@ -42,11 +43,37 @@ large (const lac_run *r)
   return r->scene->scene.large_deformation;
 }
 
+/* The large-deformation loop solves with the dense, schur or saddle
+ * strategy, chosen by [scene] solver (lac_run_nonlinear.c); petsc, asked
+ * for on the command line or in [contact], is refused, not replaced. */
+static int
+check_large_strategy (const lac_run *r)
+{
+  const lac_scene *sc = r->scene;
+  static const char why[] = "the large-deformation loop ([scene] "
+    "large_deformation = yes) solves with the dense, schur or saddle "
+    "strategy, chosen by [scene] solver = dense, cholmod or umfpack; "
+    "petsc is for small strain";
+  if (!large (r))
+    return LAC_SUCCESS;
+  if (r->opts.strategy == LAC_STRATEGY_PETSC)
+    LAC_ERROR (LAC_EINVAL, "--strategy petsc: %s", why);
+  if (r->opts.strategy == LAC_STRATEGY_AUTO && sc->ncontact
+      && sc->contact[0].strategy == LAC_STRATEGY_PETSC)
+    return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
+                            "petsc: %s", why);
+  return LAC_SUCCESS;
+}
+
 static int
 stage_mesh (lac_run *r)
 {
-  return lac_run_mesh (r->scene, r->model, r->opts.max_memory, &r->mesh,
-                       r->progress, sizeof r->progress);
+  int status = check_large_strategy (r);
+  if (status)
+    return status;
+  return lac_run_mesh (r->scene, r->model, r->opts.strategy,
+                       r->opts.max_memory, &r->mesh, r->progress,
+                       sizeof r->progress);
 }
 
 static int

@@ -10,6 +10,7 @@
 #include "io/lac_mesh_gmsh.h"
 #include "io/lac_scene_query.h"
 #include "run/lac_run_scene.h"
+#include "solve/lac_strategy.h"
 
 /* ---- checks against the scene ----------------------------------------- */
 
@@ -141,9 +142,30 @@ geo_transfinite (const char *path)
   return found;
 }
 
+/* How the solve stage will solve (for the memory a .geo's mesh needs):
+ * the strategy of the active set (strategy, else the scene's), the
+ * solver of a run without contact, of the large-deformation loop. */
+static lac_mesh_solve
+solve_kind (const lac_scene *sc, int strategy)
+{
+  int want = strategy ? strategy
+             : sc->ncontact ? sc->contact[0].strategy : LAC_STRATEGY_AUTO;
+  int solver = sc->scene.solver;
+  if (want == LAC_STRATEGY_PETSC && !sc->scene.large_deformation)
+    return LAC_MESH_SOLVE_ITERATIVE;
+  if (solver == LAC_SOLVER_DENSE || want == LAC_STRATEGY_DENSE)
+    return LAC_MESH_SOLVE_DENSE;
+  if (sc->scene.large_deformation || !sc->ncontact)
+    return solver == LAC_SOLVER_CHOLMOD ? LAC_MESH_SOLVE_CHOLESKY
+                                        : LAC_MESH_SOLVE_LU;
+  return want == LAC_STRATEGY_SADDLE ? LAC_MESH_SOLVE_LU
+                                     : LAC_MESH_SOLVE_CHOLESKY;
+}
+
 int
-lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
-              lac_mesh **mesh, char *progress, size_t size)
+lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
+              double max_memory, lac_mesh **mesh, char *progress,
+              size_t size)
 {
   lac_mesh_opts o;
   char msg[700];
@@ -159,6 +181,8 @@ lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
   o.numbers = sc->mesh.numbers;
   o.flip_inverted = sc->mesh.inverted == 0;
   o.max_memory = max_memory;
+  o.element = sc->scene.element;
+  o.solve = solve_kind (sc, strategy);
   size_t gend[LAC_SCENE_MAX_MESHES];
   *mesh = NULL;
   for (int k = 0; k < sc->mesh.nfiles; k++)

@@ -16,8 +16,11 @@
 
 /* *mesh (owned by the caller, lac_mesh_free); a progress line in
  * progress[size].  max_memory: bytes the mesh may need (0: the default of
- * io/lac_mesh_opts.h). */
-int lac_run_mesh (const lac_scene *sc, lac_model model, double max_memory,
-                  lac_mesh **mesh, char *progress, size_t size);
+ * io/lac_mesh_opts.h), checked against a .geo's estimate made for the
+ * scene's cells and the way the run will solve: strategy (lac_strategy_kind,
+ * LAC_STRATEGY_AUTO: the scene's), the scene's solver. */
+int lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
+                  double max_memory, lac_mesh **mesh, char *progress,
+                  size_t size);
 
 #endif /* LAC_RUN_MESH_H */
