@@ -49,9 +49,9 @@
 #
 # --from CSV: no runs, the table and charts from a CSV of this script
 # (e.g. the rows of two runs put together).
-# Environment: MAX_MEMORY (figrun's --max-memory, e.g. 64G: the estimate
-# of a .geo's mesh refuses the 3D spheres at level 2 under the default,
-# 80 % of the machine, though they run in a few GB); STRATEGIES ("dense schur augmented split saddle"), tried
+# Environment: MAX_MEMORY (figrun's --max-memory, default 80 % of the
+# machine: the limit of the estimate that guards a .geo's mesh; the 3D
+# spheres at level 2 are estimated at 2-6 GB); STRATEGIES ("dense schur augmented split saddle"), tried
 # after auto; DENSE_MAX (6000; 1500 with --quick) dofs for dense;
 # SADDLE_MAX3D (40000) dofs for saddle in 3D; REPEAT (3; 1 with --quick)
 # runs of each case under a second; CASES to run a subset

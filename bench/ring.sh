@@ -13,10 +13,9 @@
 # fine -19.060 mm), and the histogram of Newton iterations per load step
 # after the first contact step.  The runs go to $OUT/ring-ELEMENT-LEVEL/
 # (OUT = BUILD_DIR/bench-ring), with their progress lines in .err.  The
-# fine hex20 run takes about 20 minutes on 2 cores.  --max-memory 64G:
-# the estimate that guards a .geo mesh (io/lac_mesh_gmsh_estimate.c:
-# Delaunay tetrahedra in the entities' bounding boxes) puts the fine
-# ring's 55,610 hex20 nodes at 3.6e5 and 60 GB, and would refuse it.
+# fine hex20 run takes about 20 minutes on 2 cores (the estimate that
+# guards a .geo mesh, io/lac_mesh_gmsh_estimate.c, counts its 55,610
+# hex20 nodes from the transfinite and extruded curves: 5.8e4, 6.2 GB).
 B=${1:-build}
 EL=${2:-hex20}
 LEVELS=${3:-"0 1"}
@@ -43,7 +42,7 @@ for L in $LEVELS; do
   D=$OUT/ring-$EL-$L
   t0=$(date +%s.%N)
   if ! "$LAC" run chapters/08-experiments/ring.scene --set element="$EL" \
-       --set level="$L" --max-memory 64G --out "$D" --timings \
+       --set level="$L" --out "$D" --timings \
        > "$D.sum" 2> "$D.err"; then
     echo "ring.sh: the run $EL level $L failed: $(tail -1 "$D.err")" >&2
     exit 1
