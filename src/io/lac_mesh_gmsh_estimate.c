@@ -11,18 +11,22 @@
  * has one segment per layer.  Per top-dimensional entity e, with C(e) its
  * boundary curves, s_c segments and mean segment length h_c on curve c:
  *
- *   structured (the scene's cells are quadrilaterals or hexahedra: gmsh
+ *   counted (the scene's cells are quadrilaterals or hexahedra: gmsh
  *   makes an all-hexahedral mesh only of a transfinite or extruded
- *   volume, lac asking no 3D recombination; a surface needs >= 3 curves)
+ *   volume, lac asking no 3D recombination, and a surface has >= 3
+ *   curves; or the entity is a topological quadrilateral, 4 curves, or
+ *   hexahedron, 6 faces and 12 curves, whatever the cells)
  *       nodes(e) = prod_c (s_c + 1)^(d/|C|)
  *   exact for a transfinite quadrilateral or a hexahedral block (each of
  *   the d directions has |C|/d curves of equal counts), and for a
  *   quadrilateral extruded in layers; for order 2 times f(s)/(s+1)^d, s
- *   the geometric mean of the s_c, f = (2s+1)^d (quad9, hex27),
+ *   the geometric mean of the s_c, f = (2s+1)^d (quad9, hex27, and tri6,
+ *   tet10 on a transfinite block: its diagonals' nodes included),
  *   (s+1)(3s+1) (quad8), (s+1)^2 (4s+1) (hex20): edge, face, centre
- *   nodes of the s^d cells;
+ *   nodes of the s^d cells.  An unstructured mesh of such a block has
+ *   about as many nodes (within the 2/sqrt(3) and 1.4 below);
  *
- *   unstructured (triangles, tetrahedra: the Delaunay bound)
+ *   otherwise (triangles, tetrahedra: the Delaunay bound)
  *       nodes(e) = c_d * measure(e) / h^d, h = exp(mean of log h_c),
  *   c_2 = 2/sqrt(3) (1 for recombined quadrangles), c_3 = 1.4 (vertices per
  *   h^3 of a Delaunay tetrahedral mesh), times 2^d for order 2; the
@@ -146,16 +150,18 @@ read_curves (lac_gmsh_reader *R, curve **out, size_t *n)
   return LAC_SUCCESS;
 }
 
-/* The distinct curves bounding entity (dim, tag): *tags (gmshFree), *n. */
+/* The distinct curves bounding entity (dim, tag): *tags (gmshFree), *n;
+ * *nfaces: the surfaces bounding a volume (0 for a surface). */
 static int
 entity_curves (const lac_gmsh_reader *R, int dim, int tag, int **tags,
-               size_t *n)
+               size_t *n, size_t *nfaces)
 {
   int one[2] = { dim, tag }, *b = NULL, *c = NULL, ierr = 0;
   size_t nb = 0, nc = 0, k = 0;
   gmshModelGetBoundary (one, 2, &b, &nb, 0, 0, 0, &ierr);
   if (!ierr && dim == 3)
     gmshModelGetBoundary (b, nb, &c, &nc, 0, 0, 0, &ierr);
+  *nfaces = dim == 3 ? nb / 2 : 0;
   if (dim != 3)
     c = b, nc = nb, b = NULL;
   gmshFree (b);
@@ -211,7 +217,7 @@ entity_measure (int dim, int tag)
 /* Nodes of entity (dim, tag) by the rules of the header comment. */
 static double
 entity_nodes (const curve *cv, size_t ncv, const int *tags, size_t n,
-              int dim, int tag, cells k)
+              size_t nfaces, int dim, int tag, cells k)
 {
   double lognodes = 0, logs = 0, logh = 0, s, f, m;
   size_t used = 0;
@@ -228,7 +234,8 @@ entity_nodes (const curve *cv, size_t ncv, const int *tags, size_t n,
     }
   if (used == 0)
     return 0;
-  if (k.quad && (dim == 3 || used >= 3))
+  if (k.quad ? dim == 3 || used >= 3
+      : dim == 2 ? used == 4 : nfaces == 6 && used == 12)
     {
       s = exp (logs / (double) used);
       f = k.order < 2 ? pow (s + 1, dim)
@@ -315,9 +322,10 @@ lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes, double *bytes)
   for (size_t e = 0; !status && e + 1 < nd; e += 2)
     {
       int *tags = NULL;
-      size_t n = 0;
-      if (!(status = entity_curves (R, dim, dimtags[e + 1], &tags, &n)))
-        *nodes += entity_nodes (cv, ncv, tags, n, dim, dimtags[e + 1], k);
+      size_t n = 0, nf = 0;
+      if (!(status = entity_curves (R, dim, dimtags[e + 1], &tags, &n, &nf)))
+        *nodes += entity_nodes (cv, ncv, tags, n, nf, dim, dimtags[e + 1],
+                                k);
       gmshFree (tags);
     }
   gmshFree (dimtags);

@@ -9,15 +9,16 @@
  * lac_gmsh_estimate counts the nodes of each surface (2D) or volume (3D):
  * exactly for structured quadrilaterals and hexahedra (transfinite blocks,
  * extrusions in layers: the product of the curves' node counts), by the
- * Delaunay bound (measure / h^d, h the curves' mesh size) for triangles
- * and tetrahedra; then the memory a run of lac needs for them, by how it
+ * Delaunay bound (measure / h^d, h the curves' mesh size) for the other
+ * triangles and tetrahedra; then the memory a run of lac needs for them, by how it
  * will solve (lac_mesh_solve: a Cholesky or LU factor with its fill, a
  * dense matrix, or an iterative solve: the matrix, a multigrid hierarchy
  * and a few vectors) and by the cells (dofs per node, nonzeros per row).
- * Against the meshes gmsh makes: exact for the structured hexahedra of the
- * chapters (the ring on block, the 3D Taylor patch test), within 1.5 for
- * tetrahedra (the spheres); the memory within a factor of about 2 of what
- * lac run measures.  The formulas are in lac_mesh_gmsh_estimate.c.
+ * Against the meshes gmsh makes: within 5 % for the structured blocks of
+ * the chapters (the ring on block, the 3D Taylor patch test, the
+ * spheres), within 1.5 for Delaunay tetrahedra once refined; the memory
+ * within a factor of about 1.5 of what lac run measures.  The formulas
+ * are in lac_mesh_gmsh_estimate.c.
  */
 #ifndef LAC_MESH_GMSH_ESTIMATE_H
 #define LAC_MESH_GMSH_ESTIMATE_H
