@@ -116,8 +116,6 @@ rbad max-memory "level = 2|an estimated|more than the limit of 0.1 GB" \
   run tests/bad/box.scene $KB --set level=2 --max-memory 100M
 rbad huge-3d "[mesh] file = 'taylor3d.geo'|an estimated 1.6e+10 nodes|--max-memory" \
   run chapters/08-experiments/taylor3d.scene $KB --set mesh.numbers=n=2000
-rbad large-petsc "--strategy petsc|large-deformation loop|dense, schur or saddle" \
-  run chapters/08-experiments/ring.scene $KB --strategy petsc
 
 # The estimate against the nodes gmsh makes (src/io/lac_mesh_gmsh_estimate.c):
 # within a factor of 2 for a transfinite hexahedral block (hex8, hex20,

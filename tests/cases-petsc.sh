@@ -175,4 +175,15 @@ if [ "$have_petsc" = 1 ]; then
   else
     petsc_fail "options bad" "want exit 1 and one line 'lac: ... nonsense', got $rc: $(cat "$C/opt-bad.err")"
   fi
+
+  # ---- large deformation: refused, not solved by CHOLMOD ---------------
+  env "$PETSC_ENV" "$LAC" run "$D8/ring.scene" --strategy petsc --quiet --no-output \
+    > "$C/large.out" 2> "$C/large.err"
+  rc=$?
+  if [ "$rc" = 1 ] && [ "$(wc -l < "$C/large.err")" -eq 1 ] \
+     && grep -q "^lac: .*--strategy petsc: the large-deformation loop .*dense, schur or saddle" "$C/large.err"; then
+    petsc_ok "large deformation refused"
+  else
+    petsc_fail "large deformation refused" "want exit 1 and one line naming the strategies, got $rc: $(head -3 "$C/large.err")"
+  fi
 fi
