@@ -1,0 +1,258 @@
+/* t790-experiments-exercises.c -- the answers of
+ * chapters/08-experiments/exercises.md                 [LAC §5.1-§5.3]
+ *
+ * Everything is computed here from small runs of the chapter's scenes
+ * (run/lac_run.h, no files written) and compared with closed forms.
+ *
+ * Exercise 1 (the Taylor patch test, level 0 and 1): multipliers
+ *   floor(k/2) for seg2 slave facets (quad4, tri3), k for seg3 (quad8,
+ *   tri6) with k = 3, 4, 5, 7 slave cells; n_s^2 (hex8) and 2 n_s^2 (tet4)
+ *   in 3D; the dofs of hex8 3 [(n_l+1)^3 + (n_u+1)^3 + n_s^2] = 594, 615,
+ *   2259, 2331 (one new node per slave face), of quad4 82 with either
+ *   slave; every multiplier -25 to 1e-12, one iteration.
+ * Exercise 2 (the spheres, axisymmetric, quad8 level 2): the closed forms
+ *   lambda = -925/189, u_R(20) = 0.2, u_R(40) = 0.075 against lac_exact
+ *   (1e-14); the run: lambda_min, lambda_max within 1e-4 of lambda,
+ *   u_r_inner within 1e-5, contact_area = 1800 pi within 1e-5,
+ *   contact_force = 900 pi lambda within 1e-4.
+ * Exercise 3 (manufactured2d): e_P0 = 0.05 sqrt((5N^2 - 4) / 180) / N^2
+ *   (2.0306e-3, 1.0351e-3, 5.2002e-4 for N = 4, 8, 16) against
+ *   sqrt(l2_err_lambda^2 - e_avg^2) of quad4 levels 1, 2 (N = 4, 8) and
+ *   quad8 levels 1, 2 (N = 8, 16), e_avg from the multipliers and the
+ *   means of the exact pressure (1e-6); l2_err_lambda at most 4 % above
+ *   e_P0; quad8 level 1 and quad4 level 2: the same lambda error within
+ *   4 %, u error 15 times smaller (within 5 %).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "check.h"
+#include "base/lac_status.h"
+#include "fem/lac_exact.h"
+#include "io/lac_scene.h"
+#include "run/lac_run.h"
+
+#define D8 "chapters/08-experiments/"
+
+/* Run SCENE with the overrides SET; NULL (and a failed check) on error.
+ * *sc receives the scene, which the run borrows. */
+static lac_run *
+run (const char *scene, int nset, const char **set, lac_scene **sc)
+{
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL };
+  lac_run *r = NULL;
+  *sc = NULL;
+  int st = lac_scene_read (scene, nset, set, sc);
+  if (!st && !(r = lac_run_alloc (*sc, &o)))
+    st = LAC_ENOMEM;
+  if (!st)
+    st = lac_run_all (r);
+  check_status (st, LAC_SUCCESS, "%s %s", scene, nset ? set[0] : "");
+  if (st)
+    {
+      lac_run_free (r);
+      lac_scene_free (*sc);
+      *sc = NULL;
+      return NULL;
+    }
+  return r;
+}
+
+static double
+value (const lac_run *r, const char *key)
+{
+  const char *v = lac_run_summary_get (r, key);
+  return v ? atof (v) : NAN;
+}
+
+static void
+done (lac_run *r, lac_scene *sc)
+{
+  lac_run_free (r);
+  lac_scene_free (sc);
+}
+
+/* ---- exercise 1 ------------------------------------------------------ */
+
+/* The patch test with ELEMENT at LEVEL, the upper or the lower body as
+ * slave: its multipliers, dofs; every lambda -25, one iteration. */
+static void
+taylor (const char *scene, const char *element, int level, int upper,
+        long mult, long dofs)
+{
+  char s[4][64];
+  const char *set[4] = { s[0], s[1], s[2], s[3] };
+  lac_scene *sc;
+  snprintf (s[0], sizeof s[0], "element=%s", element);
+  snprintf (s[1], sizeof s[1], "level=%d", level);
+  snprintf (s[2], sizeof s[2], "contact.interface.slave=%s",
+            upper ? "upper_bottom" : "lower_top");
+  snprintf (s[3], sizeof s[3], "contact.interface.master=%s",
+            upper ? "lower_top" : "upper_bottom");
+  lac_run *r = run (scene, 4, set, &sc);
+  if (!r)
+    return;
+  const char *side = upper ? "upper" : "lower";
+  const lac_newton *nw = r->sol.newton;
+  check_int ((long) nw->k, mult, "ex1 %s level %d %s: multipliers", element,
+             level, side);
+  if (dofs > 0)
+    check_int ((long) value (r, "dofs"), dofs, "ex1 %s level %d %s: dofs",
+               element, level, side);
+  check_int ((long) value (r, "newton_iterations"), 1,
+             "ex1 %s level %d %s: one iteration", element, level, side);
+  for (size_t i = 0; i < nw->k; i++)
+    check_rel (nw->lambda[i], -25, 1e-12, "ex1 %s level %d %s: lambda_%zu",
+               element, level, side, i);
+  done (r, sc);
+}
+
+static void
+exercise1 (void)
+{
+  /* slave cells along the interface: level 0 upper 3, lower 4; level 1
+   * upper 5, lower 7 */
+  const long k[2][2] = { { 3, 4 }, { 5, 7 } };
+  const char *lin[2] = { "quad4", "tri3" }, *quad[2] = { "quad8", "tri6" };
+  for (int level = 0; level < 2; level++)
+    for (int up = 0; up < 2; up++)
+      {
+        long ks = k[level][up ? 0 : 1];
+        for (int e = 0; e < 2; e++)
+          {
+            taylor (D8 "taylor2d.scene", lin[e], level, up, ks / 2,
+                    e == 0 && level == 0 ? 2 * (25 + 16) : 0);
+            taylor (D8 "taylor2d.scene", quad[e], level, up, ks, 0);
+          }
+        long nl = k[level][1], nu = k[level][0];
+        long hex8 = 3 * ((nl + 1) * (nl + 1) * (nl + 1)
+                         + (nu + 1) * (nu + 1) * (nu + 1) + ks * ks);
+        taylor (D8 "taylor3d.scene", "hex8", level, up, ks * ks, hex8);
+        taylor (D8 "taylor3d.scene", "tet4", level, up, 2 * ks * ks, 0);
+      }
+  /* the quoted numbers themselves */
+  check_int (3 * (125 + 64 + 9), 594, "ex1: hex8 level 0 upper");
+  check_int (3 * (125 + 64 + 16), 615, "ex1: hex8 level 0 lower");
+  check_int (3 * (512 + 216 + 25), 2259, "ex1: hex8 level 1 upper");
+  check_int (3 * (512 + 216 + 49), 2331, "ex1: hex8 level 1 lower");
+}
+
+/* ---- exercise 2 ------------------------------------------------------ */
+
+static void
+exercise2 (void)
+{
+  const double lam = -925.0 / 189.0, pi = acos (-1.0);
+  /* the closed forms against the library's Lame solution */
+  lac_exact_params par = { 20, 40, 25, 2000, 0.3 };
+  lac_exact e;
+  lac_exact_init (&e, LAC_EXACT_THICK_SPHERE, LAC_AXISYMMETRIC, &par);
+  double x30[2] = { 30, 0 }, n[2] = { 1, 0 }, u[2];
+  check_rel (lac_exact_normal_stress (&e, x30, n), lam, 1e-14,
+             "ex2: lambda = -925/189");
+  check_rel (lam, -4.894179894, 1e-10, "ex2: -4.894179894");
+  double x20[2] = { 0, 20 }, x40[2] = { 40 * sin (0.3), 40 * cos (0.3) };
+  lac_exact_u (x20, &e, u);
+  check_rel (hypot (u[0], u[1]), 0.2, 1e-14, "ex2: u_R(20) = 0.2");
+  lac_exact_u (x40, &e, u);
+  check_rel (hypot (u[0], u[1]), 0.075, 1e-14, "ex2: u_R(40) = 0.075");
+
+  const char *set[2] = { "element=quad8", "level=2" };
+  lac_scene *sc;
+  lac_run *r = run (D8 "spheres-axi.scene", 2, set, &sc);
+  if (!r)
+    return;
+  check_rel (value (r, "lambda_min"), lam, 1e-4, "ex2: lambda_min");
+  check_rel (value (r, "lambda_max"), lam, 1e-4, "ex2: lambda_max");
+  check_true (value (r, "max_rel_err_lambda") < 1e-4,
+              "ex2: max_rel_err_lambda %g", value (r, "max_rel_err_lambda"));
+  check_rel (value (r, "u_r_inner"), 0.2, 1e-5, "ex2: u_r_inner");
+  check_rel (value (r, "contact_area"), 1800 * pi, 1e-5,
+             "ex2: contact_area = 2 pi R^2");
+  check_rel (value (r, "contact_force"), 900 * pi * lam, 1e-4,
+             "ex2: contact_force = pi R^2 lambda");
+  check_rel (900 * pi * lam, -13838.0, 1e-5, "ex2: -13838.0");
+  done (r, sc);
+}
+
+/* ---- exercise 3 ------------------------------------------------------ */
+
+static double
+ep0 (double N)
+{
+  return 0.05 * sqrt ((5 * N * N - 4) / 180) / (N * N);
+}
+
+typedef struct man
+{
+  double err_lam, e_p0, err_u;
+  long N;
+} man;
+
+/* manufactured2d with ELEMENT at LEVEL: e_P0 = sqrt(err^2 - e_avg^2),
+ * e_avg^2 = sum_i |T^i cap Gamma_C| (lambda_i - mean exact_i)^2. */
+static man
+manufactured (const char *element, int level)
+{
+  char s[2][64];
+  const char *set[2] = { s[0], s[1] };
+  lac_scene *sc;
+  man x = { NAN, NAN, NAN, 0 };
+  snprintf (s[0], sizeof s[0], "element=%s", element);
+  snprintf (s[1], sizeof s[1], "level=%d", level);
+  lac_run *r = run (D8 "manufactured2d.scene", 2, set, &sc);
+  if (!r)
+    return x;
+  const lac_newton *nw = r->sol.newton;
+  const lac_contact *c = r->sys.contact;
+  double avg2 = 0;
+  for (size_t i = 0; i < nw->k; i++)
+    {
+      double d = nw->lambda[i] - r->res.mult.exact[i];
+      avg2 += c->area[i] * d * d;
+    }
+  x.err_lam = value (r, "l2_err_lambda");
+  x.e_p0 = sqrt (x.err_lam * x.err_lam - avg2);
+  x.err_u = value (r, "rel_l2_err_u");
+  x.N = (long) nw->k;
+  done (r, sc);
+  return x;
+}
+
+static void
+exercise3 (void)
+{
+  check_rel (ep0 (4), 2.0306e-3, 1e-4, "ex3: e_P0(4)");
+  check_rel (ep0 (8), 1.0351e-3, 1e-4, "ex3: e_P0(8)");
+  check_rel (ep0 (16), 5.2002e-4, 1e-4, "ex3: e_P0(16)");
+  const char *el[2] = { "quad4", "quad8" };
+  const long N[2][2] = { { 4, 8 }, { 8, 16 } };
+  man m[2][2];
+  for (int e = 0; e < 2; e++)
+    for (int l = 0; l < 2; l++)
+      {
+        m[e][l] = manufactured (el[e], l + 1);
+        check_int (m[e][l].N, N[e][l], "ex3 %s level %d: N", el[e], l + 1);
+        check_rel (m[e][l].e_p0, ep0 ((double) N[e][l]), 1e-6,
+                   "ex3 %s level %d: e_P0", el[e], l + 1);
+        check_true (m[e][l].err_lam >= m[e][l].e_p0
+                    && m[e][l].err_lam <= 1.04 * m[e][l].e_p0,
+                    "ex3 %s level %d: err_lambda %g within 4 %% above e_P0 %g",
+                    el[e], l + 1, m[e][l].err_lam, m[e][l].e_p0);
+      }
+  check_rel (m[1][0].err_lam, m[0][1].err_lam, 0.04,
+             "ex3: quad8 level 1 and quad4 level 2, same lambda error");
+  check_rel (m[0][1].err_u / m[1][0].err_u, 15.0, 0.05,
+             "ex3: quad8's u error 15 times smaller (%g)",
+             m[0][1].err_u / m[1][0].err_u);
+}
+
+int
+main (void)
+{
+  exercise1 ();
+  exercise2 ();
+  exercise3 ();
+  return check_summary ();
+}
