@@ -1,6 +1,7 @@
 #!/bin/sh
 # make-figures.sh -- regenerate figures/: the counterparts of the paper's
-# Figures 3-11 [LAC §5] and the accuracy-cost study (chapter 10).
+# Figure 2 (the refinement of the first layer, chapter 03) and Figures
+# 3-11 [LAC §5], and the accuracy-cost study (chapter 10).
 #
 #   sh figures/make-figures.sh [BUILD_DIR] [--quick] [--out DIR] [--no-bench]
 #
@@ -42,12 +43,13 @@ done
 
 LAC=$B/lac
 FIGRUN=$B/figures/figrun
+FIG02=$B/figures/fig02-refine
 D=chapters/08-experiments
 W=$B/figures-work
 [ $QUICK = 1 ] && W=$B/figures-work-quick
 
-if [ ! -x "$LAC" ] || [ ! -x "$FIGRUN" ]; then
-  ${MAKE:-make} -s B="$B" "$LAC" "$FIGRUN" >&2 || exit 1
+if [ ! -x "$LAC" ] || [ ! -x "$FIGRUN" ] || [ ! -x "$FIG02" ]; then
+  ${MAKE:-make} -s B="$B" "$LAC" "$FIGRUN" "$FIG02" >&2 || exit 1
 fi
 command -v gnuplot > /dev/null || { echo "make-figures.sh: gnuplot not found (Debian: gnuplot-nox)" >&2; exit 1; }
 mkdir -p "$OUT" || exit 1
@@ -177,6 +179,82 @@ EOF
   gp sphere1-prof
 fi
 say "fig01 ($(since "$t") s)"
+fi
+
+# ---- Figure 2: refinement of the first layer [LAC §4.4, Hyp. 1] ----------
+# figures/fig02-refine.c refines a small box per element type with
+# lac_macromesh_build and writes the edges, the slave sub-facets (coloured
+# by macro-element), the designated interior nodes and the new nodes; the
+# same in --quick (the meshes are tiny).
+if want 02; then
+t=$(date +%s)
+mkdir -p "$W/fig02"
+if "$FIG02" "$W/fig02" > "$W/fig02.txt" 2> "$W/fig02.err"; then
+  # ttl NAME TEXT: a panel title with the macro-elements, the cells and
+  # the mean of the designated basis function of T^0 from fig02-refine's report (92:
+  # a backslash, so that gnuplot gets the two characters \n)
+  ttl () { awk -v n="$1" -v t="$2" '$1 == n { printf "%s%cn%d T^m, cells %s -> %s, mean %.4f", t, 92, $9, $3, $5, $13 }' "$W/fig02.txt"; }
+  # panel NAME TITLE 2|3: the plot or splot commands of one case
+  panel () {
+    printf 'set title "%s"\n' "$(ttl "$1" "$2")"   # (dash's echo would expand \n)
+    if [ "$3" = 2 ]; then
+      echo "plot 'fig02/$1.edges' using 1:2 with lines lw 1 lc rgb '#909090' notitle, \\"
+      echo "     'fig02/$1.slave' using 1:2:(int(\$4) % 4 + 1) with lines lw 6 lc variable notitle, \\"
+      echo "     'fig02/$1.new' using 1:2 with points pt 6 ps 1.6 lw 2 lc rgb '#c00000' notitle, \\"
+      echo "     'fig02/$1.inode' using 1:2 with points pt 7 ps 1.8 lc rgb '#000000' notitle"
+    else
+      echo "splot 'fig02/$1.edges' using 1:2:3 with lines lw 1 lc rgb '#909090' notitle, \\"
+      echo "      'fig02/$1.slave' using 1:2:3:(int(\$4) % 4 + 1) with lines lw 5 lc variable notitle, \\"
+      echo "      'fig02/$1.new' using 1:2:3 with points pt 6 ps 1.0 lw 2 lc rgb '#c00000' notitle, \\"
+      echo "      'fig02/$1.inode' using 1:2:3 with points pt 7 ps 1.8 lc rgb '#000000' notitle"
+    fi
+  }
+  colours="set linetype 1 lc rgb '#3b528b'; set linetype 2 lc rgb '#e08000'; set linetype 3 lc rgb '#21918c'; set linetype 4 lc rgb '#b03a8c'"
+  {
+    echo 'set terminal pngcairo size 1500,820 font "DejaVu Sans,13" enhanced'
+    echo "set output '$OUTABS/fig02-refinement-2d.png'"
+    echo "$colours"
+    echo 'set multiplot layout 3,2 title "Figure 2, 2D: macro-elements of the slave side y = 2 (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'set size ratio -1; unset key; set xrange [-0.2:5.2]; set yrange [-0.2:2.3]; set xtics 1; set ytics 1'
+    panel tri3 "tri3: seg2 gathered in pairs, a triple at the end" 2
+    panel tri3-cut "tri3, option cut-2d: each first-layer cell cut" 2
+    panel quad4 "quad4: seg2 gathered in pairs, a triple at the end" 2
+    panel quad4-cut "quad4, option cut-2d: each first-layer cell cut" 2
+    panel tri6 "tri6: each seg3 alone (its mid-node)" 2
+    panel quad8 "quad8: each seg3 alone (its mid-node)" 2
+    echo 'unset multiplot'
+  } > "$W/fig02-2d.gp"
+  gp fig02-2d
+  # 3D: each type twice, the cut cell in perspective and its slave face
+  # from above (z = 1: the sub-facets, the designated and the new nodes)
+  top () {
+    printf 'set title "%s"\n' "$2"
+    echo "plot 'fig02/$1.slave' using 1:2:(int(\$4) % 4 + 1) with lines lw 4 lc variable notitle, \\"
+    echo "     'fig02/$1.new' using 1:(\$3 > 0.999 ? \$2 : NaN) with points pt 6 ps 1.4 lw 2 lc rgb '#c00000' notitle, \\"
+    echo "     'fig02/$1.inode' using 1:2 with points pt 7 ps 1.6 lc rgb '#000000' notitle"
+  }
+  {
+    echo 'set terminal pngcairo size 1800,1400 font "DejaVu Sans,13" enhanced'
+    echo "set output '$OUTABS/fig02-refinement-3d.png'"
+    echo "$colours"
+    echo 'set multiplot layout 3,4 title "Figure 2, 3D: a unit cube cut below its slave face z = 1, and the face seen from above\\nmacro-elements (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'unset key; unset tics; unset border'
+    for c in "tet4|tet4: 3 tet4 cones from the face centre" "hex8|hex8: 5 pyramids from the face centre" \
+             "hex8-six|hex8, option six: six hexahedra" "tet10|tet10: 3 tet10 cones" \
+             "hex20|hex20: six hexahedra" "hex27|hex27: nothing cut"; do
+      n=${c%%|*}
+      echo 'set view 55,25; set view equal xyz; set xrange [0:1]; set yrange [0:1]; set zrange [0:1]; set size noratio'
+      panel "$n" "${c#*|}" 3
+      echo 'set size ratio -1; set xrange [-0.05:1.05]; set yrange [-0.05:1.05]'
+      top "$n" "the slave face of $n"
+    done
+    echo 'unset multiplot'
+  } > "$W/fig02-3d.gp"
+  gp fig02-3d
+else
+  fail "fig02-refine: $(tail -1 "$W/fig02.err")"
+fi
+say "fig02 ($(since "$t") s)"
 fi
 
 # ---- Figure 3: Taylor patch test 2D, quad4 [LAC §5.1] --------------------
