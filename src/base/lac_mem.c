@@ -47,6 +47,24 @@ lac_free (void *p)
   free (p);
 }
 
+int
+lac_grow (void *array, size_t need, size_t *cap, size_t size, size_t first)
+{
+  void *p, *q;
+  size_t c;
+  if (need <= *cap)
+    return 0;
+  c = *cap ? 2 * *cap : first;
+  if (c < need)
+    c = need;
+  memcpy (&p, array, sizeof p);          /* the T * stored at array */
+  if (!(q = lac_realloc (p, c * size)))
+    return -1;
+  memcpy (array, &q, sizeof q);
+  *cap = c;
+  return 0;
+}
+
 char *
 lac_strdup (const char *s)
 {

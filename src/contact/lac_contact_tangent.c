@@ -292,15 +292,8 @@ local_node (block *bk, int v)
   for (size_t l = 0; l < bk->nn; l++)
     if (bk->node[l] == v)
       return (long) l;
-  if (bk->nn == bk->cap)
-    {
-      size_t cap = bk->cap ? 2 * bk->cap : 32;
-      int *p = lac_realloc (bk->node, cap * sizeof *p);
-      if (!p)
-        return -1;
-      bk->node = p;
-      bk->cap = cap;
-    }
+  if (lac_grow (&bk->node, bk->nn + 1, &bk->cap, sizeof *bk->node, 32))
+    return -1;
   bk->node[bk->nn] = v;
   return (long) bk->nn++;
 }
@@ -424,33 +417,13 @@ static int
 append_block (lac_contact_tangent *t, growth *gr, const block *bk, int dim,
               size_t nl)
 {
-  if (t->nblock + 2 > gr->cblock)
-    {
-      size_t cap = 2 * gr->cblock + 16;
-      size_t *b = lac_realloc (t->bptr, cap * sizeof *b);
-      if (b)
-        t->bptr = b;
-      size_t *v = lac_realloc (t->vptr, cap * sizeof *v);
-      if (v)
-        t->vptr = v;
-      if (!b || !v)
-        LAC_ERROR (LAC_ENOMEM, "contact blocks");
-      gr->cblock = cap;
-    }
-  if (gr->ndof + nl > gr->cdof || gr->nval + nl * nl > gr->cval)
-    {
-      size_t cd = 2 * (gr->ndof + nl), cv = 2 * (gr->nval + nl * nl);
-      size_t *d = lac_realloc (t->dof, cd * sizeof *d);
-      if (d)
-        t->dof = d;
-      double *x = lac_realloc (t->val, cv * sizeof *x);
-      if (x)
-        t->val = x;
-      if (!d || !x)
-        LAC_ERROR (LAC_ENOMEM, "contact blocks, %zu values", cv);
-      gr->cdof = cd;
-      gr->cval = cv;
-    }
+  size_t cap = gr->cblock;               /* bptr and vptr share it */
+  if (lac_grow (&t->bptr, t->nblock + 2, &cap, sizeof *t->bptr, 16)
+      || lac_grow (&t->vptr, t->nblock + 2, &gr->cblock, sizeof *t->vptr, 16)
+      || lac_grow (&t->dof, gr->ndof + nl, &gr->cdof, sizeof *t->dof, 64)
+      || lac_grow (&t->val, gr->nval + nl * nl, &gr->cval, sizeof *t->val,
+                   256))
+    LAC_ERROR (LAC_ENOMEM, "contact blocks, %zu values", gr->nval + nl * nl);
   for (size_t l = 0; l < nl; l++)
     t->dof[gr->ndof + l] = (size_t) bk->node[l / (size_t) dim] * (size_t) dim
                            + l % (size_t) dim;

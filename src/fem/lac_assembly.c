@@ -529,19 +529,10 @@ lac_dirichlet_free (lac_dirichlet *d)
 static int
 dirichlet_push (lac_dirichlet *d, size_t dof, double val)
 {
-  if (d->n == d->cap)
-    {
-      size_t cap = d->cap ? 2 * d->cap : 64;
-      size_t *ndof = lac_realloc (d->dof, cap * sizeof *ndof);
-      if (!ndof)
-        LAC_ERROR (LAC_ENOMEM, "Dirichlet list of %zu entries", cap);
-      d->dof = ndof;
-      double *nval = lac_realloc (d->val, cap * sizeof *nval);
-      if (!nval)
-        LAC_ERROR (LAC_ENOMEM, "Dirichlet list of %zu entries", cap);
-      d->val = nval;
-      d->cap = cap;
-    }
+  size_t cap = d->cap;                   /* dof and val share it */
+  if (lac_grow (&d->dof, d->n + 1, &cap, sizeof *d->dof, 64)
+      || lac_grow (&d->val, d->n + 1, &d->cap, sizeof *d->val, 64))
+    LAC_ERROR (LAC_ENOMEM, "Dirichlet list of %zu entries", d->n + 1);
   d->dof[d->n] = dof;
   d->val[d->n] = val;
   d->n++;

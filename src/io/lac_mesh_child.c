@@ -164,17 +164,8 @@ drain (int fd, answer *a, int is_data)
       a->tail[a->ntail] = '\0';
       return 1;
     }
-  if (a->len + (size_t) k > a->cap)
-    {
-      size_t cap = a->cap ? 2 * a->cap : 1 << 16;
-      unsigned char *p;
-      while (cap < a->len + (size_t) k)
-        cap *= 2;
-      if (!(p = lac_realloc (a->buf, cap)))
-        return a->nomem = 1, 0;
-      a->buf = p;
-      a->cap = cap;
-    }
+  if (lac_grow (&a->buf, a->len + (size_t) k, &a->cap, 1, 1 << 16))
+    return a->nomem = 1, 0;
   memcpy (a->buf + a->len, chunk, (size_t) k);
   a->len += (size_t) k;
   return 1;

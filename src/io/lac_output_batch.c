@@ -351,18 +351,10 @@ lac_output_batch_add (lac_output_batch *b, const char *name)
 {
   if (interrupted (b))
     return NULL;
-  if (b->n == b->cap)
-    {
-      size_t cap = b->cap ? 2 * b->cap : 8;
-      char **f = lac_realloc (b->final, cap * sizeof *f);
-      char **t = f ? lac_realloc (b->path, cap * sizeof *t) : NULL;
-      if (f)
-        b->final = f;
-      if (!t)
-        LAC_ERROR_NULL (LAC_ENOMEM, "out of memory");
-      b->path = t;
-      b->cap = cap;
-    }
+  size_t cap = b->cap;                   /* final and path share it */
+  if (lac_grow (&b->final, b->n + 1, &cap, sizeof *b->final, 8)
+      || lac_grow (&b->path, b->n + 1, &b->cap, sizeof *b->path, 8))
+    LAC_ERROR_NULL (LAC_ENOMEM, "out of memory");
   b->final[b->n] = join (b->dir, name);
   b->path[b->n] = join (b->tmp, name);
   if (!b->final[b->n] || !b->path[b->n])

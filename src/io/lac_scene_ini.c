@@ -108,15 +108,8 @@ capture_error (raw *r, int line, int status, const char *msg)
 static int
 push (raw_entry **a, size_t *n, size_t *cap, raw_entry x)
 {
-  if (*n == *cap)
-    {
-      size_t c = *cap ? 2 * *cap : 16;
-      raw_entry *p = lac_realloc (*a, c * sizeof *p);
-      if (!p)
-        return LAC_ENOMEM;
-      *a = p;
-      *cap = c;
-    }
+  if (lac_grow (a, *n + 1, cap, sizeof **a, 16))
+    return LAC_ENOMEM;
   (*a)[(*n)++] = x;
   return LAC_SUCCESS;
 }

@@ -248,15 +248,8 @@ read_array (vtu_file *f, const char *p, int section, const char **next)
     LAC_ERROR (LAC_EIO, "%s:%d: DataArray format \"%s\": only ascii and "
                "appended raw VTU files (as lac writes them) can be read",
                f->path, line_of (f, p), buf);
-  if (f->narrays == f->cap)
-    {
-      size_t nc = f->cap ? 2 * f->cap : 16;
-      vtu_array *na = lac_realloc (f->a, nc * sizeof *na);
-      if (!na)
-        LAC_ERROR (LAC_ENOMEM, "out of memory reading '%s'", f->path);
-      f->a = na;
-      f->cap = nc;
-    }
+  if (lac_grow (&f->a, f->narrays + 1, &f->cap, sizeof *f->a, 16))
+    LAC_ERROR (LAC_ENOMEM, "out of memory reading '%s'", f->path);
   a = f->a + f->narrays;
   memset (a, 0, sizeof *a);
   if (!attr (p, "Name", a->name, sizeof a->name))

@@ -168,15 +168,9 @@ nl_setup (const lac_scene *sc, const lac_mesh *m,
 static int
 push_mult (lac_run_nl *nl, lac_run_nl_mult **q)
 {
-  if (nl->nmult == nl->capmult)
-    {
-      size_t cap = nl->capmult ? 2 * nl->capmult : 256;
-      lac_run_nl_mult *r = lac_realloc (nl->mult, cap * sizeof *r);
-      if (!r)
-        LAC_ERROR (LAC_ENOMEM, "multiplier records");
-      nl->mult = r;
-      nl->capmult = cap;
-    }
+  if (lac_grow (&nl->mult, nl->nmult + 1, &nl->capmult, sizeof *nl->mult,
+                256))
+    LAC_ERROR (LAC_ENOMEM, "multiplier records");
   *q = &nl->mult[nl->nmult++];
   memset (*q, 0, sizeof **q);
   return LAC_SUCCESS;

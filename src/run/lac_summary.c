@@ -12,18 +12,10 @@ lac_summary_add (lac_summary *s, const char *key, const char *fmt, ...)
 {
   char buf[512];
   va_list ap;
-  if (s->n == s->cap)
-    {
-      size_t cap = s->cap ? 2 * s->cap : 32;
-      char **k = lac_realloc (s->key, cap * sizeof *k);
-      char **v = k ? lac_realloc (s->val, cap * sizeof *v) : NULL;
-      if (k)
-        s->key = k;
-      if (!v)
-        LAC_ERROR (LAC_ENOMEM, "out of memory");
-      s->val = v;
-      s->cap = cap;
-    }
+  size_t cap = s->cap;                   /* key and val share it */
+  if (lac_grow (&s->key, s->n + 1, &cap, sizeof *s->key, 32)
+      || lac_grow (&s->val, s->n + 1, &s->cap, sizeof *s->val, 32))
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
   va_start (ap, fmt);
   vsnprintf (buf, sizeof buf, fmt, ap);
   va_end (ap);

@@ -13,15 +13,9 @@
 static int
 push_step (lac_nl *s, const lac_nl_step *r)
 {
-  if (s->nsteps == s->capsteps)
-    {
-      size_t cap = s->capsteps ? 2 * s->capsteps : 32;
-      lac_nl_step *h = lac_realloc (s->steps, cap * sizeof *h);
-      if (!h)
-        LAC_ERROR (LAC_ENOMEM, "step records");
-      s->steps = h;
-      s->capsteps = cap;
-    }
+  if (lac_grow (&s->steps, s->nsteps + 1, &s->capsteps, sizeof *s->steps,
+                32))
+    LAC_ERROR (LAC_ENOMEM, "step records");
   s->steps[s->nsteps++] = *r;
   return LAC_SUCCESS;
 }

@@ -194,15 +194,9 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
 static int
 push_iter (lac_nl *s, const lac_nl_iter *r)
 {
-  if (s->niters == s->capiters)
-    {
-      size_t cap = s->capiters ? 2 * s->capiters : 64;
-      lac_nl_iter *h = lac_realloc (s->iters, cap * sizeof *h);
-      if (!h)
-        LAC_ERROR (LAC_ENOMEM, "iteration records");
-      s->iters = h;
-      s->capiters = cap;
-    }
+  if (lac_grow (&s->iters, s->niters + 1, &s->capiters, sizeof *s->iters,
+                64))
+    LAC_ERROR (LAC_ENOMEM, "iteration records");
   s->iters[s->niters++] = *r;
   return LAC_SUCCESS;
 }
@@ -433,19 +427,11 @@ increments (const lac_nl *s, lac_dirichlet *inc)
   for (size_t j = 0; j < s->ndof; j++)
     if (s->fixed[j])
       {
-        if (inc->n == inc->cap)
-          {
-            size_t cap = inc->cap ? 2 * inc->cap : 64;
-            size_t *d = lac_realloc (inc->dof, cap * sizeof *d);
-            if (d)
-              inc->dof = d;
-            double *v = lac_realloc (inc->val, cap * sizeof *v);
-            if (v)
-              inc->val = v;
-            if (!d || !v)
-              LAC_ERROR (LAC_ENOMEM, "Dirichlet increments");
-            inc->cap = cap;
-          }
+        size_t cap = inc->cap;           /* dof and val share it */
+        if (lac_grow (&inc->dof, inc->n + 1, &cap, sizeof *inc->dof, 64)
+            || lac_grow (&inc->val, inc->n + 1, &inc->cap, sizeof *inc->val,
+                         64))
+          LAC_ERROR (LAC_ENOMEM, "Dirichlet increments");
         inc->dof[inc->n] = j;
         inc->val[inc->n++] = s->t * s->g1[j] + s->g0[j] - s->U[j];
       }
