@@ -1,8 +1,9 @@
 /* lac_vec.h -- small vector geometry: dot and cross products, lengths
  *
  * Header only: static inline functions on plain arrays of doubles, for the
- * geometry kernels (pairing, projection, refinement templates) and the
- * Lanczos vectors of the inf-sup estimate.  Each sums in index order, as
+ * geometry kernels (pairing, projection, refinement templates), the
+ * Lanczos vectors of the inf-sup estimate and the Krylov vectors of
+ * linalg/lac_pcg.c and lac_gmres.c.  Each sums in index order, as
  * the loops it replaces did, so results are the same to the last bit.
  */
 #ifndef LAC_VEC_H

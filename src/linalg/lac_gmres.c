@@ -13,15 +13,7 @@
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
-
-static double
-dot (size_t n, const double *x, const double *y)
-{
-  double s = 0;
-  for (size_t i = 0; i < n; i++)
-    s += x[i] * y[i];
-  return s;
-}
+#include "base/lac_vec.h"
 
 /* r = b - A x; returns ||r|| through *nr. */
 static int
@@ -31,7 +23,7 @@ residual (size_t n, lac_linop A, void *ctx, const double *b, const double *x,
   int status = A (ctx, x, r);
   for (size_t i = 0; !status && i < n; i++)
     r[i] = b[i] - r[i];
-  *nr = sqrt (dot (n, r, r));
+  *nr = sqrt (lac_vec_dot (n, r, r));
   return status;
 }
 
@@ -96,11 +88,11 @@ cycle (size_t n, lac_linop A, lac_linop M, void *ctx, double beta,
       (*its)++;
       for (int i = 0; i <= j; i++)
         {
-          hj[i] = dot (n, V[j + 1], V[i]);
+          hj[i] = lac_vec_dot (n, V[j + 1], V[i]);
           for (size_t q = 0; q < n; q++)
             V[j + 1][q] -= hj[i] * V[i][q];
         }
-      double hn = sqrt (dot (n, V[j + 1], V[j + 1]));
+      double hn = sqrt (lac_vec_dot (n, V[j + 1], V[j + 1]));
       hj[j + 1] = hn;
       for (size_t q = 0; hn > 0 && q < n; q++)
         V[j + 1][q] /= hn;
@@ -128,7 +120,7 @@ lac_gmres (size_t n, lac_linop A, lac_linop M, void *ctx, const double *b,
   int status = work && V ? LAC_SUCCESS
                : LAC_ERRMSG (LAC_ENOMEM, "GMRES work space, %d vectors of %zu",
                              2 * m + 1, n);
-  double nb = sqrt (dot (n, b, b)), beta = 0, res = 0;
+  double nb = sqrt (lac_vec_dot (n, b, b)), beta = 0, res = 0;
   int its = 0;
   for (int i = 0; !status && i < 2 * m + 1; i++)
     V[i] = work + (size_t) i * n;

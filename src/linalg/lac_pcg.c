@@ -11,15 +11,7 @@
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
-
-static double
-dot (size_t n, const double *x, const double *y)
-{
-  double s = 0;
-  for (size_t i = 0; i < n; i++)
-    s += x[i] * y[i];
-  return s;
-}
+#include "base/lac_vec.h"
 
 static int
 precondition (lac_linop M, void *ctx, size_t n, const double *r, double *z)
@@ -36,7 +28,7 @@ lac_pcg (size_t n, lac_linop A, lac_linop M, void *ctx, const double *b,
 {
   double *w = lac_malloc ((4 * n + 1) * sizeof *w);
   double *r = w, *z = w + n, *p = w + 2 * n, *q = w + 3 * n;
-  double nb = sqrt (dot (n, b, b)), nr = 0, rz;
+  double nb = sqrt (lac_vec_dot (n, b, b)), nr = 0, rz;
   int status, it = 0;
   if (!w)
     LAC_ERROR (LAC_ENOMEM, "conjugate gradients, n = %zu", n);
@@ -54,15 +46,15 @@ lac_pcg (size_t n, lac_linop A, lac_linop M, void *ctx, const double *b,
   if (!status)
     status = precondition (M, ctx, n, r, z);
   memcpy (p, z, n * sizeof *p);
-  rz = dot (n, r, z);
-  nr = sqrt (dot (n, r, r));
+  rz = lac_vec_dot (n, r, z);
+  nr = sqrt (lac_vec_dot (n, r, r));
   while (!status && nr > rtol * nb && it < maxit)
     {
       double pq, alpha, rz_new;
       if ((status = A (ctx, p, q)))                     /* q = A p */
         break;
       it++;
-      pq = dot (n, p, q);
+      pq = lac_vec_dot (n, p, q);
       if (!(pq > 0))
         {
           status = LAC_ERRMSG (LAC_ESING, "conjugate gradients broke down "
@@ -76,10 +68,10 @@ lac_pcg (size_t n, lac_linop A, lac_linop M, void *ctx, const double *b,
           x[i] += alpha * p[i];
           r[i] -= alpha * q[i];
         }
-      nr = sqrt (dot (n, r, r));
+      nr = sqrt (lac_vec_dot (n, r, r));
       if (nr <= rtol * nb || (status = precondition (M, ctx, n, r, z)))
         break;
-      rz_new = dot (n, r, z);
+      rz_new = lac_vec_dot (n, r, z);
       for (size_t i = 0; i < n; i++)
         p[i] = z[i] + rz_new / rz * p[i];
       rz = rz_new;
