@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -93,14 +94,15 @@ write_curves_dat (const char *path, const macro_rows *r, int axi, int *exact)
   size_t *order = lac_malloc ((r->n + 1) * sizeof *order);
   double s = 0;
   FILE *fp;
+  int status;
   if (!order)
     return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
-  chain_order (r, order);
-  if (!(fp = fopen (path, "w")))
+  if ((status = lac_file_create (path, "w", &fp)))
     {
       lac_free (order);
-      LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", path, strerror (errno));
+      return status;
     }
+  chain_order (r, order);
   fprintf (fp, "# s  lambda  lambda_exact  mean_gap  (two rows per "
            "macro-element: its ends)\n");
   *exact = 0;
@@ -116,9 +118,7 @@ write_curves_dat (const char *path, const macro_rows *r, int axi, int *exact)
       s += len;
     }
   lac_free (order);
-  if (fclose (fp) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", path);
-  return LAC_SUCCESS;
+  return lac_file_close (fp, path);
 }
 
 /* "set yrange" for the values: automatic, or, when they vary by less than
@@ -155,9 +155,10 @@ write_curves_gp (const char *gp, const char *name, const char *png,
                  const macro_rows *r, int exact, double gap_floor)
 {
   char dat[1100];
-  FILE *fp = fopen (gp, "w");
-  if (!fp)
-    LAC_ERROR (LAC_EIO, "cannot write '%s' (%s)", gp, strerror (errno));
+  FILE *fp;
+  int status = lac_file_create (gp, "w", &fp);
+  if (status)
+    return status;
   snprintf (dat, sizeof dat, "%s.dat", name);
   fprintf (fp, "# lac render --contact: lambda and mean gap along Gamma_C\n"
            "# (run in this directory: gnuplot %s.gp)\n"
@@ -187,9 +188,7 @@ write_curves_gp (const char *gp, const char *name, const char *png,
   gp_quote (fp, dat);
   fprintf (fp, " using 1:4 with lines lw 2 lc rgb '#21918c' title "
            "'mean gap per macro-element'\nunset multiplot\n");
-  if (fclose (fp) != 0)
-    LAC_ERROR (LAC_EIO, "cannot write '%s'", gp);
-  return LAC_SUCCESS;
+  return lac_file_close (fp, gp);
 }
 
 /* Run `gnuplot -e "out = 'TMP'" GP` in the directory DIR (fork, chdir,

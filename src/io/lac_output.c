@@ -6,11 +6,10 @@
  */
 #include "io/lac_output.h"
 
-#include <errno.h>
 #include <stdio.h>
-#include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
@@ -25,17 +24,6 @@ lac_output_stress_names (lac_model model)
 {
   return model == LAC_AXISYMMETRIC ? stress_axi
          : model == LAC_SOLID3D ? stress_3d : stress_plane;
-}
-
-/* Close f and turn a write error into a message. */
-static int
-close_checked (FILE *f, const char *path)
-{
-  int bad = ferror (f);
-  if (fclose (f) != 0 || bad)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
 }
 
 static int
@@ -155,9 +143,8 @@ lac_output_csv (const char *path, const lac_output_fields *f)
   ns = lac_model_nstress (f->model);
   names = lac_output_stress_names (f->model);
   axi = f->model == LAC_AXISYMMETRIC;
-  if (!(fp = fopen (path, "w")))
-    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
-               strerror (errno));
+  if ((status = lac_file_create (path, "w", &fp)))
+    return status;
   fprintf (fp, axi ? "node,r,z,theta,u_r,u_z" : dim == 2
            ? "node,x,y,z,u_x,u_y" : "node,x,y,z,u_x,u_y,u_z");
   for (int k = 0; f->sigma && k < ns; k++)
@@ -177,7 +164,7 @@ lac_output_csv (const char *path, const lac_output_fields *f)
         fprintf (fp, ",%.10e", f->vm[a]);
       fprintf (fp, "\n");
     }
-  return close_checked (fp, path);
+  return lac_file_close (fp, path);
 }
 
 /* ---- summary ---------------------------------------------------------- */
@@ -186,11 +173,11 @@ int
 lac_output_summary (const char *path, size_t n, const char *const *key,
                     const char *const *val)
 {
-  FILE *fp = fopen (path, "w");
-  if (!fp)
-    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
-               strerror (errno));
+  FILE *fp;
+  int status = lac_file_create (path, "w", &fp);
+  if (status)
+    return status;
   for (size_t k = 0; k < n; k++)
     fprintf (fp, "%s = %s\n", key[k], val[k]);
-  return close_checked (fp, path);
+  return lac_file_close (fp, path);
 }

@@ -2,10 +2,9 @@
  */
 #include "io/lac_vtu.h"
 
-#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
-#include <string.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -235,10 +234,10 @@ lac_vtu_write (const lac_vtu *v, const char *path)
 {
   const uint16_t one = 1;
   uint64_t off = 0;
-  FILE *fp = fopen (path, "wb");
-  if (!fp)
-    LAC_ERROR (lac_status_errno (errno), "cannot create '%s' (%s)", path,
-               strerror (errno));
+  FILE *fp;
+  int status = lac_file_create (path, "wb", &fp);
+  if (status)
+    return status;
   fprintf (fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\""
            " version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
            "  <UnstructuredGrid>\n"
@@ -259,9 +258,5 @@ lac_vtu_write (const lac_vtu *v, const char *path)
   if (!v->ascii)
     appended (fp, v);
   fprintf (fp, "</VTKFile>\n");
-  int bad = ferror (fp);
-  if (fclose (fp) != 0 || bad)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
+  return lac_file_close (fp, path);
 }

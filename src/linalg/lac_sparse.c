@@ -18,6 +18,7 @@
 #include <limits.h>
 #include <stdint.h>
 #include <string.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -406,19 +407,14 @@ lac_csc_augment (lac_csc *A, const lac_csc *K, const lac_csc *C,
 int
 lac_csc_write_mm (const lac_csc *A, const char *path)
 {
-  FILE *f = fopen (path, "w");
-  int ok;
-  if (!f)
-    LAC_ERROR (lac_status_errno (errno), "cannot open '%s' for writing: %s",
-               path, strerror (errno));
-  ok = fprintf (f, "%%%%MatrixMarket matrix coordinate real general\n"
-                "%zu %zu %d\n", A->nrow, A->ncol, A->p[A->ncol]) > 0;
-  for (size_t j = 0; ok && j < A->ncol; j++)
-    for (int q = A->p[j]; ok && q < A->p[j + 1]; q++)
-      ok = fprintf (f, "%d %zu %.17g\n", A->i[q] + 1, j + 1, A->x[q]) > 0;
-  if (fclose (f) != 0)
-    ok = 0;
-  if (!ok)
-    LAC_ERROR (LAC_EIO, "writing '%s' failed: %s", path, strerror (errno));
-  return LAC_SUCCESS;
+  FILE *f;
+  int status = lac_file_create (path, "w", &f);
+  if (status)
+    return status;
+  fprintf (f, "%%%%MatrixMarket matrix coordinate real general\n"
+           "%zu %zu %d\n", A->nrow, A->ncol, A->p[A->ncol]);
+  for (size_t j = 0; !ferror (f) && j < A->ncol; j++)
+    for (int q = A->p[j]; q < A->p[j + 1]; q++)
+      fprintf (f, "%d %zu %.17g\n", A->i[q] + 1, j + 1, A->x[q]);
+  return lac_file_close (f, path);
 }

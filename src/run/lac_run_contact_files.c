@@ -3,11 +3,11 @@
  */
 #include "run/lac_run_contact_files.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_vtu.h"
@@ -46,10 +46,10 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
   const lac_contact *c = d->contact;
   const lac_run_contact *w = d->where;
   int dim = d->mesh->dim;
-  FILE *f = fopen (path, "w");
-  if (!f)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
+  FILE *f;
+  int status = lac_file_create (path, "w", &f);
+  if (status)
+    return status;
   fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
            "multiplier,lambda,lambda_exact,mean_gap,active,s,force_x,"
            "force_y,force_z\n");
@@ -68,11 +68,7 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
                                     : NAN);
       fputc ('\n', f);
     }
-  int bad = ferror (f);
-  if (fclose (f) != 0 || bad)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
+  return lac_file_close (f, path);
 }
 
 /* ---- contact.vtu ------------------------------------------------------- */

@@ -2,9 +2,8 @@
  */
 #include "run/lac_run_output.h"
 
-#include <errno.h>
 #include <stdio.h>
-#include <string.h>
+#include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_output.h"
@@ -69,10 +68,10 @@ write_curve (const lac_run_output_in *in, const char *path)
 {
   const lac_run_nl *nl = in->nl;
   int dim = in->mesh->dim;
-  FILE *f = fopen (path, "w");
-  if (!f)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
+  FILE *f;
+  int status = lac_file_create (path, "w", &f);
+  if (status)
+    return status;
   fprintf (f, "step,load_factor,imposed,monitor_ux,monitor_uy%s,iterations,"
            "cuts,residual,multipliers,active,contact_force,lambda_min\n",
            dim == 3 ? ",monitor_uz" : "");
@@ -86,10 +85,7 @@ write_curve (const lac_run_output_in *in, const char *path)
       fprintf (f, ",%d,%d,%.3e,%zu,%zu,%.10e,%.10e\n", q->iters, q->cuts,
                q->residual, q->k, q->nactive, q->force, q->lambda_min);
     }
-  if (fclose (f) != 0)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
+  return lac_file_close (f, path);
 }
 
 /* contact_steps.csv (every step) or contact.csv (last step only). */
@@ -97,10 +93,10 @@ static int
 write_mults (const lac_run_output_in *in, const char *path, int last_only)
 {
   const lac_run_nl *nl = in->nl;
-  FILE *f = fopen (path, "w");
-  if (!f)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
+  FILE *f;
+  int status = lac_file_create (path, "w", &f);
+  if (status)
+    return status;
   fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active\n",
            last_only ? "" : "step,");
   for (size_t q = 0; q < nl->nmult; q++)
@@ -113,10 +109,7 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
       fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d\n", u->macro, u->x[0],
                u->x[1], u->x[2], u->lambda, u->gap, u->active);
     }
-  if (fclose (f) != 0)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
+  return lac_file_close (f, path);
 }
 
 /* step_NNN.vtu of step j (0-based): the displacement u, its Cauchy
@@ -141,10 +134,10 @@ static int
 write_pvd (const lac_run_output_in *in, const char *path)
 {
   const lac_run_nl *nl = in->nl;
-  FILE *f = fopen (path, "w");
-  if (!f)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
+  FILE *f;
+  int status = lac_file_create (path, "w", &f);
+  if (status)
+    return status;
   fprintf (f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "  <Collection>\n");
@@ -153,10 +146,7 @@ write_pvd (const lac_run_output_in *in, const char *path)
       fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
                "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
   fprintf (f, "  </Collection>\n</VTKFile>\n");
-  if (fclose (f) != 0)
-    LAC_ERROR (lac_status_errno (errno), "cannot write '%s' (%s)", path,
-               strerror (errno));
-  return LAC_SUCCESS;
+  return lac_file_close (f, path);
 }
 
 /* The step files ([steps] vtu_every) and steps.pvd; stresses of the kept
