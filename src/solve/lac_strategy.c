@@ -255,6 +255,21 @@ fall_back (lac_strategy *s)
   return lac_saddle_set (s->saddle, s->sys);
 }
 
+/* The counts of the Cholesky-based solver in use into *sc (unchanged
+ * without one: the saddle-point LU counts apart). */
+static void
+inner_counts (const lac_strategy *s, lac_solve_counts *sc)
+{
+  if (s->schur)
+    lac_schur_get_counts (s->schur, sc);
+  if (s->aug)
+    lac_augmented_get_counts (s->aug, sc);
+  if (s->split)
+    lac_split_get_counts (s->split, sc);
+  if (s->petsc)
+    lac_petsc_get_counts (s->petsc, sc);
+}
+
 /* Up to MAX_REFINE steps of iterative refinement on the residual of (*):
  * U += dU, lambda += dlambda while the backward error decreases. */
 static int
@@ -310,12 +325,7 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
   if (!status)
     {
       lac_solve_counts sc = { 0 };
-      if (s->aug)
-        lac_augmented_get_counts (s->aug, &sc);
-      if (s->split)
-        lac_split_get_counts (s->split, &sc);
-      if (s->petsc)
-        lac_petsc_get_counts (s->petsc, &sc);
+      inner_counts (s, &sc);
       s->counts.last_iterations = sc.last_iterations;  /* before refine */
       s->counts.last_residual = sc.last_residual;
       status = refine (s, active, U, lambda);
@@ -360,14 +370,7 @@ lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
 {
   lac_solve_counts sc = s->before;
   *c = s->counts;
-  if (s->schur)
-    lac_schur_get_counts (s->schur, &sc);
-  if (s->aug)
-    lac_augmented_get_counts (s->aug, &sc);
-  if (s->split)
-    lac_split_get_counts (s->split, &sc);
-  if (s->petsc)
-    lac_petsc_get_counts (s->petsc, &sc);
+  inner_counts (s, &sc);
   c->substitutions = sc.solves;
   c->iterations = sc.iterations;
   c->factorizations = sc.factorizations;
