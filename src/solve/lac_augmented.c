@@ -18,6 +18,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_pcg.h"
+#include "solve/lac_active.h"
 
 /* Conjugate-gradient iterations at most: about ten are needed with
  * omega = 10 (lac_augmented.h); many more mean a singular S_W. */
@@ -25,19 +26,14 @@
 
 struct lac_augmented
 {
-  double omega;                    /* W = omega / s_i; 0: K alone         */
   const lac_contact_system *sys;   /* borrowed                            */
-  size_t n, k;
+  size_t n;
   lac_solver *chol;                /* owned: the factor of K or K_W       */
   lac_csc *A;                      /* owned, (b): K + C W C^T's pattern   */
   unsigned long long hK, hC;       /* patterns A was made for             */
-  double *s;                       /* owned, k: c_i^T diag(K)^-1 c_i      */
-  double *w;                       /* owned, k: W of the factor (0: off)  */
-  char *factored_for;              /* owned, k: statuses of the factor    */
-  int have_factor, factor_failed;
-  size_t na, *idx;                 /* owned, k: the active columns        */
+  lac_active act;                  /* owned; omega = 0: K alone           */
+  int factor_failed;
   double *x, *y;                   /* owned, n: scratch of the products   */
-  double *b, *lamA;                /* owned, k: PCG right side, unknown   */
   lac_solve_counts counts;
 };
 
@@ -47,7 +43,7 @@ lac_augmented_alloc (double omega)
   lac_augmented *s = lac_calloc (1, sizeof *s);
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "augmented solver");
-  s->omega = omega;
+  s->act.omega = omega;
   if (!(s->chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD)))
     {
       lac_free (s);
@@ -59,17 +55,10 @@ lac_augmented_alloc (double omega)
 static void
 free_arrays (lac_augmented *s)
 {
-  lac_free (s->s);
-  lac_free (s->w);
-  lac_free (s->factored_for);
-  lac_free (s->idx);
+  lac_active_clear (&s->act);
   lac_free (s->x);
   lac_free (s->y);
-  lac_free (s->b);
-  lac_free (s->lamA);
-  s->s = s->w = s->x = s->y = s->b = s->lamA = NULL;
-  s->factored_for = NULL;
-  s->idx = NULL;
+  s->x = s->y = NULL;
 }
 
 void
@@ -92,24 +81,17 @@ lac_augmented_get_counts (const lac_augmented *s, lac_solve_counts *c)
 static int
 alloc_arrays (lac_augmented *s, size_t n, size_t k)
 {
-  size_t k1 = k ? k : 1;
-  if (s->x && s->n == n && s->k == k)
+  int status;
+  if (s->x && s->n == n && s->act.k == k)
     return LAC_SUCCESS;
   free_arrays (s);
-  s->s = lac_malloc (k1 * sizeof *s->s);
-  s->w = lac_calloc (k1, sizeof *s->w);
-  s->factored_for = lac_calloc (k1, 1);
-  s->idx = lac_malloc (k1 * sizeof *s->idx);
-  s->b = lac_malloc (k1 * sizeof *s->b);
-  s->lamA = lac_malloc (k1 * sizeof *s->lamA);
+  if ((status = lac_active_init (&s->act, k)))
+    return status;
   s->x = lac_malloc (n * sizeof *s->x);
   s->y = lac_malloc (n * sizeof *s->y);
-  if (!s->s || !s->w || !s->factored_for || !s->idx || !s->b || !s->lamA
-      || !s->x || !s->y)
-    LAC_ERROR (LAC_ENOMEM, "augmented solver, n = %zu, k = %zu", n,
-               k);
+  if (!s->x || !s->y)
+    LAC_ERROR (LAC_ENOMEM, "augmented solver, n = %zu, k = %zu", n, k);
   s->n = n;
-  s->k = k;
   return LAC_SUCCESS;
 }
 
@@ -126,15 +108,10 @@ lac_augmented_set (lac_augmented *s, const lac_contact_system *sys)
   if (status)
     return status;
   s->sys = sys;
-  s->have_factor = 0;
-  lac_system_column_scales (sys, s->x, s->s);
-  if (s->omega == 0)                          /* K = L L^T, once */
-    {
-      if ((status = factor (s, sys->K)))
-        return status;
-      s->have_factor = 1;
-      return LAC_SUCCESS;
-    }
+  s->act.have_factor = 0;
+  lac_system_column_scales (sys, s->x, s->act.s);
+  if (s->act.omega == 0)                      /* K = L L^T, once */
+    return factor (s, sys->K);
   unsigned long long hK = lac_csc_pattern_hash (sys->K);
   unsigned long long hC = lac_csc_pattern_hash (sys->C);
   if (!s->A || hK != s->hK || hC != s->hC)    /* (b): K + C C^T pattern */
@@ -153,19 +130,16 @@ static int
 factor_augmented (lac_augmented *s, const char *active)
 {
   int status;
-  if (s->have_factor && memcmp (active, s->factored_for, s->k) == 0)
+  if (!lac_active_weights (&s->act, active))
     return LAC_SUCCESS;
-  for (size_t i = 0; i < s->k; i++)
-    s->w[i] = active[i] && s->s[i] > 0 ? s->omega / s->s[i] : 0.0;
-  if ((status = lac_csc_augment (s->A, s->sys->K, s->sys->C, s->w)))
+  if ((status = lac_csc_augment (s->A, s->sys->K, s->sys->C, s->act.w)))
     return status;
   if ((status = factor (s, s->A)))
     {
       s->factor_failed = 1;
       return status;
     }
-  memcpy (s->factored_for, active, s->k);
-  s->have_factor = 1;
+  lac_active_factored (&s->act, active);
   return LAC_SUCCESS;
 }
 
@@ -183,21 +157,12 @@ static int
 schur_product (void *ctx, const double *v, double *q)
 {
   lac_augmented *s = ctx;
-  const lac_csc *C = s->sys->C;
   int status;
   memset (s->x, 0, s->n * sizeof *s->x);
-  for (size_t a = 0; a < s->na; a++)                   /* x = C_A v */
-    for (int p = C->p[s->idx[a]]; p < C->p[s->idx[a] + 1]; p++)
-      s->x[C->i[p]] += C->x[p] * v[a];
+  lac_active_add_C (&s->act, s->sys->C, v, s->x);       /* x = C_A v */
   if ((status = solve_kw (s, s->x, s->y)))              /* y = K_W^-1 x */
     return status;
-  for (size_t a = 0; a < s->na; a++)                   /* q = C_A^T y */
-    {
-      double sum = 0;
-      for (int p = C->p[s->idx[a]]; p < C->p[s->idx[a] + 1]; p++)
-        sum += C->x[p] * s->y[C->i[p]];
-      q[a] = sum;
-    }
+  lac_active_Ct (&s->act, s->sys->C, s->y, q);          /* q = C_A^T y */
   return LAC_SUCCESS;
 }
 
@@ -205,12 +170,12 @@ schur_product (void *ctx, const double *v, double *q)
 static int
 schur_precondition (void *ctx, const double *r, double *z)
 {
-  const lac_augmented *s = ctx;
-  for (size_t a = 0; a < s->na; a++)
+  const lac_active *act = &((const lac_augmented *) ctx)->act;
+  for (size_t a = 0; a < act->na; a++)
     {
-      size_t i = s->idx[a];
-      z[a] = s->omega > 0 ? s->w[i] * r[a]
-             : s->s[i] > 0 ? r[a] / s->s[i] : r[a];
+      size_t i = act->idx[a];
+      z[a] = act->omega > 0 ? act->w[i] * r[a]
+             : act->s[i] > 0 ? r[a] / act->s[i] : r[a];
     }
   return LAC_SUCCESS;
 }
@@ -221,11 +186,12 @@ load_vector (lac_augmented *s, const double *f, const double *g,
              const double *lamA, double *x)
 {
   const lac_csc *C = s->sys->C;
+  const lac_active *act = &s->act;
   memcpy (x, f, s->n * sizeof *x);
-  for (size_t a = 0; a < s->na; a++)
+  for (size_t a = 0; a < act->na; a++)
     {
-      size_t i = s->idx[a];
-      double v = s->w[i] * g[i] + (lamA ? lamA[a] : 0.0);
+      size_t i = act->idx[a];
+      double v = act->w[i] * g[i] + (lamA ? lamA[a] : 0.0);
       for (int p = C->p[i]; p < C->p[i + 1]; p++)
         x[C->i[p]] += C->x[p] * v;
     }
@@ -241,47 +207,27 @@ int
 lac_augmented_solve (lac_augmented *s, const char *active, const double *f,
                  const double *g, double rtol, double *U, double *lambda)
 {
-  const lac_csc *C;
+  lac_active *act = &s->act;
   lac_pcg_info info;
   int status;
   if (!s->sys)
     LAC_ERROR (LAC_EINVAL, "lac_augmented_set was not called");
   s->factor_failed = 0;
-  C = s->sys->C;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
-  if (s->omega > 0 && (status = factor_augmented (s, active)))  /* 1. */
+  if (act->omega > 0 && (status = factor_augmented (s, active)))  /* 1. */
     return status;
-  s->na = 0;
-  for (size_t i = 0; i < s->k; i++)
-    if (active[i])
-      s->lamA[s->na] = lambda[i], s->idx[s->na++] = i;
+  lac_active_gather (act, active, lambda);
   load_vector (s, f, g, NULL, s->x);                     /* 2. U_0 */
   if ((status = solve_kw (s, s->x, U)))
     return status;
-  for (size_t a = 0; a < s->na; a++)                     /* 3. */
-    {
-      double cu = 0;
-      for (int p = C->p[s->idx[a]]; p < C->p[s->idx[a] + 1]; p++)
-        cu += C->x[p] * U[C->i[p]];
-      s->b[a] = g[s->idx[a]] - cu;                       /* g_A - C_A^T U_0 */
-    }
-  status = lac_pcg (s->na, schur_product, schur_precondition, s, s->b,
-                    s->lamA, rtol, PCG_MAXIT, &info);
-  s->counts.iterations += info.iterations;
-  s->counts.last_iterations = info.iterations;
-  s->counts.last_residual = info.residual;
-  if (status == LAC_EMAXITER || status == LAC_ESING)
-    return LAC_ERRMSG (LAC_ESING, "the multipliers of the %zu active "
-                       "macro-elements are not determined (%s): their "
-                       "system is singular, the contact constraints are "
-                       "linearly dependent (inf-sup condition [LAC (10)])", s->na, lac_error_message ());
-  if (status)
+  lac_active_rhs (act, s->sys->C, g, U);                 /* 3. */
+  status = lac_pcg (act->na, schur_product, schur_precondition, s, act->b,
+                    act->lamA, rtol, PCG_MAXIT, &info);
+  if ((status = lac_solve_counts_krylov (&s->counts, status, info.iterations,
+                                         info.residual, act->na)))
     return status;
-  for (size_t i = 0; i < s->k; i++)
-    lambda[i] = 0;
-  for (size_t a = 0; a < s->na; a++)
-    lambda[s->idx[a]] = s->lamA[a];
-  load_vector (s, f, g, s->lamA, s->x);                  /* 4. U */
+  lac_active_scatter (act, lambda);
+  load_vector (s, f, g, act->lamA, s->x);                /* 4. U */
   return solve_kw (s, s->x, U);
 }

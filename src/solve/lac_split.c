@@ -17,6 +17,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_gmres.h"
+#include "solve/lac_active.h"
 
 #define GMRES_RESTART 50
 #define GMRES_MAXIT 300     /* about ten are needed (lac_split.h) */
@@ -34,16 +35,13 @@ typedef struct part
 
 struct lac_split
 {
-  double omega;
   const lac_contact_system *sys;   /* borrowed                            */
-  size_t n, k;
+  size_t n;
   part H, S;
   lac_csc *KS;             /* owned: K~_SS in the pattern of K_SS + C_S C_S^T */
-  double *scale, *w;       /* owned, k: c_i^T diag(K)^-1 c_i, and W        */
-  char *factored_for;      /* owned, k: statuses of the factor of K~_SS    */
-  int have_factor, factor_failed;
-  size_t na, *idx;         /* owned, k: the active columns                 */
-  double *b, *lamA, *v;    /* owned, k: GMRES right side, unknown, scratch */
+  lac_active act;          /* owned: W and the factor of K~_SS             */
+  int factor_failed;
+  double *v;               /* owned, k: scratch                            */
   double *U0;              /* owned, n: U of the current product           */
   lac_solve_counts counts;
 };
@@ -54,7 +52,7 @@ lac_split_alloc (double omega)
   lac_split *s = lac_calloc (1, sizeof *s);
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "split solver");
-  s->omega = omega;
+  s->act.omega = omega;
   s->H.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
   s->S.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
   if (!s->H.chol || !s->S.chol)
@@ -86,17 +84,10 @@ free_arrays (lac_split *s)
   part_clear (&s->S);
   lac_csc_free (s->KS);
   s->KS = NULL;
-  lac_free (s->scale);
-  lac_free (s->w);
-  lac_free (s->factored_for);
-  lac_free (s->idx);
-  lac_free (s->b);
-  lac_free (s->lamA);
+  lac_active_clear (&s->act);
   lac_free (s->v);
   lac_free (s->U0);
-  s->scale = s->w = s->b = s->lamA = s->v = s->U0 = NULL;
-  s->factored_for = NULL;
-  s->idx = NULL;
+  s->v = s->U0 = NULL;
 }
 
 void
@@ -225,21 +216,15 @@ make_part (part *P, const lac_contact_system *sys, const char *in_S,
 static int
 alloc_arrays (lac_split *s, size_t n, size_t k)
 {
-  size_t k1 = k ? k : 1;
+  int status;
   free_arrays (s);
-  s->scale = lac_malloc (k1 * sizeof *s->scale);
-  s->w = lac_calloc (k1, sizeof *s->w);
-  s->factored_for = lac_calloc (k1, 1);
-  s->idx = lac_malloc (k1 * sizeof *s->idx);
-  s->b = lac_malloc (k1 * sizeof *s->b);
-  s->lamA = lac_malloc (k1 * sizeof *s->lamA);
-  s->v = lac_malloc (k1 * sizeof *s->v);
+  if ((status = lac_active_init (&s->act, k)))
+    return status;
+  s->v = lac_malloc ((k ? k : 1) * sizeof *s->v);
   s->U0 = lac_malloc (n * sizeof *s->U0);
-  if (!s->scale || !s->w || !s->factored_for || !s->idx || !s->b
-      || !s->lamA || !s->v || !s->U0)
+  if (!s->v || !s->U0)
     LAC_ERROR (LAC_ENOMEM, "split solver, n = %zu, k = %zu", n, k);
   s->n = n;
-  s->k = k;
   return LAC_SUCCESS;
 }
 
@@ -261,7 +246,7 @@ lac_split_set (lac_split *s, const lac_contact_system *sys)
   if (status)
     return status;
   s->sys = sys;
-  s->have_factor = s->factor_failed = 0;
+  s->factor_failed = 0;
   in_S = lac_malloc (n ? n : 1);
   loc = lac_malloc ((n ? n : 1) * sizeof *loc);
   status = !in_S || !loc ? LAC_ERRMSG (LAC_ENOMEM, "split solver, n = %zu",
@@ -275,7 +260,7 @@ lac_split_set (lac_split *s, const lac_contact_system *sys)
   lac_free (loc);
   if (status)
     return status;
-  lac_system_column_scales (sys, s->U0, s->scale);
+  lac_system_column_scales (sys, s->U0, s->act.s);
   if (s->S.n && !(s->KS = lac_csc_augment_pattern (s->S.K, s->S.C)))
     return LAC_ENOMEM;
   return s->H.n ? factor (s, s->H.chol, s->H.K) : LAC_SUCCESS;
@@ -288,26 +273,13 @@ static int
 factor_floating (lac_split *s, const char *active)
 {
   int status;
-  if (!s->S.n || (s->have_factor && memcmp (active, s->factored_for, s->k)
-                                    == 0))
+  if (!s->S.n || !lac_active_weights (&s->act, active))
     return LAC_SUCCESS;
-  for (size_t i = 0; i < s->k; i++)
-    s->w[i] = active[i] && s->scale[i] > 0 ? s->omega / s->scale[i] : 0.0;
-  if ((status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->w))
+  if ((status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->act.w))
       || (status = factor (s, s->S.chol, s->KS)))
     return status;
-  memcpy (s->factored_for, active, s->k);
-  s->have_factor = 1;
+  lac_active_factored (&s->act, active);
   return LAC_SUCCESS;
-}
-
-/* P.x += C_P,A c: c one entry per active column. */
-static void
-add_columns (part *P, const lac_split *s, const double *c)
-{
-  for (size_t a = 0; a < s->na; a++)
-    for (int p = P->C->p[s->idx[a]]; p < P->C->p[s->idx[a] + 1]; p++)
-      P->x[P->C->i[p]] += P->C->x[p] * c[a];
 }
 
 /* U = U(lambda_A) of the triangular system of lac_split.h, with the
@@ -317,46 +289,33 @@ triangular_solve (lac_split *s, const double *f, const double *g,
                   const double *lamA, double *U)
 {
   part *H = &s->H, *S = &s->S;
+  const lac_active *act = &s->act;
   int status;
   for (size_t j = 0; j < H->n; j++)                      /* U_H */
     H->x[j] = f ? f[H->dof[j]] : 0.0;
-  add_columns (H, s, lamA);
+  lac_active_add_C (act, H->C, lamA, H->x);
   if (H->n && (s->counts.solves++,
                (status = lac_solver_solve (H->chol, H->x, H->y))))
     return status;
   for (size_t j = 0; j < H->n; j++)
     U[H->dof[j]] = H->y[j];
-  for (size_t a = 0; a < s->na; a++)     /* W_A (g_A - C_H,A^T U_H) + lambda_A */
+  for (size_t a = 0; a < act->na; a++) /* W_A (g_A - C_H,A^T U_H) + lambda_A */
     {
-      size_t i = s->idx[a];
+      size_t i = act->idx[a];
       double cu = 0;
       for (int p = H->C->p[i]; p < H->C->p[i + 1]; p++)
         cu += H->C->x[p] * H->y[H->C->i[p]];
-      s->v[a] = s->w[i] * ((g ? g[i] : 0.0) - cu) + lamA[a];
+      s->v[a] = act->w[i] * ((g ? g[i] : 0.0) - cu) + lamA[a];
     }
   for (size_t j = 0; j < S->n; j++)                      /* U_S */
     S->x[j] = f ? f[S->dof[j]] : 0.0;
-  add_columns (S, s, s->v);
+  lac_active_add_C (act, S->C, s->v, S->x);
   if (S->n && (s->counts.solves++,
                (status = lac_solver_solve (S->chol, S->x, S->y))))
     return status;
   for (size_t j = 0; j < S->n; j++)
     U[S->dof[j]] = S->y[j];
   return LAC_SUCCESS;
-}
-
-/* q_a = (C_A^T U)_a */
-static void
-constraint_values (const lac_split *s, const double *U, double *q)
-{
-  const lac_csc *C = s->sys->C;
-  for (size_t a = 0; a < s->na; a++)
-    {
-      double sum = 0;
-      for (int p = C->p[s->idx[a]]; p < C->p[s->idx[a] + 1]; p++)
-        sum += C->x[p] * U[C->i[p]];
-      q[a] = sum;
-    }
 }
 
 /* q = A v = C_A^T U_0(v): GMRES's operator. */
@@ -366,7 +325,7 @@ product (void *ctx, const double *v, double *q)
   lac_split *s = ctx;
   int status = triangular_solve (s, NULL, NULL, v, s->U0);
   if (!status)
-    constraint_values (s, s->U0, q);
+    lac_active_Ct (&s->act, s->sys->C, s->U0, q);
   return status;
 }
 
@@ -374,12 +333,12 @@ product (void *ctx, const double *v, double *q)
 static int
 precondition (void *ctx, const double *r, double *z)
 {
-  const lac_split *s = ctx;
-  for (size_t a = 0; a < s->na; a++)
+  const lac_active *act = &((const lac_split *) ctx)->act;
+  for (size_t a = 0; a < act->na; a++)
     {
-      size_t i = s->idx[a];
-      z[a] = s->w[i] > 0 ? s->w[i] * r[a]
-             : s->scale[i] > 0 ? s->omega * r[a] / s->scale[i] : r[a];
+      size_t i = act->idx[a];
+      z[a] = act->w[i] > 0 ? act->w[i] * r[a]
+             : act->s[i] > 0 ? act->omega * r[a] / act->s[i] : r[a];
     }
   return LAC_SUCCESS;
 }
@@ -388,6 +347,7 @@ int
 lac_split_solve (lac_split *s, const char *active, const double *f,
                  const double *g, double rtol, double *U, double *lambda)
 {
+  lac_active *act = &s->act;
   lac_gmres_info info;
   int status;
   if (!s->sys)
@@ -397,33 +357,16 @@ lac_split_solve (lac_split *s, const char *active, const double *f,
   g = g ? g : s->sys->G;
   if ((status = factor_floating (s, active)))             /* 1. */
     return status;
-  s->na = 0;
-  for (size_t i = 0; i < s->k; i++)
-    if (active[i])
-      s->lamA[s->na] = lambda[i], s->idx[s->na++] = i;
-  memset (s->v, 0, s->k * sizeof *s->v);
+  lac_active_gather (act, active, lambda);
+  memset (s->v, 0, act->k * sizeof *s->v);
   if ((status = triangular_solve (s, f, g, s->v, U)))     /* 2. U(0) */
     return status;
-  constraint_values (s, U, s->b);
-  for (size_t a = 0; a < s->na; a++)
-    s->b[a] = g[s->idx[a]] - s->b[a];
-  status = lac_gmres (s->na, product, precondition, s, s->b, s->lamA, rtol,
-                      GMRES_RESTART, GMRES_MAXIT, &info);  /* 3. */
-  s->counts.iterations += info.iterations;
-  s->counts.last_iterations = info.iterations;
-  s->counts.last_residual = info.residual;
-  if (status == LAC_EMAXITER)
-    return LAC_ERRMSG (LAC_ESING, "the multipliers of the %zu active "
-                       "macro-elements are not determined (%s): their "
-                       "system is singular, the contact constraints are "
-                       "linearly dependent "
-                       "(inf-sup condition [LAC (10)])", s->na,
-                       lac_error_message ());
-  if (status)
+  lac_active_rhs (act, s->sys->C, g, U);
+  status = lac_gmres (act->na, product, precondition, s, act->b, act->lamA,
+                      rtol, GMRES_RESTART, GMRES_MAXIT, &info);  /* 3. */
+  if ((status = lac_solve_counts_krylov (&s->counts, status, info.iterations,
+                                         info.residual, act->na)))
     return status;
-  for (size_t i = 0; i < s->k; i++)
-    lambda[i] = 0;
-  for (size_t a = 0; a < s->na; a++)
-    lambda[s->idx[a]] = s->lamA[a];
-  return triangular_solve (s, f, g, s->lamA, U);            /* 4. */
+  lac_active_scatter (act, lambda);
+  return triangular_solve (s, f, g, act->lamA, U);          /* 4. */
 }

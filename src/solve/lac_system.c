@@ -204,3 +204,19 @@ lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
     }
   return LAC_SUCCESS;
 }
+
+int
+lac_solve_counts_krylov (lac_solve_counts *c, int status, int iterations,
+                         double residual, size_t na)
+{
+  c->iterations += iterations;
+  c->last_iterations = iterations;
+  c->last_residual = residual;
+  if (status == LAC_EMAXITER || status == LAC_ESING)
+    return LAC_ERRMSG (LAC_ESING, "the multipliers of the %zu active "
+                       "macro-elements are not determined (%s): their "
+                       "system is singular, the contact constraints are "
+                       "linearly dependent (inf-sup condition [LAC (10)])",
+                       na, lac_error_message ());
+  return status;
+}

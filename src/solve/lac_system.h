@@ -100,5 +100,12 @@ void lac_system_column_scales (const lac_contact_system *sys, double *work,
  * and flops. */
 int lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
                              const lac_csc *A);
+/* After a Krylov solve for the na active multipliers that returned
+ * `status`: its iterations and final relative residual counted in c.
+ * Returns status, with LAC_EMAXITER and LAC_ESING (a breakdown) turned
+ * into LAC_ESING and a message: the multipliers are not determined, the
+ * contact constraints are linearly dependent [LAC (10)]. */
+int lac_solve_counts_krylov (lac_solve_counts *c, int status, int iterations,
+                             double residual, size_t na);
 
 #endif /* LAC_SYSTEM_H */
