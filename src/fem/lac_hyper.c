@@ -587,12 +587,7 @@ lac_hyper_cauchy_at (const lac_mesh *m, const lac_hyper *h, const double *u,
                      size_t c, const double *xi, double *s)
 {
   int status = check_hyper (m, h);
-  if (status)
-    return status;
-  if (!u || !xi || !s || c >= m->ncells)
-    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells) or NULL "
-               "argument", c, m->ncells);
-  return cauchy_at (m, h, u, c, xi, s);
+  return status ? status : lac_nodal_point (m, cauchy_at, h, u, c, xi, s);
 }
 
 int
@@ -601,10 +596,6 @@ lac_hyper_cauchy_nodal (const lac_mesh *m, const lac_hyper *h,
                         double *vm)
 {
   int status = check_hyper (m, h);
-  if (status)
-    return status;
-  if (!u || !sigma)
-    LAC_ERROR (LAC_EINVAL, "displacement or output is NULL");
-  return lac_nodal_average (m, h->model, h->E, cells, cauchy_at, h, u, sigma,
-                            vm);
+  return status ? status : lac_nodal_average (m, h->model, h->E, cells,
+                                              cauchy_at, h, u, sigma, vm);
 }

@@ -8,6 +8,16 @@
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
 
+int
+lac_nodal_point (const lac_mesh *m, lac_cell_stress *f, const void *law,
+                 const double *u, size_t c, const double *xi, double *s)
+{
+  if (!u || !xi || !s || c >= m->ncells)
+    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells) or NULL "
+               "argument", c, m->ncells);
+  return f (m, law, u, c, xi, s);
+}
+
 /* lac_nodal_average: sigma at the nodes = the mean over the cells sharing
  * a node (cells[c] != 0, E[c] > 0) of the cell's stress there, evaluated
  * by f; vm (may be NULL) its von Mises value.
@@ -20,8 +30,10 @@ lac_nodal_average (const lac_mesh *m, lac_model model, const double *E,
 {
   int ns = lac_model_nstress (model), status = LAC_SUCCESS;
   double s[6];
-  unsigned *count = lac_calloc (m->nnodes, sizeof *count);
-  if (!count)
+  unsigned *count;
+  if (!u || !sigma)
+    LAC_ERROR (LAC_EINVAL, "displacement or output is NULL");
+  if (!(count = lac_calloc (m->nnodes, sizeof *count)))
     LAC_ERROR (LAC_ENOMEM, "counters for %zu nodes", m->nnodes);
   memset (sigma, 0, m->nnodes * (size_t) ns * sizeof *sigma);
   for (size_t c = 0; c < m->ncells && !status; c++)

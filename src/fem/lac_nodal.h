@@ -21,10 +21,18 @@ typedef int lac_cell_stress (const lac_mesh *m, const void *law,
                              const double *u, size_t c, const double *xi,
                              double *s);
 
+/* The stress f gives at reference point xi of cell c, s[ns]: f itself,
+ * after the checks of the public point functions.  Returns LAC_EINVAL if
+ * c is out of range or u, xi or s is NULL, else what f returns. */
+int lac_nodal_point (const lac_mesh *m, lac_cell_stress *f, const void *law,
+                     const double *u, size_t c, const double *xi,
+                     double *s);
+
 /* Nodal averages of the stress f gives (cells with cells[c] != 0 and
  * E[c] > 0; cells may be NULL): sigma[nnodes*ns], vm[nnodes] (may be
  * NULL).  Nodes in no such cell get zeros.  Returns LAC_SUCCESS,
- * LAC_EINVAL (a cell of unknown type), LAC_ENOMEM, or what f returns. */
+ * LAC_EINVAL (u or sigma NULL, a cell of unknown type), LAC_ENOMEM, or
+ * what f returns. */
 int lac_nodal_average (const lac_mesh *m, lac_model model, const double *E,
                        const char *cells, lac_cell_stress *f,
                        const void *law, const double *u, double *sigma,

@@ -159,12 +159,7 @@ lac_post_stress_at (const lac_mesh *m, const lac_elastic *mat,
                     const double *u, size_t c, const double *xi, double *s)
 {
   int status = check_args (m, mat, u);
-  if (status)
-    return status;
-  if (c >= m->ncells || !xi || !s)
-    LAC_ERROR (LAC_EINVAL, "cell %zu out of range (%zu cells) or NULL"
-               " argument", c, m->ncells);
-  return stress_at (m, mat, u, c, xi, s);
+  return status ? status : lac_nodal_point (m, stress_at, mat, u, c, xi, s);
 }
 
 /* lac_post_stress_nodal: sigma at every node, the unweighted mean of the
@@ -178,12 +173,8 @@ lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                        double *vm)
 {
   int status = check_args (m, mat, u);
-  if (status)
-    return status;
-  if (!sigma)
-    LAC_ERROR (LAC_EINVAL, "output sigma is NULL");
-  return lac_nodal_average (m, mat->model, mat->E, cells, stress_at, mat, u,
-                            sigma, vm);
+  return status ? status : lac_nodal_average (m, mat->model, mat->E, cells,
+                                              stress_at, mat, u, sigma, vm);
 }
 
 /* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,
