@@ -282,9 +282,17 @@ lac_mesh_group_nodes (lac_mesh *m, size_t g)
   return LAC_SUCCESS;
 }
 
-/* Append an empty group named `name' (copied); checks the name is new. */
+static void
+group_pop (lac_mesh *m)
+{
+  group_clear (&m->group[--m->ngroups]);
+}
+
+/* Append a group named `name' (copied; checks the name is new) with room
+ * for n nodes (nodes_only) or n cells and faces, still empty: *out. */
 static int
-group_push (lac_mesh *m, const char *name, int dim, int tag)
+group_push (lac_mesh *m, const char *name, int dim, int tag, size_t n,
+            int nodes_only, lac_group **out)
 {
   lac_group *grp, *G;
 
@@ -308,13 +316,21 @@ group_push (lac_mesh *m, const char *name, int dim, int tag)
   G->dim = dim;
   G->tag = tag;
   m->ngroups++;
+  if (nodes_only)
+    G->node = lac_malloc (n * sizeof *G->node);
+  else
+    {
+      G->cell = lac_malloc (n * sizeof *G->cell);
+      G->face = lac_malloc (n * sizeof *G->face);
+    }
+  if (nodes_only ? !G->node : !G->cell || !G->face)
+    {
+      group_pop (m);
+      LAC_ERROR (LAC_ENOMEM, "%sgroup '%s' of %zu %s", nodes_only ? "node "
+                 : "", name, n, nodes_only ? "nodes" : "entities");
+    }
+  *out = G;
   return LAC_SUCCESS;
-}
-
-static void
-group_pop (lac_mesh *m)
-{
-  group_clear (&m->group[--m->ngroups]);
 }
 
 /* lac_mesh_add_group: add a cell group (dim == mesh dim; face may be NULL)
@@ -335,17 +351,8 @@ lac_mesh_add_group (lac_mesh *m, const char *name, int dim, int tag,
   if (m && n > 0 && (!cell || (dim == m->dim - 1 && !face)))
     LAC_ERROR (LAC_EINVAL, "group '%s': no cells or faces given",
                name ? name : "?");
-  status = group_push (m, name, dim, tag);
-  if (status)
+  if ((status = group_push (m, name, dim, tag, n, 0, &G)))
     return status;
-  G = &m->group[m->ngroups - 1];
-  G->cell = lac_malloc (n * sizeof *G->cell);
-  G->face = lac_malloc (n * sizeof *G->face);
-  if (!G->cell || !G->face)
-    {
-      group_pop (m);
-      LAC_ERROR (LAC_ENOMEM, "group '%s' of %zu entities", name, n);
-    }
   for (size_t e = 0; e < n; e++)
     {
       const lac_refelem *re = cell[e] < m->ncells
@@ -384,16 +391,8 @@ lac_mesh_add_node_group (lac_mesh *m, const char *name, int dim, int tag,
   if (nnodes > 0 && !node)
     LAC_ERROR (LAC_EINVAL, "node group '%s': no nodes given",
                name ? name : "?");
-  status = group_push (m, name, dim, tag);
-  if (status)
+  if ((status = group_push (m, name, dim, tag, nnodes, 1, &G)))
     return status;
-  G = &m->group[m->ngroups - 1];
-  G->node = lac_malloc (nnodes * sizeof *G->node);
-  if (!G->node)
-    {
-      group_pop (m);
-      LAC_ERROR (LAC_ENOMEM, "node group '%s' of %zu nodes", name, nnodes);
-    }
   for (size_t i = 0; i < nnodes; i++)
     {
       if (node[i] >= m->nnodes)
