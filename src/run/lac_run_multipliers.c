@@ -34,6 +34,42 @@ normal_stress (int dim, const double *s, const double *n)
          + 2 * (n[0] * n[1] * s[3] + n[1] * n[2] * s[4] + n[2] * n[0] * s[5]);
 }
 
+/* The quadrature of the pairing over the covered part of macro-element m,
+ * with the weights of the LAC terms (2 pi r in the axisymmetric model):
+ * sum = int 1, int x (3), int n.sigma.n (with an exact solution, else 0);
+ * l2 (if not NULL) += int (n.sigma.n - lh)^2. */
+static int
+macro_quadrature (const ctx *r, const lac_exact *e, size_t m, double lh,
+                  double sum[5], double *l2)
+{
+  const lac_macro *M = r->setup->macro;
+  const lac_pairing *P = r->setup->pairing;
+  int dim = r->dim, nodes[LAC_MAX_FACE_NODES];
+  double s[6];
+  lac_map mp;
+  memset (sum, 0, 5 * sizeof *sum);
+  for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
+    for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
+      {
+        int nn = lac_contact_facet_eval (r->mesh, M->cell[j], M->face[j],
+                                         P->xs + p * (dim - 1), nodes, &mp);
+        if (nn < 0)
+          return -nn;
+        double w = P->w[p] * lac_model_weight (r->model, mp.x);
+        sum[0] += w;
+        for (int k = 0; k < dim; k++)
+          sum[1 + k] += w * mp.x[k];
+        if (e->kind == LAC_EXACT_NONE)
+          continue;
+        lac_exact_sigma (mp.x, (void *) e, s);
+        double sn = normal_stress (dim, s, mp.normal);
+        sum[4] += w * sn;
+        if (l2)
+          *l2 += w * (sn - lh) * (sn - lh);
+      }
+  return LAC_SUCCESS;
+}
+
 /* Per multiplier: the centroid of T^m cap Gamma_C and, with an exact
  * solution, the mean of its contact pressure n.sigma.n there; *l2 =
  * ||lambda - lambda_h||_{0, Gamma_C} over the covered parts of every
@@ -43,10 +79,6 @@ static int
 multiplier_geometry (ctx *r, const lac_exact *e, double *l2)
 {
   const lac_contact *c = r->contact;
-  int dim = r->dim, nodes[LAC_MAX_FACE_NODES];
-  const lac_macro *M = r->setup->macro;
-  const lac_pairing *P = r->setup->pairing;
-  lac_map mp;
   *l2 = 0;
   if (c->xpt)                                    /* collocation points */
     {
@@ -63,61 +95,35 @@ multiplier_geometry (ctx *r, const lac_exact *e, double *l2)
       *l2 = sqrt (*l2);
       return LAC_SUCCESS;
     }
-  for (size_t mm = 0; e->kind != LAC_EXACT_NONE && mm < M->n; mm++)
+  for (size_t m = 0; e->kind != LAC_EXACT_NONE && m < r->setup->macro->n;
+       m++)
     {
-      long i = c->mult[mm];
-      double lh = i >= 0 ? r->lambda[i] : 0.0, s[6];
-      for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
-        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
-          {
-            int nn = lac_contact_facet_eval (r->mesh, M->cell[j], M->face[j],
-                                             P->xs + p * (dim - 1), nodes, &mp);
-            if (nn < 0)
-              return -nn;
-            double w = P->w[p] * lac_model_weight (r->model, mp.x);
-            lac_exact_sigma (mp.x, (void *) e, s);
-            double d = normal_stress (dim, s, mp.normal) - lh;
-            *l2 += w * d * d;                    /* int (lambda - lambda_h)^2 */
-          }
+      long i = c->mult[m];
+      double sum[5];
+      int status = macro_quadrature (r, e, m, i >= 0 ? r->lambda[i] : 0.0,
+                                     sum, l2);
+      if (status)
+        return status;
     }
   *l2 = sqrt (*l2);
   return multiplier_means (r, e);
 }
 
+/* Per multiplier: the centroid of T^m cap Gamma_C, and the mean of the
+ * exact contact pressure n.sigma.n there. */
 static int
 multiplier_means (ctx *r, const lac_exact *e)
 {
-  const lac_macro *M = r->setup->macro;
-  const lac_pairing *P = r->setup->pairing;
   const lac_contact *c = r->contact;
-  int dim = r->dim, nodes[LAC_MAX_FACE_NODES];
-  lac_map mp;
   for (size_t i = 0; i < c->k; i++)
     {
-      size_t m = c->macro[i];
-      double wsum = 0, s[6], *xc = r->mu->x + i * 3;
-      xc[0] = xc[1] = xc[2] = r->mu->exact[i] = 0;
-      for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
-        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
-          {
-            int nn = lac_contact_facet_eval (r->mesh, M->cell[j], M->face[j],
-                                             P->xs + p * (dim - 1), nodes, &mp);
-            if (nn < 0)
-              return -nn;
-            double w = P->w[p] * lac_model_weight (r->model, mp.x);
-            wsum += w;                          /* as the LAC terms: 2 pi r */
-            for (int k = 0; k < dim; k++)
-              xc[k] += w * mp.x[k];
-            if (e->kind != LAC_EXACT_NONE)
-              {
-                lac_exact_sigma (mp.x, (void *) e, s);
-                r->mu->exact[i] += w * normal_stress (dim, s, mp.normal);
-              }
-          }
-      for (int k = 0; k < dim && wsum > 0; k++)
-        xc[k] /= wsum;
-      if (wsum > 0)
-        r->mu->exact[i] /= wsum;
+      double sum[5], *xc = r->mu->x + i * 3;
+      int status = macro_quadrature (r, e, c->macro[i], 0.0, sum, NULL);
+      if (status)
+        return status;
+      for (int k = 0; k < 3; k++)
+        xc[k] = sum[0] > 0 ? sum[1 + k] / sum[0] : sum[1 + k];
+      r->mu->exact[i] = sum[0] > 0 ? sum[4] / sum[0] : sum[4];
     }
   return LAC_SUCCESS;
 }
