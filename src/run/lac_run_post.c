@@ -23,6 +23,48 @@ lac_run_results_clear (lac_run_results *res)
   memset (res, 0, sizeof *res);
 }
 
+/* ---- what every summary has ------------------------------------------- */
+
+/* The first lines: the scene, the model, the mesh and its unknowns. */
+static int
+summary_head (const lac_run_post_in *in, lac_summary *sum)
+{
+  const lac_mesh *m = in->mesh;
+  char types[128];
+  int status;
+  lac_run_cell_types (m, types, sizeof types);
+  if ((status = lac_summary_add (sum, "title", "%s", in->sc->scene.title))
+      || (status = lac_summary_add (sum, "model", "%s",
+                                    lac_model_name (in->model)))
+      || (status = lac_summary_add (sum, "element", "%s", types))
+      || (status = lac_summary_add (sum, "effects", "%s", in->effects))
+      || (status = lac_summary_add (sum, "nodes", "%zu", m->nnodes))
+      || (status = lac_summary_add (sum, "cells", "%zu", m->ncells)))
+    return status;
+  return lac_summary_add (sum, "dofs", "%zu", in->sys->ndof);
+}
+
+/* max_u = max over the nodes of |u|, and max_von_mises. */
+static int
+summary_maxima (const lac_run_post_in *in, lac_run_results *r)
+{
+  const lac_mesh *m = in->mesh;
+  int dim = m->dim, status;
+  double umax = 0, vmax = 0;
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      double s = 0;
+      for (int i = 0; i < dim; i++)
+        s += in->u[a * (size_t) dim + (size_t) i]
+             * in->u[a * (size_t) dim + (size_t) i];
+      umax = fmax (umax, sqrt (s));
+      vmax = fmax (vmax, r->vm[a]);
+    }
+  if ((status = lac_summary_add (&r->summary, "max_u", "%.10e", umax)))
+    return status;
+  return lac_summary_add (&r->summary, "max_von_mises", "%.10e", vmax);
+}
+
 /* ---- the summary of a linear run -------------------------------------- */
 
 /* h = the largest cell diameter (largest distance between two vertices
@@ -126,37 +168,16 @@ make_summary (const lac_run_post_in *in, lac_run_results *r,
   const lac_mesh *m = in->mesh;
   const lac_run_system *sys = in->sys;
   lac_summary *sum = &r->summary;
-  int dim = m->dim;
-  double work = 0, umax = 0, vmax = 0;
-  char types[128];
+  double work = 0;
   int status;
   for (size_t k = 0; k < sys->ndof; k++)
     work += sys->F[k] * in->u[k];                /* l(u_h) = F . u */
-  for (size_t a = 0; a < m->nnodes; a++)
-    {
-      double s = 0;
-      for (int i = 0; i < dim; i++)
-        s += in->u[a * (size_t) dim + (size_t) i]
-             * in->u[a * (size_t) dim + (size_t) i];
-      umax = fmax (umax, sqrt (s));
-      vmax = fmax (vmax, r->vm[a]);
-    }
-  lac_run_cell_types (m, types, sizeof types);
-  if ((status = lac_summary_add (sum, "title", "%s",
-                                     in->sc->scene.title))
-      || (status = lac_summary_add (sum, "model", "%s",
-                                        lac_model_name (in->model)))
-      || (status = lac_summary_add (sum, "element", "%s", types))
-      || (status = lac_summary_add (sum, "effects", "%s", in->effects))
-      || (status = lac_summary_add (sum, "nodes", "%zu", m->nnodes))
-      || (status = lac_summary_add (sum, "cells", "%zu", m->ncells))
-      || (status = lac_summary_add (sum, "dofs", "%zu", sys->ndof))
+  if ((status = summary_head (in, sum))
       || (status = lac_summary_add (sum, "h", "%.10e", mesh_size (m)))
       || (status = lac_summary_add (sum, "fixed_dofs", "%zu", sys->nfixed))
       || (status = lac_summary_add (sum, "nnz_K", "%zu", sys->nnz))
       || (status = lac_summary_add (sum, "load_work", "%.10e", work))
-      || (status = lac_summary_add (sum, "max_u", "%.10e", umax))
-      || (status = lac_summary_add (sum, "max_von_mises", "%.10e", vmax)))
+      || (status = summary_maxima (in, r)))
     return status;
   return r->u_exact ? summary_exact (in, r, e) : LAC_SUCCESS;
 }
@@ -170,33 +191,13 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   const lac_nl *s = nl->s;
   const lac_mesh *m = in->mesh;
   lac_summary *sum = &r->summary;
-  int dim = m->dim;
-  double umax = 0, vmax = 0;
-  char types[128];
-  int itmax = 0, ncut = 0, status;
-  lac_run_cell_types (m, types, sizeof types);
-  for (size_t a = 0; a < m->nnodes; a++)
-    {
-      double q = 0;
-      for (int i = 0; i < dim; i++)
-        q += in->u[a * (size_t) dim + (size_t) i]
-             * in->u[a * (size_t) dim + (size_t) i];
-      umax = fmax (umax, sqrt (q));
-      vmax = fmax (vmax, r->vm[a]);
-    }
+  int dim = m->dim, itmax = 0, ncut = 0, status;
   for (size_t j = 0; j < nl->nfactor; j++)
     {
       itmax = nl->step[j].iters > itmax ? nl->step[j].iters : itmax;
       ncut += nl->step[j].cuts > 0;
     }
-  if ((status = lac_summary_add (sum, "title", "%s", in->sc->scene.title))
-      || (status = lac_summary_add (sum, "model", "%s",
-                                        lac_model_name (in->model)))
-      || (status = lac_summary_add (sum, "element", "%s", types))
-      || (status = lac_summary_add (sum, "effects", "%s", in->effects))
-      || (status = lac_summary_add (sum, "nodes", "%zu", m->nnodes))
-      || (status = lac_summary_add (sum, "cells", "%zu", m->ncells))
-      || (status = lac_summary_add (sum, "dofs", "%zu", in->sys->ndof))
+  if ((status = summary_head (in, sum))
       || (status = lac_summary_add (sum, "fixed_dofs", "%zu", in->sys->nfixed))
       || (status = lac_summary_add (sum, "load_steps", "%zu", nl->nfactor))
       || (status = lac_summary_add (sum, "newton_iterations", "%zu",
@@ -204,8 +205,7 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       || (status = lac_summary_add (sum, "max_iterations_per_step", "%d",
                                         itmax))
       || (status = lac_summary_add (sum, "cut_steps", "%d", ncut))
-      || (status = lac_summary_add (sum, "max_u", "%.10e", umax))
-      || (status = lac_summary_add (sum, "max_von_mises", "%.10e", vmax)))
+      || (status = summary_maxima (in, r)))
     return status;
   if (nl->monitor != SIZE_MAX)
     {
