@@ -115,12 +115,20 @@ stage_solve (lac_run *r)
                            &r->nl, r->sol.u, r->progress, sizeof r->progress);
 }
 
-static int
-stage_post (lac_run *r)
+/* What stages 6 and 7 read of the earlier ones. */
+static lac_run_post_in
+post_in (const lac_run *r)
 {
   lac_run_post_in in = { r->scene, r->model, r->mesh, &r->mat, &r->setup,
                          &r->sys, r->sol.u, large (r) ? NULL : &r->sol,
                          large (r) ? &r->nl : NULL, r->effects_text };
+  return in;
+}
+
+static int
+stage_post (lac_run *r)
+{
+  lac_run_post_in in = post_in (r);
   return lac_run_post (&in, &r->res, r->progress, sizeof r->progress);
 }
 
@@ -180,10 +188,7 @@ add_timings (lac_run *r)
 static int
 stage_output (lac_run *r)
 {
-  lac_run_output_in in = { r->scene, r->model, r->mesh, &r->mat, &r->setup,
-                           &r->sys, r->sol.u, large (r) ? NULL : &r->sol,
-                           large (r) ? &r->nl : NULL, &r->res, r->out_dir,
-                           r->opts.stop };
+  lac_run_output_in in = { post_in (r), &r->res, r->out_dir, r->opts.stop };
   int status = r->opts.timings ? add_timings (r) : LAC_SUCCESS;
   if (status || r->opts.no_output)
     {

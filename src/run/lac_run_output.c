@@ -17,11 +17,11 @@
 static int
 contact_files (const lac_run_output_in *in, lac_output_batch *b)
 {
-  const lac_scene_output *o = &in->sc->output;
-  lac_run_contact_data d = { in->model, in->mesh, in->setup,
-                             in->sys->contact, in->sol->newton,
+  const lac_scene_output *o = &in->post.sc->output;
+  lac_run_contact_data d = { in->post.model, in->post.mesh, in->post.setup,
+                             in->post.sys->contact, in->post.sol->newton,
                              &in->res->mult, &in->res->contact,
-                             in->sc->exact.sec.line != 0, in->u };
+                             in->post.sc->exact.sec.line != 0, in->post.u };
   const char *path;
   int status = LAC_SUCCESS;
   if (o->csv)
@@ -33,20 +33,23 @@ contact_files (const lac_run_output_in *in, lac_output_batch *b)
   return status;
 }
 
-/* solution.vtu and nodes.csv, as [output] asks, into the batch b. */
+/* solution.vtu and nodes.csv, as [output] asks, into the batch b: the
+ * displacement, the exact one (linear runs with [exact]), the stresses. */
 static int
-write_fields (const lac_run_output_in *in, lac_output_batch *b,
-              const lac_output_fields *f)
+write_fields (const lac_run_output_in *in, lac_output_batch *b)
 {
-  const lac_scene_output *o = &in->sc->output;
+  const lac_scene_output *o = &in->post.sc->output;
+  const lac_run_results *res = in->res;
+  lac_output_fields f = { in->post.mesh, in->post.model, in->post.u,
+                          res->u_exact, res->sigma, res->vm, o->vtu_format };
   const char *path;
   int status = LAC_SUCCESS;
   if (o->vtu && !status)
     status = (path = lac_output_batch_add (b, "solution.vtu"))
-             ? lac_output_vtu (path, f) : LAC_ENOMEM;
+             ? lac_output_vtu (path, &f) : LAC_ENOMEM;
   if (o->csv && !status)
     status = (path = lac_output_batch_add (b, "nodes.csv"))
-             ? lac_output_csv (path, f) : LAC_ENOMEM;
+             ? lac_output_csv (path, &f) : LAC_ENOMEM;
   return status;
 }
 
@@ -66,8 +69,8 @@ write_summary (const lac_run_output_in *in, lac_output_batch *b)
 static int
 write_curve (const lac_run_output_in *in, const char *path)
 {
-  const lac_run_nl *nl = in->nl;
-  int dim = in->mesh->dim;
+  const lac_run_nl *nl = in->post.nl;
+  int dim = in->post.mesh->dim;
   FILE *f;
   int status = lac_file_create (path, "w", &f);
   if (status)
@@ -92,7 +95,7 @@ write_curve (const lac_run_output_in *in, const char *path)
 static int
 write_mults (const lac_run_output_in *in, const char *path, int last_only)
 {
-  const lac_run_nl *nl = in->nl;
+  const lac_run_nl *nl = in->post.nl;
   FILE *f;
   int status = lac_file_create (path, "w", &f);
   if (status)
@@ -118,8 +121,8 @@ static int
 write_step_vtu (const lac_run_output_in *in, lac_output_batch *b, size_t j,
                 const double *u, const double *sigma, const double *vm)
 {
-  lac_output_fields f = { in->mesh, in->model, u, NULL, sigma, vm,
-                          in->sc->output.vtu_format };
+  lac_output_fields f = { in->post.mesh, in->post.model, u, NULL, sigma, vm,
+                          in->post.sc->output.vtu_format };
   char name[64];
   const char *path;
   snprintf (name, sizeof name, "step_%03zu.vtu", j + 1);
@@ -133,7 +136,7 @@ write_step_vtu (const lac_run_output_in *in, lac_output_batch *b, size_t j,
 static int
 write_pvd (const lac_run_output_in *in, const char *path)
 {
-  const lac_run_nl *nl = in->nl;
+  const lac_run_nl *nl = in->post.nl;
   FILE *f;
   int status = lac_file_create (path, "w", &f);
   if (status)
@@ -142,7 +145,7 @@ write_pvd (const lac_run_output_in *in, const char *path)
            "version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "  <Collection>\n");
   for (size_t j = 0; j < nl->nfactor; j++)
-    if (lac_run_nl_step_file (j, nl->nfactor, in->sc->steps.vtu_every))
+    if (lac_run_nl_step_file (j, nl->nfactor, in->post.sc->steps.vtu_every))
       fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
                "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
   fprintf (f, "  </Collection>\n</VTKFile>\n");
@@ -154,9 +157,10 @@ write_pvd (const lac_run_output_in *in, const char *path)
 static int
 write_steps (const lac_run_output_in *in, lac_output_batch *b)
 {
-  const lac_run_nl *nl = in->nl;
-  size_t nn = in->mesh->nnodes, ndof = (size_t) in->mesh->dim * nn;
-  int ns = lac_model_nstress (in->model);
+  const lac_run_nl *nl = in->post.nl;
+  const lac_mesh *m = in->post.mesh;
+  size_t nn = m->nnodes, ndof = (size_t) m->dim * nn;
+  int ns = lac_model_nstress (in->post.model);
   double *sigma = lac_malloc (nn * (size_t) ns * sizeof *sigma),
     *vm = lac_malloc (nn * sizeof *vm);
   const char *path;
@@ -165,13 +169,13 @@ write_steps (const lac_run_output_in *in, lac_output_batch *b)
   for (size_t q = 0; q < nl->nkept && !status; q++)
     {
       const double *u = nl->ukept + q * ndof;
-      if (!(status = lac_hyper_cauchy_nodal (in->mesh, &in->mat->hyper, u,
+      if (!(status = lac_hyper_cauchy_nodal (m, &in->post.mat->hyper, u,
                                              NULL, sigma, vm)))
         status = write_step_vtu (in, b, nl->kept[q], u, sigma, vm);
     }
   if (!status)
-    status = write_step_vtu (in, b, nl->nfactor - 1, in->u, in->res->sigma,
-                             in->res->vm);
+    status = write_step_vtu (in, b, nl->nfactor - 1, in->post.u,
+                             in->res->sigma, in->res->vm);
   if (!status)
     status = (path = lac_output_batch_add (b, "steps.pvd"))
              ? write_pvd (in, path) : LAC_ENOMEM;
@@ -186,18 +190,15 @@ static int
 output_linear (const lac_run_output_in *in, lac_output_batch *b,
                char *progress, size_t size)
 {
-  const lac_scene_output *o = &in->sc->output;
-  const lac_run_results *res = in->res;
+  const lac_scene_output *o = &in->post.sc->output;
   const char *path = "";
-  int contact = in->sys->contact != NULL;
-  lac_output_fields f = { in->mesh, in->model, in->u, res->u_exact,
-                          res->sigma, res->vm, o->vtu_format };
-  int status = write_fields (in, b, &f);
+  int contact = in->post.sys->contact != NULL;
+  int status = write_fields (in, b);
   if (!status && contact)
     status = contact_files (in, b);
   if (!status && o->matrix
       && (!(path = lac_output_batch_add (b, "K.mtx"))
-          || (status = lac_csc_write_mm (in->sys->K0, path))))
+          || (status = lac_csc_write_mm (in->post.sys->K0, path))))
     return status ? status : LAC_ENOMEM;
   if (!status && !(status = write_summary (in, b)))
     snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
@@ -212,15 +213,13 @@ static int
 output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
                   char *progress, size_t size)
 {
-  const lac_scene *sc = in->sc;
+  const lac_scene *sc = in->post.sc;
   const lac_scene_output *o = &sc->output;
   const char *curve = sc->steps.curve ? sc->steps.curve : "curve.csv";
   const char *path = "";
-  int macro = in->setup->macro != NULL;
+  int macro = in->post.setup->macro != NULL;
   char nsteps[64];
-  lac_output_fields f = { in->mesh, in->model, in->u, NULL, in->res->sigma,
-                          in->res->vm, o->vtu_format };
-  int status = write_fields (in, b, &f);
+  int status = write_fields (in, b);
   if (!status && (!(path = lac_output_batch_add (b, curve))
                   || (status = write_curve (in, path))))
     return status ? status : LAC_ENOMEM;
@@ -236,7 +235,7 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
   if (status || (status = write_summary (in, b)))
     return status;
   snprintf (nsteps, sizeof nsteps, "%zu step_NNN.vtu, steps.pvd, ",
-            in->nl->nkept + 1);
+            in->post.nl->nkept + 1);
   snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
             o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
             curve, macro ? ", contact.csv, contact_steps.csv, " : ", ",
@@ -251,14 +250,14 @@ lac_run_output (const lac_run_output_in *in, char *progress, size_t size)
   int status;
   if (!b)
     return LAC_EIO;
-  status = in->nl ? output_nonlinear (in, b, progress, size)
+  status = in->post.nl ? output_nonlinear (in, b, progress, size)
                   : output_linear (in, b, progress, size);
   lac_output_batch_free (b);
   if (status && !(in->stop && *in->stop))
     {
       char msg[700];
       lac_run_inner_message (msg, sizeof msg);
-      status = lac_error_set (status, in->sc->path, "%s; nothing was "
+      status = lac_error_set (status, in->post.sc->path, "%s; nothing was "
                               "published: the files in '%s' are those of the "
                               "earlier run", msg, in->dir);
     }

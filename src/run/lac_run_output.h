@@ -17,18 +17,10 @@
 #include <stddef.h>
 #include "run/lac_run_post.h"
 
-/* What stage 7 reads (the results too). */
+/* What stage 7 reads: what stage 6 read, and its results. */
 typedef struct lac_run_output_in
 {
-  const lac_scene *sc;
-  lac_model model;
-  const lac_mesh *mesh;
-  const lac_run_material *mat;
-  const lac_run_setup *setup;
-  const lac_run_system *sys;
-  const double *u;                 /* ndof                                */
-  const lac_run_solution *sol;     /* linear scenes, else NULL            */
-  const lac_run_nl *nl;            /* large deformation, else NULL        */
+  lac_run_post_in post;
   const lac_run_results *res;
   const char *dir;                 /* the output directory                */
   const volatile sig_atomic_t *stop;  /* set by a signal handler: stop
