@@ -296,13 +296,8 @@ make_result (lac_pairing_search *W, const rules *R, lac_pairing **out)
 void
 lac_pairing_opts_init (lac_pairing_opts *o)
 {
-  o->degree = 0;
-  o->degree_nonaffine = 0;
+  memset (o, 0, sizeof *o);       /* the defaults of lac_pairing_types.h */
   o->dist_rel = 1.0;
-  o->dist_abs = 0.0;
-  o->facing = 0.0;
-  o->robust = 0;
-  o->allow_empty = 0;
 }
 
 lac_pairing_facets
