@@ -169,12 +169,12 @@ cmp_gap (const void *a, const void *b)
 /* Statuses that hold the bodies held by contact alone: the multipliers of
  * the m smallest initial gaps, m = 1, 2, 4, ... until the active ones
  * hold every body (lac_system_check_held); every multiplier if fewer do
- * not.  Returns m. */
-static size_t
+ * not.  held_start = m. */
+static void
 hold_start (lac_newton *s)
 {
   double *pair = s->work;                      /* (G_i, i), 2 k doubles */
-  size_t m = 1;
+  size_t m = s->k < 1 ? s->k : 1;
   for (size_t i = 0; i < s->k; i++)
     {
       pair[2 * i] = s->sys->G[i];
@@ -183,16 +183,16 @@ hold_start (lac_newton *s)
   qsort (pair, s->k, 2 * sizeof *pair, cmp_gap);
   for (;; m = 2 * m < s->k ? 2 * m : s->k)
     {
+      int held;
       memset (s->active, 0, s->k);
       for (size_t j = 0; j < m; j++)
         s->active[(size_t) pair[2 * j + 1]] = 1;
-      if (m == s->k || !lac_system_check_held (s->sys, s->active))
-        break;
+      held = !lac_system_check_held (s->sys, s->active);
       lac_error_clear ();
+      if (held || m == s->k)
+        break;
     }
-  lac_error_clear ();
   s->held_start = m;
-  return m;
 }
 
 int
