@@ -22,7 +22,7 @@ CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse \
 LDFLAGS  += -Wl,--as-needed
 SS_LIBS  ?= -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig
 GSL_LIBS ?= -lgsl -lgslcblas
-LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lfreetype -lpng16 -lm
+LDLIBS   += -lgmsh $(SS_LIBS) $(GSL_LIBS) -linih -lOSMesa -lfreetype -lpng16 -lm -pthread
 
 # Debian 12 packages needed to build, test and draw.
 DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \

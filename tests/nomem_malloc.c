@@ -20,7 +20,8 @@ void *__libc_realloc (void *p, size_t n);
 void nomem_malloc_arm (long k);
 long nomem_malloc_count (void);
 
-static long fail_at = -1, count;
+static long fail_at = -1;
+static _Atomic long count;         /* the split solve allocates in two threads */
 static pid_t armed_pid;
 
 void

@@ -84,6 +84,13 @@ lac_error_set (int status, const char *func, const char *fmt, ...)
   return status;
 }
 
+int
+lac_error_restore (int status, const char *message)
+{
+  snprintf (last_message, sizeof last_message, "%s", message);
+  return status;
+}
+
 void
 lac_init (void)
 {

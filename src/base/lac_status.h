@@ -43,6 +43,10 @@ void lac_error_clear (void);
 int lac_error_set (int status, const char *func, const char *fmt, ...)
   __attribute__ ((format (printf, 3, 4)));
 
+/* Store a message as it is, one taken with lac_error_message in another
+ * thread (the buffer is thread-local), and return status. */
+int lac_error_restore (int status, const char *message);
+
 #define LAC_ERRMSG(status, ...) lac_error_set ((status), __func__, __VA_ARGS__)
 #define LAC_ERROR(status, ...) return LAC_ERRMSG ((status), __VA_ARGS__)
 #define LAC_ERROR_NULL(status, ...) \

@@ -42,6 +42,7 @@ struct lac_solver
 {
   lac_solver_kind kind;
   int factored;            /* a usable factorization is stored           */
+  int threads;             /* 1: the BLAS on one thread; 0: every core   */
   lac_solver_info info;    /* of the last successful factorization       */
   size_t n;
   /* dense */
@@ -83,6 +84,28 @@ lac_solver_kind_name (lac_solver_kind k)
 }
 
 /* ---- alloc / free ------------------------------------------------------ */
+
+void
+lac_solver_set_threads (lac_solver *s, int threads)
+{
+  s->threads = threads;
+}
+
+/* Around a numeric factorization: every core, unless s runs beside
+ * another task (then the BLAS stays on the one thread it is on). */
+static void
+blas_begin (const lac_solver *s)
+{
+  if (s->threads != 1)
+    lac_blas_parallel ();
+}
+
+static void
+blas_end (const lac_solver *s)
+{
+  if (s->threads != 1)
+    lac_blas_serial ();
+}
 
 lac_solver *
 lac_solver_alloc (lac_solver_kind kind)
@@ -318,11 +341,11 @@ umf_factor (lac_solver *s, const lac_csc *A)
   if (!s->symbolic)                   /* ordering + symbolic LU, or kept */
     st = umfpack_dl_symbolic ((ss_long) n, (ss_long) n, s->Ap, s->Ai, s->Ax,
                               &s->symbolic, s->control, info);
-  lac_blas_parallel ();
+  blas_begin (s);
   if (st == UMFPACK_OK)
     st = umfpack_dl_numeric (s->Ap, s->Ai, s->Ax, s->symbolic, &s->numeric,
                              s->control, info);
-  lac_blas_serial ();
+  blas_end (s);
   if (st == UMFPACK_ERROR_out_of_memory)
     LAC_ERROR (LAC_ENOMEM, "UMFPACK ran out of memory factoring n = %zu, "
                "nnz = %zu", n, nnz);
@@ -527,10 +550,10 @@ chol_factor (lac_solver *s, const lac_csc *A)
       s->sym_nnz = cc->lnz;
       s->sym_fl = cc->fl;
     }
-  lac_blas_parallel ();
+  blas_begin (s);
   if (s->L)
     cholmod_l_factorize (C, s->L, cc);
-  lac_blas_serial ();
+  blas_end (s);
   cholmod_l_free_sparse (&C, cc);
   if (!s->L || cc->status < CHOLMOD_OK)
     LAC_ERROR (cc->status == CHOLMOD_OUT_OF_MEMORY ? LAC_ENOMEM : LAC_EDEP,

@@ -2,9 +2,11 @@
  *                only (see lac_split.h)           [LAC (17), Alg. 1 l. 21]
  *
  * set:   the parts H and S (connected components of K, S where N moves
- *        them), K_HH, K_SS, C_H, C_S renumbered, K_HH = L L^T once, the
- *        pattern of K_SS + C_S C_S^T;
- * solve: 1. K~_SS for the statuses, factorized when they changed;
+ *        them), K_HH, K_SS, C_H, C_S renumbered, the pattern of
+ *        K_SS + C_S C_S^T;
+ * solve: 1. K_HH = L L^T once per set, K~_SS for the statuses when they
+ *           changed; both at the same time when both are due (the first
+ *           solve after set: linalg/lac_tasks.h);
  *        2. b = G_A - C_A^T U(0);
  *        3. A lambda_A = b by GMRES preconditioned by W_A, from the given
  *           lambda_A;
@@ -17,6 +19,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_gmres.h"
+#include "linalg/lac_tasks.h"
 #include "solve/lac_active.h"
 
 #define GMRES_RESTART 50
@@ -40,6 +43,7 @@ struct lac_split
   part H, S;
   lac_csc *KS;             /* owned: K~_SS in the pattern of K_SS + C_S C_S^T */
   lac_active act;          /* owned: W and the factor of K~_SS             */
+  int H_factored;          /* K_HH factorized since the last set           */
   int factor_failed;
   double *v;               /* owned, k: scratch                            */
   double *U0;              /* owned, n: U of the current product           */
@@ -246,7 +250,7 @@ lac_split_set (lac_split *s, const lac_contact_system *sys)
   if (status)
     return status;
   s->sys = sys;
-  s->factor_failed = 0;
+  s->factor_failed = s->H_factored = 0;
   in_S = lac_malloc (n ? n : 1);
   loc = lac_malloc ((n ? n : 1) * sizeof *loc);
   status = !in_S || !loc ? LAC_ERRMSG (LAC_ENOMEM, "split solver, n = %zu",
@@ -263,22 +267,67 @@ lac_split_set (lac_split *s, const lac_contact_system *sys)
   lac_system_column_scales (sys, s->U0, s->act.s);
   if (s->S.n && !(s->KS = lac_csc_augment_pattern (s->S.K, s->S.C)))
     return LAC_ENOMEM;
-  return s->H.n ? factor (s, s->H.chol, s->H.K) : LAC_SUCCESS;
+  return LAC_SUCCESS;
 }
 
 /* ---- solve -------------------------------------------------------------- */
 
-/* 1. K~_SS = K_SS + C_S,A W_A C_S,A^T, factorized if the statuses changed. */
-static int
-factor_floating (lac_split *s, const char *active)
+/* One factorization, a task of lac_tasks_pair. */
+typedef struct
 {
+  lac_solver *chol;
+  const lac_csc *A;
+} factor_job;
+
+static int
+factor_task (void *ctx)
+{
+  factor_job *j = ctx;
+  return lac_solver_refactor (j->chol, j->A);
+}
+
+/* K_HH and K~_SS at the same time, one core each; both counted. */
+static int
+factor_both (lac_split *s)
+{
+  factor_job h = { s->H.chol, s->H.K }, f = { s->S.chol, s->KS };
+  double t0 = lac_seconds ();
   int status;
-  if (!s->S.n || !lac_active_weights (&s->act, active))
-    return LAC_SUCCESS;
-  if ((status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->act.w))
-      || (status = factor (s, s->S.chol, s->KS)))
+  lac_solver_set_threads (s->H.chol, 1);
+  lac_solver_set_threads (s->S.chol, 1);
+  status = lac_tasks_pair (factor_task, &h, factor_task, &f);
+  lac_solver_set_threads (s->H.chol, 0);
+  lac_solver_set_threads (s->S.chol, 0);
+  s->counts.time_factor += lac_seconds () - t0;
+  s->factor_failed = status != LAC_SUCCESS;
+  if (status)
     return status;
-  lac_active_factored (&s->act, active);
+  lac_solve_counts_factored (&s->counts, s->H.chol);
+  lac_solve_counts_factored (&s->counts, s->S.chol);
+  return LAC_SUCCESS;
+}
+
+/* 1. K_HH once per set; K~_SS = K_SS + C_S,A W_A C_S,A^T if the statuses
+ *    changed. */
+static int
+factor_parts (lac_split *s, const char *active)
+{
+  int due_H = s->H.n && !s->H_factored;
+  int due_S = s->S.n && lac_active_weights (&s->act, active);
+  int status = LAC_SUCCESS;
+  if (due_S && (status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->act.w)))
+    return status;
+  if (due_H && due_S)
+    status = factor_both (s);
+  else if (due_H)
+    status = factor (s, s->H.chol, s->H.K);
+  else if (due_S)
+    status = factor (s, s->S.chol, s->KS);
+  if (status)
+    return status;
+  s->H_factored = s->H_factored || due_H;
+  if (due_S)
+    lac_active_factored (&s->act, active);
   return LAC_SUCCESS;
 }
 
@@ -355,7 +404,7 @@ lac_split_solve (lac_split *s, const char *active, const double *f,
   s->factor_failed = 0;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
-  if ((status = factor_floating (s, active)))             /* 1. */
+  if ((status = factor_parts (s, active)))                /* 1. */
     return status;
   lac_active_gather (act, active, lambda);
   memset (s->v, 0, act->k * sizeof *s->v);

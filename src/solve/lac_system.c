@@ -184,16 +184,10 @@ lac_system_column_scales (const lac_contact_system *sys, double *work,
     }
 }
 
-int
-lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
-                         const lac_csc *A)
+void
+lac_solve_counts_factored (lac_solve_counts *c, const lac_solver *chol)
 {
   lac_solver_info info;
-  double t0 = lac_seconds ();
-  int status = lac_solver_refactor (chol, A);
-  c->time_factor += lac_seconds () - t0;
-  if (status)
-    return status;
   c->factorizations++;
   c->solves += 2;                         /* the condition estimate's */
   if (lac_solver_get_info (chol, &info) == LAC_SUCCESS)
@@ -202,7 +196,18 @@ lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
       c->rcond = info.rcond;
       c->flops += info.flops;
     }
-  return LAC_SUCCESS;
+}
+
+int
+lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
+                         const lac_csc *A)
+{
+  double t0 = lac_seconds ();
+  int status = lac_solver_refactor (chol, A);
+  c->time_factor += lac_seconds () - t0;
+  if (!status)
+    lac_solve_counts_factored (c, chol);
+  return status;
 }
 
 int

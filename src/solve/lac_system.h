@@ -100,6 +100,9 @@ void lac_system_column_scales (const lac_contact_system *sys, double *work,
  * and flops. */
 int lac_solve_counts_factor (lac_solve_counts *c, lac_solver *chol,
                              const lac_csc *A);
+/* The same counts for a factorization made elsewhere (two at once,
+ * solve/lac_split.c), without its time. */
+void lac_solve_counts_factored (lac_solve_counts *c, const lac_solver *chol);
 /* After a Krylov solve for the na active multipliers that returned
  * `status`: its iterations and final relative residual counted in c.
  * Returns status, with LAC_EMAXITER and LAC_ESING (a breakdown) turned
