@@ -5,9 +5,9 @@
  * by contact alone.  A supernodal Cholesky factorization of a 3D mesh
  * spends its time on many medium-sized fronts, where a second BLAS thread
  * gains little; two factorizations side by side, one core each, use both
- * cores fully.  Measured on the 3D patch test at 141k dofs (chapter 07):
- * the two factors one after the other 4.5 s with two BLAS threads, 6.3 s
- * with one; at the same time, one thread each, 3.4 s.
+ * cores better.  Measured on the 3D patch test at 141k dofs (chapter 07):
+ * the two factors one after the other, two BLAS threads each, 4.5 s; at
+ * the same time, one thread each, 2.7 s.
  *
  * lac_tasks_pair runs a in the calling thread and b in a POSIX thread,
  * with the BLAS on one thread (linalg/lac_blas.h) and the OpenMP loops
