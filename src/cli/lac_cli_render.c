@@ -45,12 +45,13 @@
 
 typedef struct render_args
 {
-  const char *dir, *field, *out, *title, *units;
+  const char *dir, *field, *out;
   const char *vtu;          /* --vtu FILE, NULL: solution.vtu               */
-  int fixed_box;            /* --box given                                  */
-  double box[6];            /* --box: x0 x1 y0 y1 z0 z1                      */
-  double scale, az, el, vmin, vmax;
-  int auto_scale, edges, contact, list, width, height, fixed_range;
+  lac_render_opts opts;     /* the picture's options as given: --width,
+                               --height, --scale, --edges, --az, --el,
+                               --range, --box, --title, --units; the
+                               defaults of lac_render_opts_init            */
+  int auto_scale, contact, list;
 } render_args;
 
 const char lac_cli_render_help[] =
@@ -115,21 +116,27 @@ to_double (const char *s, double *v)
   return e != s && *e == '\0' && errno == 0 && isfinite (*v);
 }
 
-/* --box X0:X1:Y0:Y1[:Z0:Z1] into a->box; 1 if malformed (4 or 6 numbers,
- * each lower bound below its upper one; 2D boxes get z = 0:0). */
+/* --box X0:X1:Y0:Y1[:Z0:Z1] into o->box_lo, o->box_hi; 1 if malformed (4
+ * or 6 numbers, each lower bound below its upper one; 2D boxes get
+ * z = 0:0). */
 static int
-parse_box (const char *v, render_args *a)
+parse_box (const char *v, lac_render_opts *o)
 {
   char buf[256], *save = NULL, *tok;
+  double b[6] = { 0 };      /* x0 x1 y0 y1 z0 z1 */
   int n = 0;
   snprintf (buf, sizeof buf, "%s", v);
-  memset (a->box, 0, sizeof a->box);
   for (tok = strtok_r (buf, ":", &save); tok; tok = strtok_r (NULL, ":", &save))
-    if (n == 6 || !to_double (tok, &a->box[n++]))
+    if (n == 6 || !to_double (tok, &b[n++]))
       return 1;
-  a->fixed_box = 1;
-  return !(n == 4 || n == 6) || !(a->box[1] > a->box[0])
-         || !(a->box[3] > a->box[2]) || (n == 6 && !(a->box[5] > a->box[4]));
+  for (int d = 0; d < 3; d++)
+    {
+      o->box_lo[d] = b[2 * d];
+      o->box_hi[d] = b[2 * d + 1];
+    }
+  o->fixed_box = 1;
+  return !(n == 4 || n == 6) || !(b[1] > b[0]) || !(b[3] > b[2])
+         || (n == 6 && !(b[5] > b[4]));
 }
 
 /* The numeric options; 1 if argv[*k] was one, -1 on a bad value. */
@@ -138,7 +145,7 @@ numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
 {
   static const char *const names[] = { "--az", "--el", "--width",
                                        "--height" };
-  double *dst[2] = { &a->az, &a->el }, v;
+  double *dst[2] = { &a->opts.azimuth, &a->opts.elevation }, v;
   const char *s;
   for (int i = 0; i < 4; i++)
     if ((s = lac_cli_option_value (argc, argv, k, names[i], missing)))
@@ -150,7 +157,7 @@ numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
         else if (v != floor (v) || v < 32 || v > 8192)
           return -1;
         else
-          *(i == 2 ? &a->width : &a->height) = (int) v;
+          *(i == 2 ? &a->opts.width : &a->opts.height) = (int) v;
         return 1;
       }
   return 0;
@@ -166,26 +173,27 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
   else if ((v = lac_cli_option_value (argc, argv, k, "--out", missing)))
     a->out = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--title", missing)))
-    a->title = v;
+    a->opts.title = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--units", missing)))
-    a->units = v;
+    a->opts.units = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--vtu", missing)))
     a->vtu = v;
   else if ((v = lac_cli_option_value (argc, argv, k, "--scale", missing)))
     {
       a->auto_scale = !strcmp (v, "auto");
-      *bad = !a->auto_scale && !to_double (v, &a->scale);
+      *bad = !a->auto_scale && !to_double (v, &a->opts.scale);
     }
   else if ((v = lac_cli_option_value (argc, argv, k, "--box", missing)))
-    *bad = parse_box (v, a);
+    *bad = parse_box (v, &a->opts);
   else if ((v = lac_cli_option_value (argc, argv, k, "--range", missing)))
     {
       char lo[64];
       const char *c = strchr (v, ':');
       snprintf (lo, sizeof lo, "%.*s", c ? (int) (c - v) : 0, v);
-      *bad = !c || !to_double (lo, &a->vmin) || !to_double (c + 1, &a->vmax)
-             || !(a->vmax > a->vmin);
-      a->fixed_range = 1;
+      *bad = !c || !to_double (lo, &a->opts.vmin)
+             || !to_double (c + 1, &a->opts.vmax)
+             || !(a->opts.vmax > a->opts.vmin);
+      a->opts.fixed_range = 1;
     }
   else
     return 0;
@@ -196,10 +204,7 @@ static int
 parse_args (int argc, char **argv, render_args *a)
 {
   memset (a, 0, sizeof *a);
-  a->az = 35;
-  a->el = 25;
-  a->width = 800;
-  a->height = 600;
+  lac_render_opts_init (&a->opts);
   for (int k = 1; k < argc; k++)
     {
       int missing = 0, bad = 0, r = 0;
@@ -215,7 +220,7 @@ parse_args (int argc, char **argv, render_args *a)
       else if (missing)
         return lac_cli_usage_error ("render", "missing value after", opt);
       else if (!strcmp (opt, "--edges"))
-        a->edges = 1;
+        a->opts.edges = 1;
       else if (!strcmp (opt, "--contact"))
         a->contact = 1;
       else if (!strcmp (opt, "--list"))
@@ -298,35 +303,23 @@ result_paths (const render_args *a, char *vtu, size_t vlen, char *out,
     snprintf (out, olen, "%s/%s.png", a->dir, what);
 }
 
+/* The options of the command line with the scale in use and, without
+ * --title, the title: the scene's title (and the step file), `what`, the
+ * scale (written into title[tlen]). */
 static void
 fill_opts (const render_args *a, double scale, const char *what,
            char *title, size_t tlen, lac_render_opts *o)
 {
   char scene[512];
-  lac_render_opts_init (o);
-  o->width = a->width;
-  o->height = a->height;
+  *o = a->opts;
   o->scale = scale;
-  o->edges = a->edges;
-  o->azimuth = a->az;
-  o->elevation = a->el;
-  o->units = a->units;
-  o->fixed_range = a->fixed_range;
-  o->vmin = a->vmin;
-  o->vmax = a->vmax;
-  o->fixed_box = a->fixed_box;
-  for (int d = 0; d < 3; d++)
-    {
-      o->box_lo[d] = a->box[2 * d];
-      o->box_hi[d] = a->box[2 * d + 1];
-    }
+  if (o->title)                                  /* --title */
+    return;
   lac_cli_result_title (a->dir, scene, sizeof scene);
   if (a->vtu)                                    /* name the step file */
     snprintf (scene + strlen (scene), sizeof scene - strlen (scene),
               ", %s", base_name (a->vtu));
-  if (a->title)
-    snprintf (title, tlen, "%s", a->title);
-  else if (scale != 0)
+  if (scale != 0)
     snprintf (title, tlen, "%s%s%s (u x %.3g)", scene,
               what ? ": " : "", what ? what : "", scale);
   else
@@ -407,13 +400,10 @@ draw_curves (const render_args *a, const lac_render_result *res,
              const macro_rows *rows, const char *out)
 {
   char scene[512];
-  lac_render_opts o;
+  lac_render_opts o = a->opts;
   lac_cli_result_title (a->dir, scene, sizeof scene);
-  lac_render_opts_init (&o);
-  o.width = a->width;
-  o.height = a->height;
-  o.units = a->units;
-  o.title = a->title ? a->title : scene;
+  if (!o.title)
+    o.title = scene;
   return lac_cli_render_curves (rows, res, &o, out);
 }
 
@@ -425,7 +415,7 @@ render_result (const render_args *a, const lac_render_result *res,
 {
   const lac_mesh *m = res->mesh;
   double *u = lac_malloc ((m->nnodes * (size_t) m->dim + 1) * sizeof *u),
-    scale = a->scale;
+    scale = a->opts.scale;
   macro_rows rows;
   int status;
   memset (&rows, 0, sizeof rows);
