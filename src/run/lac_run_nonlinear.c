@@ -218,30 +218,18 @@ record_mults (lac_run_nl *nl, const lac_macro *M, int step)
 }
 
 static void
-record_step (lac_run_nl *nl, size_t j, int dim, double sec)
+record_step (lac_run_nl *nl, size_t j, int dim)
 {
   const lac_nl *s = nl->s;
-  const lac_nl_step *h = &s->steps[s->nsteps - 1];
   lac_run_nl_step *q = &nl->step[j];
-  q->t = h->t;
-  q->imposed = h->t * nl->imposed_ref;
+  q->solver = s->steps[s->nsteps - 1];
+  q->imposed = q->solver.t * nl->imposed_ref;
   for (int k = 0; k < dim && nl->monitor != SIZE_MAX; k++)
     q->um[k] = s->U[nl->monitor * (size_t) dim + (size_t) k];
-  q->iters = h->iters;
-  q->cuts = h->cuts;
-  q->substeps = h->substeps;
-  q->residual = h->residual;
-  q->k = h->k;
-  q->nactive = h->nactive;
   q->force = lac_nl_contact_force (s);
   q->lambda_min = 0;
   for (size_t m = 0; m < s->nmacro; m++)
     q->lambda_min = fmin (q->lambda_min, s->lambda[m]);
-  q->seconds = sec;
-  q->time_assemble = h->time_assemble;
-  q->time_pairing = h->time_pairing;
-  q->time_factor = h->time_factor;
-  q->time_solve = h->time_solve;
 }
 
 static void
@@ -249,20 +237,21 @@ report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
              char *progress, size_t size)
 {
   const lac_run_nl_step *q = &nl->step[j];
+  const lac_nl_step *h = &q->solver;
   char mon[80] = "", cut[80] = "";
   if (nl->monitor != SIZE_MAX)
     snprintf (mon, sizeof mon, ", %s %s = %.4f", sc->steps.monitor,
               dim == 2 ? "u_y" : "u_z", q->um[dim - 1]);
-  if (q->cuts)
+  if (h->cuts)
     snprintf (cut, sizeof cut, " (step cut %d time%s: %d sub-steps)",
-              q->cuts, q->cuts == 1 ? "" : "s", q->substeps);
+              h->cuts, h->cuts == 1 ? "" : "s", h->substeps);
   snprintf (progress, size, "step %zu/%zu: t = %.4f (imposed %.3f), %d "
             "Newton iteration%s%s, residual %.1e, %zu/%zu active%s; "
             "assembly %.1f s, pairing %.1f s, factorization %.1f s, solves "
-            "%.1f s, step %.1f s", j + 1, nl->nfactor, q->t, q->imposed,
-            q->iters, q->iters == 1 ? "" : "s", cut, q->residual, q->nactive,
-            q->k, mon, q->time_assemble, q->time_pairing, q->time_factor,
-            q->time_solve - q->time_factor, q->seconds);
+            "%.1f s, step %.1f s", j + 1, nl->nfactor, h->t, q->imposed,
+            h->iters, h->iters == 1 ? "" : "s", cut, h->residual, h->nactive,
+            h->k, mon, h->time_assemble, h->time_pairing, h->time_factor,
+            h->time_solve - h->time_factor, h->seconds);
 }
 
 /* The line of one Newton iteration. */
@@ -292,7 +281,7 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
 {
   size_t ndof = (size_t) m->dim * m->nnodes;
   int status;
-  record_step (nl, j, m->dim, nl->s->steps[nl->s->nsteps - 1].seconds);
+  record_step (nl, j, m->dim);
   if ((status = record_mults (nl, setup->macro, (int) j + 1)))
     return status;
   if (j + 1 < nl->nfactor

@@ -31,16 +31,13 @@
 /* One converged load step, as written to the curve. */
 typedef struct lac_run_nl_step
 {
-  double t, imposed;    /* load factor, t * the reference imposed value   */
+  lac_nl_step solver;   /* the solver's record of it: load factor t,
+                           iterations, cuts, sub-steps, residual,
+                           multipliers, times                             */
+  double imposed;       /* t * the reference imposed value                */
   double um[3];         /* displacement of the monitor node               */
-  int iters, cuts;       /* Newton iterations, sub-steps cut              */
-  int substeps;         /* sub-steps that converged (1: the step whole)  */
-  double residual;
-  size_t k, nactive;
   double force;         /* sum of lambda |T^m cap Gamma_C| (<= 0)          */
   double lambda_min;    /* the largest pressure (most negative lambda)     */
-  double seconds;       /* wall time of the step, and in it:              */
-  double time_assemble, time_pairing, time_factor, time_solve;
 } lac_run_nl_step;
 
 /* Every multiplier at the end of a step (contact_steps.csv). */

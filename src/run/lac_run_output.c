@@ -82,11 +82,12 @@ write_curve (const lac_run_output_in *in, const char *path)
   for (size_t j = 0; j < nl->nfactor; j++)
     {
       const lac_run_nl_step *q = &nl->step[j];
-      fprintf (f, "%zu,%.10e,%.10e", j + 1, q->t, q->imposed);
+      const lac_nl_step *h = &q->solver;
+      fprintf (f, "%zu,%.10e,%.10e", j + 1, h->t, q->imposed);
       for (int k = 0; k < dim; k++)
         fprintf (f, ",%.10e", q->um[k]);
-      fprintf (f, ",%d,%d,%.3e,%zu,%zu,%.10e,%.10e\n", q->iters, q->cuts,
-               q->residual, q->k, q->nactive, q->force, q->lambda_min);
+      fprintf (f, ",%d,%d,%.3e,%zu,%zu,%.10e,%.10e\n", h->iters, h->cuts,
+               h->residual, h->k, h->nactive, q->force, q->lambda_min);
     }
   return lac_file_close (f, path);
 }
@@ -147,7 +148,8 @@ write_pvd (const lac_run_output_in *in, const char *path)
   for (size_t j = 0; j < nl->nfactor; j++)
     if (lac_run_nl_step_file (j, nl->nfactor, in->post.sc->steps.vtu_every))
       fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
-               "file=\"step_%03zu.vtu\"/>\n", nl->step[j].t, j + 1);
+               "file=\"step_%03zu.vtu\"/>\n", nl->step[j].solver.t,
+               j + 1);
   fprintf (f, "  </Collection>\n</VTKFile>\n");
   return lac_file_close (f, path);
 }

@@ -194,8 +194,9 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   int dim = m->dim, itmax = 0, ncut = 0, status;
   for (size_t j = 0; j < nl->nfactor; j++)
     {
-      itmax = nl->step[j].iters > itmax ? nl->step[j].iters : itmax;
-      ncut += nl->step[j].cuts > 0;
+      const lac_nl_step *h = &nl->step[j].solver;
+      itmax = h->iters > itmax ? h->iters : itmax;
+      ncut += h->cuts > 0;
     }
   if ((status = summary_head (in, sum))
       || (status = lac_summary_add (sum, "fixed_dofs", "%zu", in->sys->nfixed))
@@ -230,8 +231,9 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
     return LAC_SUCCESS;
   const lac_run_nl_step *q = &nl->step[nl->nfactor - 1];
   if ((status = lac_summary_add (sum, "macro_elements", "%zu", in->setup->macro->n))
-      || (status = lac_summary_add (sum, "multipliers", "%zu", q->k))
-      || (status = lac_summary_add (sum, "active", "%zu", q->nactive))
+      || (status = lac_summary_add (sum, "multipliers", "%zu", q->solver.k))
+      || (status = lac_summary_add (sum, "active", "%zu",
+                                    q->solver.nactive))
       || (status = lac_summary_add (sum, "lambda_min", "%.10e",
                                         q->lambda_min)))
     return status;
