@@ -150,28 +150,21 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->ndof = (size_t) m->dim * m->nnodes;
   s->nmacro = p->M ? p->M->n : 0;
   size_t n = s->ndof, nm = s->nmacro ? s->nmacro : 1;
-  s->U = lac_calloc (n, sizeof *s->U);
-  s->x = lac_malloc (n * sizeof *s->x);
-  s->fixed = lac_calloc (n, 1);
-  s->g1 = lac_calloc (n, sizeof *s->g1);
-  s->g0 = lac_calloc (n, sizeof *s->g0);
-  s->r = lac_calloc (n, sizeof *s->r);
-  s->Fint = lac_calloc (n, sizeof *s->Fint);
-  s->dU = lac_calloc (n, sizeof *s->dU);
-  s->U_save = lac_calloc (n, sizeof *s->U_save);
-  s->lambda = lac_calloc (nm, sizeof *s->lambda);
-  s->lambda_save = lac_calloc (nm, sizeof *s->lambda_save);
-  s->lam_lin = lac_calloc (nm, sizeof *s->lam_lin);
-  s->lam_step = lac_calloc (nm, sizeof *s->lam_step);
-  s->dU_last = lac_calloc (n, sizeof *s->dU_last);
-  s->U_old = lac_calloc (n, sizeof *s->U_old);
-  s->lambda_old = lac_calloc (nm, sizeof *s->lambda_old);
-  s->active = lac_calloc (nm, 1);
-  s->active_save = lac_calloc (nm, 1);
-  if (!s->U || !s->x || !s->fixed || !s->g1 || !s->g0 || !s->r || !s->Fint
-      || !s->dU || !s->U_save || !s->lambda || !s->lambda_save || !s->active
-      || !s->active_save || !s->lam_lin || !s->lam_step || !s->dU_last
-      || !s->U_old || !s->lambda_old)
+  /* the vectors, zeroed: per dof (n), per macro-element (nm), and the
+   * flags: fixed per dof, the statuses per macro-element; one check */
+  double **dof[] = { &s->U, &s->x, &s->g1, &s->g0, &s->r, &s->Fint, &s->dU,
+                     &s->U_save, &s->dU_last, &s->U_old };
+  double **macro[] = { &s->lambda, &s->lambda_save, &s->lam_lin,
+                       &s->lam_step, &s->lambda_old };
+  char **active[] = { &s->active, &s->active_save };
+  int ok = (s->fixed = lac_calloc (n, 1)) != NULL;
+  for (size_t k = 0; k < sizeof dof / sizeof *dof; k++)
+    ok &= (*dof[k] = lac_calloc (n, sizeof **dof[k])) != NULL;
+  for (size_t k = 0; k < sizeof macro / sizeof *macro; k++)
+    ok &= (*macro[k] = lac_calloc (nm, sizeof **macro[k])) != NULL;
+  for (size_t k = 0; k < sizeof active / sizeof *active; k++)
+    ok &= (*active[k] = lac_calloc (nm, 1)) != NULL;
+  if (!ok)
     {
       lac_nl_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear workspace for %zu dofs", n);
