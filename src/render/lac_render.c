@@ -31,17 +31,17 @@
 static const double DEG = 3.14159265358979323846 / 180.0;
 static const unsigned char INK[3] = { 0, 0, 0 };
 
+/* The defaults of lac_render.h, the one place they are written; the
+ * fields not named are 0 (NULL). */
+static const lac_render_opts DEFAULTS = {
+  .width = 800, .height = 600, .azimuth = 35, .elevation = 25,
+  .colorbar = 1, .subdiv = 4, .supersample = 2
+};
+
 void
 lac_render_opts_init (lac_render_opts *o)
 {
-  memset (o, 0, sizeof *o);
-  o->width = 800;
-  o->height = 600;
-  o->azimuth = 35;
-  o->elevation = 25;
-  o->colorbar = 1;
-  o->subdiv = 4;
-  o->supersample = 2;
+  *o = DEFAULTS;
 }
 
 /* ---- camera and layout ------------------------------------------------- */
@@ -512,12 +512,11 @@ prologue (const lac_mesh *m, int need_mesh, double grey,
   memset (g, 0, sizeof *g);
   g->dim = m ? m->dim : 3;
   g->grey = grey;
-  if (*o)
-    *def = **o;
-  else
-    lac_render_opts_init (def);
-  def->supersample = def->supersample ? def->supersample : 2;
-  def->subdiv = def->subdiv ? def->subdiv : 4;
+  *def = *o ? **o : DEFAULTS;
+  if (!def->supersample)
+    def->supersample = DEFAULTS.supersample;
+  if (!def->subdiv)
+    def->subdiv = DEFAULTS.subdiv;
   *o = def;
   if (!rgba)
     LAC_ERROR (LAC_EINVAL, "no image buffer");
@@ -643,14 +642,10 @@ lac_render_write_png (const char *path, int width, int height,
 static int
 alloc_image (const lac_render_opts *o, unsigned char **rgba)
 {
-  lac_render_opts def;
   int status;
   *rgba = NULL;
   if (!o)
-    {
-      lac_render_opts_init (&def);
-      o = &def;
-    }
+    o = &DEFAULTS;
   if ((status = check_opts (o)))
     return status;
   *rgba = lac_malloc ((size_t) o->width * (size_t) o->height * 4);
@@ -664,9 +659,10 @@ static int
 finish_png (const lac_render_opts *o, int status, unsigned char *rgba,
             const char *path)
 {
+  if (!o)
+    o = &DEFAULTS;
   if (!status)
-    status = lac_render_write_png (path, o ? o->width : 800,
-                                   o ? o->height : 600, rgba);
+    status = lac_render_write_png (path, o->width, o->height, rgba);
   lac_free (rgba);
   return status;
 }
