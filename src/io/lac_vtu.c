@@ -229,20 +229,30 @@ appended (FILE *fp, const lac_vtu *v)
   fprintf (fp, "\n  </AppendedData>\n");
 }
 
+void
+lac_vtu_xml_head (FILE *fp, const char *type, const char *version,
+                  const char *attrs)
+{
+  const uint16_t one = 1;      /* its first byte is 1 on a little-endian
+                                  machine */
+  fprintf (fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"%s\" version=\"%s\""
+           " byte_order=\"%s\"%s>\n", type, version,
+           *(const unsigned char *) &one ? "LittleEndian" : "BigEndian",
+           attrs);
+}
+
 int
 lac_vtu_write (const lac_vtu *v, const char *path)
 {
-  const uint16_t one = 1;
   uint64_t off = 0;
   FILE *fp;
   int status = lac_file_create (path, "wb", &fp);
   if (status)
     return status;
-  fprintf (fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\""
-           " version=\"1.0\" byte_order=\"%s\" header_type=\"UInt64\">\n"
-           "  <UnstructuredGrid>\n"
+  lac_vtu_xml_head (fp, "UnstructuredGrid", "1.0",
+                    " header_type=\"UInt64\"");
+  fprintf (fp, "  <UnstructuredGrid>\n"
            "    <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n",
-           *(const unsigned char *) &one ? "LittleEndian" : "BigEndian",
            v->npoints, v->ncells);
   fprintf (fp, "      <Points>\n");
   section_arrays (fp, v, LAC_VTU_POINTS, &off);

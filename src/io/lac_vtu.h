@@ -26,6 +26,7 @@
 #define LAC_VTU_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct lac_vtu lac_vtu;
 
@@ -58,5 +59,12 @@ void lac_vtu_defaults (lac_vtu *v, const char *point_vectors,
 
 /* Write the file. */
 int lac_vtu_write (const lac_vtu *v, const char *path);
+
+/* The head of a VTK XML file, this one or another (the .pvd collection of
+ * a run's step files): the XML declaration and the opening VTKFile tag of
+ * type `type`, file version `version`, the machine's byte order, and the
+ * further attributes `attrs` ("" for none). */
+void lac_vtu_xml_head (FILE *fp, const char *type, const char *version,
+                       const char *attrs);
 
 #endif /* LAC_VTU_H */

@@ -8,6 +8,7 @@
 #include "base/lac_status.h"
 #include "io/lac_output.h"
 #include "io/lac_output_batch.h"
+#include "io/lac_vtu.h"
 #include "run/lac_run_contact_files.h"
 #include "run/lac_run_scene.h"
 
@@ -142,9 +143,8 @@ write_pvd (const lac_run_output_in *in, const char *path)
   int status = lac_file_create (path, "w", &f);
   if (status)
     return status;
-  fprintf (f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-           "  <Collection>\n");
+  lac_vtu_xml_head (f, "Collection", "0.1", "");
+  fprintf (f, "  <Collection>\n");
   for (size_t j = 0; j < nl->nfactor; j++)
     if (lac_run_nl_step_file (j, nl->nfactor, in->post.sc->steps.vtu_every))
       fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
