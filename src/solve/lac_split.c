@@ -24,6 +24,10 @@
 
 #define GMRES_RESTART 50
 #define GMRES_MAXIT 300     /* about ten are needed (lac_split.h) */
+/* Unknowns in each part from which the two factorizations run side by
+ * side: below, each takes milliseconds and they run one after the other
+ * in the calling thread, without starting a thread for so little. */
+#define SIDE_BY_SIDE_MIN 2000
 
 /* One part of the unknowns: its dofs, its block of K, its rows of C, the
  * factor, and two vectors of its size. */
@@ -308,7 +312,7 @@ factor_both (lac_split *s)
 }
 
 /* 1. K_HH once per set; K~_SS = K_SS + C_S,A W_A C_S,A^T if the statuses
- *    changed. */
+ *    changed; side by side when both are due and large enough. */
 static int
 factor_parts (lac_split *s, const char *active)
 {
@@ -317,12 +321,16 @@ factor_parts (lac_split *s, const char *active)
   int status = LAC_SUCCESS;
   if (due_S && (status = lac_csc_augment (s->KS, s->S.K, s->S.C, s->act.w)))
     return status;
-  if (due_H && due_S)
+  if (due_H && due_S && s->H.n >= SIDE_BY_SIDE_MIN
+      && s->S.n >= SIDE_BY_SIDE_MIN)
     status = factor_both (s);
-  else if (due_H)
-    status = factor (s, s->H.chol, s->H.K);
-  else if (due_S)
-    status = factor (s, s->S.chol, s->KS);
+  else
+    {
+      if (due_H)
+        status = factor (s, s->H.chol, s->H.K);
+      if (!status && due_S)
+        status = factor (s, s->S.chol, s->KS);
+    }
   if (status)
     return status;
   s->H_factored = s->H_factored || due_H;

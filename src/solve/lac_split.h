@@ -28,8 +28,9 @@
  * factorized once per set; K~_SS is positive definite as soon as the
  * active multipliers hold the bodies of S (the condition of (b)) and is
  * factorized again when the statuses change.  The two share nothing: the
- * first solve after set factorizes them at the same time, one core each
- * (linalg/lac_tasks.h; 2.7 s instead of 4.5 s at 141k dofs, chapter 07).
+ * first solve after set factorizes them at the same time, one core each,
+ * when each part has 2,000 unknowns or more (linalg/lac_tasks.h; 2.7 s
+ * instead of 4.5 s at 141k dofs, chapter 07).
  * The multipliers solve
  *
  *   A lambda_A = G_A - C_A^T U(0),   A v = C_A^T U_0(v),

@@ -8,6 +8,9 @@
  *   - Taylor 2D quad8 and 3D hex8 (level 1, slave and master swapped):
  *     the upper body is held by contact alone; dense, augmented, split;
  *     schur is refused with a message before anything is factorized;
+ *   - Taylor 3D hex8 with 12^3 / 11^3 cells (6591 and 5184 unknowns):
+ *     augmented, split (its two factorizations made side by side,
+ *     linalg/lac_tasks.h);
  *   - the self-included spheres, axisymmetric quad8 and 3D tet10 (every
  *     body held by symmetry conditions): dense, schur, augmented; split
  *     is refused (no body held by contact alone);
@@ -99,6 +102,9 @@ main (void)
   const char *t3[] = { "element=hex8", "level=1",
                        "contact.interface.slave=lower_top",
                        "contact.interface.master=upper_bottom" };
+  const int floating_big[] = { LAC_STRATEGY_AUGMENTED, LAC_STRATEGY_SPLIT,
+                               0 };
+  const char *t3n[] = { "element=hex8", "mesh.numbers=n=12" };
   const char *sa[] = { "element=quad8" };
   const char *s3[] = { "element=tet10" };
   const char *cy[] = { "level=3" };
@@ -106,6 +112,8 @@ main (void)
            floating);
   compare ("taylor3d", "chapters/08-experiments/taylor3d.scene", 4, t3,
            floating);
+  compare ("taylor3d n=12", "chapters/08-experiments/taylor3d.scene", 2, t3n,
+           floating_big);
   compare ("spheres-axi", "chapters/08-experiments/spheres-axi.scene", 1, sa,
            held);
   compare ("spheres3d", "chapters/08-experiments/spheres3d.scene", 1, s3,
