@@ -564,8 +564,9 @@ solve_contact (lac_nl *s, const lac_dirichlet *inc, lac_nl_iter *rec)
   lac_strategy_get_counts (s->strategy, &c1);
   if (!status && !s->opts.frozen)
     status = consistent (s, rec);
-  s->time_factor += c1.time_factor - c0.time_factor;
-  s->time_frozen += t2 - t0 - (c1.time_factor - c0.time_factor);
+  double tf = c1.time_factor - c0.time_factor;
+  s->time_factor += tf;
+  s->time_frozen += t2 - t0 - tf;
   s->time_krylov += lac_seconds () - t2;
   for (size_t i = 0; !status && i < k; i++)             /* total lambda */
     {
