@@ -101,7 +101,7 @@ child_run (const args *a, FILE *out)
   e = lac_run_summary_get (r, "max_rel_err_lambda");
   fprintf (out, "%zu %zu %.3f %.3f %.3f %.3f %.3f %.3f %.3f %zu %d %d %s %s "
            "%.6g\n",
-           r->sys.ndof, r->sol.newton ? r->sol.newton->k : 0,
+           r->sys.ndof, r->sys.contact ? r->sys.contact->k : 0,
            r->time[LAC_STAGE_MESH], r->time[LAC_STAGE_CONTACT],
            r->time[LAC_STAGE_ASSEMBLE], r->time[LAC_STAGE_SOLVE],
            c.time_factor, c.time_solve, r->time[LAC_STAGE_POST],

@@ -76,11 +76,10 @@ press (const lac_csc *K, const double *F, const lac_contact *c,
        const lac_contact *all, lac_strategy_kind kind, double *lambda_m,
        double *gap_m)
 {
-  size_t n = K->nrow;
   lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (kind, n, c->k);
-  check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
-  check_status (lac_newton_solve (s, &sys, 20, 1e-10), "lac_newton_solve");
+  lac_newton *s = NULL;
+  check_status (lac_newton_solve_system (kind, &sys, 20, 1e-10, &s),
+                "lac_newton_solve_system");
   for (size_t m = 0; m < c->nmacro; m++)
     lambda_m[m] = c->mult[m] >= 0 ? s->lambda[c->mult[m]] : NAN;
   for (size_t m = 0; m < all->nmacro; m++)

@@ -213,9 +213,9 @@ main (int argc, char **argv)
                                        p, F), "lac_assembly_pressure");
   check_status (lac_dirichlet_apply (D, K, F), "lac_dirichlet_apply");
   lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (kind, ndof, c->k);
-  check_status (s ? LAC_SUCCESS : LAC_ENOMEM, "lac_newton_alloc");
-  check_status (lac_newton_solve (s, &sys, 10, 1e-10), "lac_newton_solve");
+  lac_newton *s = NULL;
+  check_status (lac_newton_solve_system (kind, &sys, 10, 1e-10, &s),
+                "lac_newton_solve_system");
   printf ("5. pressed by p = %g (%s, iterations: %zu): lambda =", p,
           lac_strategy_name (kind), s->nhist);
   for (size_t i = 0; i < c->k; i++)

@@ -93,11 +93,12 @@ taylor (const char *dir, const char *scene, const char *element, int upper)
 
   /* Every multiplier against it. */
   const lac_newton *nw = r->sol.newton;
+  const lac_contact *c = r->sys.contact;      /* multiplier i: macro[i] */
   double worst = 0;
-  for (size_t i = 0; i < nw->k; i++)
-    worst = fmax (worst, fabs (nw->lambda[i] - lam) / fabs (lam));
+  for (size_t i = 0; i < c->k; i++)
+    worst = fmax (worst, fabs (nw->lambda[c->macro[i]] - lam) / fabs (lam));
   printf ("%-7s %-5s %5.0f %5zu %6.0f  %14.10f %14.10f  %s\n", element,
-          upper ? "upper" : "lower", value (r, "dofs"), nw->k, value (r, "newton_iterations"),
+          upper ? "upper" : "lower", value (r, "dofs"), c->k, value (r, "newton_iterations"),
           value (r, "lambda_min"), value (r, "lambda_max"),
           worst < 1e-12 ? "< 1e-12" : "LARGER");
   lac_run_free (r);

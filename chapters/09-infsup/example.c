@@ -185,34 +185,28 @@ raw_p0 (const problem *p, lac_csc **C, lac_csc **M)
 {
   size_t ns = p->M->ptr[p->M->n];
   lac_macro R = *p->M;
-  lac_contact c;
-  memset (&c, 0, sizeof c);
+  lac_contact *c = lac_contact_alloc (ns);     /* ns "macro-elements" */
   R.n = ns;
   R.ptr = lac_malloc ((ns + 1) * sizeof *R.ptr);
   R.meas = p->P->measure;                      /* |segment| */
-  c.k = ns;
-  c.macro = lac_malloc (ns * sizeof *c.macro);
-  c.G = lac_malloc (ns * sizeof *c.G);
-  c.area = lac_malloc (ns * sizeof *c.area);
   *M = lac_csc_alloc (ns, ns, ns);
-  check_status (R.ptr && c.macro && c.G && c.area && *M ? LAC_SUCCESS
-                : LAC_ENOMEM, "allocation");
+  check_status (R.ptr && c && *M ? LAC_SUCCESS : LAC_ENOMEM, "allocation");
+  c->k = ns;
   for (size_t j = 0; j <= ns; j++)
     R.ptr[j] = j;                              /* segment j alone */
   for (size_t j = 0; j < ns; j++)
-    c.macro[j] = j;
-  check_status (lac_assembly_lac (&c, p->m, LAC_PLANE_STRAIN, &R, p->P,
+    c->macro[j] = j;
+  check_status (lac_assembly_lac (c, p->m, LAC_PLANE_STRAIN, &R, p->P,
                                   &p->master), "lac_assembly_lac");
   for (size_t j = 0; j < ns; j++)
     {
       (*M)->p[j] = (*M)->i[j] = (int) j;
-      (*M)->x[j] = p->P->measure[j] * c.area[j];        /* h_j |T_j| */
+      (*M)->x[j] = p->P->measure[j] * c->area[j];      /* h_j |T_j| */
     }
   (*M)->p[ns] = (int) ns;
-  *C = c.C;              /* no Dirichlet rows to zero: none on the contact */
-  lac_free (c.area);
-  lac_free (c.G);
-  lac_free (c.macro);
+  *C = c->C;             /* no Dirichlet rows to zero: none on the contact */
+  c->C = NULL;
+  lac_contact_free (c);
   lac_free (R.ptr);
 }
 

@@ -1,4 +1,5 @@
-/* lac_vec.h -- small vector geometry: dot and cross products, lengths
+/* lac_vec.h -- small vector geometry: dot and cross products, lengths;
+ *             the rounding rule (lac_snap)
  *
  * Header only: static inline functions on plain arrays of doubles, for the
  * geometry kernels (pairing, projection, refinement templates), the
@@ -46,6 +47,18 @@ lac_vec_dist (size_t n, const double *a, const double *b)
   for (size_t i = 0; i < n; i++)
     s += (a[i] - b[i]) * (a[i] - b[i]);
   return sqrt (s);
+}
+
+/* The rounding rule of lac, written once: x counts as 0 when |x| <=
+ * LAC_ROUNDING times the scale of what it was computed from (a mean gap
+ * at its assembly: the size of its macro-element times its area; a gap or
+ * a multiplier in the status rule of Algorithm 1: the terms it sums). */
+#define LAC_ROUNDING 1e-12
+
+static inline double
+lac_snap (double x, double scale)
+{
+  return fabs (x) <= LAC_ROUNDING * scale ? 0.0 : x;
 }
 
 #endif /* LAC_VEC_H */

@@ -9,6 +9,10 @@
  *   C(dof(b, c), i) -= w phi^M_b(x_m) n^S_c        (C^M, n^M = -n^S)
  *   G_i             += w g0                         ([LAC (18)])
  *   area_i          += w                            (M^LAC_ii [LAC (16)])
+ *   size_i          += w without the weight 2 pi r   (h_i, solve/)
+ *
+ * and lost_i, the part of the sub-facets of T^m whose pairs were dropped
+ * (a projection that failed, lac_pairing.h).
  *
  * so that (C^T U)_i = int [u_N] with [u_N] = (u^S - u^M).n^S (lac_newton.h).
  * Against a rigid obstacle (lac_obstacle.h) the points have no master
@@ -23,13 +27,14 @@
 #include "contact/lac_contact_facet.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "base/lac_vec.h"
 
 /* Add the slave and master terms of one integration point to column i. */
 static int
 add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
            size_t scell, int sface, const double *xs, size_t mcell,
            int mface, const double *xm, const double *nu, double w,
-           double g, size_t i, double *Gi, double *areai)
+           double g, lac_contact *c, size_t i)
 {
   int sn[LAC_MAX_FACE_NODES], mn[LAC_MAX_FACE_NODES];
   lac_map ms, mm;
@@ -39,6 +44,7 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
     nm = lac_contact_facet_eval (mesh, mcell, mface, xm, mn, &mm);
   if (ns < 0 || nm < 0)
     return ns < 0 ? -ns : -nm;
+  c->size[i] += w;                                        /* no weight */
   w *= lac_model_weight (model, ms.x);                    /* 2 pi r dGamma */
   if (!nu)
     nu = ms.normal;                                       /* n^S */
@@ -50,8 +56,8 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
     for (int c = 0; !st && c < dim; c++)                  /* -C^M */
       st = lac_triplet_add (T, (size_t) mn[b] * dim + c, i,
                             -w * mm.N[b] * ms.normal[c]);
-  *Gi += w * g;                                           /* int g0 */
-  *areai += w;                                            /* |T^m cap Gamma_C| */
+  c->G[i] += w * g;                                       /* int g0 */
+  c->area[i] += w;                                        /* |T^m cap Gamma_C| */
   return st;
 }
 
@@ -70,7 +76,9 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
   for (size_t i = 0; !st && i < c->k; i++)
     {
       size_t m = c->macro[i];
-      c->G[i] = c->area[i] = 0;
+      c->G[i] = c->area[i] = c->size[i] = c->lost[i] = 0;
+      for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
+        c->lost[i] += P->lost ? P->lost[j] : 0.0;
       for (size_t j = M->ptr[m]; !st && j < M->ptr[m + 1]; j++)
         for (size_t p = P->ptr[j]; !st && p < P->ptr[j + 1]; p++)
           {
@@ -82,18 +90,18 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
                             rigid ? -1 : master->face[f], P->xm + p * dimf,
                             P->normal ? P->normal + p * (size_t) P->dim
                                       : NULL,
-                            P->w[p], P->gap[p], i, &c->G[i], &c->area[i]);
+                            P->w[p], P->gap[p], c, i);
           }
     }
   /* A mean gap that is zero up to the roundoff of the projections (a
-   * few ulps of the facet size) is set to exactly 0, so that the initial
-   * status of [LAC Alg. 1, lines 2-8] does not depend on roundoff. */
+   * few ulps of the facet size) is set to exactly 0 (lac_snap), so that
+   * the initial status of [LAC Alg. 1, lines 2-8] does not depend on
+   * roundoff. */
   for (size_t i = 0; !st && i < c->k; i++)
     {
       size_t m = c->macro[i];
       double diam = P->dim == 2 ? M->meas[m] : sqrt (M->meas[m]);
-      if (fabs (c->G[i]) <= 1e-12 * diam * c->area[i])
-        c->G[i] = 0;
+      c->G[i] = lac_snap (c->G[i], diam * c->area[i]);
     }
   if (!st)
     {

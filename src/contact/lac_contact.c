@@ -28,8 +28,11 @@ lac_contact_alloc (size_t nmacro)
   c->macro = lac_calloc (nmacro, sizeof *c->macro);
   c->G = lac_calloc (nmacro, sizeof *c->G);
   c->area = lac_calloc (nmacro, sizeof *c->area);
+  c->size = lac_calloc (nmacro, sizeof *c->size);
+  c->lost = lac_calloc (nmacro, sizeof *c->lost);
   if (!c->meas || !c->covered || !c->inode || !c->phiint || !c->crit || !c->admissible
-      || !c->mult || !c->macro || !c->G || !c->area)
+      || !c->mult || !c->macro || !c->G || !c->area || !c->size
+      || !c->lost)
     {
       lac_contact_free (c);
       return NULL;
@@ -53,6 +56,8 @@ lac_contact_free (lac_contact *c)
   lac_csc_free (c->C);
   lac_free (c->G);
   lac_free (c->area);
+  lac_free (c->size);
+  lac_free (c->lost);
   lac_free (c->xpt);
   lac_free (c->npt);
   lac_free (c);

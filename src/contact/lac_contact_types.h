@@ -33,7 +33,15 @@ typedef struct lac_contact
   size_t *macro;      /* owned, k: macro-element of multiplier i            */
   lac_csc *C;         /* owned, ndof x k                     [LAC (16)-(17)] */
   double *G;          /* owned, k: mean initial gaps           [LAC (18)]    */
-  double *area;       /* owned, k: |T^m cap Gamma_C| = M^LAC_ii [LAC (16)]   */
+  double *area;       /* owned, k: |T^m cap Gamma_C| = M^LAC_ii [LAC (16)]
+                         (2 pi r weighted if axisym., as G)                */
+  double *size;       /* owned, k: the same measure without the weight: a
+                         length in 2D and axisym., an area in 3D; h_i, the
+                         size of the contact part of the macro-element, is
+                         size (2D) or sqrt(size) (3D)                      */
+  double *lost;       /* owned, k: the part of T^m cap Gamma_C (a measure,
+                         no weight) that the pairing lost to projections
+                         that failed (lac_pairing.h): C, G and area miss it */
   double *xpt, *npt;  /* owned, 3k, node-to-segment only (else NULL): the
                          collocation point and unit normal of multiplier i */
 } lac_contact;

@@ -19,7 +19,7 @@
 typedef struct nts_node
 {
   size_t node;
-  double w, n[3], x[3];
+  double w, h, n[3], x[3];    /* h: the share without the 2 pi r weight */
 } nts_node;
 
 /* Collect the slave nodes, their weights and nodal normals. */
@@ -57,6 +57,7 @@ slave_nodes (const lac_mesh *mesh, lac_model model, const lac_macro *M,
             }
           nts_node *q = &v[idx[g]];
           double wa = P->measure[j] / k;              /* lumped share */
+          q->h += wa;
           wa *= lac_model_weight (model, q->x);      /* 2 pi r */
           q->w += wa;
           for (int c = 0; c < dim; c++)
@@ -176,6 +177,7 @@ lac_contact_build_nts (const lac_mesh *mesh, lac_model model,
           c->macro[i] = m;
           c->G[i] = q->w * g;                     /* w_a g_a */
           c->area[i] = q->w;
+          c->size[i] = q->h;
           memcpy (c->xpt + 3 * i, q->x, sizeof q->x);
           memcpy (c->npt + 3 * i, q->n, sizeof q->n);
           st = add_column (T, mesh, master, q, f, xi, i);

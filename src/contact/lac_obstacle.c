@@ -198,10 +198,12 @@ pairing_alloc (int dim, size_t ns, size_t np, int along_n)
                       : lac_calloc (np * (size_t) dim + 1, sizeof *P->normal);
   P->covered = lac_calloc (ns + 1, sizeof *P->covered);
   P->measure = lac_calloc (ns + 1, sizeof *P->measure);
+  P->lost = lac_calloc (ns + 1, sizeof *P->lost);
   P->pair_ptr = lac_calloc (ns + 1, sizeof *P->pair_ptr);
   P->pair_pt = lac_calloc (1, sizeof *P->pair_pt);
   if (!P->ptr || !P->xs || !P->xm || !P->master || !P->w || !P->gap
-      || (!along_n && !P->normal) || !P->covered || !P->measure || !P->pair_ptr
+      || (!along_n && !P->normal) || !P->covered || !P->measure || !P->lost
+      || !P->pair_ptr
       || !P->pair_pt)
     {
       lac_pairing_free (P);

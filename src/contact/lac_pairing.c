@@ -177,12 +177,13 @@ result_alloc (size_t ns, size_t npairs, size_t npts, int dim)
   P->gap = lac_malloc ((npts + 1) * sizeof *P->gap);
   P->covered = lac_calloc (ns + 1, sizeof *P->covered);
   P->measure = lac_calloc (ns + 1, sizeof *P->measure);
+  P->lost = lac_calloc (ns + 1, sizeof *P->lost);
   P->pair_ptr = lac_calloc (ns + 1, sizeof *P->pair_ptr);
   P->pair_master = lac_malloc ((npairs + 1) * sizeof *P->pair_master);
   P->pair_measure = lac_malloc ((npairs + 1) * sizeof *P->pair_measure);
   P->pair_pt = lac_calloc (npairs + 1, sizeof *P->pair_pt);
   if (!P->ptr || !P->xs || !P->xm || !P->master || !P->w || !P->gap
-      || !P->covered || !P->measure || !P->pair_ptr || !P->pair_master
+      || !P->covered || !P->measure || !P->lost || !P->pair_ptr || !P->pair_master
       || !P->pair_measure || !P->pair_pt)
     {
       lac_pairing_free (P);
@@ -192,9 +193,10 @@ result_alloc (size_t ns, size_t npairs, size_t npts, int dim)
 }
 
 /* The points of pair (s, m), appended to P.  A failed projection drops
- * the pair (counted in P->nfail). */
+ * the pair: counted in P->nfail, its part of slave facet s in P->lost. */
 static int
-fill_pair (lac_pairing_search *W, lac_pairing *P, const rules *R, size_t m)
+fill_pair (lac_pairing_search *W, lac_pairing *P, const rules *R, size_t s,
+           size_t m)
 {
   double poly[2 * LAC_PAIRING_MAXPOLY];
   int np, npts, status;
@@ -212,6 +214,9 @@ fill_pair (lac_pairing_search *W, lac_pairing *P, const rules *R, size_t m)
   if (status)
     {
       P->nfail++;
+      P->lost[s] += lac_pairing_overlap_fraction (&W->sf, np, poly)
+                    * P->measure[s];
+      lac_error_clear ();
       return LAC_SUCCESS;
     }
   double meas = 0;
@@ -273,7 +278,7 @@ make_result (lac_pairing_search *W, const rules *R, lac_pairing **out)
         break;
       sort_pairs (W, s);
       for (size_t q = W->pbeg[s]; q < W->pbeg[s] + W->pcnt[s] && !status; q++)
-        status = fill_pair (W, P, R, W->pm[q]);
+        status = fill_pair (W, P, R, s, W->pm[q]);
       if (status)
         break;
       for (size_t p = P->ptr[s]; p < P->npoints; p++)
@@ -316,7 +321,7 @@ lac_pairing_free (lac_pairing *P)
   lac_free (P->ptr), lac_free (P->xs), lac_free (P->xm);
   lac_free (P->master), lac_free (P->w), lac_free (P->gap);
   lac_free (P->normal);
-  lac_free (P->covered), lac_free (P->measure);
+  lac_free (P->covered), lac_free (P->measure), lac_free (P->lost);
   lac_free (P->pair_ptr), lac_free (P->pair_master);
   lac_free (P->pair_measure), lac_free (P->pair_pt);
   lac_free (P);

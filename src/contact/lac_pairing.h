@@ -117,6 +117,10 @@ typedef struct lac_pairing
   size_t ntests;         /* (slave, master) intersection tests            */
   size_t nseeds;         /* bucket-grid queries (seeds, completions)      */
   size_t nfail;          /* pairs dropped: a projection did not converge  */
+  double *lost;          /* owned, nslave: the part of each slave facet
+                            that those pairs covered (a measure, without
+                            the axisymmetric weight); the contact data
+                            miss it                                       */
 } lac_pairing;
 
 /* construct / destroy */

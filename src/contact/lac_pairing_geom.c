@@ -44,6 +44,16 @@ lac_pairing_polygon_area (int n, const double *q)
   return 0.5 * a;
 }
 
+double
+lac_pairing_overlap_fraction (const lac_pairing_facet *f, int np,
+                              const double *poly)
+{
+  if (f->sdim == 2)                        /* an interval of [-1, 1] */
+    return 0.5 * (poly[1] - poly[0]);
+  return lac_pairing_polygon_area (np, poly)
+         / lac_pairing_polygon_area (f->nz, f->z);
+}
+
 /* lac_pairing_clip: Sutherland-Hodgman clipping of the polygon q against
  * the convex polygon c.
  *

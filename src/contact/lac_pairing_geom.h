@@ -52,6 +52,11 @@ typedef struct lac_pairing_facet
   int affine;               /* 1: chart coordinates = reference ones       */
 } lac_pairing_facet;
 
+/* The fraction of slave facet f that an overlap (np points of its chart,
+ * as lac_pairing_overlap returns it) covers. */
+double lac_pairing_overlap_fraction (const lac_pairing_facet *f, int np,
+                                     const double *poly);
+
 /* Fill f from a facet type and its nodes (xe: nnodes*sdim).  Returns
  * LAC_EINVAL for a type that is not a facet of an sdim-D cell, LAC_ESING
  * for a degenerate facet or a non-convex quadrangle. */

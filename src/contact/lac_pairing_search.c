@@ -237,11 +237,17 @@ grid_ncells (const long *lo, const long *hi)
 }
 
 /* A spatial hash of the master facets: cells of the mean facet size, each
- * facet filed in every cell its bounding box meets, 2n buckets.  The rare
- * facets much larger than the mean (more than LAC_PAIRING_BIG cells, on
- * strongly graded meshes) are kept in a separate list instead. */
+ * facet filed in every cell its bounding box meets, 2n buckets.  The box
+ * is grown by the master's share of the gap bound, dist_abs + dist_rel
+ * times its diagonal (at least the facet's diameter): a pair counts when
+ * its gap is within dist_rel times the LARGER of the two diameters
+ * (test_pair), so a master facet larger than its slave must be found by
+ * the slave's query although it lies beyond the slave's own bound.  The
+ * rare facets much larger than the mean (more than LAC_PAIRING_BIG cells,
+ * on strongly graded meshes) are kept in a separate list instead. */
 static int
-grid_build (lac_pairing_grid *G, const lac_pairing_side *M)
+grid_build (lac_pairing_grid *G, const lac_pairing_side *M,
+            const lac_pairing_opts *o)
 {
   size_t n = M->f->n, pass;
   long lo[3], hi[3], c[3];
@@ -269,6 +275,15 @@ grid_build (lac_pairing_grid *G, const lac_pairing_side *M)
   G->hg = hsum / (double) n / (G->sdim - 1);      /* mean facet extent */
   if (!(G->hg > 0))
     LAC_ERROR (LAC_ESING, "the %zu master facets have no extent", n);
+  for (size_t i = 0; i < n; i++)                   /* the master's bound */
+    {
+      double *b = G->box + 6 * i, diag = 0;
+      for (int k = 0; k < 3; k++)
+        diag += (b[3 + k] - b[k]) * (b[3 + k] - b[k]);
+      double grow = o->dist_abs + o->dist_rel * sqrt (diag);
+      for (int k = 0; k < G->sdim; k++)
+        b[k] -= grow, b[3 + k] += grow;
+    }
   G->mask = 1;
   while (G->mask < 2 * n)
     G->mask <<= 1;
@@ -385,17 +400,14 @@ test_pair (lac_pairing_search *W, size_t s, size_t m, int *hit)
     }
   W->pm[W->np++] = m;
   W->pcnt[s]++;
-  if (W->sf.sdim == 2)             /* covered fraction of the slave facet */
-    W->cov += 0.5 * (poly[1] - poly[0]);
-  else
-    W->cov += lac_pairing_polygon_area (np, poly)
-      / lac_pairing_polygon_area (W->sf.nz, W->sf.z);
+  W->cov += lac_pairing_overlap_fraction (&W->sf, np, poly);
   *hit = 1;
   return LAC_SUCCESS;
 }
 
-/* Masters whose boxes meet the box of slave s grown by its gap bound (a
- * query of the bucket grid); *nc candidates in W->cand. */
+/* Masters whose boxes (grown by their share of the gap bound) meet the
+ * box of slave s grown by its share (a query of the bucket grid); *nc
+ * candidates in W->cand. */
 static void
 grid_query (lac_pairing_search *W, size_t s, size_t *nc)
 {
@@ -597,7 +609,7 @@ lac_pairing_search_init (lac_pairing_search *W,
   W->o = o;
   if ((status = side_build (&W->S, slave, "slave"))
       || (status = side_build (&W->M, master, "master"))
-      || (status = grid_build (&W->G, &W->M)))
+      || (status = grid_build (&W->G, &W->M, W->o)))
     return status;
   return search_alloc (W);
 }

@@ -103,8 +103,9 @@ stage_solve (lac_run *r)
 {
   if (!large (r))
     {
-      int status = lac_run_solve (r->scene, r->opts.strategy, &r->sys,
-                                  &r->sol, r->progress, sizeof r->progress);
+      int status = lac_run_solve (r->scene, r->opts.strategy, &r->setup,
+                                  &r->sys, &r->sol, r->progress,
+                                  sizeof r->progress);
       if (!status)
         lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
       return status;
@@ -149,25 +150,17 @@ add_timings (lac_run *r)
     }
   if (!status && large (r))
     {
-      const lac_nl *n = r->nl.s;
-      if (!(status = lac_summary_add (s, "time_assemble_KT", "%.3f",
-                                      n->time_assemble))
-          && !(status = lac_summary_add (s, "time_pairing", "%.3f",
-                                         n->time_pairing)))
-        status = lac_summary_add (s, "time_saddle_solve", "%.3f",
-                                  n->time_solve);
-      if (!status)
-        status = lac_summary_add (s, "time_factor_KT", "%.3f",
-                                  n->time_factor);
-      if (!status)
-        status = lac_summary_add (s, "time_frozen_solve", "%.3f",
-                                  n->time_frozen);
-      if (!status)
-        status = lac_summary_add (s, "time_consistent_step", "%.3f",
-                                  n->time_krylov);
-      if (!status)
-        status = lac_summary_add (s, "time_contact_tangent", "%.3f",
-                                  n->time_tangent);
+      const lac_nl *n = r->nl.model;
+      const lac_newton *w = r->nl.ls->loop;
+      const char *key[] = { "time_assemble_KT", "time_pairing",
+                            "time_saddle_solve", "time_factor_KT",
+                            "time_frozen_solve", "time_consistent_step",
+                            "time_contact_tangent" };
+      double t[] = { n->time_assemble, n->time_pairing, w->time_solve,
+                     w->time_factor, w->time_frozen, w->time_krylov,
+                     n->time_tangent };
+      for (size_t k = 0; k < sizeof t / sizeof *t && !status; k++)
+        status = lac_summary_add (s, key[k], "%.3f", t[k]);
     }
   else if (!status && r->sol.newton)
     {

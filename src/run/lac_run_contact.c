@@ -224,7 +224,7 @@ forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
           }
       for (int k = 0; k < 3; k++)
         {
-          f[k] = lambda[i] * n[k] + 0.0;        /* no -0 when lambda = 0 */
+          f[k] = lambda[c->macro[i]] * n[k] + 0.0;   /* no -0 if lambda = 0 */
           rc->resultant[k] += f[k];
         }
     }
@@ -243,8 +243,11 @@ contact_axis (lac_model model, const lac_run_setup *st, const lac_contact *c,
   int dim = lac_model_dim (model);
   double n[3] = { 0, 0, 0 };
   for (size_t i = 0; i < c->k; i++)
-    for (int k = 0; k < 3 && nw->active[i] && nw->lambda[i] != 0; k++)
-      n[k] += rc->force[3 * i + k] / nw->lambda[i];
+    {
+      size_t m = c->macro[i];
+      for (int k = 0; k < 3 && nw->active[m] && nw->lambda[m] != 0; k++)
+        n[k] += rc->force[3 * i + k] / nw->lambda[m];
+    }
   *axis = 0;
   for (int k = 1; k < dim; k++)
     if (fabs (n[k]) > fabs (n[*axis]))
@@ -265,11 +268,11 @@ summary (lac_model model, const lac_run_setup *st, const lac_contact *c,
   size_t nact = 0;
   double area = 0, pmax = 0;
   for (size_t i = 0; i < c->k; i++)
-    if (nw->active[i])
+    if (nw->active[c->macro[i]])
       {
         nact++;
         area += c->area[i];
-        pmax = fmax (pmax, -nw->lambda[i]);
+        pmax = fmax (pmax, -nw->lambda[c->macro[i]]);
       }
   contact_axis (model, st, c, nw, rc, &axis, &sign);
   if ((status = lac_summary_add (sum, "contact_force", "%.10e",
@@ -307,4 +310,22 @@ lac_run_contact_post (lac_model model, const lac_mesh *m,
       || (status = forces (model, m, setup, c, nw->lambda, rc)))
     return status;
   return summary (model, setup, c, nw, rc, sum);
+}
+
+int
+lac_run_pairs_dropped (const lac_pairing *P, const lac_newton *nw,
+                       lac_summary *sum)
+{
+  double lost = 0;
+  int status;
+  if (nw->widened && (status = lac_summary_add (sum, "pairing_widened",
+                                                "%zu", nw->widened)))
+    return status;
+  if (!P || !P->nfail)
+    return LAC_SUCCESS;
+  for (size_t j = 0; j < P->nslave; j++)
+    lost += P->lost[j];
+  if ((status = lac_summary_add (sum, "pairs_dropped", "%zu", P->nfail)))
+    return status;
+  return lac_summary_add (sum, "area_dropped", "%.10e", lost);
 }

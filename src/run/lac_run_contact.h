@@ -57,4 +57,11 @@ int lac_run_contact_post (lac_model model, const lac_mesh *m,
                           lac_summary *sum);
 void lac_run_contact_clear (lac_run_contact *rc);
 
+/* What the pairing left out: pairing_widened, the times the loop paired
+ * again with a longer reach (solve/lac_newton.h: no silent penetration);
+ * pairs_dropped and area_dropped, the pairs of P whose projection failed
+ * and the slave measure they covered.  Nothing when there is none. */
+int lac_run_pairs_dropped (const lac_pairing *P, const lac_newton *nw,
+                           lac_summary *sum);
+
 #endif /* LAC_RUN_CONTACT_H */

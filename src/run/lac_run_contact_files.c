@@ -34,10 +34,10 @@ multiplier_fields (FILE *f, const lac_run_contact_data *d, size_t m)
       return;
     }
   fprintf (f, ",%ld", i);
-  field (f, d->newton->lambda[i]);
+  field (f, d->newton->lambda[m]);
   field (f, d->has_exact ? d->mult->exact[i] : NAN);
-  field (f, c->area[i] > 0 ? d->newton->d[i] / c->area[i] : NAN);
-  fprintf (f, ",%d", d->newton->active[i]);
+  field (f, c->area[i] > 0 ? d->newton->d[m] / c->area[i] : NAN);
+  fprintf (f, ",%d", d->newton->active[m]);
 }
 
 int
@@ -135,9 +135,9 @@ status_of (const lac_run_contact_data *d, size_t m, double *lam, double *gap,
 {
   const lac_contact *c = d->contact;
   long i = m < c->nmacro ? c->mult[m] : -1;
-  *lam = i >= 0 ? d->newton->lambda[i] : NAN;
-  *gap = i >= 0 && c->area[i] > 0 ? d->newton->d[i] / c->area[i] : NAN;
-  *st = i >= 0 ? d->newton->active[i] : -1;
+  *lam = i >= 0 ? d->newton->lambda[m] : NAN;
+  *gap = i >= 0 && c->area[i] > 0 ? d->newton->d[m] / c->area[i] : NAN;
+  *st = i >= 0 ? d->newton->active[m] : -1;
 }
 
 static int

@@ -190,15 +190,11 @@ summary (const ctx *r, const lac_newton *s, const lac_exact *e, double l2lam,
   int status;
   for (size_t i = 0; i < k; i++)
     {
-      lmin = fmin (lmin, s->lambda[i]);
-      lmax = fmax (lmax, s->lambda[i]);
-      elam = fmax (elam, fabs (s->lambda[i] - r->mu->exact[i]));
+      lmin = fmin (lmin, r->lambda[i]);
+      lmax = fmax (lmax, r->lambda[i]);
+      elam = fmax (elam, fabs (r->lambda[i] - r->mu->exact[i]));
       lref = fmax (lref, fabs (r->mu->exact[i]));
     }
-  if (r->setup->pairing->nfail
-      && (status = lac_summary_add (sum, "pairs_dropped", "%zu",
-                                    r->setup->pairing->nfail)))
-    return status;
   if ((status = lac_summary_add (sum, "macro_elements", "%zu", M->n))
       || (status = lac_summary_add (sum, "multipliers", "%zu", k))
       || (status = lac_summary_add (sum, "active", "%zu",
@@ -243,18 +239,24 @@ lac_run_multipliers_post (lac_model model, const lac_mesh *m,
                           const double *sigma, lac_run_multipliers *mu,
                           lac_summary *sum)
 {
+  double *lam = lac_malloc ((c->k + 1) * sizeof *lam), l2lam;
   ctx r = { model, lac_model_dim (model), lac_model_nstress (model), m,
-            setup, c, nw->lambda, sigma, mu };
-  double l2lam;
+            setup, c, lam, sigma, mu };
   int status;
   mu->x = lac_calloc (3 * c->k + 1, sizeof *mu->x);
   mu->exact = lac_calloc (c->k + 1, sizeof *mu->exact);
-  if (!mu->x || !mu->exact)
-    LAC_ERROR (LAC_ENOMEM, "multiplier data");
-  if ((status = multiplier_geometry (&r, e, &l2lam))
-      || (status = summary (&r, nw, e, l2lam, sum)))
-    return status;
-  return summary_radial (&r, e, sum);
+  if (!mu->x || !mu->exact || !lam)
+    {
+      lac_free (lam);
+      LAC_ERROR (LAC_ENOMEM, "multiplier data");
+    }
+  for (size_t i = 0; i < c->k; i++)
+    lam[i] = nw->lambda[c->macro[i]];          /* per column */
+  if (!(status = multiplier_geometry (&r, e, &l2lam))
+      && !(status = summary (&r, nw, e, l2lam, sum)))
+    status = summary_radial (&r, e, sum);
+  lac_free (lam);
+  return status;
 }
 
 void

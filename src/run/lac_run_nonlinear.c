@@ -24,7 +24,8 @@ lac_run_nl_clear (lac_run_nl *nl)
 {
   lac_dirichlet_free (nl->dir);
   lac_free (nl->ramp);
-  lac_nl_free (nl->s);
+  lac_loadstep_free (nl->ls);
+  lac_nl_free (nl->model);
   lac_free (nl->factor);
   lac_free (nl->step);
   lac_free (nl->mult);
@@ -160,7 +161,10 @@ nl_setup (const lac_scene *sc, const lac_mesh *m,
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
   o.frozen = sc->steps.tangent == 1;
-  return (nl->s = lac_nl_alloc (p, &o)) ? LAC_SUCCESS : LAC_ENOMEM;
+  if (!(nl->model = lac_nl_alloc (p, &o))
+      || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
+    return LAC_ENOMEM;
+  return LAC_SUCCESS;
 }
 
 /* ---- one load step per call --------------------------------------------- */
@@ -182,7 +186,8 @@ push_mult (lac_run_nl *nl, lac_run_nl_mult **q)
 static int
 record_mults (lac_run_nl *nl, const lac_macro *M, int step)
 {
-  const lac_nl *s = nl->s;
+  const lac_nl *s = nl->model;
+  const lac_newton *loop = nl->ls->loop;
   const lac_contact *c = s->contact;
   const lac_pairing *P = s->pairing;
   int dim = s->cur.dim, nodes[LAC_MAX_FACE_NODES], status;
@@ -196,9 +201,10 @@ record_mults (lac_run_nl *nl, const lac_macro *M, int step)
         return status;
       q->step = step;
       q->macro = m;
-      q->lambda = s->lambda[m];
-      q->gap = c->area[i] > 0 ? c->G[i] / c->area[i] : 0.0;
-      q->active = s->active[m];
+      q->lambda = loop->lambda[m];
+      q->gap = c->area[i] > 0 ? loop->d[m] / c->area[i] : 0.0;
+      q->covered = c->area[i];
+      q->active = loop->active[m];
       for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)   /* centroid */
         for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
           {
@@ -220,15 +226,15 @@ record_mults (lac_run_nl *nl, const lac_macro *M, int step)
 static void
 record_step (lac_run_nl *nl, size_t j, int dim)
 {
-  const lac_nl *s = nl->s;
+  const lac_newton *s = nl->ls->loop;
   lac_run_nl_step *q = &nl->step[j];
-  q->solver = s->steps[s->nsteps - 1];
+  q->solver = nl->ls->steps[nl->ls->nsteps - 1];
   q->imposed = q->solver.t * nl->imposed_ref;
   for (int k = 0; k < dim && nl->monitor != SIZE_MAX; k++)
     q->um[k] = s->U[nl->monitor * (size_t) dim + (size_t) k];
-  q->force = lac_nl_contact_force (s);
+  q->force = lac_nl_contact_force (nl->model, s->lambda);
   q->lambda_min = 0;
-  for (size_t m = 0; m < s->nmacro; m++)
+  for (size_t m = 0; m < s->nslot; m++)
     q->lambda_min = fmin (q->lambda_min, s->lambda[m]);
 }
 
@@ -258,18 +264,18 @@ report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
 static void
 report_iter (const lac_run_nl *nl, size_t j, char *progress, size_t size)
 {
-  const lac_nl *s = nl->s;
-  const lac_nl_iter *r = &s->iters[s->niters - 1];
+  const lac_newton *s = nl->ls->loop;
+  const lac_newton_record *r = &s->hist[s->nhist - 1];
   char cut[160] = "", gm[48] = "";
   if (r->cuts > nl->cuts_seen)
     snprintf (cut, sizeof cut, "; sub-step cut (%.100s), now to t = %.4f",
-              s->cut_msg, r->t);
-  if (r->krylov > 0)
-    snprintf (gm, sizeof gm, ", %d GMRES%s", r->krylov,
+              nl->ls->cut_msg, r->t);
+  if (r->krylov_iterations > 0)
+    snprintf (gm, sizeof gm, ", %d GMRES%s", r->krylov_iterations,
               r->factored ? " (K_T factored)" : "");
   snprintf (progress, size, "step %zu/%zu iteration %d: residual %.1e, %zu "
             "status%s changed, %zu/%zu active%s, %.2f s%s", j + 1,
-            nl->nfactor, s->ls.iters, r->residual, r->nchanged,
+            nl->nfactor, nl->ls->iters, r->residual, r->nchanged,
             r->nchanged == 1 ? "" : "es", r->nactive, r->k, gm, r->seconds,
             cut);
 }
@@ -288,7 +294,7 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
       && lac_run_nl_step_file (j, nl->nfactor, sc->steps.vtu_every))
     {
       nl->kept[nl->nkept] = j;                  /* room: nl_kept_alloc */
-      memcpy (nl->ukept + nl->nkept++ * ndof, nl->s->U,
+      memcpy (nl->ukept + nl->nkept++ * ndof, nl->ls->loop->U,
               ndof * sizeof *nl->ukept);
     }
   report_step (sc, nl, j, m->dim, progress, size);
@@ -303,21 +309,21 @@ lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
 {
   size_t ndof = (size_t) m->dim * m->nnodes, j;
   int status;
-  if (!nl->s && (status = nl_setup (sc, m, mat, setup, sys, nl)))
+  if (!nl->ls && (status = nl_setup (sc, m, mat, setup, sys, nl)))
     return status;
   j = nl->next;
   if (!nl->in_step)
     {
-      if ((status = lac_nl_step_begin (nl->s, nl->factor[j])))
+      if ((status = lac_loadstep_begin (nl->ls, nl->factor[j])))
         return status;
       nl->in_step = 1;
       nl->cuts_seen = 0;
     }
-  status = lac_nl_step_iterate (nl->s);
+  status = lac_loadstep_iterate (nl->ls);
   if (status == LAC_CONTINUE)
     {
       report_iter (nl, j, progress, size);
-      nl->cuts_seen = nl->s->iters[nl->s->niters - 1].cuts;
+      nl->cuts_seen = nl->ls->loop->hist[nl->ls->loop->nhist - 1].cuts;
       return LAC_CONTINUE;
     }
   nl->in_step = 0;
@@ -333,6 +339,6 @@ lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
     return status;
   if (++nl->next < nl->nfactor)
     return LAC_CONTINUE;
-  memcpy (u, nl->s->U, ndof * sizeof *u);
+  memcpy (u, nl->ls->loop->U, ndof * sizeof *u);
   return LAC_SUCCESS;
 }

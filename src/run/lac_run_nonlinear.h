@@ -47,6 +47,9 @@ typedef struct lac_run_nl_mult
   size_t macro;
   double x[3];          /* centroid of T^m cap Gamma_C, current coords    */
   double lambda, gap;   /* multiplier, mean gap d / |T^m cap Gamma_C|     */
+  double covered;       /* |T^m cap Gamma_C| on the deformed surface (2 pi
+                           r weighted if axisymmetric): lambda covered is
+                           the normal force of the macro-element         */
   char active;
 } lac_run_nl_mult;
 
@@ -56,7 +59,9 @@ typedef struct lac_run_nl
   char *ramp;                 /* owned, dir->n flags                      */
   lac_obstacle ob;
   lac_nl_problem prob;
-  lac_nl *s;                  /* owned                                    */
+  lac_nl *model;              /* owned: the large-deformation model       */
+  lac_loadstep *ls;           /* owned: the load steps and the loop of
+                                 Algorithm 1 (U, lambda, records)         */
   double *factor;             /* owned, nfactor load factors              */
   size_t nfactor, next;
   int in_step;                /* a load step is under way                 */

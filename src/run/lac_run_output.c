@@ -102,7 +102,7 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
   int status = lac_file_create (path, "w", &f);
   if (status)
     return status;
-  fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active\n",
+  fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active,covered\n",
            last_only ? "" : "step,");
   for (size_t q = 0; q < nl->nmult; q++)
     {
@@ -111,8 +111,9 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
         continue;
       if (!last_only)
         fprintf (f, "%d,", u->step);
-      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d\n", u->macro, u->x[0],
-               u->x[1], u->x[2], u->lambda, u->gap, u->active);
+      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%.10e\n", u->macro,
+               u->x[0], u->x[1], u->x[2], u->lambda, u->gap, u->active,
+               u->covered);
     }
   return lac_file_close (f, path);
 }

@@ -188,7 +188,7 @@ static int
 nl_summary (const lac_run_post_in *in, lac_run_results *r)
 {
   const lac_run_nl *nl = in->nl;
-  const lac_nl *s = nl->s;
+  const lac_newton *s = nl->ls->loop;
   const lac_mesh *m = in->mesh;
   lac_summary *sum = &r->summary;
   int dim = m->dim, itmax = 0, ncut = 0, status;
@@ -202,7 +202,7 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       || (status = lac_summary_add (sum, "fixed_dofs", "%zu", in->sys->nfixed))
       || (status = lac_summary_add (sum, "load_steps", "%zu", nl->nfactor))
       || (status = lac_summary_add (sum, "newton_iterations", "%zu",
-                                        s->niters))
+                                        s->nhist))
       || (status = lac_summary_add (sum, "max_iterations_per_step", "%d",
                                         itmax))
       || (status = lac_summary_add (sum, "cut_steps", "%d", ncut))
@@ -230,6 +230,8 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   if (!in->setup->macro)
     return LAC_SUCCESS;
   const lac_run_nl_step *q = &nl->step[nl->nfactor - 1];
+  if ((status = lac_run_pairs_dropped (nl->model->pairing, s, sum)))
+    return status;
   if ((status = lac_summary_add (sum, "macro_elements", "%zu", in->setup->macro->n))
       || (status = lac_summary_add (sum, "multipliers", "%zu", q->solver.k))
       || (status = lac_summary_add (sum, "active", "%zu",
@@ -277,6 +279,10 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
   if ((status = make_summary (in, res, &e)))
     return status;
   if (in->sys->contact
+      && (status = lac_run_pairs_dropped (in->setup->pairing,
+                                          in->sol->newton, &res->summary)))
+    return status;
+  if (in->sys->contact
       && (status = lac_run_multipliers_post (in->model, in->mesh, in->setup,
                                              in->sys->contact,
                                              in->sol->newton, &e, res->sigma,
@@ -308,7 +314,7 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
       || (status = nl_summary (in, res)))
     return status;
   snprintf (progress, size, "Cauchy stresses, von Mises; %zu Newton "
-            "iterations in %zu load steps", in->nl->s->niters,
+            "iterations in %zu load steps", in->nl->ls->loop->nhist,
             in->nl->nfactor);
   return LAC_SUCCESS;
 }
@@ -340,9 +346,9 @@ check_finite (const lac_run_post_in *in, const lac_run_results *res)
   if (i < n)
     snprintf (where, sizeof where, "u_%c = %g at node %zu", comp[i % d],
               in->u[i], m->node_tag[i / d]);
-  else if (nt && (i = first_bad (nt->lambda, nt->k)) < nt->k)
-    snprintf (where, sizeof where, "lambda = %g for multiplier %zu of %zu",
-              nt->lambda[i], i + 1, nt->k),
+  else if (nt && (i = first_bad (nt->lambda, nt->nslot)) < nt->nslot)
+    snprintf (where, sizeof where, "lambda = %g for macro-element %zu of %zu",
+              nt->lambda[i], i + 1, nt->nslot),
       what = "the contact multipliers are";
   else if ((i = first_bad (res->sigma, m->nnodes * ns)) < m->nnodes * ns)
     snprintf (where, sizeof where, "stress component %zu = %g at node %zu",

@@ -41,12 +41,10 @@ pair (const lac_scene *sc, const lac_mesh *m, lac_run_setup *s)
   const lac_scene_contact *c = &sc->contact[0];
   lac_pairing_facets S = { m, s->macro->ptr[s->macro->n], s->macro->cell,
                            s->macro->face };
-  lac_pairing_opts po;
   double t0 = lac_seconds ();
   int status;
-  lac_pairing_opts_init (&po);
-  po.dist_abs = c->gap_bound;
-  status = s->master.n ? lac_pairing_build (&S, &s->master, &po, &s->pairing)
+  status = s->master.n ? lac_pairing_build (&S, &s->master, &s->pair.popts,
+                                            &s->pairing)
                        : lac_obstacle_pairing (&S, &s->obstacle, 0,
                                                &s->pairing);
   s->time_pairing = lac_seconds () - t0;
@@ -122,6 +120,13 @@ lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
                                  { c->curvature[0], c->curvature[1] },
                                  { c->center[0], c->center[1] },
                                  c->normal == 1 };
+  s->pair = (lac_contact_pair) { *mesh, (lac_model) sc->scene.model,
+                                 s->macro, s->master.n ? &s->master : NULL,
+                                 &s->obstacle, c->epsilon > 0 ? c->epsilon
+                                 : LAC_EPSILON_DEFAULT, c->method == 2,
+                                 { 0 } };
+  lac_pairing_opts_init (&s->pair.popts);
+  s->pair.popts.dist_abs = c->gap_bound;
   if ((status = mark_contact_nodes (*mesh, gs, gm, s))
       || (!large && (status = pair (sc, *mesh, s))))
     return status;

@@ -10,11 +10,13 @@
  *      instead [LAC Remark 3]; the nodes on a contact surface (their
  *      bodies may be held by contact alone).
  * A scene without [contact] gets an empty set-up: no search, no pairing.
+ * The set-up points into the mesh: it must not move after this stage.
  */
 #ifndef LAC_RUN_SETUP_H
 #define LAC_RUN_SETUP_H
 
 #include <stddef.h>
+#include "contact/lac_contact_pair.h"
 #include "contact/lac_macromesh.h"
 #include "contact/lac_obstacle.h"
 #include "contact/lac_pairing.h"
@@ -26,6 +28,8 @@ typedef struct lac_run_setup
   lac_pairing *pairing;        /* owned: linear scenes only (else NULL)   */
   lac_pairing_facets master;   /* points into the mesh; n = 0: obstacle   */
   lac_obstacle obstacle;       /* the rigid master when master.n = 0      */
+  lac_contact_pair pair;       /* all of it, for pairing again (points
+                                  into the mesh and the fields above)     */
   char *on_contact;            /* owned, nnodes: node on a contact surface */
   double time_refine;          /* seconds: macro-mesh and refinement      */
   double time_pairing;         /* seconds: pairing                        */

@@ -19,6 +19,7 @@ lac_run_solution_clear (lac_run_solution *sol)
 {
   lac_free (sol->u);
   lac_newton_free (sol->newton);
+  lac_linear_model_clear (&sol->lin);
   memset (sol, 0, sizeof *sol);
 }
 
@@ -105,28 +106,52 @@ solve_plain (const lac_scene *sc, const lac_run_system *sys,
   return status;
 }
 
-/* The active set's workspace: the strategy chosen, (*) set up. */
+/* The smallest Young modulus of the scene: E of rho (lac_newton.h). */
+static double
+young_min (const lac_scene *sc)
+{
+  double E = HUGE_VAL;
+  for (size_t k = 0; k < sc->nmaterial; k++)
+    E = fmin (E, sc->material[k].E);
+  return E < HUGE_VAL ? E : 1.0;
+}
+
+/* The loop of Algorithm 1 on the linear model of the pair: the strategy
+ * chosen, the loop begun. */
 static int
-contact_start (const lac_scene *sc, int strategy, const lac_run_system *sys,
-               lac_run_solution *sol, lac_contact_system *cs)
+contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
+               lac_run_system *sys, lac_run_solution *sol)
 {
   const lac_scene_contact *c = &sc->contact[0];
   lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
                                                 : c->strategy);
-  *cs = (lac_contact_system) { sys->K, sys->b, sys->contact->C,
-                               sys->contact->G, NULL, sys->nfree, sys->N,
-                               (const char *const *) sys->N_what };
+  lac_contact_model model;
+  lac_newton_opts o;
+  int status;
+  sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
+                                   sys->nfree, sys->N,
+                                   (const char *const *) sys->N_what };
   sol->strategy = lac_strategy_choose (want, sys->ndof, sys->contact->k,
                                        sys->nfree);
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
-  if (!(sol->newton = lac_newton_alloc (sol->strategy, sys->ndof,
-                                        sys->contact->k)))
+  if ((status = lac_linear_model_init_pair (&sol->lin, &sol->cs,
+                                            &setup->pair, &setup->pairing,
+                                            &sys->contact, sys->dir,
+                                            young_min (sc), &model)))
+    return status;
+  lac_newton_opts_init (&o);
+  o.kind = sol->strategy;
+  o.maxit = c->max_iterations;
+  o.tol = NEWTON_TOL;
+  if (!(sol->newton = lac_newton_alloc (&model, &o)))
+    return LAC_ENOMEM;
+  if (!(sol->newton->strategy = lac_strategy_alloc (sol->strategy)))
     return sol->strategy == LAC_STRATEGY_PETSC ? LAC_EDEP : LAC_ENOMEM;
   lac_strategy_set_coordinates (sol->newton->strategy, sys->coord_dim,
                                 sys->x);
-  return lac_newton_set (sol->newton, cs, NULL);
+  return lac_newton_begin (sol->newton);
 }
 
 /* The petsc strategy's counts after an iteration. */
@@ -172,37 +197,35 @@ static int
 contact_iterate (const lac_scene *sc, const lac_run_system *sys,
                  lac_run_solution *sol, char *progress, size_t size)
 {
-  const lac_scene_contact *c = &sc->contact[0];
   lac_newton *nw = sol->newton;
   const lac_newton_record *h;
   int status = lac_newton_iterate (nw);
-  if (status)
+  if (status != LAC_SUCCESS && status != LAC_CONTINUE)
     {
       char msg[600];
       lac_run_inner_message (msg, sizeof msg);
       return lac_error_set (status, sc->path, "active-set iteration %zu: "
                             "%s", nw->nhist + 1, msg);
     }
-  h = &nw->hist[nw->nhist - 1];
   krylov_counts (sol);
-  if (lac_newton_test (nw, NEWTON_TOL) == LAC_SUCCESS)
+  if (status == LAC_SUCCESS)
     {
+      h = nw->nhist ? &nw->hist[nw->nhist - 1] : NULL;
       memcpy (sol->u, nw->U, sys->ndof * sizeof *sol->u);
       snprintf (progress, size, "%s, active set: %zu iteration%s, %zu of "
                 "%zu multipliers active%s",
                 lac_strategy_method (nw->strategy), nw->nhist,
                 nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
-                sys->contact->k, sol->krylov ? "; last solve: " : "");
-      if (sol->krylov)
+                sys->contact->k, sol->krylov && h ? "; last solve: " : "");
+      if (sol->krylov && h)
         krylov_text (h, progress + strlen (progress),
                      size - strlen (progress));
       return LAC_SUCCESS;
     }
-  if ((int) nw->nhist >= c->max_iterations)
-    return lac_newton_maxiter_error (nw, c->max_iterations);
+  h = &nw->hist[nw->nhist - 1];
   snprintf (progress, size, "active set %d: %zu active, %zu changed%s, "
             "residual %.1e, ", h->iter, h->nactive, h->nchanged,
-            h->damped ? " (cycle: damped)" : "", h->residual);
+            h->damped ? " (cycle: damped)" : "", h->backward_error);
   if (sol->krylov)
     krylov_text (h, progress + strlen (progress), size - strlen (progress));
   else
@@ -214,8 +237,9 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
 }
 
 int
-lac_run_solve (const lac_scene *sc, int strategy, const lac_run_system *sys,
-               lac_run_solution *sol, char *progress, size_t size)
+lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
+               lac_run_system *sys, lac_run_solution *sol, char *progress,
+               size_t size)
 {
   int status;
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
@@ -225,7 +249,7 @@ lac_run_solve (const lac_scene *sc, int strategy, const lac_run_system *sys,
            ? solve_plain_petsc (sys, sol, progress, size)
            : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
-      && (status = contact_start (sc, strategy, sys, sol, &sol->cs)))
+      && (status = contact_start (sc, strategy, setup, sys, sol)))
     return status;
   return contact_iterate (sc, sys, sol, progress, size);
 }

@@ -17,16 +17,19 @@
 
 #include <stddef.h>
 #include "io/lac_scene.h"
+#include "run/lac_run_setup.h"
 #include "run/lac_run_system.h"
 #include "run/lac_summary.h"
+#include "solve/lac_linear_model.h"
 #include "solve/lac_newton.h"
 
 typedef struct lac_run_solution
 {
   double *u;                   /* owned, ndof: the displacement            */
-  lac_newton *newton;          /* owned, with [contact]                    */
-  lac_contact_system cs;       /* (*) as the newton workspace borrows it;
-                                  points into the system of stage 4        */
+  lac_newton *newton;          /* owned, with [contact]: Algorithm 1       */
+  lac_linear_model lin;        /* its model (solve/lac_linear_model.h)     */
+  lac_contact_system cs;       /* (*) as the model borrows it; points into
+                                  the system of stage 4                    */
   lac_strategy_kind strategy;  /* with [contact]: the one chosen           */
   double rcond;                /* without contact: K's condition estimate   */
   int krylov;                  /* 1: solved by the petsc strategy           */
@@ -36,9 +39,11 @@ typedef struct lac_run_solution
   int processes;               /* MPI processes that solved                 */
 } lac_run_solution;
 
-/* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done. */
-int lac_run_solve (const lac_scene *sc, int strategy,
-                   const lac_run_system *sys, lac_run_solution *sol,
+/* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.
+ * The set-up's pairing and the system's contact data are replaced when
+ * the loop pairs again (lac_newton.h: no silent penetration). */
+int lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
+                   lac_run_system *sys, lac_run_solution *sol,
                    char *progress, size_t size);
 void lac_run_solution_clear (lac_run_solution *sol);
 /* The petsc strategy's summary lines (processes, solver_iterations,

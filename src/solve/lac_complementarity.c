@@ -4,8 +4,7 @@
 #include "solve/lac_complementarity.h"
 
 #include <math.h>
-
-#define ROUNDING 1e-12
+#include "base/lac_vec.h"
 
 double
 lac_complementarity_lmax (size_t k, const double *lambda)
@@ -20,9 +19,8 @@ lac_complementarity_lmax (size_t k, const double *lambda)
 static double
 test_value (double lambda, double d, double rho, double lmax, double dscale)
 {
-  double lam = fabs (lambda) <= ROUNDING * lmax ? 0.0 : lambda;
-  double gap = fabs (d) <= ROUNDING * dscale ? 0.0 : d;
-  return lam + rho * gap;
+  return lac_snap (lambda, lmax)
+         + rho * lac_snap (d, dscale);
 }
 
 int
@@ -37,6 +35,6 @@ lac_complementarity_residual (double lambda, double d, double rho,
                               double lmax, double dscale)
 {
   double a = test_value (lambda, d, rho, lmax, dscale);
-  double lam = fabs (lambda) <= ROUNDING * lmax ? 0.0 : lambda;
+  double lam = lac_snap (lambda, lmax);
   return fabs (lam - (a < 0 ? a : 0.0));          /* lambda - min(0, .) */
 }

@@ -14,9 +14,10 @@
  * sum |C_ri U_r|, what d_i was computed from), so that a contact that
  * is exactly closed (the Taylor patch test) does not flicker.
  *
- * This is the rule of both loops: the linear active set
- * (solve/lac_newton.c) and the large-deformation Newton loop
- * (solve/lac_nonlinear.c).
+ * The rounding rule is lac_snap (base/lac_vec.h), the one of the mean gaps
+ * at their assembly (contact/lac_assembly_lac.c); the loop of Algorithm 1
+ * (solve/lac_newton.c) uses it for the first statuses too (d_i <= 0
+ * [Alg. 1, lines 2-8]).
  */
 #ifndef LAC_COMPLEMENTARITY_H
 #define LAC_COMPLEMENTARITY_H

@@ -1,4 +1,4 @@
-/* lac_loadstep.c -- one load step: sub-steps, cuts, growth back
+/* lac_loadstep.c -- load steps: sub-steps, cuts, growth back
  *                   (see lac_loadstep.h)           [LAC §4.5, Alg. 1; §5.4]
  */
 #include "solve/lac_loadstep.h"
@@ -10,123 +10,179 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-static int
-push_step (lac_nl *s, const lac_nl_step *r)
+void
+lac_loadstep_free (lac_loadstep *ls)
 {
-  if (lac_grow (&s->steps, s->nsteps + 1, &s->capsteps, sizeof *s->steps,
-                32))
+  if (!ls)
+    return;
+  lac_newton_free (ls->loop);
+  lac_free (ls->steps);
+  lac_free (ls->U_save);
+  lac_free (ls->lambda_save);
+  lac_free (ls->U_old);
+  lac_free (ls->lambda_old);
+  lac_free (ls->active_save);
+  lac_free (ls);
+}
+
+lac_loadstep *
+lac_loadstep_alloc (lac_nl *model, const lac_nl_opts *opts)
+{
+  lac_nl_opts o;
+  lac_newton_opts lo;
+  lac_contact_model m;
+  if (opts)
+    o = *opts;
+  else
+    lac_nl_opts_init (&o);
+  lac_loadstep *ls = lac_calloc (1, sizeof *ls);
+  if (!ls)
+    LAC_ERROR_NULL (LAC_ENOMEM, "load steps");
+  ls->model = model;
+  ls->max_cuts = o.max_cuts == 0 ? 6 : o.max_cuts;
+  ls->predict = o.predict;
+  lac_newton_opts_init (&lo);
+  lo.kind = o.kind;
+  lo.maxit = o.maxit > 0 ? o.maxit : 25;
+  lo.tol = o.tol > 0 ? o.tol : 1e-8;
+  lo.rho = o.rho;
+  lo.frozen = o.frozen;
+  lac_nl_model (model, &m);
+  size_t n = m.n ? m.n : 1, ns = m.nslot ? m.nslot : 1;
+  if (!(ls->loop = lac_newton_alloc (&m, &lo))
+      || !(ls->U_save = lac_calloc (n, sizeof (double)))
+      || !(ls->U_old = lac_calloc (n, sizeof (double)))
+      || !(ls->lambda_save = lac_calloc (ns, sizeof (double)))
+      || !(ls->lambda_old = lac_calloc (ns, sizeof (double)))
+      || !(ls->active_save = lac_calloc (ns, 1)))
+    {
+      lac_loadstep_free (ls);
+      LAC_ERROR_NULL (LAC_ENOMEM, "load steps of %zu dofs", m.n);
+    }
+  return ls;
+}
+
+static int
+push_step (lac_loadstep *ls, const lac_nl_step *r)
+{
+  if (lac_grow (&ls->steps, ls->nsteps + 1, &ls->capsteps,
+                sizeof *ls->steps, 32))
     LAC_ERROR (LAC_ENOMEM, "step records");
-  s->steps[s->nsteps++] = *r;
+  ls->steps[ls->nsteps++] = *r;
   return LAC_SUCCESS;
 }
 
 static void
-save_state (lac_nl *s)
+save_state (lac_loadstep *ls)
 {
-  memcpy (s->U_save, s->U, s->ndof * sizeof *s->U);
-  memcpy (s->lambda_save, s->lambda, s->nmacro * sizeof *s->lambda);
-  memcpy (s->active_save, s->active, s->nmacro);
-  s->ls.first_save = s->first;
+  const lac_newton *s = ls->loop;
+  memcpy (ls->U_save, s->U, s->n * sizeof *s->U);
+  memcpy (ls->lambda_save, s->lambda, s->nslot * sizeof *s->lambda);
+  memcpy (ls->active_save, s->active, s->nslot);
+  ls->first_save = s->first;
 }
 
 static void
-restore_state (lac_nl *s)
+restore_state (lac_loadstep *ls)
 {
-  memcpy (s->U, s->U_save, s->ndof * sizeof *s->U);
-  memcpy (s->lambda, s->lambda_save, s->nmacro * sizeof *s->lambda);
-  memcpy (s->active, s->active_save, s->nmacro);
-  s->first = s->ls.first_save;
+  lac_newton *s = ls->loop;
+  memcpy (s->U, ls->U_save, s->n * sizeof *s->U);
+  memcpy (s->lambda, ls->lambda_save, s->nslot * sizeof *s->lambda);
+  memcpy (s->active, ls->active_save, s->nslot);
+  s->first = ls->first_save;
 }
 
 int
-lac_nl_step_begin (lac_nl *s, double t)
+lac_loadstep_begin (lac_loadstep *ls, double t)
 {
-  if (!s || !(t > s->t_prev))
+  if (!(t > ls->t_prev))
     LAC_ERROR (LAC_EINVAL, "load factor %g: not beyond the last converged "
-               "one (%g)", t, s ? s->t_prev : 0.0);
-  lac_nl_loadstep *ls = &s->ls;
-  memset (ls, 0, sizeof *ls);
+               "one (%g)", t, ls->t_prev);
   ls->in_step = 1;
+  ls->in_sub = 0;
   ls->t = t;
-  ls->t0 = s->t_prev;
-  ls->dt = t - s->t_prev;
-  if (s->dt_next > 0 && s->dt_next < ls->dt)
-    ls->dt = s->dt_next;                 /* after a cut step: its pace */
+  ls->t0 = ls->t_prev;
+  ls->dt = t - ls->t_prev;
+  if (ls->dt_next > 0 && ls->dt_next < ls->dt)
+    ls->dt = ls->dt_next;                 /* after a cut step: its pace */
+  ls->iters = ls->cuts = ls->substeps = ls->grown = 0;
+  ls->dt_min = ls->dt_last = 0;
   ls->start = lac_seconds ();
-  ls->time0[0] = s->time_assemble;
-  ls->time0[1] = s->time_pairing;
-  ls->time0[2] = s->time_solve;
-  ls->time0[3] = s->time_factor;
-  s->cut_msg[0] = '\0';
+  ls->time0[0] = ls->model->time_assemble;
+  ls->time0[1] = ls->model->time_pairing;
+  ls->time0[2] = ls->loop->time_solve;
+  ls->time0[3] = ls->loop->time_factor;
+  ls->cut_msg[0] = '\0';
   return LAC_SUCCESS;
 }
 
 /* The predictor: U and lambda extrapolated linearly from the last two
  * converged states, (U - U_old) (tt - t_prev) / (t_prev - t_old) added. */
 static void
-predict (lac_nl *s, double tt)
+predict (lac_loadstep *ls, double tt)
 {
-  double r = (tt - s->t_prev) / s->dt_old;
-  if (!s->opts.predict || !(s->dt_old > 0))
+  lac_newton *s = ls->loop;
+  double r = (tt - ls->t_prev) / ls->dt_old;
+  if (!ls->predict || !(ls->dt_old > 0))
     return;
-  for (size_t j = 0; j < s->ndof; j++)
-    s->U[j] += r * (s->U[j] - s->U_old[j]);
-  for (size_t m = 0; m < s->nmacro; m++)
+  for (size_t j = 0; j < s->n; j++)
+    s->U[j] += r * (s->U[j] - ls->U_old[j]);
+  for (size_t m = 0; m < s->nslot; m++)
     if (s->active[m])
       s->lambda[m] = fmin (0.0, s->lambda[m]
-                                + r * (s->lambda[m] - s->lambda_old[m]));
+                                + r * (s->lambda[m] - ls->lambda_old[m]));
   s->predicted = 1;
 }
 
 /* Begin the next sub-step: from t_prev by dt (the last one ends at t). */
 static void
-sub_begin (lac_nl *s)
+sub_begin (lac_loadstep *ls)
 {
-  lac_nl_loadstep *ls = &s->ls;
-  double tt = s->t_prev + ls->dt;
+  double tt = ls->t_prev + ls->dt;
   if (tt >= ls->t - 1e-12 * (ls->t - ls->t0))
     tt = ls->t;
-  save_state (s);
-  lac_nl_begin (s, tt);
-  predict (s, tt);
+  save_state (ls);
+  lac_nl_set_load (ls->model, tt);
+  lac_newton_begin (ls->loop);
+  predict (ls, tt);
   ls->in_sub = 1;
 }
 
 /* A sub-step converged: 1 if it was the last. */
 static int
-sub_done (lac_nl *s)
+sub_done (lac_loadstep *ls)
 {
-  lac_nl_loadstep *ls = &s->ls;
-  double len = s->t - s->t_prev;
-  memcpy (s->U_old, s->U_save, s->ndof * sizeof *s->U_old);  /* at t_prev */
-  memcpy (s->lambda_old, s->lambda_save, s->nmacro * sizeof *s->lambda_old);
-  s->dt_old = len;
+  const lac_newton *s = ls->loop;
+  double len = ls->model->t - ls->t_prev;
+  memcpy (ls->U_old, ls->U_save, s->n * sizeof *ls->U_old);  /* at t_prev */
+  memcpy (ls->lambda_old, ls->lambda_save,
+          s->nslot * sizeof *ls->lambda_old);
+  ls->dt_old = len;
   if (ls->substeps && len > ls->dt_last * (1 + 1e-12))
     ls->grown++;                       /* longer than the one before */
   ls->dt_min = ls->substeps ? fmin (ls->dt_min, len) : len;
   ls->dt_last = len;
-  s->t_prev = s->t;
+  ls->t_prev = ls->model->t;
   ls->substeps++;
   ls->in_sub = 0;
-  if (s->it <= LAC_FAST_ITERS)
+  if (lac_newton_iterations (s) <= LAC_FAST_ITERS)
     ls->dt *= 2;                                      /* growth back */
-  return s->t_prev >= ls->t;
+  return ls->t_prev >= ls->t;
 }
 
 /* A sub-step failed with `status`: 1 if it is cut (state restored, dt
  * halved), 0 if no cut is left or the failure is not one to cut. */
 static int
-cut (lac_nl *s, int status)
+cut (lac_loadstep *ls, int status)
 {
-  lac_nl_loadstep *ls = &s->ls;
-  double dtmin = (ls->t - ls->t0) / ldexp (1.0, s->opts.max_cuts);
+  double dtmin = (ls->t - ls->t0) / ldexp (1.0, ls->max_cuts);
   if ((status != LAC_EMAXITER && status != LAC_ESING)
-      || s->opts.max_cuts < 0 || ls->dt <= dtmin * (1 + 1e-12)
-      || ls->cuts >= 4 * s->opts.max_cuts)
+      || ls->max_cuts < 0 || ls->dt <= dtmin * (1 + 1e-12)
+      || ls->cuts >= 4 * ls->max_cuts)
     return 0;
-  snprintf (s->cut_msg, sizeof s->cut_msg, "%s", lac_error_message ());
+  snprintf (ls->cut_msg, sizeof ls->cut_msg, "%s", lac_error_message ());
   lac_error_clear ();
-  restore_state (s);
+  restore_state (ls);
   ls->dt *= 0.5;
   ls->cuts++;
   ls->in_sub = 0;
@@ -135,64 +191,67 @@ cut (lac_nl *s, int status)
 
 /* The step's record, appended; returns status (or push_step's). */
 static int
-finish (lac_nl *s, int status)
+finish (lac_loadstep *ls, int status)
 {
-  lac_nl_loadstep *ls = &s->ls;
+  const lac_newton *s = ls->loop;
+  const lac_nl *m = ls->model;
   lac_nl_step rec = { 0 };
-  rec.t = status == LAC_SUCCESS ? ls->t : s->t_prev;
+  rec.t = status == LAC_SUCCESS ? ls->t : ls->t_prev;
   rec.iters = ls->iters;
   rec.cuts = ls->cuts;
   rec.substeps = ls->substeps;
   rec.dt_min = ls->dt_min;
   rec.grown = ls->grown;
   rec.residual = s->residual;
-  rec.k = s->contact ? s->contact->k : 0;
-  rec.nactive = lac_nl_nactive (s);
+  rec.k = s->pt.k;
+  rec.nactive = lac_newton_nactive (s);
   rec.status = status;
   rec.seconds = lac_seconds () - ls->start;
-  rec.time_assemble = s->time_assemble - ls->time0[0];
-  rec.time_pairing = s->time_pairing - ls->time0[1];
+  rec.time_assemble = m->time_assemble - ls->time0[0];
+  rec.time_pairing = m->time_pairing - ls->time0[1];
   rec.time_solve = s->time_solve - ls->time0[2];
   rec.time_factor = s->time_factor - ls->time0[3];
-  s->dt_next = ls->cuts ? ls->dt : 0;
+  ls->dt_next = ls->cuts ? ls->dt : 0;
   ls->in_step = 0;
-  int st2 = push_step (s, &rec);
+  int st2 = push_step (ls, &rec);
   return status ? status : st2;
 }
 
 int
-lac_nl_step_iterate (lac_nl *s)
+lac_loadstep_iterate (lac_loadstep *ls)
 {
-  lac_nl_loadstep *ls = &s->ls;
   if (!ls->in_step)
-    LAC_ERROR (LAC_EINVAL, "no load step begun (lac_nl_step_begin)");
+    LAC_ERROR (LAC_EINVAL, "no load step begun (lac_loadstep_begin)");
   for (;;)
     {
       if (!ls->in_sub)
-        sub_begin (s);
-      int status = lac_nl_iterate (s);
+        sub_begin (ls);
+      int status = lac_newton_iterate (ls->loop);
       if (status == LAC_CONTINUE)
         {
+          lac_newton_record *r = &ls->loop->hist[ls->loop->nhist - 1];
           ls->iters++;
-          s->iters[s->niters - 1].cuts = ls->cuts;
+          r->step = (int) ls->nsteps + 1;
+          r->t = ls->model->t;
+          r->cuts = ls->cuts;
           return LAC_CONTINUE;
         }
       if (status == LAC_SUCCESS)
         {
-          if (sub_done (s))
-            return finish (s, LAC_SUCCESS);
+          if (sub_done (ls))
+            return finish (ls, LAC_SUCCESS);
           continue;
         }
-      if (!cut (s, status))
-        return finish (s, status);
+      if (!cut (ls, status))
+        return finish (ls, status);
     }
 }
 
 int
-lac_nl_step_to (lac_nl *s, double t)
+lac_loadstep_to (lac_loadstep *ls, double t)
 {
-  int status = lac_nl_step_begin (s, t);
-  while (!status && (status = lac_nl_step_iterate (s)) == LAC_CONTINUE)
+  int status = lac_loadstep_begin (ls, t);
+  while (!status && (status = lac_loadstep_iterate (ls)) == LAC_CONTINUE)
     status = LAC_SUCCESS;
   return status;
 }

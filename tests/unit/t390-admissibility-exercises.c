@@ -316,8 +316,8 @@ press (double eps, double *force, double *gap3)
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
   lac_contact_apply_dirichlet (all, D->n, D->dof, D->val);
   lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
-  st = lac_newton_solve (s, &sys, 20, 1e-10);
+  lac_newton *s = NULL;
+  st = lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 20, 1e-10, &s);
   check_status (st, LAC_SUCCESS, "ex3 press: newton at epsilon = %g", eps);
   if (!st)
     {

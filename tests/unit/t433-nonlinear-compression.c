@@ -167,22 +167,26 @@ compress (lac_elem_type type, run rn)
                                        18 on the trapezoids of the hex20
                                        cut): exactness to 1e-10 needs it */
   lac_nl *s = lac_nl_alloc (&prob, &opts);
-  check_true (s != NULL, "%s alloc: %s", tn, lac_error_message ());
-  if (!s)
-    goto done;
+  lac_loadstep *ls = s ? lac_loadstep_alloc (s, &opts) : NULL;
+  check_true (ls != NULL, "%s alloc: %s", tn, lac_error_message ());
+  if (!ls)
+    {
+      lac_nl_free (s);
+      goto done;
+    }
   int maxits = 0, st = 0, cuts = 0;
   for (int k = 1; k <= rn.nsteps && !st; k++)
     {
-      st = lac_nl_step_to (s, (double) k / rn.nsteps);
+      st = lac_loadstep_to (ls, (double) k / rn.nsteps);
       check_status (st, LAC_SUCCESS, "%s two=%d delta=%g step %d", tn, two,
                     rn.delta, k);
-      maxits = s->steps[s->nsteps - 1].iters > maxits
-               ? s->steps[s->nsteps - 1].iters : maxits;
-      cuts += s->steps[s->nsteps - 1].cuts;
+      maxits = ls->steps[ls->nsteps - 1].iters > maxits
+               ? ls->steps[ls->nsteps - 1].iters : maxits;
+      cuts += ls->steps[ls->nsteps - 1].cuts;
     }
   if (rn.maxit > 0 && !st)
     {
-      const lac_nl_step *r = &s->steps[s->nsteps - 1];
+      const lac_nl_step *r = &ls->steps[ls->nsteps - 1];
       check_true (r->cuts >= 1 && r->substeps >= 2 && r->grown >= 1,
                   "%s delta=%g maxit=%d: %d cuts, %d sub-steps (the shortest "
                   "%g), %d grown back", tn, rn.delta, rn.maxit, r->cuts,
@@ -200,7 +204,7 @@ compress (lac_elem_type type, run rn)
   double sigma = P1 * l1 / J1;
   double el = 0, eu = 0;
   for (size_t mm = 0; mm < M->n; mm++)
-    el = fmax (el, fabs (s->lambda[mm] - sigma));
+    el = fmax (el, fabs (ls->loop->lambda[mm] - sigma));
   for (size_t a = 0; a < m->nnodes; a++)
     {
       const double *X = m->x + a * dim;
@@ -216,7 +220,7 @@ compress (lac_elem_type type, run rn)
             ex = (l1 - 1) + (l2 - 1) * (X[v] - 1);
           if (two && fabs (X[v] - 1) < 1e-12)
             continue;                  /* nodes of both bodies sit there */
-          eu = fmax (eu, fabs (s->U[a * dim + i] - ex));
+          eu = fmax (eu, fabs (ls->loop->U[a * dim + i] - ex));
         }
     }
   check_true (el <= 1e-8 * fabs (sigma), "%s two=%d delta=%g: lambda error "
@@ -227,6 +231,7 @@ compress (lac_elem_type type, run rn)
     printf ("%-6s two=%d delta=%g maxit=%d sigma_N=%.6f err_lambda=%.2e "
             "err_u=%.2e its/step=%d cuts=%d pairings=%zu\n", tn, two,
             rn.delta, rn.maxit, sigma, el, eu, maxits, cuts, s->npairings);
+  lac_loadstep_free (ls);
   lac_nl_free (s);
 done:
   lac_dirichlet_free (D);

@@ -102,8 +102,8 @@ taylor (lac_elem_type type, int swap)
       check_int ((long) c->k, (long) M->n, "%s/%d: every macro-element admissible", tn, swap);
       /* 5. the active set */
       lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-      lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
-      st = lac_newton_solve (s, &sys, 10, 1e-10);
+      lac_newton *s = NULL;
+      st = lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 10, 1e-10, &s);
       check_status (st, LAC_SUCCESS, "%s/%d newton", tn, swap);
       check_true (s->nhist <= 3, "%s/%d: %zu active-set iterations", tn, swap, s->nhist);
       double el = 0, es = 0;

@@ -219,8 +219,8 @@ rigid_patch (lac_elem_type type, double g0)
                 "%s g0 = %g: contact", re->name, g0);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
   lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
-  check_status (lac_newton_solve (s, &sys, 10, 1e-10), LAC_SUCCESS, "%s g0 = %g: newton", re->name, g0);
+  lac_newton *s = NULL;
+  check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 10, 1e-10, &s), LAC_SUCCESS, "%s g0 = %g: newton", re->name, g0);
   check_int (s->restarted, g0 > 0, "%s g0 = %g: restart from all active", re->name, g0);
   double el = 0, es = 0, eu = 0, sig[6], xi[3] = { 0.2, 0.2, 0.2 };
   for (size_t i = 0; i < c->k; i++)

@@ -113,8 +113,8 @@ solve (problem *pb, double eps, int exact)
   lac_contact_build (m, pb->mat.model, pb->M, pb->P, &pb->Mf, eps, &c);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
   lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (LAC_STRATEGY_SADDLE, ndof, c->k);
-  check_status (lac_newton_solve (s, &sys, 20, 1e-10), LAC_SUCCESS, "%dD eps %g: newton", dim, eps);
+  lac_newton *s = NULL;
+  check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 20, 1e-10, &s), LAC_SUCCESS, "%dD eps %g: newton", dim, eps);
   double el = 0, force = 0;
   int finite = 1;
   for (size_t i = 0; i < c->k; i++)

@@ -74,9 +74,9 @@ compare (const char *what, const char *scene, size_t nset,
           const lac_newton *a = r->sol.newton, *b = ref->sol.newton;
           check_abs (rel_diff (r->sys.ndof, r->sol.u, ref->sol.u), 0, 1e-10,
                      "%s: U, %s vs saddle", what, kn);
-          check_abs (rel_diff (a->k, a->lambda, b->lambda), 0, 1e-10,
+          check_abs (rel_diff (a->nslot, a->lambda, b->lambda), 0, 1e-10,
                      "%s: lambda, %s vs saddle", what, kn);
-          check_true (memcmp (a->active, b->active, a->k) == 0,
+          check_true (memcmp (a->active, b->active, a->nslot) == 0,
                       "%s: the same statuses (%s)", what, kn);
           check_true ((int) lac_strategy_kind_of (a->strategy) == kinds[k],
                       "%s: %s was used", what, kn);

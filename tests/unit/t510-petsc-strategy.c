@@ -19,6 +19,7 @@
 #include "check.h"
 #include "fem/lac_assembly.h"
 #include "contact/lac_contact.h"
+#include "solve/lac_linear_model.h"
 #include "solve/lac_newton.h"
 #include "solve/lac_petsc.h"
 #include "base/lac_status.h"
@@ -136,13 +137,23 @@ newton (const taylor *t, lac_strategy_kind kind, int coords, double *U,
 {
   lac_contact_system sys = { t->K, t->F, t->c->C, t->c->G, NULL, 0, NULL,
                              NULL };
-  lac_newton *s = lac_newton_alloc (kind, t->ndof, t->c->k);
-  int st;
-  if (!s)
-    return lac_error_set (LAC_ENOMEM, __func__, "%s", lac_error_message ());
+  lac_linear_model lin;
+  lac_contact_model m;
+  lac_newton_opts o;
+  int st = lac_linear_model_init (&lin, &sys, 0, &m);
+  lac_newton_opts_init (&o);
+  o.kind = kind;
+  o.maxit = 10;
+  lac_newton *s = st ? NULL : lac_newton_alloc (&m, &o);
+  if (!s || !(s->strategy = lac_strategy_alloc (kind)))
+    {
+      lac_newton_free (s);
+      lac_linear_model_clear (&lin);
+      return lac_error_set (LAC_ENOMEM, __func__, "%s", lac_error_message ());
+    }
   if (coords)
     lac_strategy_set_coordinates (s->strategy, t->m->dim, t->m->x);
-  st = lac_newton_solve (s, &sys, 10, 1e-10);
+  st = lac_newton_solve (s);
   if (!st)
     {
       memcpy (U, s->U, t->ndof * sizeof *U);
@@ -150,6 +161,7 @@ newton (const taylor *t, lac_strategy_kind kind, int coords, double *U,
       lac_strategy_get_counts (s->strategy, cnt);
     }
   lac_newton_free (s);
+  lac_linear_model_clear (&lin);
   return st;
 }
 

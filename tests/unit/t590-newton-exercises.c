@@ -175,8 +175,8 @@ static lac_newton *
 solve (const problem *pb, lac_strategy_kind kind, const double *rho, int *st)
 {
   lac_contact_system sys = { pb->K, pb->F, pb->c->C, pb->c->G, rho, 0, NULL, NULL };
-  lac_newton *s = lac_newton_alloc (kind, pb->K->nrow, pb->c->k);
-  *st = lac_newton_solve (s, &sys, 20, 1e-10);
+  lac_newton *s = NULL;
+  *st = lac_newton_solve_system (kind, &sys, 20, 1e-10, &s);
   return s;
 }
 
@@ -317,8 +317,8 @@ exercise4 (void)
       for (int b = 0; b < 4; b++)
         {
           const char *kn = lac_strategy_name (kinds[b]);
-          lac_newton *s = lac_newton_alloc (kinds[b], N, KC);
-          int st = lac_newton_solve (s, &sys, 20, 1e-10);
+          lac_newton *s = NULL;
+          int st = lac_newton_solve_system (kinds[b], &sys, 20, 1e-10, &s);
           check_status (st, LAC_SUCCESS, "ex4 %s rho = %g: solve", kn, rhos[r]);
           if (!st)
             {

@@ -48,7 +48,7 @@ spoil (const char *text, const char *path, int what, double value,
     return;
   if (what == 0)
     r->sol.u[3] = value;
-  else if (what == 1 && r->sol.newton && r->sol.newton->k > 0)
+  else if (what == 1 && r->sol.newton && r->sol.newton->nslot > 0)
     r->sol.newton->lambda[0] = value;
   else if (what == 2)
     r->mat.E[0] = value;      /* cell 1: its stresses overflow (von Mises) */
@@ -82,7 +82,7 @@ main (int argc, char **argv)
          "the stresses are not finite: von Mises = inf at node");
   spoil (NULL, "chapters/08-experiments/taylor2d.scene", 1, NAN,
          "the contact multipliers are not finite: lambda = nan for "
-         "multiplier 1 of 1");
+         "macro-element 1 of 1");
   lac_finalize ();
   return check_summary ();
 }

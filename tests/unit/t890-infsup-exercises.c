@@ -135,6 +135,8 @@ raw_p0 (const blocks *b, lac_csc **C, lac_csc **M)
   c.macro = malloc (ns * sizeof *c.macro);
   c.G = malloc (ns * sizeof *c.G);
   c.area = malloc (ns * sizeof *c.area);
+  c.size = malloc (ns * sizeof *c.size);
+  c.lost = malloc (ns * sizeof *c.lost);
   for (size_t j = 0; j <= ns; j++)
     R.ptr[j] = j;
   for (size_t j = 0; j < ns; j++)
@@ -149,6 +151,8 @@ raw_p0 (const blocks *b, lac_csc **C, lac_csc **M)
     }
   (*M)->p[ns] = (int) ns;
   free (c.area);
+  free (c.size);
+  free (c.lost);
   free (c.G);
   free (c.macro);
   free (R.ptr);

@@ -262,10 +262,8 @@ hard_run (const hard_spec *sp, hard *h)
   lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   if (sp->solver)
     kind = (lac_strategy_kind) lac_strategy_from_name (sp->solver);
-  h->s = lac_newton_alloc (kind, h->ndof, h->c->k);
-  if (!h->s)
-    return hard_fail (h, "newton", LAC_ENOMEM);
-  st = lac_newton_solve (h->s, &sys, sp->maxit > 0 ? sp->maxit : 10, 1e-10);
+  h->s = NULL;
+  st = lac_newton_solve_system (kind, &sys, sp->maxit > 0 ? sp->maxit : 10, 1e-10, &h->s);
   if (st)
     return hard_fail (h, "newton", st);
   lac_strategy_counts counts;

@@ -1,0 +1,173 @@
+/* lac_contact_pair.c -- one slave/master pair at given coordinates
+ *                       (see lac_contact_pair.h)
+ *                                        [LAC §4.6, Def. 1, (16)-(18)]
+ */
+#include "contact/lac_contact_pair.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "contact/lac_contact_facet.h"
+
+/* The mesh with its nodes at x: a shallow copy (x borrowed). */
+static lac_mesh
+moved (const lac_mesh *m, const double *x)
+{
+  lac_mesh cur = *m;
+  if (x)
+    cur.x = (double *) x;
+  return cur;
+}
+
+/* Pairing of the slave facets S with the master (on the mesh `cur`). */
+static int
+pair_facets (const lac_contact_pair *p, const lac_mesh *cur,
+             const lac_pairing_facets *S, const lac_pairing_opts *po,
+             lac_pairing **P)
+{
+  if (!p->master)
+    return lac_obstacle_pairing (S, p->obstacle, po->degree, P);
+  lac_pairing_facets Mf = *p->master;
+  Mf.mesh = cur;
+  return lac_pairing_build (S, &Mf, po, P);
+}
+
+int
+lac_contact_pair_build (const lac_contact_pair *p, const double *x,
+                        lac_pairing **P, lac_contact **c)
+{
+  lac_mesh cur = moved (p->mesh, x);
+  const lac_macro *M = p->M;
+  lac_pairing_facets S = { &cur, M->ptr[M->n], M->cell, M->face }, Mf;
+  double eps = p->epsilon > 0 ? p->epsilon : LAC_EPSILON_DEFAULT;
+  int status;
+  *P = NULL;
+  *c = NULL;
+  if ((status = pair_facets (p, &cur, &S, &p->popts, P)))
+    return status;
+  if (p->master)
+    {
+      Mf = *p->master;
+      Mf.mesh = &cur;
+    }
+  status = p->nts ? lac_contact_build_nts (&cur, p->model, M, *P,
+                                           p->master ? &Mf : NULL, c)
+                  : lac_contact_build (&cur, p->model, M, *P,
+                                       p->master ? &Mf : NULL, eps, c);
+  if (status == LAC_EADMISS && p->popts.allow_empty)
+    {
+      lac_error_clear ();                 /* nothing in reach: k = 0 */
+      return LAC_SUCCESS;
+    }
+  return status;
+}
+
+double
+lac_contact_pair_h (const lac_contact_pair *p, size_t m)
+{
+  double a = p->M->meas[m];
+  return p->mesh->dim == 3 ? sqrt (a) : a;
+}
+
+/* The sub-facets of the macro-elements without a column: S (cell, face
+ * arrays allocated here) and their macro-element (of). */
+static int
+uncovered_facets (const lac_macro *M, const lac_contact *c,
+                  lac_pairing_facets *S, size_t **of)
+{
+  size_t nf = M->ptr[M->n], n = 0;
+  size_t *cell = lac_malloc ((nf + 1) * sizeof *cell);
+  int *face = lac_malloc ((nf + 1) * sizeof *face);
+  *of = lac_malloc ((nf + 1) * sizeof **of);
+  if (!cell || !face || !*of)
+    {
+      lac_free (cell);
+      lac_free (face);
+      lac_free (*of);
+      LAC_ERROR (LAC_ENOMEM, "%zu facets", nf);
+    }
+  for (size_t m = 0; m < M->n; m++)
+    if (!c || c->mult[m] < 0)
+      for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
+        {
+          cell[n] = M->cell[j];
+          face[n] = M->face[j];
+          (*of)[n++] = m;
+        }
+  S->n = n;
+  S->cell = cell;
+  S->face = face;
+  return LAC_SUCCESS;
+}
+
+/* The mean gap of macro-element m over its points in P (facets j0 .. j1
+ * of S) and the centroid of those points; 0 if it has none. */
+static double
+mean_gap (const lac_mesh *cur, const lac_pairing_facets *S,
+          const lac_pairing *P, size_t j0, size_t j1, double *xc)
+{
+  double wg = 0, w = 0;
+  int nodes[LAC_MAX_FACE_NODES], dim = cur->dim;
+  lac_map mp;
+  memset (xc, 0, 3 * sizeof *xc);
+  for (size_t j = j0; j < j1; j++)
+    for (size_t q = P->ptr[j]; q < P->ptr[j + 1]; q++)
+      {
+        if (lac_contact_facet_eval (cur, S->cell[j], S->face[j],
+                                    P->xs + q * (size_t) (dim - 1), nodes,
+                                    &mp) < 0)
+          continue;
+        wg += P->w[q] * P->gap[q];
+        w += P->w[q];
+        for (int k = 0; k < dim; k++)
+          xc[k] += P->w[q] * mp.x[k];
+      }
+  for (int k = 0; k < dim && w > 0; k++)
+    xc[k] /= w;
+  return w > 0 ? wg / w : 0.0;
+}
+
+int
+lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
+                            const lac_contact *c, double reach, double tol,
+                            lac_contact_uncovered *u)
+{
+  lac_mesh cur = moved (p->mesh, x);
+  lac_pairing_facets S = { &cur, 0, NULL, NULL };
+  lac_pairing_opts po = p->popts;
+  lac_pairing *P = NULL;
+  size_t *of = NULL;
+  int status;
+  memset (u, 0, sizeof *u);
+  if ((status = uncovered_facets (p->M, c, &S, &of)))
+    return status;
+  po.allow_empty = 1;
+  po.dist_abs += reach;
+  if (S.n > 0)
+    status = pair_facets (p, &cur, &S, &po, &P);
+  for (size_t j = 0; !status && P && j < S.n;)
+    {
+      size_t m = of[j], j1 = j;
+      double xc[3], h = lac_contact_pair_h (p, m);
+      while (j1 < S.n && of[j1] == m)
+        j1++;
+      double depth = -mean_gap (&cur, &S, P, j, j1, xc);
+      if (depth > tol * h)
+        u->count++;
+      if (depth > 0 && (u->depth <= 0 || depth / h > u->depth / u->h))
+        {
+          u->depth = depth;
+          u->h = h;
+          u->macro = m;
+          u->paired = c && c->covered[m] > 0;
+          memcpy (u->x, xc, sizeof xc);
+        }
+      j = j1;
+    }
+  lac_pairing_free (P);
+  lac_free ((void *) S.cell);
+  lac_free ((void *) S.face);
+  lac_free (of);
+  return status;
+}

@@ -1,0 +1,76 @@
+/* lac_contact_pair.h -- one slave/master pair: from coordinates to its
+ *                       contact data, and what it leaves uncovered
+ *                                        [LAC §4.6, Def. 1, (16)-(18)]
+ *
+ * A contact pair is what the pairing and the contact data need: the
+ * macro-mesh of the slave surface, the master facets (or a rigid
+ * obstacle), the model of the integrals (the 2 pi r weight), epsilon of
+ * Definition 1, the method (LAC or node-to-segment) and the options of
+ * the pairing.  lac_contact_pair_build pairs and assembles it with the
+ * nodes at given coordinates: the reference ones for small strain, the
+ * current ones at every Newton iteration of large deformations.
+ *
+ * No silent penetration.  The pairing looks for master facets within
+ * about one slave facet of every slave facet (lac_pairing.h: dist_rel
+ * facet diameters plus dist_abs), and Definition 1 drops the
+ * macro-elements too little covered: both leave macro-elements without a
+ * multiplier, which nothing stops from passing into the master.
+ * lac_contact_pair_uncovered pairs exactly those macro-elements again,
+ * with the nodes where the solution put them, and measures how deep each
+ * one is inside the master (its mean normal gap over its paired part).
+ * The caller decides (solve/lac_newton.h): pair again with a longer reach
+ * (popts.dist_abs), or stop with an error naming the macro-element.
+ *
+ * Ownership: everything in lac_contact_pair is borrowed.
+ */
+#ifndef LAC_CONTACT_PAIR_H
+#define LAC_CONTACT_PAIR_H
+
+#include <stddef.h>
+#include "contact/lac_contact.h"
+#include "contact/lac_obstacle.h"
+
+typedef struct lac_contact_pair
+{
+  const lac_mesh *mesh;             /* slave and master, reference nodes   */
+  lac_model model;                  /* the weight of the integrals         */
+  const lac_macro *M;               /* macro-mesh of the slave surface     */
+  const lac_pairing_facets *master; /* master facets of mesh, or NULL      */
+  const lac_obstacle *obstacle;     /* the rigid master when master = NULL */
+  double epsilon;                   /* [LAC Def. 1]                        */
+  int nts;                          /* 1: node-to-segment (lac_contact.h)  */
+  lac_pairing_opts popts;           /* of lac_pairing_build                */
+} lac_contact_pair;
+
+/* The deepest penetration of a macro-element without a multiplier. */
+typedef struct lac_contact_uncovered
+{
+  double depth;          /* its mean penetration (a length; <= 0: none)   */
+  double h;              /* its size, a length                            */
+  size_t macro;          /* which macro-element                           */
+  double x[3];           /* the centroid of its paired part               */
+  int paired;            /* 1: it was paired, not admissible [LAC Def. 1];
+                            0: out of the pairing's reach                 */
+  size_t count;          /* macro-elements deeper than the test's limit   */
+} lac_contact_uncovered;
+
+/* Pairing and contact data with the nodes at x (mesh->nnodes * dim; NULL:
+ * the mesh's).  No admissible macro-element is not an error: *c = NULL
+ * (no constraint).  *P and *c are the caller's to free. */
+int lac_contact_pair_build (const lac_contact_pair *p, const double *x,
+                            lac_pairing **P, lac_contact **c);
+
+/* The macro-elements of p->M that have no column in c (all if c is NULL),
+ * paired again with the nodes at x and `reach` added to the pairing
+ * distance (the nodes moved by at most reach / 2 since c was made: a
+ * penetration is at most that deep): u->count of them penetrate the
+ * master by more than tol times their size, u->depth the deepest. */
+int lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
+                                const lac_contact *c, double reach,
+                                double tol, lac_contact_uncovered *u);
+
+/* The size of macro-element m as a length: |T^m| in 2D, sqrt(|T^m|) in
+ * 3D (no axisymmetric weight). */
+double lac_contact_pair_h (const lac_contact_pair *p, size_t m);
+
+#endif /* LAC_CONTACT_PAIR_H */

@@ -1,0 +1,191 @@
+/* lac_linear_model.c -- the contact model of a small-strain scene
+ *                       (see lac_linear_model.h)  [LAC (8), (16)-(18)]
+ */
+#include "solve/lac_linear_model.h"
+
+#include <math.h>
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+/* Room for the mean gaps of k columns. */
+static int
+room (lac_linear_model *lm, size_t k)
+{
+  if (k <= lm->cap && lm->d)
+    return LAC_SUCCESS;
+  double *d = lac_realloc (lm->d, (k ? k : 1) * sizeof *d);
+  if (!d)
+    LAC_ERROR (LAC_ENOMEM, "mean gaps of %zu multipliers", k);
+  lm->d = d;
+  lm->cap = k;
+  return LAC_SUCCESS;
+}
+
+/* r = F - K U, d = G - C^T U; the force scale: |F| and |K| |U|
+ * (the size of the terms that K U adds up, whatever cancels). */
+static int
+evaluate (void *self, const double *U, int tangent, lac_model_point *p)
+{
+  lac_linear_model *lm = self;
+  const lac_contact_system *sys = &lm->sys;
+  const lac_csc *K = sys->K;
+  size_t n = K->ncol, k = sys->C ? sys->C->ncol : 0;
+  double nf = 0, nku = 0;
+  (void) tangent;
+  double *ku = lm->x;                               /* |K| |U|, scratch */
+  memset (ku, 0, n * sizeof *ku);
+  for (size_t j = 0; j < n; j++)
+    lm->r[j] = sys->F[j];
+  for (size_t j = 0; j < n; j++)
+    for (int q = K->p[j]; q < K->p[j + 1]; q++)
+      {
+        lm->r[K->i[q]] -= K->x[q] * U[j];           /* r = F - K U */
+        ku[K->i[q]] += fabs (K->x[q] * U[j]);
+      }
+  for (size_t j = 0; j < n; j++)
+    {
+      nf += sys->F[j] * sys->F[j];
+      nku += ku[j] * ku[j];
+    }
+  if (k > 0)
+    lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
+  const lac_contact *c = lm->contact ? *lm->contact : NULL;
+  *p = (lac_model_point) { k, sys->C, lm->d, lm->area, lm->size, lm->slot,
+                           c ? c->lost : NULL, lm->r, NULL,
+                           fmax (sqrt (nf), sqrt (nku)) };
+  return LAC_SUCCESS;
+}
+
+static int
+linearize (void *self, const double *U, const lac_contact_system **sys,
+           int *news)
+{
+  lac_linear_model *lm = self;
+  (void) U;
+  *sys = &lm->sys;
+  *news = lm->news;
+  lm->news = LAC_MODEL_SAME;
+  return LAC_SUCCESS;
+}
+
+static int
+uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
+{
+  lac_linear_model *lm = self;
+  memset (u, 0, sizeof *u);
+  if (!lm->pair)
+    return LAC_SUCCESS;
+  const lac_mesh *m = lm->pair->mesh;
+  double umax = 0;
+  for (size_t j = 0; j < (size_t) m->dim * m->nnodes; j++)
+    {
+      lm->x[j] = m->x[j] + U[j];                    /* x = X + U */
+      umax = fmax (umax, fabs (U[j]));
+    }
+  return lac_contact_pair_uncovered (lm->pair, lm->x, *lm->contact,
+                                     2 * umax, tol, u);
+}
+
+/* The system's C and G, and the maps, from the contact data. */
+static int
+take_contact (lac_linear_model *lm)
+{
+  const lac_contact *c = *lm->contact;
+  lm->sys.C = c->C;
+  lm->sys.G = c->G;
+  lm->slot = c->macro;
+  lm->area = c->area;
+  lm->size = c->size;
+  return room (lm, c->k);
+}
+
+/* The pair made again on the reference shape with `reach` more. */
+static int
+widen (void *self, const double *U, double reach, size_t *more)
+{
+  lac_linear_model *lm = self;
+  lac_pairing *P = NULL;
+  lac_contact *c = NULL;
+  int status;
+  (void) U;
+  *more = 0;
+  if (!lm->pair)
+    return LAC_SUCCESS;
+  size_t k0 = (*lm->contact)->k;
+  lm->pair->popts.dist_abs += reach;
+  if ((status = lac_contact_pair_build (lm->pair, NULL, &P, &c))
+      || (c && (status = lac_contact_apply_dirichlet (c, lm->dir->n,
+                                                      lm->dir->dof,
+                                                      lm->dir->val))))
+    {
+      lac_pairing_free (P);
+      lac_contact_free (c);
+      return status;
+    }
+  if (!c || c->k <= k0)
+    {
+      lac_pairing_free (P);                         /* nothing gained */
+      lac_contact_free (c);
+      return LAC_SUCCESS;
+    }
+  *more = c->k - k0;
+  lac_pairing_free (*lm->pairing);
+  lac_contact_free (*lm->contact);
+  *lm->pairing = P;
+  *lm->contact = c;
+  lm->news = LAC_MODEL_NEW_C;
+  return take_contact (lm);
+}
+
+static const lac_contact_model_type linear_type =
+  { "linear", 0, evaluate, linearize, NULL, uncovered, widen };
+
+int
+lac_linear_model_init (lac_linear_model *lm, const lac_contact_system *sys,
+                       double E, lac_contact_model *m)
+{
+  size_t n = sys->K->ncol, k = sys->C ? sys->C->ncol : 0;
+  memset (lm, 0, sizeof *lm);
+  lm->sys = *sys;
+  lm->news = LAC_MODEL_NEW_K;
+  lm->r = lac_malloc ((n ? n : 1) * sizeof *lm->r);
+  lm->x = lac_malloc ((n ? n : 1) * sizeof *lm->x);
+  if (!lm->r || !lm->x || room (lm, k))
+    {
+      lac_linear_model_clear (lm);
+      LAC_ERROR (LAC_ENOMEM, "linear model of %zu dofs", n);
+    }
+  *m = (lac_contact_model) { &linear_type, lm, n, k, E > 0 ? E : 1.0, 2 };
+  return LAC_SUCCESS;
+}
+
+int
+lac_linear_model_init_pair (lac_linear_model *lm,
+                            const lac_contact_system *sys,
+                            lac_contact_pair *pair, lac_pairing **pairing,
+                            lac_contact **contact, const lac_dirichlet *dir,
+                            double E, lac_contact_model *m)
+{
+  int status = lac_linear_model_init (lm, sys, E, m);
+  if (status)
+    return status;
+  lm->pair = pair->nts ? NULL : pair;  /* node-to-segment: not checked */
+  lm->pairing = pairing;
+  lm->contact = contact;
+  lm->dir = dir;
+  m->nslot = (*contact)->nmacro;       /* the slave nodes for nts */
+  m->dim = pair->mesh->dim;
+  if ((status = take_contact (lm)))
+    lac_linear_model_clear (lm);
+  return status;
+}
+
+void
+lac_linear_model_clear (lac_linear_model *lm)
+{
+  lac_free (lm->d);
+  lac_free (lm->r);
+  lac_free (lm->x);
+  memset (lm, 0, sizeof *lm);
+}

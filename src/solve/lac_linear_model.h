@@ -1,0 +1,65 @@
+/* lac_linear_model.h -- the contact model of a small-strain scene
+ *                                          [LAC (8), (16)-(18), Alg. 1]
+ *
+ * The contact model (solve/lac_contact_model.h) of linear elasticity with
+ * the pairing made once, on the reference shape: K, F, C and the initial
+ * mean gaps G do not depend on U, so that at U
+ *
+ *   r(U) = F - K U,        d(U) = G - C^T U,
+ *
+ * and the system (*) of solve/lac_system.h, solved for the statuses of
+ * the moment, gives U itself: one solve per active set is exact, and the
+ * strategy factorizes K (or K + C_A W C_A^T) for the whole loop.
+ *
+ * Built from a lac_contact_system alone (C and G given, one multiplier per
+ * column: the unit tests and the book's small examples), or from the
+ * contact data of a pair (contact/lac_contact_pair.h): then its slots
+ * are the macro-elements of the slave surface, and the loop can ask which
+ * macro-elements without a multiplier the solution pushed into the
+ * master (uncovered) and have the pair made again with a longer reach
+ * (widen: the caller's pairing and contact data are replaced).  The
+ * node-to-segment method of comparison (its slots are the slave nodes)
+ * is not checked.
+ *
+ * Ownership: the system, the pair and the Dirichlet data are borrowed;
+ * with a pair, *pairing and *contact are the caller's, replaced (the old
+ * ones freed) by widen.
+ */
+#ifndef LAC_LINEAR_MODEL_H
+#define LAC_LINEAR_MODEL_H
+
+#include "contact/lac_contact_pair.h"
+#include "fem/lac_assembly.h"
+#include "solve/lac_contact_model.h"
+
+typedef struct lac_linear_model
+{
+  lac_contact_system sys;     /* K, F (Dirichlet applied), C, G, N         */
+  const size_t *slot;         /* k: macro-element of column i, or NULL     */
+  const double *area, *size;  /* k, or NULL                                */
+  lac_contact_pair *pair;     /* borrowed, or NULL                         */
+  lac_pairing **pairing;      /* the caller's, with a pair                 */
+  lac_contact **contact;      /* the caller's, with a pair                 */
+  const lac_dirichlet *dir;   /* moved into a new contact                  */
+  int news;                   /* what linearize reports next (LAC_MODEL_*) */
+  double *d, *r, *x;          /* owned: k, n, n (coordinates X + U)        */
+  size_t cap;                 /* room of d                                 */
+} lac_linear_model;
+
+/* A model over sys (C, G: one multiplier per column; E: the reference
+ * Young modulus, 0: 1).  *m is the interface the loop is given. */
+int lac_linear_model_init (lac_linear_model *lm,
+                           const lac_contact_system *sys, double E,
+                           lac_contact_model *m);
+/* The same over the contact data of a pair (*contact, already built on
+ * the reference shape, the Dirichlet values moved in): sys's C and G are
+ * taken from it; the slots are the macro-elements. */
+int lac_linear_model_init_pair (lac_linear_model *lm,
+                                const lac_contact_system *sys,
+                                lac_contact_pair *pair,
+                                lac_pairing **pairing, lac_contact **contact,
+                                const lac_dirichlet *dir, double E,
+                                lac_contact_model *m);
+void lac_linear_model_clear (lac_linear_model *lm);
+
+#endif /* LAC_LINEAR_MODEL_H */
