@@ -29,7 +29,7 @@ DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
             libinih-dev gnuplot-nox libfreetype-dev fonts-dejavu-core
 
-# PETSc and Open MPI: the petsc strategy and mpirun (chapter 11), installed
+# PETSc and Open MPI: the petsc strategy and mpirun (chapter 13), installed
 # like the others.  PETSC=no builds without them (and does not install
 # them); so does a machine where pkg-config does not find them: lac then
 # builds all the same, and --strategy petsc prints the apt-get line.  The
@@ -79,7 +79,7 @@ $(PETSC_MK): | $(B)/.deps-ok
 deps: $(B)/.deps-ok
 $(B)/.deps-ok: Makefile
 	@sh tests/deps.sh $(DEB_PKGS) || { [ "$(PETSC)" = no ] || echo \
-	  "lac: (or without PETSc and MPI, chapter 11: make PETSC=no)" >&2; exit 1; }
+	  "lac: (or without PETSc and MPI, chapter 13: make PETSC=no)" >&2; exit 1; }
 	@mkdir -p $(B) && touch $@
 
 # ---- build ---------------------------------------------------------------

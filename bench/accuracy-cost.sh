@@ -1,5 +1,5 @@
 #!/bin/sh
-# accuracy-cost.sh -- what accuracy costs in time           [LAC §5.2-5.3; ch. 10]
+# accuracy-cost.sh -- what accuracy costs in time           [LAC §5.2-5.3; ch. 12]
 #
 #   sh bench/accuracy-cost.sh [BUILD_DIR] [--quick] [--out DIR] [--from CSV]
 #
@@ -13,7 +13,7 @@
 # and skipped, when a body is held by contact alone), augmented, split and
 # saddle (in 3D at most SADDLE_MAX3D dofs) -- except the one auto chose
 # (its row is the auto row: same code, same numbers).  petsc is left to
-# chapter 11 (add it to STRATEGIES to try it).  Records, per run, the
+# chapter 13 (add it to STRATEGIES to try it).  Records, per run, the
 # errors (u and lambda), the size and the time of every stage.  Writes
 # into DIR (BUILD_DIR/accuracy-cost; `make figures` passes --out figures):
 #   accuracy-cost.csv        one row per run (the columns are below)

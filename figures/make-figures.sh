@@ -1,7 +1,7 @@
 #!/bin/sh
 # make-figures.sh -- regenerate figures/: the counterparts of the paper's
 # Figure 2 (the refinement of the first layer, chapter 03) and Figures
-# 3-11 [LAC §5], and the accuracy-cost study (chapter 10).
+# 3-11 [LAC §5], and the accuracy-cost study (chapter 12).
 #
 #   sh figures/make-figures.sh [BUILD_DIR] [--quick] [--out DIR] [--no-bench]
 #
@@ -586,7 +586,7 @@ fi
 say "fig10-11 ($(since "$t") s)"
 fi
 
-# ---- the accuracy-cost study (chapter 10) ----------------------------------
+# ---- the accuracy-cost study (chapter 12) ----------------------------------
 if [ $BENCH = 1 ]; then
   t=$(date +%s)
   sh bench/accuracy-cost.sh "$B" --out "$OUT" || fail "bench/accuracy-cost.sh"

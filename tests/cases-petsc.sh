@@ -1,6 +1,6 @@
 # tests/cases-petsc.sh -- the petsc strategy and MPI (sourced by tests/run.sh)
 #
-# [LAC (17), Alg. 1; chapter 11]  lac run with --strategy petsc (Krylov
+# [LAC (17), Alg. 1; chapter 13]  lac run with --strategy petsc (Krylov
 # methods and algebraic multigrid, solve/lac_petsc.h) against the direct
 # path on the same scenes, small sizes:
 #   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4),

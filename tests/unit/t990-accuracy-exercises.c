@@ -1,5 +1,5 @@
 /* t990-accuracy-exercises.c -- the answers of
- * chapters/10-accuracy-cost/exercises.md                  [LAC §5.3; ch. 10]
+ * chapters/12-accuracy-cost/exercises.md                  [LAC §5.3; ch. 12]
  *
  * Everything is computed here from small runs of the chapter 08 scenes
  * (no files written); nothing depends on time, so the answers hold on any

@@ -1,7 +1,7 @@
 #!/bin/sh
-# tables.sh -- the two inf-sup tables of chapter 09          [LAC (10), App. A]
+# tables.sh -- the two inf-sup tables of chapter 11          [LAC (10), App. A]
 #
-#   sh chapters/09-infsup/tables.sh [build-dir]      (from the repository root)
+#   sh chapters/11-infsup/tables.sh [build-dir]      (from the repository root)
 #
 # Table 1: beta_h against h, geometrically conforming (Gamma_C is the whole
 #          common face of the Taylor blocks, non-matching meshes): levels

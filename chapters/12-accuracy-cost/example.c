@@ -1,12 +1,12 @@
-/* LAC chapter 10 -- What accuracy costs: errors, rates and times
+/* LAC chapter 12 -- What accuracy costs: errors, rates and times
  *                                                   [LAC §5.3, Tables 5-6]
  *
- * Build:        make  (builds it as build/chapters/10-accuracy-cost)
- * Sample runs:  build/chapters/10-accuracy-cost         (from the
+ * Build:        make  (builds it as build/chapters/12-accuracy-cost)
+ * Sample runs:  build/chapters/12-accuracy-cost         (from the
  *                                 repository root: it reads the scenes of
  *                                 chapter 08)
- *               build/chapters/10-accuracy-cost --time  (adds the times)
- *               build/chapters/10-accuracy-cost --time DIR  (scenes in DIR)
+ *               build/chapters/12-accuracy-cost --time  (adds the times)
+ *               build/chapters/12-accuracy-cost --time DIR  (scenes in DIR)
  * Description:  Part 1: the manufactured problem in 2D
  *               (manufactured2d.scene) with quad4 and quad8 at levels 2
  *               and 3: the relative L2 error of u, the L2 error of lambda

@@ -1,7 +1,7 @@
 #!/bin/sh
 # hard-cases.sh -- the table of the hard cases (issue 6 item 3)
 #
-#   sh chapters/09-infsup/hard-cases.sh [build-dir]    (from the repository root)
+#   sh chapters/11-infsup/hard-cases.sh [build-dir]    (from the repository root)
 #
 # One row per case: k (multipliers), active-set iterations, beta_h (H1 norm,
 # dense path: lac_infsup), the error against the exact solution where there

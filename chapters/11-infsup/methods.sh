@@ -6,7 +6,7 @@
 #    slave (the hard case for P0: no interior d.o.f., Hypothesis 1 fails);
 # 2. the pressure on the patch test: min and max of lambda (exact: -25)
 #    and the max relative error, for the three methods.
-#   sh chapters/09-infsup/methods.sh [build-dir]
+#   sh chapters/11-infsup/methods.sh [build-dir]
 B=${1:-build}
 S=chapters/08-experiments
 SW="--set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom"

@@ -1,9 +1,9 @@
-/* LAC chapter 09 -- The inf-sup constant beta_h           [LAC (10), App. A]
+/* LAC chapter 11 -- The inf-sup constant beta_h           [LAC (10), App. A]
  *
- * Build:        make build/chapters/09-infsup
- * Sample runs:  build/chapters/09-infsup              (delta = 1/4)
- *               build/chapters/09-infsup --delta 0.03125
- *               build/chapters/09-infsup --path sparse
+ * Build:        make build/chapters/11-infsup
+ * Sample runs:  build/chapters/11-infsup              (delta = 1/4)
+ *               build/chapters/11-infsup --delta 0.03125
+ *               build/chapters/11-infsup --path sparse
  * Description:  Two plane-strain quad4 blocks, the upper (slave) one
  *               [0,50] x [50,100] with 4 cells per side, the lower
  *               (master) one [0, 25 + 25 delta] x [0,50]: Gamma_C covers

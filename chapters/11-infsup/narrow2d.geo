@@ -7,7 +7,7 @@
 // nl = 3 * 2^level cells per side and Lm = 25 + delta * H: Gamma_C = [0, Lm]
 // covers the macro-element [25, 25 + H] on the fraction delta of its length
 // (delta = 1: geometrically conforming).  delta is set by the line below
-// (chapters/09-infsup/tables.sh edits a copy of this file).
+// (chapters/11-infsup/tables.sh edits a copy of this file).
 //
 // Physical groups: lower, upper (surfaces); lower_bottom, lower_left,
 // lower_top (y = 50, master), upper_bottom (y = 50, slave), upper_left,
