@@ -82,7 +82,7 @@ W=$B/accuracy-cost-work
 [ $QUICK = 1 ] && W=$B/accuracy-cost-work-quick
 rm -rf "$W"
 mkdir -p "$W" || exit 1
-D=chapters/08-experiments
+D=chapters/09-spheres-rates
 if [ $QUICK = 1 ]; then DENSE_MAX=${DENSE_MAX:-1500}; else DENSE_MAX=${DENSE_MAX:-6000}; fi
 SADDLE_MAX3D=${SADDLE_MAX3D:-40000}
 if [ $QUICK = 1 ]; then REPEAT=${REPEAT:-1}; else REPEAT=${REPEAT:-3}; fi

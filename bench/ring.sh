@@ -3,7 +3,7 @@
 #
 #   sh bench/ring.sh [BUILD_DIR] [ELEMENT] [LEVELS]      (make bench-ring)
 #
-# Runs chapters/08-experiments/ring.scene (ELEMENT: hex20; 61 load steps)
+# Runs chapters/10-large-deformation/ring.scene (ELEMENT: hex20; 61 load steps)
 # on each of LEVELS ("0 1": the coarse mesh, 34k dofs, and the fine one,
 # 209k dofs) alone, one after the other, and prints per run: dofs, wall
 # time of the run and of its solve stage, Newton iterations (all, most in
@@ -41,7 +41,7 @@ printf "run          dofs   wall s  solve s  newton  max/step  cut   u_z (mm)   
 for L in $LEVELS; do
   D=$OUT/ring-$EL-$L
   t0=$(date +%s.%N)
-  if ! "$LAC" run chapters/08-experiments/ring.scene --set element="$EL" \
+  if ! "$LAC" run chapters/10-large-deformation/ring.scene --set element="$EL" \
        --set level="$L" --out "$D" --timings \
        > "$D.sum" 2> "$D.err"; then
     echo "ring.sh: the run $EL level $L failed: $(tail -1 "$D.err")" >&2

@@ -17,7 +17,7 @@
 # Every picture is drawn without a display: meshes and fields by OSMesa
 # (`lac render`, and figures/figrun.c for what only a live run has: the
 # slave sub-facets of the macro-elements coloured by lambda), curves by
-# gnuplot (pngcairo).  Scenes are those of chapters/08-experiments; the
+# gnuplot (pngcairo).  Scenes are those of chapters/08-10; the
 # runs go to BUILD_DIR/figures-work (kept, for inspection: solution.vtu,
 # contact.csv, the gnuplot scripts and data).  figures/README.md lists the
 # figures.  Exit status: 0 if every figure was drawn (figures 10-11 may be
@@ -45,6 +45,8 @@ LAC=$B/lac
 FIGRUN=$B/figures/figrun
 FIG02=$B/figures/fig02-refine
 D=chapters/08-experiments
+D9=chapters/09-spheres-rates
+D10=chapters/10-large-deformation
 W=$B/figures-work
 [ $QUICK = 1 ] && W=$B/figures-work-quick
 
@@ -100,7 +102,7 @@ GPWIDE='set terminal pngcairo size 1500,620 font "DejaVu Sans,13" enhanced'
 # RING_MESHES lists ELEMENT:LEVEL[:STEPS] (level 0 coarse, 1 fine: hex8
 # about 10 minutes, hex20 about an hour, hex27 more; STEPS replaces the 60
 # equal steps of ring.scene, e.g. hex27:1:20 for every third point).
-RING=$D/ring.scene
+RING=$D10/ring.scene
 ring_pids=
 if [ -f $RING ] && want 10; then
   if [ $QUICK = 1 ]; then
@@ -316,7 +318,7 @@ fi
 spheres () {
   name=$1 scene=$2 e=$3 l=$4 fig=$5 fview=$6 lview=$7
   # shellcheck disable=SC2086
-  frun "$name" $D/$scene.scene --set element="$e" --set level="$l" --edges $fview \
+  frun "$name" $D9/$scene.scene --set element="$e" --set level="$l" --edges $fview \
     --title "self-included spheres, $e: radial displacement u_R" \
     --label u_R --units mm --draw u_R "$OUT/$fig-u-r.png" $lview \
     --title "spheres, $e: lambda on the slave R = 30 (exact +-5%)" \
@@ -368,7 +370,7 @@ fi
 # ---- Figures 7 and 8: manufactured solutions [LAC §5.3] ------------------
 if want 07; then
 t=$(date +%s)
-if run man2d $D/manufactured2d.scene --set element=quad8 --set level=$LM2; then
+if run man2d $D9/manufactured2d.scene --set element=quad8 --set level=$LM2; then
   dofs=$(val man2d dofs)
   render man2d fig07-manufactured2d-quad8-u.png --field u --scale 1 --edges \
     --title "manufactured 2D, quad8: |u|, deformed x1 ($dofs dofs)"
@@ -394,7 +396,7 @@ say "fig07 ($(since "$t") s)"
 fi
 if want 08; then
 t=$(date +%s)
-if frun man3d $D/manufactured3d.scene --set element=hex20 --set level=$LM3 \
+if frun man3d $D9/manufactured3d.scene --set element=hex20 --set level=$LM3 \
      --edges --el 30 --az 35 --scale 1 --title "manufactured 3D, hex20: lambda on the bottom" \
      --label lambda --draw lambda "$OUT/fig08-manufactured3d-hex20-lambda.png"; then
   render man3d fig08-manufactured3d-hex20-u.png --field u --scale 1 --edges --el 30 --az 35 \

@@ -148,7 +148,7 @@ for el in tet4 tet10; do
   within2 "tets-$el" "$(est_nodes tests/bad/cylinder-tets.scene --set level=1 --set element=$el)" \
     "$(real_nodes tests/bad/cylinder-tets.scene --set level=1 --set element=$el)"
 done
-within2 ring-level1 "$(est_nodes chapters/08-experiments/ring.scene --set level=1)" 55610
+within2 ring-level1 "$(est_nodes chapters/10-large-deformation/ring.scene --set level=1)" 55610
 within2 taylor3d-n55 "$(est_nodes $T3 --set mesh.numbers=n=55 --strategy petsc)" 341991
 gp=$(est_gb $T3 --set mesh.numbers=n=55 --strategy petsc)
 gc=$(est_gb $T3 --set mesh.numbers=n=55 --strategy schur)

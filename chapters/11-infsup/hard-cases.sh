@@ -94,7 +94,7 @@ cli "lac run: E 2e9 / 2e3, quad8 level 5" lambda -25 tests/hard/contrast2d.scene
 # error of linear elements grows (locking), quadratic ones much less
 for e in tri3 quad4 tri6; do
   for nu in 0 0.499; do
-    s=chapters/08-experiments/manufactured2d.scene
+    s=chapters/09-spheres-rates/manufactured2d.scene
     out=$("$LAC" run $s --set element=$e --set level=2 --set material.body.nu=$nu \
           --set exact.nu=$nu --quiet --no-output 2>&1)
     st=ok; [ $? -eq 0 ] || st="stops: $(printf '%s' "$out" | grep '^lac:' | head -1 | sed 's/^lac: //')"

@@ -9,6 +9,7 @@
 #   sh chapters/11-infsup/methods.sh [build-dir]
 B=${1:-build}
 S=chapters/08-experiments
+S9=chapters/09-spheres-rates
 SW="--set contact.interface.slave=lower_top --set contact.interface.master=upper_bottom"
 echo "beta_h, Taylor 2D quad4, slave = the finer (lower) body"
 printf '%5s %6s %12s %6s %12s\n' level k_lac beta_lac k_p0 beta_p0
@@ -45,9 +46,9 @@ echo "lambda on the self-included spheres (exact -4.894179894), slave = the inne
 printf '%-12s %-6s %-4s %8s %14s %14s %12s\n' scene element method mult lambda_min lambda_max max_rel_err
 for s in spheres-axi:quad8:2 spheres-axi:tri6:2 spheres3d:tet10:0; do
   sc=${s%%:*}; r=${s#*:}; e=${r%%:*}; L=${r##*:}
-  name=$(sed -n 's/^\[contact \([a-z_0-9]*\)\]/\1/p' "$S/$sc.scene")
+  name=$(sed -n 's/^\[contact \([a-z_0-9]*\)\]/\1/p' "$S9/$sc.scene")
   for m in lac p0 nts; do
-    "$B/lac" run "$S/$sc.scene" --set element="$e" --set level="$L" \
+    "$B/lac" run "$S9/$sc.scene" --set element="$e" --set level="$L" \
         --set contact."$name".method=$m --quiet --no-output 2>&1 |
       awk -v sc="$sc" -v e="$e" -v m="$m" -F' = ' '{ v[$1] = $2 }
         END { printf "%-12s %-6s %-4s %8s %14s %14s %12s\n", sc, e, m,

@@ -140,7 +140,7 @@ strategies (const char *dir, int timed)
 int
 main (int argc, char **argv)
 {
-  const char *dir = "chapters/08-experiments";
+  const char *dir = "chapters/09-spheres-rates";
   int timed = 0;
   for (int k = 1; k < argc; k++)
     if (!strcmp (argv[k], "--time"))

@@ -67,8 +67,8 @@ run (const char *scene, const char *element, int level)
   return x;
 }
 
-#define M2D "chapters/08-experiments/manufactured2d.scene"
-#define M3D "chapters/08-experiments/manufactured3d.scene"
+#define M2D "chapters/09-spheres-rates/manufactured2d.scene"
+#define M3D "chapters/09-spheres-rates/manufactured3d.scene"
 
 static res q4[5], q8[4];
 

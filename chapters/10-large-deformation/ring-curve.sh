@@ -2,9 +2,9 @@
 # ring-curve.sh -- the ring-on-block curves of Figure 10, coarse and fine
 #                                                   [LAC §5.4, Figure 10]
 #
-#   sh chapters/08-experiments/ring-curve.sh [ELEMENT [STEPS [LEVELS]]]
+#   sh chapters/10-large-deformation/ring-curve.sh [ELEMENT [STEPS [LEVELS]]]
 #
-# Runs chapters/08-experiments/ring.scene with ELEMENT (hex20) at each of
+# Runs chapters/10-large-deformation/ring.scene with ELEMENT (hex20) at each of
 # LEVELS ("0 1": coarse and fine) with [steps] n = STEPS (60), and prints,
 # per load step, the imposed displacement of the ring's ends and the
 # vertical displacement of the ring's inner bottom point (ring_mid) on
@@ -20,7 +20,7 @@ OUT=${OUT:-out/ring-curve}
 EL=${1:-hex20}
 N=${2:-60}
 LEVELS=${3:-"0 1"}
-SCENE=chapters/08-experiments/ring.scene
+SCENE=chapters/10-large-deformation/ring.scene
 
 mkdir -p "$OUT"
 for L in $LEVELS; do

@@ -1,7 +1,7 @@
 #!/bin/sh
 # hertz.sh -- Hertz contact: convergence table and pressure profiles
 #
-#   sh chapters/08-experiments/hertz.sh [CASES [LEVELS]]
+#   sh chapters/10-large-deformation/hertz.sh [CASES [LEVELS]]
 #
 # Runs the Hertz scenes of this chapter at each of LEVELS ("0 1 2 3 4")
 # for each case of CASES (default: the four 2D cases
@@ -32,7 +32,7 @@ B=${B:-build}
 OUT=${OUT:-out/hertz}
 CASES=${1:-"cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6"}
 LEVELS=${2:-"0 1 2 3 4"}
-D8=chapters/08-experiments
+D8=chapters/10-large-deformation
 mkdir -p "$OUT"
 printf '%-16s %5s %8s %12s %9s %10s %9s %9s %9s %6s\n' case level dofs p_max "err(%)" a_h "err(%)" "a_A(%)" "|F-P|/P" "t(s)"
 for c in $CASES; do

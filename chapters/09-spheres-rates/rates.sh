@@ -13,7 +13,7 @@
 # log h) fitted by least squares over all levels ("fit") and from the last
 # two levels ("last"), next to the paper's numerical column ("paper").
 #
-#   sh chapters/08-experiments/rates.sh [build-dir] [element ...]
+#   sh chapters/09-spheres-rates/rates.sh [build-dir] [element ...]
 #
 # Environment: LEVELS="1 2 3" replaces the levels of every element;
 # EXTRA="--set ..." is appended to every `lac run` (e.g. the 3D variant
@@ -21,7 +21,7 @@
 B=${1:-build}
 [ $# -gt 0 ] && shift
 ELEMENTS=${*:-"tri3 tri6 quad4 quad8 tet4 tet10 hex8 hex20 hex27"}
-D=chapters/08-experiments
+D=chapters/09-spheres-rates
 T=$(mktemp -d "${TMPDIR:-/tmp}/lac-rates.XXXXXX") || exit 1
 trap 'rm -rf "$T"' EXIT INT TERM
 

@@ -7,11 +7,11 @@
 # the paper's values (Tables
 # 3-4, as ratios).  Then the finest level again with slave and master
 # swapped (slave = the outer body).
-#   sh chapters/08-experiments/spheres-table.sh [build-dir [max-3d-level]]
+#   sh chapters/09-spheres-rates/spheres-table.sh [build-dir [max-3d-level]]
 # The finest 3D levels (level 2: 85k-130k DOFs) take 10-60 s each.
 B=${1:-build}
 L3=${2:-2}
-D=chapters/08-experiments
+D=chapters/09-spheres-rates
 SWAP="--set contact.interface.slave=outer_contact --set contact.interface.master=inner_contact"
 
 now () { date +%s.%N; }
