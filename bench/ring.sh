@@ -9,7 +9,7 @@
 # time of the run and of its solve stage, Newton iterations (all, most in
 # a load step), load steps cut, the final vertical displacement of the
 # ring's inner bottom point against the value before the consistent
-# tangent (the runs of chapter 08's table: hex20 coarse -19.0528000050,
+# tangent (the runs of chapter 14's table of the ring: hex20 coarse -19.0528000050,
 # fine -19.060 mm), and the histogram of Newton iterations per load step
 # after the first contact step.  The runs go to $OUT/ring-ELEMENT-LEVEL/
 # (OUT = BUILD_DIR/bench-ring), with their progress lines in .err.  The
@@ -24,7 +24,7 @@ OUT=$B/bench-ring
 [ -x "$LAC" ] || ${MAKE:-make} -s B="$B" "$LAC" >&2 || exit 1
 mkdir -p "$OUT" || exit 1
 
-# u_z of ring_mid before the consistent tangent (chapter 08's table)
+# u_z of ring_mid before the consistent tangent (chapter 14's table of the ring)
 reference () {
   case "$EL:$1" in
     hex20:0) echo -19.0528000050 ;;

@@ -93,8 +93,8 @@ rbad folded "folded.msh|cells 18 and 19 overlap" \
 rbad flat "flat.msh|cell 16 (tri3) is degenerate" \
   run $SB $KB --set mesh.file=flat.msh
 # A ball in gmsh's all-hex subdivision: tangled, and the message says how
-# to mesh it (transfinite blocks, chapter 08).
-rbad ball-hex "ball-hex.geo|hex20) is degenerate or tangled|transfinite|chapter 08" \
+# to mesh it (transfinite blocks, chapter 10).
+rbad ball-hex "ball-hex.geo|hex20) is degenerate or tangled|transfinite|chapter 10" \
   run tests/bad/ball-hex.scene $KB
 
 # Nodes in no cell: a warning on the mesh line, the same answer.

@@ -9,7 +9,7 @@
 # golden summary (tests/golden/hertz-*.out, numcmp).  In 3D (a sphere on
 # a rigid flat, tet10, and on an elastic block, hex20) one run each at
 # level 0 against its golden summary; their convergence to 1 % takes
-# minutes (chapter 08).  Same conventions as tests/cases.sh ($B, pass,
+# minutes (chapter 10).  Same conventions as tests/cases.sh ($B, pass,
 # fail).
 
 B=${B:-build}

@@ -90,7 +90,7 @@ cli "lac run: E 2e9 / 2e3, quad8 level 5" lambda -25 tests/hard/contrast2d.scene
     --set material.lower.E=2e9 --set material.upper.E=2e3 --set element=quad8 \
     --set level=5
 
-# nu = 0.499 on the manufactured solution of chapter 08 (level 2): the
+# nu = 0.499 on the manufactured solution of chapter 09 (level 2): the
 # error of linear elements grows (locking), quadratic ones much less
 for e in tri3 quad4 tri6; do
   for nu in 0 0.499; do

@@ -4,7 +4,7 @@
  * Build:        make  (builds it as build/chapters/12-accuracy-cost)
  * Sample runs:  build/chapters/12-accuracy-cost         (from the
  *                                 repository root: it reads the scenes of
- *                                 chapter 08)
+ *                                 chapter 09)
  *               build/chapters/12-accuracy-cost --time  (adds the times)
  *               build/chapters/12-accuracy-cost --time DIR  (scenes in DIR)
  * Description:  Part 1: the manufactured problem in 2D
@@ -21,7 +21,7 @@
  *               each row also gets the time of its stages, mesh to post
  *               (r->time, seconds on a monotonic clock), which depends on
  *               the machine and its load.
- * Read first:   chapter 08 (the manufactured problem, "Convergence rates").
+ * Read first:   chapter 09 (the manufactured problem, "Convergence rates").
  */
 #include <math.h>
 #include <stdio.h>

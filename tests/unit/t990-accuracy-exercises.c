@@ -1,7 +1,7 @@
 /* t990-accuracy-exercises.c -- the answers of
  * chapters/12-accuracy-cost/exercises.md                  [LAC §5.3; ch. 12]
  *
- * Everything is computed here from small runs of the chapter 08 scenes
+ * Everything is computed here from small runs of the chapter 09 scenes
  * (no files written); nothing depends on time, so the answers hold on any
  * machine (the times of the chapter come from bench/accuracy-cost.sh).
  *
