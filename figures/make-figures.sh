@@ -213,10 +213,11 @@ if "$FIG02" "$W/fig02" > "$W/fig02.txt" 2> "$W/fig02.err"; then
   }
   colours="set linetype 1 lc rgb '#3b528b'; set linetype 2 lc rgb '#e08000'; set linetype 3 lc rgb '#21918c'; set linetype 4 lc rgb '#b03a8c'"
   {
-    echo 'set terminal pngcairo size 1500,820 font "DejaVu Sans,13" enhanced'
+    # two panels a row, so that the labels stay readable at a page's width
+    echo 'set terminal pngcairo size 1100,1000 font "DejaVu Sans,15" enhanced'
     echo "set output '$OUTABS/fig02-refinement-2d.png'"
     echo "$colours"
-    echo 'set multiplot layout 3,2 title "Figure 2, 2D: macro-elements of the slave side y = 2 (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'set multiplot layout 3,2 title "Figure 2, 2D: macro-elements of the slave side y = 2 (colours),\\ndesignated interior nodes (black), new nodes (red circles)" font ",16"'
     echo 'set size ratio -1; unset key; set xrange [-0.2:5.2]; set yrange [-0.2:2.3]; set xtics 1; set ytics 1'
     panel tri3 "tri3: seg2 gathered in pairs, a triple at the end" 2
     panel tri3-cut "tri3, option cut-2d: each first-layer cell cut" 2
@@ -236,10 +237,11 @@ if "$FIG02" "$W/fig02" > "$W/fig02.txt" 2> "$W/fig02.err"; then
     echo "     'fig02/$1.inode' using 1:2 with points pt 7 ps 1.6 lc rgb '#000000' notitle"
   }
   {
-    echo 'set terminal pngcairo size 1800,1400 font "DejaVu Sans,13" enhanced'
+    # one element a row: the cut cell and its face, two panels side by side
+    echo 'set terminal pngcairo size 1100,2900 font "DejaVu Sans,15" enhanced'
     echo "set output '$OUTABS/fig02-refinement-3d.png'"
     echo "$colours"
-    echo 'set multiplot layout 3,4 title "Figure 2, 3D: a unit cube cut below its slave face z = 1, and the face seen from above\\nmacro-elements (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'set multiplot layout 6,2 title "Figure 2, 3D: a unit cube cut below its slave face z = 1, and the face seen from above\\nmacro-elements (colours), designated interior nodes (black), new nodes (red circles)" font ",16"'
     echo 'unset key; unset tics; unset border'
     for c in "tet4|tet4: 3 tet4 cones from the face centre" "hex8|hex8: 5 pyramids from the face centre" \
              "hex8-six|hex8, option six: six hexahedra" "tet10|tet10: 3 tet10 cones" \

@@ -41,7 +41,7 @@ function flushtext() {
 }
 BEGIN { nc = 0; nt = 0; head = 1; incomment = 0
         printf "# %s\n\n", title
-        printf "The commented program of this chapter, `%s`: its comments are the text, its code the blocks between them. The plain listing with line numbers: [%s](%s).\n", name, name, plain }
+        printf "The commented program of this chapter, `%s`: its comments are the text, its code the blocks between them. The plain listing with line numbers: <a href=\"%s\">%s</a>.\n", name, plain, name }
 head {
   if ($0 ~ /^#include/) { head = 0; if (nh > 0) { printf "\n```\n"; for (i = 1; i <= nh; i++) print hl[i]; printf "```\n" } }
   else { hl[++nh] = $0; next }
