@@ -28,6 +28,10 @@
 #   doc-tables    every table of numbers is checked (output), a snapshot
 #                 whose checksum still holds, or quoted (tests/doc-tables.awk);
 #   doc-functions every lac_xxx name in backquotes exists in a source file;
+#   doc-values    a constant of the text followed by <!-- value V: COMMAND -->
+#                 is what COMMAND prints;
+#   doc-headers   the head comment of each chapter's example.c builds and
+#                 runs build/chapters/NN-name of its own folder;
 #   doc-keys      the keys of each section in the table of
 #                 chapters/01-problem/scene-format.md, and in the section
 #                 list of `lac --help`, are exactly those of the key tables
@@ -241,11 +245,58 @@ for md in $DOC_MD; do
 done | sort -u > "$DOC_TMP/named"
 msg=$(awk -F: 'NR == FNR { id[$0] = 1; next } !($2 in id) { print $1 ": `" $2 "` is in no source file" }' \
   "$DOC_TMP/idents" "$DOC_TMP/named")
+# the functions an <!-- include: FILE FUNCTION --> marker shows (make doc
+# reads them from the source) are defined in FILE
+msg="$msg$(grep -n '^<!-- include: ' $DOC_MD /dev/null | while IFS= read -r l; do
+  f=$(printf '%s' "$l" | sed 's/.*include: \([^ ]*\) .*/\1/'); fn=$(printf '%s' "$l" | sed 's/.*include: [^ ]* \([^ ]*\) -->$/\1/')
+  grep -q "^$fn (" "$f" 2>/dev/null || printf '\n%s: %s is not defined in %s' "${l%%:<!--*}" "$fn" "$f"
+done)"
 nnamed=$(wc -l < "$DOC_TMP/named")
 [ "$nnamed" -ge 100 ] || msg="$msg
 only $nnamed names lac_xxx found in the book"
 if [ -z "$msg" ]; then doc_ok doc-functions
 else doc_fail doc-functions "$msg"; fi
+
+# ---- doc-values ------------------------------------------------------------
+# A constant stated in the text, followed by a marker
+#     <!-- value V: COMMAND -->
+# is what COMMAND prints (V and the output equal as words, or as numbers
+# within 1e-6, a fraction N/M read as a number), and V is written in the
+# paragraph just above the marker: the sentence and the code cannot part.
+awk 'FNR == 1 { para = "" }
+  /^[ \t]*<!-- value [^:]*: .* -->$/ { v = $0; sub (/^[ \t]*<!-- value /, "", v); c = v; sub (/:.*/, "", v)
+    sub (/^[^:]*: /, "", c); sub (/ -->$/, "", c)
+    printf "%s:%d\t%s\t%s\t%s\n", FILENAME, FNR, v, (index (para, v) ? "in" : "out"), c; next }
+  /^[ \t]*$/ { para = ""; next }
+  { para = para " " $0 }' $DOC_MD > "$DOC_TMP/values"
+msg=""; nval=0
+while IFS='	' read -r at v where cmd; do
+  nval=$((nval+1))
+  [ "$where" = in ] || { msg="$msg
+$at: $v is not in the paragraph above the marker"; continue; }
+  got=$(doc_run "$cmd" 2>&1 | tr -d '\n' | sed 's/^ *//; s/ *$//')
+  if ! awk -v a="$v" -v b="$got" 'function num (x,  p) { if (x ~ /^-?[0-9]+\/[0-9]+$/) { split (x, p, "/"); return p[1] / p[2] } return x + 0 }
+         BEGIN { if (a == b) exit 0; x = num(a); y = num(b); exit !(b != "" && (x - y) ^ 2 <= 1e-12 * (1 + x * x)) }'; then
+    msg="$msg
+$at: the text says $v, \`$cmd\` prints '$got'"
+  fi
+done < "$DOC_TMP/values"
+[ "$nval" -ge 3 ] || msg="$msg
+only $nval value markers"
+if [ -z "$msg" ]; then doc_ok doc-values
+else doc_fail doc-values "$msg"; fi
+
+# ---- doc-headers -----------------------------------------------------------
+# The head comment of each chapter's program names the commands that build
+# and run it: build/chapters/NN-name of its own folder (or build/lac), no
+# other program or build folder.
+msg=$(for f in chapters/[0-9][0-9]-*/example.c; do
+  d=$(basename "$(dirname "$f")")
+  sed -n '1,/\*\//p' "$f" | grep -o 'build/[A-Za-z0-9_/.-]*' |
+    grep -v -x -e "build/chapters/$d" -e build/lac | sed "s|^|$f: names |"
+done)
+if [ -z "$msg" ]; then doc_ok doc-headers
+else doc_fail doc-headers "$msg"; fi
 
 # ---- doc-keys --------------------------------------------------------------
 "$B/tests/scene_keys" | sort > "$DOC_TMP/keys-code"

@@ -1,10 +1,7 @@
 /* example.c -- chapter 02: finite element spaces              [LAC §3.1]
  *
- * Compile with (from the repository root, after `make`):
- *   cc -std=c11 -Isrc chapters/02-spaces/example.c build/liblac.a \
- *      -lgsl -lgslcblas -lm -o build/ex02
- * Sample run:
- *   build/ex02
+ * Build:        make build/chapters/02-spaces
+ * Sample run:   build/chapters/02-spaces
  * Description:
  *   A tour of lac_spaces and lac_quadrature: the six quadratic shape
  *   functions of tri6 at one point, their partition of unity, an exact
