@@ -10,6 +10,8 @@
 #   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
 #   make doc         the book as HTML in build/doc (pandoc, MathML)
 #   make doc-test    make doc, then its pages checked in headless Chromium
+#   make exercise NAME=x [FROM=chapters/NN-name/skeleton.c]
+#                    exercises/x/main.c from a skeleton, built as build/exercises/x
 #   make help        all targets
 #
 # Non-recursive GNU make.  Library flags are plain variables (SuiteSparse 5
@@ -29,7 +31,7 @@ DEB_PKGS := gcc make libc6-dev libgsl-dev libsuitesparse-dev gmsh libgmsh-dev \
             libosmesa6-dev libpng-dev pkg-config libopenblas0-pthread \
             libinih-dev gnuplot-nox libfreetype-dev fonts-dejavu-core
 
-# PETSc and Open MPI: the petsc strategy and mpirun (chapter 11), installed
+# PETSc and Open MPI: the petsc strategy and mpirun (chapter 13), installed
 # like the others.  PETSC=no builds without them (and does not install
 # them); so does a machine where pkg-config does not find them: lac then
 # builds all the same, and --strategy petsc prints the apt-get line.  The
@@ -79,7 +81,7 @@ $(PETSC_MK): | $(B)/.deps-ok
 deps: $(B)/.deps-ok
 $(B)/.deps-ok: Makefile
 	@sh tests/deps.sh $(DEB_PKGS) || { [ "$(PETSC)" = no ] || echo \
-	  "lac: (or without PETSc and MPI, chapter 11: make PETSC=no)" >&2; exit 1; }
+	  "lac: (or without PETSc and MPI, chapter 13: make PETSC=no)" >&2; exit 1; }
 	@mkdir -p $(B) && touch $@
 
 # ---- build ---------------------------------------------------------------
@@ -206,6 +208,23 @@ doc-test: doc $(B)/figures/pngcheck
 	@sh tests/deps.sh $(DEB_DOCTEST)
 	sh tests/doc-browser.sh $(DOC_B) $(B)/figures/pngcheck
 
+# ---- exercises with code (chapters/README.md, "Exercises with code") -----
+# make exercise NAME=x [FROM=FILE]: exercises/x/main.c, a copy of FROM (a
+# chapter's skeleton; chapters/exercise.c by default), kept if it exists,
+# then built as $(B)/exercises/x against the library.  exercises/ is the
+# reader's own (.gitignore); make doc and make test do not look into it.
+EXERCISE_FROM = $(or $(FROM),chapters/exercise.c)
+exercise: all
+	@case "$(NAME)" in ''|*/*|*' '*) echo "usage: make exercise NAME=word [FROM=chapters/NN-name/skeleton.c]" >&2; exit 2 ;; esac
+	@mkdir -p exercises/$(NAME)
+	@if [ -f exercises/$(NAME)/main.c ]; then echo "exercises/$(NAME)/main.c: kept (it exists)"; \
+	 else cp $(EXERCISE_FROM) exercises/$(NAME)/main.c && echo "exercises/$(NAME)/main.c: a copy of $(EXERCISE_FROM)"; fi
+	@$(MAKE) --no-print-directory $(B)/exercises/$(NAME)
+	@echo "run it from here: $(B)/exercises/$(NAME)"
+$(B)/exercises/%: exercises/%/main.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
+
 # ---- fuzzing (chapter 01, bad-input.md; fuzz/README.md) --------------------
 # The library again with clang, coverage for libFuzzer and the sanitizers
 # (in build/fuzz), the harnesses fuzz/fuzz_*.c linked with libFuzzer, seed
@@ -234,7 +253,7 @@ $(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 help:
-	@sed -n '3,13p' Makefile
+	@sed -n '3,15p' Makefile
 
-.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test
+.PHONY: all deps test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test exercise
 .DELETE_ON_ERROR:

@@ -1,5 +1,5 @@
 #!/bin/sh
-# accuracy-cost.sh -- what accuracy costs in time           [LAC §5.2-5.3; ch. 10]
+# accuracy-cost.sh -- what accuracy costs in time           [LAC §5.2-5.3; ch. 12]
 #
 #   sh bench/accuracy-cost.sh [BUILD_DIR] [--quick] [--out DIR] [--from CSV]
 #
@@ -13,7 +13,7 @@
 # and skipped, when a body is held by contact alone), augmented, split and
 # saddle (in 3D at most SADDLE_MAX3D dofs) -- except the one auto chose
 # (its row is the auto row: same code, same numbers).  petsc is left to
-# chapter 11 (add it to STRATEGIES to try it).  Records, per run, the
+# chapter 13 (add it to STRATEGIES to try it).  Records, per run, the
 # errors (u and lambda), the size and the time of every stage.  Writes
 # into DIR (BUILD_DIR/accuracy-cost; `make figures` passes --out figures):
 #   accuracy-cost.csv        one row per run (the columns are below)
@@ -82,7 +82,7 @@ W=$B/accuracy-cost-work
 [ $QUICK = 1 ] && W=$B/accuracy-cost-work-quick
 rm -rf "$W"
 mkdir -p "$W" || exit 1
-D=chapters/08-experiments
+D=chapters/09-spheres-rates
 if [ $QUICK = 1 ]; then DENSE_MAX=${DENSE_MAX:-1500}; else DENSE_MAX=${DENSE_MAX:-6000}; fi
 SADDLE_MAX3D=${SADDLE_MAX3D:-40000}
 if [ $QUICK = 1 ]; then REPEAT=${REPEAT:-1}; else REPEAT=${REPEAT:-3}; fi

@@ -3,13 +3,13 @@
 #
 #   sh bench/ring.sh [BUILD_DIR] [ELEMENT] [LEVELS]      (make bench-ring)
 #
-# Runs chapters/08-experiments/ring.scene (ELEMENT: hex20; 61 load steps)
+# Runs chapters/10-large-deformation/ring.scene (ELEMENT: hex20; 61 load steps)
 # on each of LEVELS ("0 1": the coarse mesh, 34k dofs, and the fine one,
 # 209k dofs) alone, one after the other, and prints per run: dofs, wall
 # time of the run and of its solve stage, Newton iterations (all, most in
 # a load step), load steps cut, the final vertical displacement of the
 # ring's inner bottom point against the value before the consistent
-# tangent (the runs of chapter 08's table: hex20 coarse -19.0528000050,
+# tangent (the runs of chapter 14's table of the ring: hex20 coarse -19.0528000050,
 # fine -19.060 mm), and the histogram of Newton iterations per load step
 # after the first contact step.  The runs go to $OUT/ring-ELEMENT-LEVEL/
 # (OUT = BUILD_DIR/bench-ring), with their progress lines in .err.  The
@@ -24,7 +24,7 @@ OUT=$B/bench-ring
 [ -x "$LAC" ] || ${MAKE:-make} -s B="$B" "$LAC" >&2 || exit 1
 mkdir -p "$OUT" || exit 1
 
-# u_z of ring_mid before the consistent tangent (chapter 08's table)
+# u_z of ring_mid before the consistent tangent (chapter 14's table of the ring)
 reference () {
   case "$EL:$1" in
     hex20:0) echo -19.0528000050 ;;
@@ -41,7 +41,7 @@ printf "run          dofs   wall s  solve s  newton  max/step  cut   u_z (mm)   
 for L in $LEVELS; do
   D=$OUT/ring-$EL-$L
   t0=$(date +%s.%N)
-  if ! "$LAC" run chapters/08-experiments/ring.scene --set element="$EL" \
+  if ! "$LAC" run chapters/10-large-deformation/ring.scene --set element="$EL" \
        --set level="$L" --out "$D" --timings \
        > "$D.sum" 2> "$D.err"; then
     echo "ring.sh: the run $EL level $L failed: $(tail -1 "$D.err")" >&2

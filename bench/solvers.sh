@@ -1,6 +1,6 @@
 #!/bin/sh
 # solvers.sh -- direct against iterative solvers, on 1 and 2 MPI processes
-#                                                 [LAC (17), Alg. 1; ch. 11]
+#                                                 [LAC (17), Alg. 1; ch. 13]
 #
 #   sh bench/solvers.sh [BUILD_DIR] [--quick] [--out DIR]
 #   sh bench/solvers.sh --chart CSV DIR    (the charts again, from a CSV)
@@ -24,7 +24,7 @@
 # with the direct path (taylor: the augmented strategy, a CHOLMOD
 # Cholesky factor of K + C_A W C_A^T; cube: cholmod) as long as it fits in
 # time and memory (up to N = 35 and 45), and the petsc strategy (projected
-# CG and GAMG, chapter 11) on 1 and 2 processes (mpirun -n 2, process 0
+# CG and GAMG, chapter 13) on 1 and 2 processes (mpirun -n 2, process 0
 # assembling), then GAMG against BoomerAMG (hypre) at the two largest
 # sizes.  Writes into DIR (BUILD_DIR/solvers; the committed figures are
 # `--out figures`):

@@ -1,7 +1,7 @@
 #!/bin/sh
 # make-figures.sh -- regenerate figures/: the counterparts of the paper's
 # Figure 2 (the refinement of the first layer, chapter 03) and Figures
-# 3-11 [LAC §5], and the accuracy-cost study (chapter 10).
+# 3-11 [LAC §5], and the accuracy-cost study (chapter 12).
 #
 #   sh figures/make-figures.sh [BUILD_DIR] [--quick] [--out DIR] [--no-bench]
 #
@@ -17,7 +17,7 @@
 # Every picture is drawn without a display: meshes and fields by OSMesa
 # (`lac render`, and figures/figrun.c for what only a live run has: the
 # slave sub-facets of the macro-elements coloured by lambda), curves by
-# gnuplot (pngcairo).  Scenes are those of chapters/08-experiments; the
+# gnuplot (pngcairo).  Scenes are those of chapters/08-10; the
 # runs go to BUILD_DIR/figures-work (kept, for inspection: solution.vtu,
 # contact.csv, the gnuplot scripts and data).  figures/README.md lists the
 # figures.  Exit status: 0 if every figure was drawn (figures 10-11 may be
@@ -45,6 +45,8 @@ LAC=$B/lac
 FIGRUN=$B/figures/figrun
 FIG02=$B/figures/fig02-refine
 D=chapters/08-experiments
+D9=chapters/09-spheres-rates
+D10=chapters/10-large-deformation
 W=$B/figures-work
 [ $QUICK = 1 ] && W=$B/figures-work-quick
 
@@ -100,7 +102,7 @@ GPWIDE='set terminal pngcairo size 1500,620 font "DejaVu Sans,13" enhanced'
 # RING_MESHES lists ELEMENT:LEVEL[:STEPS] (level 0 coarse, 1 fine: hex8
 # about 10 minutes, hex20 about an hour, hex27 more; STEPS replaces the 60
 # equal steps of ring.scene, e.g. hex27:1:20 for every third point).
-RING=$D/ring.scene
+RING=$D10/ring.scene
 ring_pids=
 if [ -f $RING ] && want 10; then
   if [ $QUICK = 1 ]; then
@@ -211,10 +213,11 @@ if "$FIG02" "$W/fig02" > "$W/fig02.txt" 2> "$W/fig02.err"; then
   }
   colours="set linetype 1 lc rgb '#3b528b'; set linetype 2 lc rgb '#e08000'; set linetype 3 lc rgb '#21918c'; set linetype 4 lc rgb '#b03a8c'"
   {
-    echo 'set terminal pngcairo size 1500,820 font "DejaVu Sans,13" enhanced'
+    # two panels a row, so that the labels stay readable at a page's width
+    echo 'set terminal pngcairo size 1100,1000 font "DejaVu Sans,15" enhanced'
     echo "set output '$OUTABS/fig02-refinement-2d.png'"
     echo "$colours"
-    echo 'set multiplot layout 3,2 title "Figure 2, 2D: macro-elements of the slave side y = 2 (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'set multiplot layout 3,2 title "Figure 2, 2D: macro-elements of the slave side y = 2 (colours),\\ndesignated interior nodes (black), new nodes (red circles)" font ",16"'
     echo 'set size ratio -1; unset key; set xrange [-0.2:5.2]; set yrange [-0.2:2.3]; set xtics 1; set ytics 1'
     panel tri3 "tri3: seg2 gathered in pairs, a triple at the end" 2
     panel tri3-cut "tri3, option cut-2d: each first-layer cell cut" 2
@@ -234,10 +237,11 @@ if "$FIG02" "$W/fig02" > "$W/fig02.txt" 2> "$W/fig02.err"; then
     echo "     'fig02/$1.inode' using 1:2 with points pt 7 ps 1.6 lc rgb '#000000' notitle"
   }
   {
-    echo 'set terminal pngcairo size 1800,1400 font "DejaVu Sans,13" enhanced'
+    # one element a row: the cut cell and its face, two panels side by side
+    echo 'set terminal pngcairo size 1100,2900 font "DejaVu Sans,15" enhanced'
     echo "set output '$OUTABS/fig02-refinement-3d.png'"
     echo "$colours"
-    echo 'set multiplot layout 3,4 title "Figure 2, 3D: a unit cube cut below its slave face z = 1, and the face seen from above\\nmacro-elements (colours), designated interior nodes (black), new nodes (red circles)" font ",14"'
+    echo 'set multiplot layout 6,2 title "Figure 2, 3D: a unit cube cut below its slave face z = 1, and the face seen from above\\nmacro-elements (colours), designated interior nodes (black), new nodes (red circles)" font ",16"'
     echo 'unset key; unset tics; unset border'
     for c in "tet4|tet4: 3 tet4 cones from the face centre" "hex8|hex8: 5 pyramids from the face centre" \
              "hex8-six|hex8, option six: six hexahedra" "tet10|tet10: 3 tet10 cones" \
@@ -316,7 +320,7 @@ fi
 spheres () {
   name=$1 scene=$2 e=$3 l=$4 fig=$5 fview=$6 lview=$7
   # shellcheck disable=SC2086
-  frun "$name" $D/$scene.scene --set element="$e" --set level="$l" --edges $fview \
+  frun "$name" $D9/$scene.scene --set element="$e" --set level="$l" --edges $fview \
     --title "self-included spheres, $e: radial displacement u_R" \
     --label u_R --units mm --draw u_R "$OUT/$fig-u-r.png" $lview \
     --title "spheres, $e: lambda on the slave R = 30 (exact +-5%)" \
@@ -368,7 +372,7 @@ fi
 # ---- Figures 7 and 8: manufactured solutions [LAC §5.3] ------------------
 if want 07; then
 t=$(date +%s)
-if run man2d $D/manufactured2d.scene --set element=quad8 --set level=$LM2; then
+if run man2d $D9/manufactured2d.scene --set element=quad8 --set level=$LM2; then
   dofs=$(val man2d dofs)
   render man2d fig07-manufactured2d-quad8-u.png --field u --scale 1 --edges \
     --title "manufactured 2D, quad8: |u|, deformed x1 ($dofs dofs)"
@@ -394,7 +398,7 @@ say "fig07 ($(since "$t") s)"
 fi
 if want 08; then
 t=$(date +%s)
-if frun man3d $D/manufactured3d.scene --set element=hex20 --set level=$LM3 \
+if frun man3d $D9/manufactured3d.scene --set element=hex20 --set level=$LM3 \
      --edges --el 30 --az 35 --scale 1 --title "manufactured 3D, hex20: lambda on the bottom" \
      --label lambda --draw lambda "$OUT/fig08-manufactured3d-hex20-lambda.png"; then
   render man3d fig08-manufactured3d-hex20-u.png --field u --scale 1 --edges --el 30 --az 35 \
@@ -586,7 +590,7 @@ fi
 say "fig10-11 ($(since "$t") s)"
 fi
 
-# ---- the accuracy-cost study (chapter 10) ----------------------------------
+# ---- the accuracy-cost study (chapter 12) ----------------------------------
 if [ $BENCH = 1 ]; then
   t=$(date +%s)
   sh bench/accuracy-cost.sh "$B" --out "$OUT" || fail "bench/accuracy-cost.sh"

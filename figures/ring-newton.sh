@@ -5,7 +5,7 @@
 #
 #   sh figures/ring-newton.sh [BUILD_DIR] [--quick] [--out DIR]
 #
-# Runs chapters/08-experiments/ring.scene (hex20, coarse mesh, 61 load
+# Runs chapters/10-large-deformation/ring.scene (hex20, coarse mesh, 61 load
 # steps; --quick: hex8, 7 steps) twice, with [steps] tangent = frozen and
 # tangent = consistent, keeps the progress lines (one per Newton iteration:
 # the residual at its start; the step line: the final residual), and draws
@@ -43,7 +43,7 @@ OUTABS=$(cd "$OUT" && pwd)
 
 # the runs, then per run a CSV "step,iteration,residual" from the progress
 for tg in frozen consistent; do
-  if ! "$LAC" run chapters/08-experiments/ring.scene $SET \
+  if ! "$LAC" run chapters/10-large-deformation/ring.scene $SET \
        --set steps.tangent=$tg --out "$W/$tg" > "$W/$tg.sum" 2> "$W/$tg.err"
   then
     echo "ring-newton.sh: the $tg run failed: $(tail -1 "$W/$tg.err")" >&2

@@ -93,8 +93,8 @@ rbad folded "folded.msh|cells 18 and 19 overlap" \
 rbad flat "flat.msh|cell 16 (tri3) is degenerate" \
   run $SB $KB --set mesh.file=flat.msh
 # A ball in gmsh's all-hex subdivision: tangled, and the message says how
-# to mesh it (transfinite blocks, chapter 08).
-rbad ball-hex "ball-hex.geo|hex20) is degenerate or tangled|transfinite|chapter 08" \
+# to mesh it (transfinite blocks, chapter 10).
+rbad ball-hex "ball-hex.geo|hex20) is degenerate or tangled|transfinite|chapter 10" \
   run tests/bad/ball-hex.scene $KB
 
 # Nodes in no cell: a warning on the mesh line, the same answer.
@@ -148,7 +148,7 @@ for el in tet4 tet10; do
   within2 "tets-$el" "$(est_nodes tests/bad/cylinder-tets.scene --set level=1 --set element=$el)" \
     "$(real_nodes tests/bad/cylinder-tets.scene --set level=1 --set element=$el)"
 done
-within2 ring-level1 "$(est_nodes chapters/08-experiments/ring.scene --set level=1)" 55610
+within2 ring-level1 "$(est_nodes chapters/10-large-deformation/ring.scene --set level=1)" 55610
 within2 taylor3d-n55 "$(est_nodes $T3 --set mesh.numbers=n=55 --strategy petsc)" 341991
 gp=$(est_gb $T3 --set mesh.numbers=n=55 --strategy petsc)
 gc=$(est_gb $T3 --set mesh.numbers=n=55 --strategy schur)

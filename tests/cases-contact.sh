@@ -138,7 +138,7 @@ fi
 # `lac infsup` prints beta_h for any contact scene: every method, and a
 # rigid obstacle.
 for args in "$T2 --set contact.interface.method=nts" "$T2 --set contact.interface.method=p0" \
-            "chapters/08-experiments/manufactured2d.scene"; do
+            "chapters/09-spheres-rates/manufactured2d.scene"; do
   # shellcheck disable=SC2086
   b=$("$LAC" infsup $args --quiet 2>"$C/infsup.err" | sed -n 's/^beta_h = //p')
   if awk -v b="$b" 'BEGIN { exit !(b != "" && b > 0) }'; then

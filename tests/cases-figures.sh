@@ -67,9 +67,9 @@ else
   done
   png_check png-fig01-sphere-axi-profiles "$C/png/fig01-sphere-axi-profiles.png" 1500 620 0.02 50
   # Figure 2 (figures/fig02-refine.c, gnuplot): the refined cells per type
-  png_check png-fig02-refinement-2d "$C/png/fig02-refinement-2d.png" 1500 820 0.03 50
-  png_check png-fig02-refinement-3d "$C/png/fig02-refinement-3d.png" 1800 1400 0.05 50
-  if [ -f chapters/08-experiments/ring.scene ]; then
+  png_check png-fig02-refinement-2d "$C/png/fig02-refinement-2d.png" 1100 1000 0.03 50
+  png_check png-fig02-refinement-3d "$C/png/fig02-refinement-3d.png" 1100 2900 0.03 50
+  if [ -f chapters/10-large-deformation/ring.scene ]; then
     n=$(ls "$C"/png/fig10-*.png "$C"/png/fig11-*.png 2> /dev/null | wc -l)
     if [ "$n" -ge 2 ]; then
       for f in "$C"/png/fig10-*.png "$C"/png/fig11-*.png; do

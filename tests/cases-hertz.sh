@@ -1,6 +1,6 @@
 # tests/cases-hertz.sh -- Hertz contact in 2D and 3D (sourced by tests/run.sh)
 #
-# chapters/08-experiments/hertz.sh on the four 2D cases (a cylinder on a
+# chapters/10-large-deformation/hertz.sh on the four 2D cases (a cylinder on a
 # rigid flat and on an elastic block, quad8 and tri6) at levels 0 1 2:
 # from one level to the next the errors of the peak pressure and of the
 # half-width against Hertz's values must decrease, at level 2 both must be
@@ -9,7 +9,7 @@
 # golden summary (tests/golden/hertz-*.out, numcmp).  In 3D (a sphere on
 # a rigid flat, tet10, and on an elastic block, hex20) one run each at
 # level 0 against its golden summary; their convergence to 1 % takes
-# minutes (chapter 08).  Same conventions as tests/cases.sh ($B, pass,
+# minutes (chapter 10).  Same conventions as tests/cases.sh ($B, pass,
 # fail).
 
 B=${B:-build}
@@ -21,7 +21,7 @@ mkdir -p "$C"
 hz_ok () { pass=$((pass+1)); [ -n "$LAC_TEST_VERBOSE" ] && echo "ok   case $1"; return 0; }
 hz_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
 
-if B="$B" OUT="$C" sh chapters/08-experiments/hertz.sh \
+if B="$B" OUT="$C" sh chapters/10-large-deformation/hertz.sh \
      "cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6" "0 1 2" \
      > "$C/table.txt" 2> "$C/table.err"; then
   for c in cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6; do
@@ -56,7 +56,7 @@ for g in cyl-rigid-quad8 cyl-rigid-tri6 cyl-block-quad8 cyl-block-tri6; do hz_go
 
 # 3D: level 0 of a sphere on a rigid flat (tet10) and on an elastic block
 # (hex20)
-if ! B="$B" OUT="$C" sh chapters/08-experiments/hertz.sh \
+if ! B="$B" OUT="$C" sh chapters/10-large-deformation/hertz.sh \
      "sph-rigid:tet10 sph-block:hex20" 0 > "$C/table3d.txt" 2> "$C/table3d.err"; then
   hz_fail hertz-table-3d "hertz.sh failed: $(tail -1 "$C/table3d.err")"
 fi

@@ -23,7 +23,7 @@ mfd_rates () {
   mfd_n="rates-$2"
   : > "$C/$mfd_n.dat"
   for l in $3; do
-    if ! "$LAC" run "chapters/08-experiments/$1.scene" --set element="$2" --set level="$l" \
+    if ! "$LAC" run "chapters/09-spheres-rates/$1.scene" --set element="$2" --set level="$l" \
          --quiet --no-output > "$C/$mfd_n-$l.out" 2> "$C/$mfd_n-$l.err"; then
       mfd_fail "$mfd_n" "level $l: lac run failed: $(tail -1 "$C/$mfd_n-$l.err")"
       return
@@ -57,7 +57,7 @@ mfd_rates manufactured3d hex8 "1 2 3" 1.98 1.76
 mfd_golden () {
   mfd_n="golden-$1"
   mfd_g="tests/golden/$1.out"
-  if ! "$LAC" run "chapters/08-experiments/$2.scene" --set element="$3" --set level="$4" \
+  if ! "$LAC" run "chapters/09-spheres-rates/$2.scene" --set element="$3" --set level="$4" \
        --quiet --no-output > "$C/$1.out" 2> "$C/$1.err"; then
     mfd_fail "$mfd_n" "lac run failed: $(tail -1 "$C/$1.err")"
     return

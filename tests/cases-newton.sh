@@ -10,7 +10,7 @@
 #     -4615.38 N/mm, to 1e-3 (the base is stiff, not rigid), and say that
 #     it paired again (pairing_widened) where it had to;
 #   - the large-deformation loop in the axisymmetric model: the spheres of
-#     chapter 08 at 1e-4 of their pressure (tests/hard/spheres-axi-ld.scene)
+#     chapter 09 at 1e-4 of their pressure (tests/hard/spheres-axi-ld.scene)
 #     give the small-strain multipliers to 1e-6 of the largest, once
 #     compared as forces: lambda is a pressure on the deformed surface,
 #     which the inner pressure has stretched by 2 u_R / R = 1.4e-6, so

@@ -1,6 +1,6 @@
 # tests/cases-petsc.sh -- the petsc strategy and MPI (sourced by tests/run.sh)
 #
-# [LAC (17), Alg. 1; chapter 11]  lac run with --strategy petsc (Krylov
+# [LAC (17), Alg. 1; chapter 13]  lac run with --strategy petsc (Krylov
 # methods and algebraic multigrid, solve/lac_petsc.h) against the direct
 # path on the same scenes, small sizes:
 #   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4),
@@ -103,8 +103,8 @@ if [ "$have_petsc" = 1 ]; then
   petsc_vs taylor2d-quad4 "$D8/taylor2d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad4 --set level=1
   petsc_vs taylor3d-hex8 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex8 --set level=1
   petsc_vs taylor3d-tet4 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=tet4
-  petsc_vs spheres-axi-quad8 "$D8/spheres-axi.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8 --set level=1
-  petsc_vs spheres3d-hex20 "$D8/spheres3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex20
+  petsc_vs spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8 --set level=1
+  petsc_vs spheres3d-hex20 chapters/09-spheres-rates/spheres3d.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex20
   petsc_vs cube-hex8 bench/cube.scene "--solver cholmod" "max_u load_work" -- --set mesh.numbers=n=6
   petsc_vs sphere-axi chapters/01-problem/sphere-axi.scene "--solver cholmod" "max_u load_work" -- --set level=1
   for e in taylor2d-quad4 taylor3d-hex8 taylor3d-tet4; do
@@ -149,7 +149,7 @@ if [ "$have_petsc" = 1 ]; then
     }
     petsc_mpi taylor3d-hex8 "$D8/taylor3d.scene" --set element=hex8 --set level=1
     petsc_mpi taylor2d-quad4 "$D8/taylor2d.scene" --set element=quad4 --set level=1
-    petsc_mpi spheres-axi-quad8 "$D8/spheres-axi.scene" --set element=quad8 --set level=1
+    petsc_mpi spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene --set element=quad8 --set level=1
   else
     petsc_fail "mpi" "mpirun not found (Debian: openmpi-bin)"
   fi
@@ -177,7 +177,7 @@ if [ "$have_petsc" = 1 ]; then
   fi
 
   # ---- large deformation: refused, not solved by CHOLMOD ---------------
-  env "$PETSC_ENV" "$LAC" run "$D8/ring.scene" --strategy petsc --quiet --no-output \
+  env "$PETSC_ENV" "$LAC" run chapters/10-large-deformation/ring.scene --strategy petsc --quiet --no-output \
     > "$C/large.out" 2> "$C/large.err"
   rc=$?
   if [ "$rc" = 1 ] && [ "$(wc -l < "$C/large.err")" -eq 1 ] \

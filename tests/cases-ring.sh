@@ -50,7 +50,7 @@ ring_golden () {
 }
 
 # 1. the CI run
-if "$LAC" run chapters/08-experiments/ring.scene --set element=hex8 \
+if "$LAC" run chapters/10-large-deformation/ring.scene --set element=hex8 \
      --set steps.n=6 --set steps.vtu_every=2 --set output.vtu_format=ascii --out "$C/run" \
      > "$C/run.out" 2> "$C/run.err"; then
   ring_ok ring-run
@@ -157,7 +157,7 @@ fi
 # ring_bad NAME 'EXPECTED TEXT' --set ...
 ring_bad () {
   n="$1"; want="$2"; shift 2
-  "$LAC" run chapters/08-experiments/ring.scene "$@" --quiet --no-output \
+  "$LAC" run chapters/10-large-deformation/ring.scene "$@" --quiet --no-output \
     > "$C/$n.out" 2> "$C/$n.err"
   rc=$?
   if [ "$rc" -eq 0 ]; then

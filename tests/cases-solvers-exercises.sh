@@ -1,6 +1,6 @@
 # tests/cases-solvers-exercises.sh -- the answers of
-# chapters/11-solvers-mpi/exercises.md (sourced by tests/run.sh; same
-# conventions as tests/cases.sh: $B, pass, fail)   [LAC (17); chapter 11]
+# chapters/13-solvers-mpi/exercises.md (sourced by tests/run.sh; same
+# conventions as tests/cases.sh: $B, pass, fail)   [LAC (17); chapter 13]
 #
 # At the small sizes of each exercise (the larger ones are for
 # bench/solvers.sh), with --strategy / --solver petsc:

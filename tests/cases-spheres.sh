@@ -1,6 +1,6 @@
 # tests/cases-spheres.sh -- the self-included spheres (sourced by tests/run.sh)
 #
-# [LAC §5.2, Tables 3-4]  chapters/08-experiments/spheres-axi.scene and
+# [LAC §5.2, Tables 3-4]  chapters/09-spheres-rates/spheres-axi.scene and
 # spheres3d.scene through `lac run`.  Same conventions as tests/cases.sh
 # ($B, pass, fail, one FAIL line per failure, files under $B/cases-spheres/).
 #
@@ -24,7 +24,7 @@ B=${B:-build}
 C="$B/cases-spheres"
 LAC="$B/lac"
 NUMCMP="$B/tests/numcmp"
-SPH_D=chapters/08-experiments
+SPH_D=chapters/09-spheres-rates
 SPH_G=tests/golden
 rm -rf "$C"
 mkdir -p "$C"

@@ -6,7 +6,7 @@
 "use strict";
 const problems = [];
 const fetched = new Map();           // file URL -> Document (null: missing)
-let nlinks = 0, nimages = 0, nmath = 0;
+let nlinks = 0, nimages = 0, nmath = 0, nprog = 0;
 
 function load(url) {
   if (!fetched.has(url)) {
@@ -28,7 +28,7 @@ function rawText(node, page) {
   for (const c of node.childNodes) {
     if (c.nodeType === Node.TEXT_NODE) {
       const t = c.textContent;
-      const m = t.match(/\$|\\[A-Za-z]+/);
+      const m = t.match(/\$|\\[A-Za-z]+|@sect/);
       if (m) {
         const i = Math.max(0, m.index - 30);
         problems.push(page + ": raw TeX in the text: ..." +
@@ -62,8 +62,31 @@ function checkPage(frame) {
       problems.push(page + ": TeX left as text: " + s.textContent.substr(0, 40));
   for (const img of doc.querySelectorAll("img")) {
     nimages++;
+    const src = img.getAttribute("src");
     if (!img.complete || img.naturalWidth === 0)
-      problems.push(page + ": image does not load: " + img.getAttribute("src"));
+      problems.push(page + ": image does not load: " + src);
+    if (!(img.getAttribute("alt") || "").trim())
+      problems.push(page + ": image without alt text: " + src);
+    // a figure: the image links to itself (full size), a caption under it
+    const fig = img.closest(".figure");
+    const link = img.closest("a");
+    if (!fig || !fig.querySelector(".caption") ||
+        !fig.querySelector(".caption").textContent.trim())
+      problems.push(page + ": image without a caption: " + src);
+    if (!link || link.getAttribute("href") !== src)
+      problems.push(page + ": image not a link to its full size: " + src);
+    // at most two panels side by side: no image in a table
+    if (img.closest("table"))
+      problems.push(page + ": image in a table (panels too small): " + src);
+  }
+  // a commented program: text and code, no comment markers left
+  if (/example\.c\.html$/.test(page)) {
+    nprog++;
+    if (doc.querySelectorAll("pre code").length < 3 || doc.querySelectorAll("h2").length < 1)
+      problems.push(page + ": not a commented program (code blocks, headings)");
+    for (const p of doc.querySelectorAll("main > p"))
+      if (/^\s*(\/\*|\*\/|\/\/)/.test(p.textContent))
+        problems.push(page + ": a comment marker left in the text: " + p.textContent.substr(0, 40));
   }
   for (const a of doc.querySelectorAll("a[href]")) {
     const href = a.getAttribute("href");
@@ -87,7 +110,9 @@ function checkPage(frame) {
 window.addEventListener("load", () => {
   const frames = document.querySelectorAll("iframe");
   for (const f of frames) checkPage(f);
+  if (nprog < 10)
+    problems.push("only " + nprog + " commented programs (example.c.html)");
   problems.push("checked " + frames.length + " pages, " + nlinks + " links, " +
-                nimages + " images, " + nmath + " formulas");
+                nimages + " images, " + nmath + " formulas, " + nprog + " programs");
   document.getElementById("result").textContent = problems.join("\n") + "\nDONE\n";
 });

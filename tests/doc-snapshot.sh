@@ -5,10 +5,12 @@
 #   <!-- snapshot: COMMAND @ COMMIT, MACHINE; sha SHA -->
 # (tests/doc-tables.awk says what it is).  With NEW (a file: what COMMAND
 # printed when you ran it), the block or table that follows the marker is
-# replaced by NEW's lines; without, it is kept as it is.  Then COMMIT
-# becomes the current commit (git rev-parse --short HEAD) and SHA the
-# checksum of the block's lines, which tests/cases-doc.sh (doc-tables)
-# checks.  Run from the top of the repository.
+# replaced by NEW's lines and COMMIT becomes the current commit (git
+# rev-parse --short HEAD); without, the block and COMMIT are kept (a table
+# pasted by hand from a run).  SHA becomes the checksum of the block's
+# lines (the first 12 hex digits of their sha256), which
+# tests/cases-doc.sh (doc-tables) checks.  Run from the top of the
+# repository.
 set -eu
 F=${1:?usage: doc-snapshot.sh FILE LINE [NEW]}; N=${2:?usage: doc-snapshot.sh FILE LINE [NEW]}
 NEW=${3:-}
@@ -18,24 +20,27 @@ commit=$(git rev-parse --short HEAD)
 tmp=$(mktemp); trap 'rm -f "$tmp" "$tmp.b"' EXIT
 # the block: a fenced block or a pipe table right after the marker
 awk -v n="$N" -v new="$NEW" -v blk="$tmp.b" '
-  NR < n { print; next }
-  NR == n { mark = $0; next }
-  state == 0 { if (/^```/) { state = 1; fence = 1; open = $0; next }
-               if (/^\|/) { state = 1; fence = 0 } else { print "doc-snapshot: no block after the marker" > "/dev/stderr"; exit 1 } }
-  state == 1 && fence && /^```/ { state = 2; emit(); next }
-  state == 1 && !fence && !/^\|/ { state = 2; emit(); print; next }
-  state == 1 { body[++nb] = $0; next }
-  { print }
   function emit(   i, l) {
     if (new != "") { nb = 0; while ((getline l < new) > 0) body[++nb] = l }
+    printf "" > blk
     for (i = 1; i <= nb; i++) print body[i] > blk
     close(blk)
     print "@@MARK@@"; if (fence) print open
     for (i = 1; i <= nb; i++) print body[i]
     if (fence) print "```"
   }
-  END { if (state == 1) { emit() } }' "$F" > "$tmp"
+  NR < n { print; next }
+  NR == n { next }
+  state == 0 { if (/^```/) { state = 1; fence = 1; open = $0; next }
+               if (/^\|/) { state = 1; fence = 0 }
+               else { print "doc-snapshot: no block right after the marker" > "/dev/stderr"; exit 1 } }
+  state == 1 && fence && /^```/ { state = 2; emit(); next }
+  state == 1 && !fence && !/^\|/ { state = 2; emit(); print; next }
+  state == 1 { body[++nb] = $0; next }
+  { print }
+  END { if (state == 1) emit() }' "$F" > "$tmp"
 sha=$(sha256sum < "$tmp.b" | cut -c1-12)
-mark=$(sed -n "${N}p" "$F" | sed "s/ @ [^,;]*\([,;]\)/ @ $commit\1/; s/; sha [0-9a-f]* -->$/; sha $sha -->/")
+if [ -n "$NEW" ]; then at="s/ @ [^,;]*\([,;]\)/ @ $commit\1/;"; else at=""; fi
+mark=$(sed -n "${N}p" "$F" | sed "$at s/; sha [0-9a-f]* -->\$/; sha $sha -->/")
 awk -v m="$mark" '$0 == "@@MARK@@" { print m; next } { print }' "$tmp" > "$F"
-echo "doc-snapshot: $F:$N: commit $commit, sha $sha"
+echo "doc-snapshot: $F:$N: sha $sha"

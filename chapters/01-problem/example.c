@@ -1,15 +1,12 @@
 /* example.c -- chapter 01: one elastic body, the forms of (8)     [LAC §2]
  *
- * Compile with (from the repository root, after `make B=build/elast`):
- *   cc -std=c11 -Isrc -I/usr/include/suitesparse \
- *      chapters/01-problem/example.c build/elast/liblac.a -lgmsh -lumfpack \
- *      -lcholmod -lamd -lcolamd -lsuitesparseconfig -lgsl -lgslcblas -lm \
- *      -o build/ex01
- *   (`make` also builds it as build/chapters/01-problem.)
- * Sample runs:
- *   build/ex01                          plane strain, quad8, CHOLMOD
- *   build/ex01 --dim 3                  3D, hex20
- *   build/ex01 --solver dense           the same with the dense LU
+ * Build:        make build/chapters/01-problem   (plain `make` builds it
+ *               too, with the library and every chapter's program)
+ * Sample runs:  build/chapters/01-problem                 plane strain,
+ *                                                        quad8, CHOLMOD
+ *               build/chapters/01-problem --dim 3        3D, hex20
+ *               build/chapters/01-problem --solver dense the same with
+ *                                                        the dense LU
  * Description:
  *   A block 10 x 1 (x 1) clamped on its left end (Gamma_D, [LAC (4)]) and
  *   pressed on its top (Gamma_N, [LAC (3)]) by p = 0.01: a short cantilever

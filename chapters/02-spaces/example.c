@@ -1,10 +1,7 @@
 /* example.c -- chapter 02: finite element spaces              [LAC §3.1]
  *
- * Compile with (from the repository root, after `make`):
- *   cc -std=c11 -Isrc chapters/02-spaces/example.c build/liblac.a \
- *      -lgsl -lgslcblas -lm -o build/ex02
- * Sample run:
- *   build/ex02
+ * Build:        make build/chapters/02-spaces
+ * Sample run:   build/chapters/02-spaces
  * Description:
  *   A tour of lac_spaces and lac_quadrature: the six quadratic shape
  *   functions of tri6 at one point, their partition of unity, an exact
@@ -27,6 +24,7 @@ clean (double v)
   return round (v * 1e4) / 1e4 + 0.0;
 }
 
+// @sect Shape functions at a point
 /* 1. The shape functions $N_a(\xi)$ of the P2 triangle at one point.
  *    In barycentric coordinates $\lambda$, the vertex functions are
  *    $\lambda_a(2\lambda_a - 1)$ and the mid-edge ones $4\lambda_i\lambda_j$;
@@ -49,6 +47,7 @@ tri6_at_a_point (void)
   printf ("   sum N_a = %.12f\n", sum);
 }
 
+// @sect Quadrature
 /* 2. Quadrature: $\int_K x\,y\,z\,dx = 1!\,1!\,1!/6! = 1/720$ on the unit
  *    tetrahedron, integrated exactly by any rule of degree >= 3 (here the
  *    8-point symmetric rule). */
@@ -66,6 +65,7 @@ tet_integral (void)
   lac_quad_free (q);
 }
 
+// @sect The faces of a cell
 /* 3. The faces of hex8, counter-clockwise seen from outside, with the unit
  *    normal $t_1 \times t_2 / |t_1 \times t_2|$ of each face's own map. */
 static void
@@ -90,6 +90,7 @@ hex8_faces (void)
     }
 }
 
+// @sect Averages over a face
 /* 4. Averages of the basis functions of a face element,
  *    $\overline{N_a} = \frac{1}{|F|}\int_F N_a$: Hypothesis 1 and
  *    Definition 1 of [LAC §3.1] need an "internal" function of positive
@@ -116,6 +117,8 @@ face_means (const char *name)
   lac_quad_free (q);
 }
 
+// @sect The program
+/* Each part prints its numbers; the output is in the chapter. */
 int
 main (void)
 {

@@ -11,6 +11,7 @@
 -- A link that leaves the repository or names nothing in it stops pandoc.
 
 local docdir, files, basenames, need = ".", {}, {}, nil
+local funcs = {}          -- function name -> "file#Lline" of its definition
 
 local function norm(path)
   local out = {}
@@ -73,6 +74,12 @@ local function meta(m)
     basenames[b] = basenames[b] == nil and line or false   -- false: ambiguous
   end
   need = assert(io.open(pandoc.utils.stringify(m.needlist), "a"))
+  if m.funclist then
+    for line in io.lines(pandoc.utils.stringify(m.funclist)) do
+      local name, file, ln = line:match("^([^\t]+)\t([^\t]+)\t(%d+)$")
+      if name and funcs[name] == nil then funcs[name] = { file, ln } end
+    end
+  end
 end
 
 local function is_external(t)
@@ -124,19 +131,48 @@ local function code(el)
     elseif files["src/" .. name] then path = "src/" .. name
     elseif not name:find("/") and basenames[name] then path = basenames[name]
     end
-  elseif el.text:match("^lac_[%w_]+$") then
-    local b = basenames[el.text .. ".h"]
-    if b then path = b end
+  elseif el.text:match("^lac_[%w_]+ ?%(?%)?$") then
+    local fname = el.text:match("^(lac_[%w_]+)")
+    local f = funcs[fname]
+    if f then
+      local p = page_of(f[1])
+      if p then
+        return pandoc.Link({el}, rel(p) .. "#L" .. f[2]), false
+      end
+    end
+    local b = basenames[fname .. ".h"]
+    if b and fname == el.text then path = b end
   end
   if not path then return nil end
   local p = page_of(path)
   if not p then return nil end
+  -- a line of a chapter's program: its plain listing (the commented
+  -- program has no line numbers)
+  if line and path:match("^chapters/[^/]+/example%.c$") then p = path .. ".src.html" end
   -- false: not into the new link (its code span would be linked again)
   return pandoc.Link({el}, rel(p) .. (line and ("#L" .. line) or "")), false
 end
 
+-- an image alone in its paragraph (pandoc's implicit figure): a figure
+-- whose image links to the file itself (full size), with the caption
+-- (the image's text) under it and as its alt text
+local function figure(el)
+  if #el.content ~= 1 or el.content[1].t ~= "Image" then return nil end
+  local img = el.content[1]
+  if #img.caption == 0 then
+    error("an image without a caption (alt text) in " .. docdir .. ": " .. img.src)
+  end
+  local alt = pandoc.utils.stringify(img.caption)
+  local shown = pandoc.Image({pandoc.Str(alt)}, img.src, "", img.attr)
+  return pandoc.Div({
+    pandoc.Para({pandoc.Link({shown}, img.src, "full size")}),
+    pandoc.Div({pandoc.Para(img.caption)}, pandoc.Attr("", {"caption"}))
+  }, pandoc.Attr("", {"figure"}))
+end
+
 return {
   { Meta = meta },
+  { Para = figure },
   { Link = link, Image = image, Math = math },
   -- top down, so that code spans already inside a link are left alone
   { traverse = "topdown", Link = function(el) return el, false end,

@@ -25,6 +25,7 @@ find . \( -name .git -o -name build -o -path "./$OUT" \) -prune -o -type f -prin
   echo README.md
   echo chapters/README.md
   for d in chapters/[0-9][0-9]-*/; do
+    [ -f "${d}README.md" ] || continue      # a folder of the reader's: not the book
     echo "${d}README.md"
     ls "$d"*.md | grep -v '/README\.md$' || true
   done
@@ -32,6 +33,8 @@ find . \( -name .git -o -name build -o -path "./$OUT" \) -prune -o -type f -prin
 grep '\.md$' "$tmp/files" | grep -vxF -f "$tmp/book" > "$tmp/other" || true
 
 title() { sed -n 's/^# *//p' "$1" | head -n 1; }
+# the functions of src/, for links from their names to their definitions
+awk -f "$H/funcdefs.awk" $(find src -name '*.c' | sort) > "$tmp/funcs-def"
 # from a folder of the repository (or a file's) to its top: "", "../", ...
 rootdir() { [ "$1" = . ] && return 0; echo "$1" | sed 's|[^/][^/]*|..|g; s|$|/|'; }
 root() { rootdir "$(dirname "$1")"; }
@@ -42,13 +45,21 @@ page() {
   set -- -f markdown -t html5 --mathml --fail-if-warnings \
     --template="$H/template.html" --lua-filter="$H/links.lua" \
     -M docdir="$dir" -M filelist="$tmp/files" -M needlist="$tmp/need" \
+    -M funclist="$tmp/funcs-def" \
     -M pagetitle="$(title "$src")" -V root="$r"
   [ -n "$pv" ] && set -- "$@" -V prev="$r${pv%.md}.html" -V prevtitle="$(title "$pv")"
   [ -n "$nx" ] && set -- "$@" -V next="$r${nx%.md}.html" -V nexttitle="$(title "$nx")"
   mkdir -p "$(dirname "$dst")"
   echo "${dst#"$OUT/"}" >> "$OUT/pages.txt"
-  pandoc "$@" -o "$dst" "$src" || { echo "make-html: $src: see above" >&2
-                                    echo "$src" >> "$tmp/failed"; }
+  # <!-- include: FILE FUNCTION --> markers: the code, read from the source
+  in=$src
+  if grep -q '^<!-- include: ' "$src"; then
+    in="$tmp/include.md"
+    awk -v root="$r" -f "$H/include.awk" "$src" > "$in" ||
+      { echo "make-html: $src: an include marker names nothing" >&2; echo "$src" >> "$tmp/failed"; }
+  fi
+  pandoc "$@" -o "$dst" "$in" || { echo "make-html: $src: see above" >&2
+                                   echo "$src" >> "$tmp/failed"; }
 }
 
 prev=""
@@ -59,6 +70,19 @@ while [ $# -gt 0 ]; do
 done
 for f in $(cat "$tmp/other"); do
   page "$f" "$OUT/${f%.md}.html" "$(dirname "$f")" "" ""
+done
+
+# each chapter's example.c as a commented program (literate.awk): the
+# comments as text with their maths, the code as blocks; the plain listing
+# with line numbers beside it (example.c.src.html)
+for ex in chapters/[0-9][0-9]-*/example.c; do
+  [ -f "$(dirname "$ex")/README.md" ] || continue
+  d=$(dirname "$ex")
+  awk -v name="$ex" -v plain="example.c.src.html" \
+      -v title="$(title "$d/README.md" | sed 's/^\([0-9][0-9]\) .*/\1/') The commented program" \
+      -f "$H/literate.awk" "$ex" > "$tmp/literate.md"
+  page "$tmp/literate.md" "$OUT/$ex.html" "$d" "$d/README.md" ""
+  echo "=src:$ex" >> "$tmp/need"
 done
 
 # equations.md: the tags, sorted, one section per equation / section / item
@@ -91,6 +115,9 @@ page "$tmp/equations.md" "$OUT/equations.html" . "" ""
 # figures and the source pages the pages link to
 sort -u "$tmp/need" | while IFS= read -r f; do
   case $f in
+    =src:*) f=${f#=src:}; mkdir -p "$OUT/$(dirname "$f")"
+            awk -v name="$f" -v root="$(root "$f")" -f "$H/source.awk" "$f" > "$OUT/$f.src.html" ;;
+    chapters/[0-9][0-9]-*/example.c) ;;       # the commented program, above
     =*) f=${f#=}; mkdir -p "$OUT/$(dirname "$f")"; cp "$f" "$OUT/$f" ;;
     *)  mkdir -p "$OUT/$(dirname "$f")"
         awk -v name="$f" -v root="$(root "$f")" -f "$H/source.awk" "$f" > "$OUT/$f.html" ;;

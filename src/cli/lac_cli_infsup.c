@@ -36,7 +36,7 @@ const char lac_cli_infsup_help[] =
   "of the displacement norm (Dirichlet dofs eliminated) and M =\n"
   "diag(h_i |T^m_i cap Gamma_C|), h_i the diameter of macro-element i (an\n"
   "h-weighted L2 norm, the usual stand-in for the H^-1/2 norm).\n"
-  "See chapters/09-infsup/README.md and src/contact/lac_infsup.h.\n"
+  "See chapters/11-infsup/README.md and src/contact/lac_infsup.h.\n"
   "\n"
   "options:\n"
   "  --set KEY=VALUE   override a scene key (as for lac run), repeatable;\n"

@@ -4,7 +4,7 @@
  * The classical collocation of the non-penetration condition at the slave
  * nodes (see lac_contact.h, lac_contact_build_nts).  With non-matching
  * meshes it is known to fail the patch test and to make the pressure
- * oscillate [LAC §5.1]; lac keeps it to show that against LAC (chapter 09).
+ * oscillate [LAC §5.1]; lac keeps it to show that against LAC (chapter 11).
  */
 #include <math.h>
 #include <string.h>

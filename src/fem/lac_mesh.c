@@ -592,7 +592,7 @@ enum { CELL_OK, CELL_INVERTED, CELL_BAD };
 static const char hex_hint[] =
   "; an all-hex mesh made by subdividing tetrahedra tangles cells near a "
   "curved surface: cut the body into blocks of six four-sided faces and "
-  "make them transfinite (chapter 08, 'Hertz contact', hertz-sphere-hex.geo)";
+  "make them transfinite (chapter 10, 'Hertz contact', hertz-sphere-hex.geo)";
 
 /* Sign of det J at the nodes (but a pyramid's apex) and at the points of
  * q: all positive, all negative, or mixed/vanishing. */

@@ -107,6 +107,11 @@ size_t lac_render_ticks (double vmin, double vmax, double *tick, size_t max,
 void lac_render_tick_label (double v, double step, double vabs,
                             char *buf, size_t len);
 
+/* The words over the colour bar for a field's key (von_mises: "von Mises
+ * stress", radial_stress: "radial stress", stress_yy: "stress sigma_yy",
+ * ...); BUF (SIZE bytes) may hold them.  NULL for NULL. */
+const char *lac_render_field_words (const char *key, char *buf, size_t size);
+
 /* Width in pixels the colour bar needs right of the bar (ticks, labels). */
 int lac_render_colorbar_width (lac_render_font *font, double vmin,
                                double vmax, int scale);

@@ -271,6 +271,43 @@ lac_render_colorbar_width (lac_render_font *font, double vmin, double vmax,
   return 4 * scale + labels_width (font, vmin, vmax, scale);
 }
 
+/* The words over the colour bar for a field's key: the VTU / summary key
+ * names of lac (von_mises, radial_stress, displacement_x, stress_yy,
+ * lambda, ...) in words, any other key with its underscores as blanks. */
+const char *
+lac_render_field_words (const char *key, char *buf, size_t size)
+{
+  static const char *const words[][2] = {
+    { "von_mises", "von Mises stress" }, { "vm", "von Mises stress" },
+    { "radial_stress", "radial stress" },
+    { "displacement_magnitude", "displacement |u|" },
+    { "u", "displacement |u|" }, { "displacement", "displacement |u|" },
+    { "displacement_error", "error |u - u_exact|" },
+    { "u_R", "radial displacement u_R" }, { "u_r", "displacement u_r" },
+    { "lambda", "contact pressure lambda" }, { "gap", "mean gap" },
+    { "body", "body" }
+  };
+  if (!key)
+    return NULL;
+  for (size_t k = 0; k < sizeof words / sizeof *words; k++)
+    if (!strcmp (key, words[k][0]))
+      return words[k][1];
+  if (!strncmp (key, "displacement_", 13) && strlen (key) == 14)
+    snprintf (buf, size, "displacement u_%s", key + 13);
+  else if (!strncmp (key, "stress_", 7))
+    snprintf (buf, size, "stress sigma_%s", key + 7);
+  else if (!strncmp (key, "s_", 2) && strlen (key) == 4)
+    snprintf (buf, size, "stress sigma_%s", key + 2);
+  else
+    {
+      snprintf (buf, size, "%s", key);
+      for (char *c = buf; *c; c++)
+        if (*c == '_')
+          *c = ' ';
+    }
+  return buf;
+}
+
 void
 lac_render_colorbar (lac_render_font *font, unsigned char *rgba, int w, int h,
                      int x, int y, int bw, int bh, double vmin, double vmax,
@@ -305,7 +342,10 @@ lac_render_colorbar (lac_render_font *font, unsigned char *rgba, int w, int h,
                        scale, buf, ink);
     }
 
-  /* "label (units)" above the bar, right-aligned with the labels. */
+  /* "label (units)" above the bar, right-aligned with the labels; the
+   * label in words (lac_render_field_words). */
+  char wbuf[64];
+  label = lac_render_field_words (label, wbuf, sizeof wbuf);
   if ((label && *label) || (units && *units))
     {
       int tw, right = x + bw + 4 * scale

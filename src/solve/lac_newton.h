@@ -40,7 +40,7 @@
  *     2, 4, ... of them until they hold every body (restarted,
  *     held_start); from every multiplier active, the rule released the
  *     elements in tension a ring at a time: 19/22/24 iterations for the
- *     sphere on a rigid flat of chapter 08 (tet10 levels 0/1/2) against
+ *     sphere on a rigid flat of chapter 10 (tet10 levels 0/1/2) against
  *     3/5/5;
  *   - first contact: when the first solve of a loop had no active
  *     multiplier (bodies apart), or only those of a held start, only the
@@ -99,7 +99,7 @@
 /* The same after a held start: the first solve pressed the bodies on a
  * few elements, its penetrations are those of a load concentrated there,
  * not of a rigid approach; the zone is grown from its deepest elements
- * instead (measured on chapter 08's sphere on a rigid flat, tet10 levels
+ * instead (measured on chapter 10's sphere on a rigid flat, tet10 levels
  * 0/1/2: 7/10/- active-set iterations with 0.5, 4/6/8 with 0.9, 3/5/5
  * with 0.95, 7/6/5 with 0.99). */
 #define LAC_NEWTON_HELD_CONTACT 0.95

@@ -4,7 +4,7 @@
  *
  * Strategy (e) of solve/lac_strategy.h, for the 3D meshes whose Cholesky
  * factor does not fit in memory (a 1,029,000-dof hex8 cube needs 20.5 GB,
- * chapter 10).  It solves the augmented form of (*) of
+ * chapter 12).  It solves the augmented form of (*) of
  * solve/lac_system.h (solve/lac_augmented.h: adding C_A W_A times the
  * constraint changes neither U nor lambda),
  *
@@ -33,7 +33,7 @@
  *      by W_A^-1 (S_W^-1 = S^-1 + W_A lies between W_A and W_A + 1/s_min,
  *      lac_augmented.h).  GMRES meets C_A^T U = g_A only to its tolerance,
  *      relative to the forces: one correction solve follows.  The
- *      comparison of chapter 11 (option -lac_contact fieldsplit).
+ *      comparison of chapter 13 (option -lac_contact fieldsplit).
  *
  * The inactive multipliers keep their rows (lambda_i = 0), so that the
  * matrices keep their size and pattern when the statuses change and the
@@ -57,7 +57,7 @@
  * other processes run lac_petsc_serve: they wait for the root's commands
  * (build, new values, solve, free, memory, quit; one broadcast each) and
  * make the same collective PETSc calls with no data of their own.  One
- * petsc strategy at a time exists on the root when N > 1.  Chapter 11
+ * petsc strategy at a time exists on the root when N > 1.  Chapter 13
  * gives the design of a distributed assembly, the next step.
  *
  * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
@@ -69,7 +69,7 @@
  * for the blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega
  * W (> 0).  The defaults are those of an elastic body: nothing to tune.
  *
- * A build without PETSc (no LAC_HAVE_PETSC, chapter 11) compiles the same
+ * A build without PETSc (no LAC_HAVE_PETSC, chapter 13) compiles the same
  * interface: every function then fails with LAC_EDEP and the apt-get line.
  *
  * Ownership: the system and the coordinates are borrowed from set until
@@ -81,7 +81,7 @@
 #include "solve/lac_petsc_env.h"
 #include "solve/lac_system.h"
 
-#define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 11: 1 against 10) */
+#define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */
 
 /* The processes other than the root: follow the root's commands until it
  * finalizes (lac_petsc_finalize).  LAC_SUCCESS then; an error if called

@@ -1,5 +1,5 @@
 /* lac_petsc_env.c -- the processes of the petsc strategy
- *                    (see lac_petsc_env.h)                    [chapter 11]
+ *                    (see lac_petsc_env.h)                    [chapter 13]
  */
 #include "solve/lac_petsc_env.h"
 

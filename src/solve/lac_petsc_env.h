@@ -1,6 +1,6 @@
 /* lac_petsc_env.h -- the processes of the petsc strategy: MPI and PETSc
  *                    started and stopped, the root's commands, memory
- *                                                          [chapter 11]
+ *                                                          [chapter 13]
  *
  * lac on N MPI processes (mpirun -n N lac run ...): process 0, the root,
  * runs the scene; the others follow its commands (solve/lac_petsc.h,

@@ -1,7 +1,7 @@
 // sliver2d.geo -- hard case: the master ends 1e-8 h into a slave element
 //                                          (tests/hard/sliver2d.scene)
 //
-// chapters/09-infsup/narrow2d.geo with delta = 5e-9: the upper (slave)
+// chapters/11-infsup/narrow2d.geo with delta = 5e-9: the upper (slave)
 // block [0, 50] x [50, 100] has 4 * 2^level quad4 cells per side (h = 12.5
 // at level 0), its macro-elements (pairs of segments) H = 25 / 2^level;
 // the lower (master) block [0, Lm] x [0, 50], Lm = 25 + delta * H, covers

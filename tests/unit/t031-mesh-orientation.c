@@ -178,7 +178,7 @@ main (void)
                   "tangled hex8 rejected");
     check_message ("tag 78", "tangled hex8 message names the tag");
     check_message ("transfinite", "tangled hex8 message says how to mesh");
-    check_message ("chapter 08", "tangled hex8 message names the chapter");
+    check_message ("chapter 10", "tangled hex8 message names the chapter");
     lac_mesh_free (m);
   }
   /* a degenerate cell (two nodes at one place) too */

@@ -114,9 +114,9 @@ main (void)
            floating);
   compare ("taylor3d n=12", "chapters/08-experiments/taylor3d.scene", 2, t3n,
            floating_big);
-  compare ("spheres-axi", "chapters/08-experiments/spheres-axi.scene", 1, sa,
+  compare ("spheres-axi", "chapters/09-spheres-rates/spheres-axi.scene", 1, sa,
            held);
-  compare ("spheres3d", "chapters/08-experiments/spheres3d.scene", 1, s3,
+  compare ("spheres3d", "chapters/09-spheres-rates/spheres3d.scene", 1, s3,
            held_big);
   compare ("cylinder", "chapters/07-newton/cylinder-flat.scene", 1, cy,
            held);
@@ -133,7 +133,7 @@ main (void)
 
   /* split on bodies all held by their Dirichlet conditions: refused */
   sc = NULL;
-  r = run ("chapters/08-experiments/spheres-axi.scene", 1, sa,
+  r = run ("chapters/09-spheres-rates/spheres-axi.scene", 1, sa,
            LAC_STRATEGY_SPLIT, &sc, &st);
   check_status (st, LAC_EINVAL, "spheres-axi: split refused");
   check_message ("needs a body held by contact alone",

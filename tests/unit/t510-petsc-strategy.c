@@ -1,5 +1,5 @@
 /* t510: the petsc strategy against the augmented one on the Taylor patch
- *       test, and plain elasticity                 [LAC (17), §5.1, ch. 11]
+ *       test, and plain elasticity                 [LAC (17), §5.1, ch. 13]
  *
  * The patch test of t450 (two blocks stacked, non-matching meshes,
  * pressure 25 on top, exact lambda = -25) in 2D (quad4) and 3D (hex8,

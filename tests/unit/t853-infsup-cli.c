@@ -93,7 +93,7 @@ main (void)
   check_rel (value ("beta_h"), beta, 1e-6, "--sparse: same beta_h");
   check_true (strstr (out, "path = sparse") != NULL, "path = sparse");
   /* 2. */
-  const char *a2[] = { "infsup", "chapters/09-infsup/narrow2d.scene",
+  const char *a2[] = { "infsup", "chapters/11-infsup/narrow2d.scene",
                        "--vector", "--quiet", NULL };
   check_int (run (a2), 0, "narrow2d: exit status (stderr: %s)", err);
   size_t nmu = 0;

@@ -1,4 +1,4 @@
-/* t890-infsup-exercises.c -- the answers of chapters/09-infsup/exercises.md
+/* t890-infsup-exercises.c -- the answers of chapters/11-infsup/exercises.md
  *                                                   [LAC (10), App. A]
  *
  * Exercise 1 (one multiplier by hand): the unit square, one quad4, bottom

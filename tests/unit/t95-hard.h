@@ -19,7 +19,7 @@
  *
  * With LAC_HARD_TABLE=1 in the environment, hard_row prints one line
  * "row | case | k | iterations | beta_h | error | status" per case
- * (chapters/09-infsup/hard-cases.sh collects them into the table).
+ * (chapters/11-infsup/hard-cases.sh collects them into the table).
  *
  * Header-only (static inline: a test uses what it needs); every t95x/t96x
  * includes it.

@@ -16,7 +16,7 @@
  * pattern and the slave body carries it alone.  A coarse slave has few
  * multipliers and a large beta_h.  3D hex8 10 x 10 slave cells: 0.163
  * with 1 x 1 or 10 x 10 master cells.  Bounds asserted: 0.4 (2D), 0.1
- * (3D); the table is in chapters/09-infsup/README.md, "Hard cases".
+ * (3D); the table is in chapters/11-infsup/README.md, "Hard cases".
  */
 #include "t95-hard.h"
 

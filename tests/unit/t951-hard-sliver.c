@@ -19,7 +19,7 @@
  *    the unsupported strip perturbs the neighbouring multipliers);
  *  - epsilon = 1e-14 (below the criterion): the sliver keeps its
  *    multiplier.  The discrete problem is well posed (beta_h = 7.3e-5 in
- *    2D, ~ sqrt(delta): chapter 09, §5), and its solution is the uniform
+ *    2D, ~ sqrt(delta): chapter 11, §5), and its solution is the uniform
  *    state: lambda = -25 on both macro-elements.  The test asserts that
  *    the active set converges (1 iteration), U and lambda are finite and
  *    lambda is -25 to 1e-6, beta_h >= 0.5 sqrt(delta_macro).

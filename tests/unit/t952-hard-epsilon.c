@@ -14,7 +14,7 @@
  *    C is small, rounding is amplified like 1/delta); when it is dropped
  *    the total force still balances the load (1e-10);
  *  - beta_h >= epsilon (Theorem 2 with C = 1: measured beta_h / criterion
- *    is 30 .. 1e5, chapter 09 §7) and beta_h >= 0.5 sqrt(delta) (2D) or
+ *    is 30 .. 1e5, chapter 11 §7) and beta_h >= 0.5 sqrt(delta) (2D) or
  *    0.2 sqrt(delta) (3D), the measured law beta_h ~ sqrt(delta).
  *
  * delta_f = 1e-5 with epsilon = 1e-8 keeps a multiplier on delta = 5e-6

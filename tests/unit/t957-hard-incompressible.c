@@ -11,8 +11,8 @@
  * 2. The grazing bump of t953 with nu = 0.499: the active set converges
  *    (at most 15 iterations), complementarity, force balance.
  * Locking of linear elements shows in the error of a solution that is not
- * linear: chapters/09-infsup/hard-cases.sh runs the manufactured solution
- * of chapter 08 (manufactured2d.scene) with nu = 0 and 0.499: relative L2
+ * linear: chapters/11-infsup/hard-cases.sh runs the manufactured solution
+ * of chapter 09 (manufactured2d.scene) with nu = 0 and 0.499: relative L2
  * error of u, level 2, tri3 1.6e-2 -> 3.5e-1 (locking), quad4 4.4e-3 ->
  * 1.2e-2, tri6 7.6e-5 -> 3.7e-3.  That is the element, not the contact:
  * not a failure of this test.

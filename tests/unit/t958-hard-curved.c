@@ -2,7 +2,7 @@
  *       master                       [LAC §4.6, §5.2; issue 6 item 3]
  *
  * Two concentric quarter rings (plane strain: cylinders; axisymmetric:
- * spheres, the spheres-like case of chapter 08): an inner body
+ * spheres, the spheres-like case of chapter 09): an inner body
  * a = 50 < r < R = 75 and an outer body R < r < b = 100, same material
  * (E = 2000, nu = 0.3), pressure p = 25 on r = b, symmetry on both straight
  * sides.  Frictionless contact on r = R is then perfect bonding (no shear

@@ -1,7 +1,7 @@
 /* t990-accuracy-exercises.c -- the answers of
- * chapters/10-accuracy-cost/exercises.md                  [LAC §5.3; ch. 10]
+ * chapters/12-accuracy-cost/exercises.md                  [LAC §5.3; ch. 12]
  *
- * Everything is computed here from small runs of the chapter 08 scenes
+ * Everything is computed here from small runs of the chapter 09 scenes
  * (no files written); nothing depends on time, so the answers hold on any
  * machine (the times of the chapter come from bench/accuracy-cost.sh).
  *
@@ -67,8 +67,8 @@ run (const char *scene, const char *element, int level)
   return x;
 }
 
-#define M2D "chapters/08-experiments/manufactured2d.scene"
-#define M3D "chapters/08-experiments/manufactured3d.scene"
+#define M2D "chapters/09-spheres-rates/manufactured2d.scene"
+#define M3D "chapters/09-spheres-rates/manufactured3d.scene"
 
 static res q4[5], q8[4];
 
