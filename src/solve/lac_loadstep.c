@@ -17,11 +17,8 @@ lac_loadstep_free (lac_loadstep *ls)
     return;
   lac_newton_free (ls->loop);
   lac_free (ls->steps);
-  lac_free (ls->U_save);
-  lac_free (ls->lambda_save);
   lac_free (ls->U_old);
   lac_free (ls->lambda_old);
-  lac_free (ls->active_save);
   lac_free (ls);
 }
 
@@ -50,11 +47,8 @@ lac_loadstep_alloc (lac_nl *model, const lac_nl_opts *opts)
   lac_nl_model (model, &m);
   size_t n = m.n ? m.n : 1, ns = m.nslot ? m.nslot : 1;
   if (!(ls->loop = lac_newton_alloc (&m, &lo))
-      || !(ls->U_save = lac_calloc (n, sizeof (double)))
       || !(ls->U_old = lac_calloc (n, sizeof (double)))
-      || !(ls->lambda_save = lac_calloc (ns, sizeof (double)))
-      || !(ls->lambda_old = lac_calloc (ns, sizeof (double)))
-      || !(ls->active_save = lac_calloc (ns, 1)))
+      || !(ls->lambda_old = lac_calloc (ns, sizeof (double))))
     {
       lac_loadstep_free (ls);
       LAC_ERROR_NULL (LAC_ENOMEM, "load steps of %zu dofs", m.n);
@@ -70,26 +64,6 @@ push_step (lac_loadstep *ls, const lac_nl_step *r)
     LAC_ERROR (LAC_ENOMEM, "step records");
   ls->steps[ls->nsteps++] = *r;
   return LAC_SUCCESS;
-}
-
-static void
-save_state (lac_loadstep *ls)
-{
-  const lac_newton *s = ls->loop;
-  memcpy (ls->U_save, s->U, s->n * sizeof *s->U);
-  memcpy (ls->lambda_save, s->lambda, s->nslot * sizeof *s->lambda);
-  memcpy (ls->active_save, s->active, s->nslot);
-  ls->first_save = s->first;
-}
-
-static void
-restore_state (lac_loadstep *ls)
-{
-  lac_newton *s = ls->loop;
-  memcpy (s->U, ls->U_save, s->n * sizeof *s->U);
-  memcpy (s->lambda, ls->lambda_save, s->nslot * sizeof *s->lambda);
-  memcpy (s->active, ls->active_save, s->nslot);
-  s->first = ls->first_save;
 }
 
 int
@@ -141,9 +115,8 @@ sub_begin (lac_loadstep *ls)
   double tt = ls->t_prev + ls->dt;
   if (tt >= ls->t - 1e-12 * (ls->t - ls->t0))
     tt = ls->t;
-  save_state (ls);
   lac_nl_set_load (ls->model, tt);
-  lac_newton_begin (ls->loop);
+  lac_newton_begin (ls->loop);      /* the state to go back to on a cut */
   predict (ls, tt);
   ls->in_sub = 1;
 }
@@ -154,9 +127,8 @@ sub_done (lac_loadstep *ls)
 {
   const lac_newton *s = ls->loop;
   double len = ls->model->t - ls->t_prev;
-  memcpy (ls->U_old, ls->U_save, s->n * sizeof *ls->U_old);  /* at t_prev */
-  memcpy (ls->lambda_old, ls->lambda_save,
-          s->nslot * sizeof *ls->lambda_old);
+  memcpy (ls->U_old, s->U0, s->n * sizeof *ls->U_old);       /* at t_prev */
+  memcpy (ls->lambda_old, s->lambda0, s->nslot * sizeof *ls->lambda_old);
   ls->dt_old = len;
   if (ls->substeps && len > ls->dt_last * (1 + 1e-12))
     ls->grown++;                       /* longer than the one before */
@@ -182,7 +154,7 @@ cut (lac_loadstep *ls, int status)
     return 0;
   snprintf (ls->cut_msg, sizeof ls->cut_msg, "%s", lac_error_message ());
   lac_error_clear ();
-  restore_state (ls);
+  lac_newton_restart (ls->loop);
   ls->dt *= 0.5;
   ls->cuts++;
   ls->in_sub = 0;

@@ -84,10 +84,8 @@ typedef struct lac_loadstep
   double dt_min, dt_last;  /* sub-steps converged: shortest, last         */
   double start;          /* lac_seconds () at the step's beginning          */
   double time0[4];       /* time_assemble, _pairing, _solve, _factor then   */
-  /* the states a sub-step starts from and goes back to */
-  double *U_save, *lambda_save, *U_old, *lambda_old;   /* owned */
-  char *active_save;     /* owned                                           */
-  int first_save;
+  /* the converged state before the last one, for the predictor */
+  double *U_old, *lambda_old;   /* owned                                  */
   double dt_old;         /* the load factor between the two converged states
                             the predictor extrapolates (0: none yet)       */
 } lac_loadstep;

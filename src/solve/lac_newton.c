@@ -30,20 +30,20 @@
                              step on settled statuses from this residual:
                              quadratic convergence makes it the last     */
 
-struct lac_newton_work
+struct lac_newton_work  /* (a model has at most one column per slot) */
 {
-  size_t cap;            /* room of the column arrays                      */
-  double *klam;          /* cap: lambda per column, the unknown of (*)     */
-  char *kact;            /* cap: statuses per column                       */
-  double *klin;          /* cap: lambda of the linearization point         */
+  double *klam;          /* nslot: lambda per column, the unknown of (*)   */
+  char *kact;            /* nslot: statuses per column                     */
+  double *klin;          /* nslot: lambda of the linearization point       */
   double *x;             /* n: the solution of (*) (U or dU)               */
   double *dU;            /* n: the last step                               */
-  double *U0, *lam0;     /* n, nslot: the loop's start (predictor undone)  */
+  char *active0;         /* nslot: the statuses the loop began with        */
+  int first0;            /* and s->first then                             */
   double *lam_step;      /* nslot: lambda before the last solve           */
   double *lam_lin;       /* nslot: lambda before the statuses of step 2   */
   char *want;            /* nslot: statuses asked for by the rule         */
   long *col;             /* nslot: the column of the slot (-1: none)      */
-  double *pair;          /* 2 max(nslot, cap): (value, index) to sort      */
+  double *pair;          /* 2 nslot: (value, index) to sort                */
   unsigned long long *seen;  /* checksums of the statuses of the loop     */
   size_t nseen, capseen;
   int it;                /* solves in the loop                            */
@@ -80,8 +80,7 @@ work_free (lac_newton_work *w)
   lac_free (w->klin);
   lac_free (w->x);
   lac_free (w->dU);
-  lac_free (w->U0);
-  lac_free (w->lam0);
+  lac_free (w->active0);
   lac_free (w->lam_step);
   lac_free (w->lam_lin);
   lac_free (w->want);
@@ -100,7 +99,9 @@ lac_newton_free (lac_newton *s)
   if (!s)
     return;
   lac_free (s->U);
+  lac_free (s->U0);
   lac_free (s->lambda);
+  lac_free (s->lambda0);
   lac_free (s->d);
   lac_free (s->active);
   lac_free (s->hist);
@@ -134,10 +135,12 @@ lac_newton_alloc (const lac_contact_model *m, const lac_newton_opts *opts)
   s->first = 1;
   size_t n = s->n ? s->n : 1, ns = s->nslot ? s->nslot : 1;
   lac_newton_work *w = s->w;
-  double **per_dof[] = { &s->U, &w->x, &w->dU, &w->U0 };
-  double **per_slot[] = { &s->lambda, &s->d, &w->lam0, &w->lam_step,
-                          &w->lam_lin };
+  double **per_dof[] = { &s->U, &s->U0, &w->x, &w->dU };
+  double **per_slot[] = { &s->lambda, &s->lambda0, &s->d, &w->lam_step,
+                          &w->lam_lin, &w->klam, &w->klin };
   int ok = (s->active = lac_calloc (ns, 1)) && (w->want = lac_calloc (ns, 1))
+           && (w->active0 = lac_calloc (ns, 1))
+           && (w->kact = lac_calloc (ns, 1))
            && (w->col = lac_calloc (ns, sizeof *w->col))
            && (w->pair = lac_calloc (2 * ns, sizeof *w->pair));
   for (size_t j = 0; j < sizeof per_dof / sizeof *per_dof; j++)
@@ -151,32 +154,6 @@ lac_newton_alloc (const lac_contact_model *m, const lac_newton_opts *opts)
                       "and %zu macro-elements", s->n, s->nslot);
     }
   return s;
-}
-
-/* Room for k columns. */
-static int
-columns (lac_newton *s, size_t k)
-{
-  lac_newton_work *w = s->w;
-  if (k <= w->cap && w->klam)
-    return LAC_SUCCESS;
-  size_t c = k > 2 * w->cap ? k : 2 * w->cap;
-  lac_free (w->klam);
-  lac_free (w->kact);
-  lac_free (w->klin);
-  lac_free (w->pair);
-  w->klam = lac_calloc (c + 1, sizeof *w->klam);
-  w->kact = lac_calloc (c + 1, 1);
-  w->klin = lac_calloc (c + 1, sizeof *w->klin);
-  w->pair = lac_calloc (2 * (c > s->nslot ? c : s->nslot) + 2,
-                        sizeof *w->pair);
-  if (!w->klam || !w->kact || !w->klin || !w->pair)
-    {
-      w->cap = 0;
-      LAC_ERROR (LAC_ENOMEM, "%zu multipliers", k);
-    }
-  w->cap = c;
-  return LAC_SUCCESS;
 }
 
 size_t
@@ -326,15 +303,19 @@ evaluate (lac_newton *s, lac_newton_record *rec)
     {
       int status = t->evaluate (s->model.self, s->U, tangent, &s->pt);
       double merit = HUGE_VAL;
-      if (!status && (status = columns (s, s->pt.k)) == LAC_SUCCESS)
+      if (!status && s->pt.k > s->nslot)
+        status = LAC_ERRMSG (LAC_ESANITY, "the %s model gives %zu columns "
+                             "for %zu macro-elements", t->name, s->pt.k,
+                             s->nslot);
+      if (!status)
         {
           residuals (s, &rec->residual, &rec->gap_residual);
           merit = fmax (rec->residual, rec->gap_residual);
         }
       if (status == LAC_ESING && w->it == 0 && s->predicted)
         {                             /* the predictor turned a cell inside */
-          memcpy (s->U, w->U0, s->n * sizeof *s->U);   /* out: without it */
-          memcpy (s->lambda, w->lam0, s->nslot * sizeof *s->lambda);
+          memcpy (s->U, s->U0, s->n * sizeof *s->U);   /* out: without it */
+          memcpy (s->lambda, s->lambda0, s->nslot * sizeof *s->lambda);
           s->predicted = 0;
           lac_error_clear ();
           continue;
@@ -751,8 +732,10 @@ lac_newton_begin (lac_newton *s)
   s->restarted = 0;
   s->held_start = 0;
   s->nhist0 = s->nhist;
-  memcpy (w->U0, s->U, s->n * sizeof *s->U);
-  memcpy (w->lam0, s->lambda, s->nslot * sizeof *s->lambda);
+  memcpy (s->U0, s->U, s->n * sizeof *s->U);
+  memcpy (s->lambda0, s->lambda, s->nslot * sizeof *s->lambda);
+  memcpy (w->active0, s->active, s->nslot);
+  w->first0 = s->first;
   if (s->strategy && lac_strategy_fallback (s->strategy))
     {
       lac_strategy_free (s->strategy);    /* try the Cholesky factor again */
@@ -760,6 +743,15 @@ lac_newton_begin (lac_newton *s)
       w->strategy_set = 0;
     }
   return LAC_SUCCESS;
+}
+
+void
+lac_newton_restart (lac_newton *s)
+{
+  memcpy (s->U, s->U0, s->n * sizeof *s->U);
+  memcpy (s->lambda, s->lambda0, s->nslot * sizeof *s->lambda);
+  memcpy (s->active, s->w->active0, s->nslot);
+  s->first = s->w->first0;
 }
 
 static int

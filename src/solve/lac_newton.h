@@ -161,6 +161,8 @@ typedef struct lac_newton
   lac_newton_opts opts;
   size_t n, nslot;
   double *U;             /* owned, n: displacement                        */
+  double *U0, *lambda0;  /* owned, n and nslot: U and lambda when the loop
+                            began (lac_newton_begin)                     */
   double *lambda;        /* owned, nslot: multiplier of macro-element m
                             (0: inactive or no column)                   */
   double *d;             /* owned, nslot: its mean gap at the last
@@ -198,6 +200,9 @@ int lac_newton_begin (lac_newton *s);
  * finds the loop converged, an error status otherwise (LAC_EMAXITER after
  * opts.maxit solves or when the residual diverges, with a message). */
 int lac_newton_iterate (lac_newton *s);
+/* Back to U, lambda and the statuses the loop began with (a failed load
+ * step is cut and made again from there: solve/lac_loadstep.h). */
+void lac_newton_restart (lac_newton *s);
 /* begin, then iterate to the end. */
 int lac_newton_solve (lac_newton *s);
 
