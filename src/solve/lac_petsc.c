@@ -48,55 +48,15 @@ lac_petsc_serve (void)
   return NO_PETSC (__func__);
 }
 
-lac_petsc *
-lac_petsc_alloc (double omega)
+/* The only operation: the others are never reached. */
+static void *
+petsc_alloc (void)
 {
-  (void) omega;
   NO_PETSC (__func__);
   return NULL;
 }
 
-void
-lac_petsc_free (lac_petsc *s)
-{
-  (void) s;
-}
-
-void
-lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x)
-{
-  (void) s, (void) dim, (void) x;
-}
-
-int
-lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
-{
-  (void) s, (void) sys;
-  return NO_PETSC (__func__);
-}
-
-int
-lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                 const double *g, double rtol, double *U, double *lambda)
-{
-  (void) s, (void) active, (void) f, (void) g, (void) rtol, (void) U;
-  (void) lambda;
-  return NO_PETSC (__func__);
-}
-
-void
-lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c)
-{
-  (void) s;
-  memset (c, 0, sizeof *c);
-}
-
-const char *
-lac_petsc_method (const lac_petsc *s)
-{
-  (void) s;
-  return "none (built without PETSc)";
-}
+const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 
 #else /* LAC_HAVE_PETSC */
 
@@ -117,7 +77,7 @@ enum { PROJECTED, FIELDSPLIT };   /* the contact solvers (-lac_contact)  */
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 
-struct lac_petsc
+typedef struct lac_petsc
 {
   double omega;                    /* W_i = omega / s_i                   */
   int rank, size, root;            /* root: rank 0                        */
@@ -161,12 +121,12 @@ struct lac_petsc
   double *mx;                      /* owned, chunk: its values            */
   lac_solve_counts counts;
   char method[200];
-};
+} lac_petsc;
 
 /* ---- the object --------------------------------------------------------- */
 
-lac_petsc *
-lac_petsc_alloc (double omega)
+static void *
+petsc_alloc (void)
 {
   lac_petsc *s;
   PetscBool set = PETSC_FALSE;
@@ -175,7 +135,7 @@ lac_petsc_alloc (double omega)
     return NULL;
   if (!(s = lac_calloc (1, sizeof *s)))
     LAC_ERROR_NULL (LAC_ENOMEM, "petsc strategy");
-  s->omega = omega;
+  s->omega = LAC_PETSC_OMEGA;
   PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL);
   PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
                          &set);
@@ -194,48 +154,27 @@ lac_petsc_alloc (double omega)
   return s;
 }
 
+#define COUNT(a) (sizeof (a) / sizeof *(a))
+
 static void
 free_petsc (lac_petsc *s)
 {
-  KSPDestroy (&s->ku);
-  KSPDestroy (&s->kp);
-  KSPDestroy (&s->kg);
-  KSPDestroy (&s->ks);
+  KSP *ksp[] = { &s->ku, &s->kp, &s->kg, &s->ks, &s->kl };
+  Mat *mat[] = { &s->G, &s->Ah, &s->A, &s->Bt, &s->B, &s->D, &s->Sp, &s->Kw,
+                 &s->Bl, &s->Gl };
+  Vec *vec[] = { &s->bu, &s->xu, &s->ru, &s->tu, &s->u0, &s->fw, &s->tk,
+                 &s->sk, &s->dk, &s->gk, &s->b, &s->x, &s->r, &s->dx,
+                 &s->useq, &s->lseq, &s->vl, &s->ul, &s->tl, &s->tg,
+                 &s->sl };
+  for (size_t i = 0; i < COUNT (ksp); i++)
+    KSPDestroy (ksp[i]);
   PCDestroy (&s->pg);
-  MatDestroy (&s->G);
-  MatDestroy (&s->Ah);
-  MatDestroy (&s->A);
-  MatDestroy (&s->Bt);
-  MatDestroy (&s->B);
-  MatDestroy (&s->D);
-  MatDestroy (&s->Sp);
-  MatDestroy (&s->Kw);
-  VecDestroy (&s->bu);
-  VecDestroy (&s->xu);
-  VecDestroy (&s->ru);
-  VecDestroy (&s->tu);
-  VecDestroy (&s->u0);
-  VecDestroy (&s->fw);
-  VecDestroy (&s->tk);
-  VecDestroy (&s->sk);
-  VecDestroy (&s->dk);
-  VecDestroy (&s->gk);
-  VecDestroy (&s->b);
-  VecDestroy (&s->x);
-  VecDestroy (&s->r);
-  VecDestroy (&s->dx);
-  VecDestroy (&s->useq);
-  VecDestroy (&s->lseq);
+  for (size_t i = 0; i < COUNT (mat); i++)
+    MatDestroy (mat[i]);
+  for (size_t i = 0; i < COUNT (vec); i++)
+    VecDestroy (vec[i]);
   VecScatterDestroy (&s->gu);
   VecScatterDestroy (&s->gl);
-  KSPDestroy (&s->kl);
-  MatDestroy (&s->Bl);
-  MatDestroy (&s->Gl);
-  VecDestroy (&s->vl);
-  VecDestroy (&s->ul);
-  VecDestroy (&s->tl);
-  VecDestroy (&s->tg);
-  VecDestroy (&s->sl);
   lac_free (s->mi);
   lac_free (s->mx);
   s->mi = NULL;
@@ -270,9 +209,10 @@ free_arrays (lac_petsc *s)
   s->have_stat = 0;
 }
 
-void
-lac_petsc_free (lac_petsc *s)
+static void
+petsc_free (void *w)
 {
+  lac_petsc *s = w;
   if (!s)
     return;
   if (s->root && s->built && s->size > 1)
@@ -285,22 +225,26 @@ lac_petsc_free (lac_petsc *s)
   lac_free (s);
 }
 
-void
-lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x)
+static void
+petsc_set_coordinates (void *w, int dim, const double *x)
 {
+  lac_petsc *s = w;
   s->dim = dim;
   s->coords = x;
 }
 
-void
-lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c)
+static void
+petsc_get_counts (const void *w, lac_solve_counts *c)
 {
+  const lac_petsc *s = w;
   *c = s->counts;
+  c->processes = s->size;
 }
 
-const char *
-lac_petsc_method (const lac_petsc *s)
+static const char *
+petsc_method (const void *w)
 {
+  const lac_petsc *s = w;
   return s->method[0] ? s->method : "petsc (not set)";
 }
 
@@ -940,9 +884,10 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   return build (s, &c);
 }
 
-int
-lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
+static int
+petsc_set (void *w, const lac_contact_system *sys)
 {
+  lac_petsc *s = w;
   unsigned long long hK = lac_csc_pattern_hash (sys->K);
   unsigned long long hC = sys->C ? lac_csc_pattern_hash (sys->C) : 0;
   size_t k = sys->C ? sys->C->ncol : 0;
@@ -1430,14 +1375,15 @@ load_vector (lac_petsc *s, const double *f, const double *g, double *x)
     }
 }
 
-int
-lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                 const double *g, double rtol, double *U, double *lambda)
+static int
+petsc_solve (void *w, const char *active, const double *f, const double *g,
+             double rtol, double *U, double *lambda)
 {
+  lac_petsc *s = w;
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_SOLVE, .rtol = rtol };
   int status;
   if (!s->sys || !s->built)
-    LAC_ERROR (LAC_EINVAL, "lac_petsc_set was not called");
+    LAC_ERROR (LAC_EINVAL, "petsc: set was not called");
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
   if ((status = update (s, active)))
@@ -1501,5 +1447,11 @@ lac_petsc_serve (void)
   lac_free (s);
   return status;
 }
+
+const lac_strategy_ops lac_petsc_ops = {
+  .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
+  .solve = petsc_solve, .get_counts = petsc_get_counts,
+  .method = petsc_method, .set_coordinates = petsc_set_coordinates
+};
 
 #endif /* LAC_HAVE_PETSC */

@@ -41,7 +41,7 @@
  * Without multipliers (k = 0, plain elasticity) K U = f is solved by
  * conjugate gradients and GAMG.  The near-null space of the multigrid is
  * the rigid motions of the nodal coordinates (MatNullSpaceCreateRigidBody:
- * 3 in 2D, 6 in 3D) when they are given (lac_petsc_set_coordinates), the
+ * 3 in 2D, 6 in 3D) when they are given (lac_strategy_set_coordinates), the
  * constants of each component otherwise (the axisymmetric model, whose
  * only rigid motion is the translation along the axis).  Tolerances are
  * on the true, unpreconditioned residual ||b - A x|| / ||b|| of (*W) (of
@@ -69,11 +69,16 @@
  * for the blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega
  * W (> 0).  The defaults are those of an elastic body: nothing to tune.
  *
- * A build without PETSc (no LAC_HAVE_PETSC, chapter 11) compiles the same
- * interface: every function then fails with LAC_EDEP and the apt-get line.
- *
- * Ownership: the system and the coordinates are borrowed from set until
- * the next set or lac_petsc_free.
+ * The operations of the type petsc of solve/lac_strategy.h: alloc starts
+ * MPI and PETSc if nobody did (lac_petsc_initialize) and reads
+ * -lac_contact and -lac_omega; set_coordinates (before set) gives the
+ * rigid motions; set distributes K_W's pattern (kept while the patterns
+ * of K and C stay; new numbers: set again); solve's rtol is the relative
+ * unpreconditioned residual of (*W); method says what solves, e.g.
+ * "projected cg + gamg on K_W, 2 processes"; the counts give the
+ * processes.  A build without PETSc (no LAC_HAVE_PETSC, chapter 11)
+ * compiles the same: alloc and lac_petsc_serve fail with LAC_EDEP and the
+ * apt-get line.
  */
 #ifndef LAC_PETSC_H
 #define LAC_PETSC_H
@@ -88,25 +93,6 @@
  * on the root. */
 int lac_petsc_serve (void);
 
-typedef struct lac_petsc lac_petsc;     /* opaque */
-
-lac_petsc *lac_petsc_alloc (double omega);
-void lac_petsc_free (lac_petsc *s);      /* NULL allowed */
-/* The nodal coordinates (dof = dim*node + comp, the mesh's x; borrowed,
- * n entries) for the rigid motions; NULL: constants per component.
- * Before lac_petsc_set. */
-void lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x);
-/* Borrow the system (C NULL: no multipliers); distribute K_W's pattern
- * (kept while the patterns of K and C stay; new numbers: set again). */
-int lac_petsc_set (lac_petsc *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active` (NULL when k = 0),
- * right-hand sides f, g (NULL: F, G); U and lambda are the start (warm
- * start) on entry, the solution on return (lambda = 0 where inactive).
- * rtol: relative unpreconditioned residual of (*W). */
-int lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                     const double *g, double rtol, double *U, double *lambda);
-void lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c);
-/* What is solved, e.g. "gmres + fieldsplit(gamg, W), 2 processes". */
-const char *lac_petsc_method (const lac_petsc *s);
+extern const lac_strategy_ops lac_petsc_ops;
 
 #endif /* LAC_PETSC_H */
