@@ -396,15 +396,17 @@ launched_processes (void)
   return v ? atoi (v) : 1;
 }
 
-/* MPI and PETSc, when the run needs them: the petsc strategy, PETSc
- * options, or a launcher's processes (lac_petsc_initialize fails with
- * the install line in a build without PETSc).  *rank: this process. */
+/* MPI and PETSc, when the run needs them: a strategy whose type solves
+ * on the MPI processes, PETSc options, or a launcher's processes
+ * (lac_petsc_initialize fails with the install line in a build without
+ * PETSc).  *rank: this process. */
 static int
 start_processes (const cmdline *c, int *rank)
 {
+  const lac_strategy_type *t = lac_strategy_type_of (c->strategy);
   int size;
   *rank = 0;
-  if (c->strategy != LAC_STRATEGY_PETSC && !c->petsc_options
+  if (!(t && t->processes) && !c->petsc_options
       && launched_processes () <= 1)
     return EXIT_SUCCESS;
   if (lac_petsc_initialize (c->petsc_options))
