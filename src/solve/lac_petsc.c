@@ -94,6 +94,8 @@ typedef struct lac_petsc
                                       touches them), their pattern (CSR)  */
   double *cx;                      /* owned: their values                 */
   double *s, *w;                   /* owned, k: c_i^T diag(K)^-1 c_i, W   */
+  double kappa;                    /* the mean of diag(K): PETSc's K_W and
+                                      f_W are divided by it              */
   char *stat;                      /* owned, k: statuses of the matrices  */
   int have_stat, new_numbers;
   double *acc, *xv, *yv;           /* owned, n: scratch                   */
@@ -519,6 +521,23 @@ to_root (const lac_petsc *s, VecScatter sc, Vec v, Vec seq, double *y)
   return LAC_SUCCESS;
 }
 
+/* The root: its nodal coordinates centred on their mean and divided by
+ * their largest distance from it, into xv (n): the rigid motions made of
+ * them do not depend on where the origin lies nor on the unit of length. */
+static const double *
+unit_coordinates (lac_petsc *s)
+{
+  size_t dim = (size_t) s->bs, nn = s->n / dim;
+  double c[3] = { 0, 0, 0 }, r = 0;
+  for (size_t j = 0; j < s->n; j++)
+    c[j % dim] += s->coords[j] / (double) nn;
+  for (size_t j = 0; j < s->n; j++)
+    r = fmax (r, fabs (s->coords[j] - c[j % dim]));
+  for (size_t j = 0; j < s->n; j++)
+    s->xv[j] = (s->coords[j] - c[j % dim]) / (r > 0 ? r : 1.0);
+  return s->xv;
+}
+
 /* The rigid motions of the nodal coordinates as K_W's near-null space. */
 static int
 near_null_space (lac_petsc *s)
@@ -529,7 +548,8 @@ near_null_space (lac_petsc *s)
   if (!s->coords_given)
     return LAC_SUCCESS;
   TRY (VecDuplicate (s->xu, &xc));
-  if ((status = to_dist (s, s->gu, s->useq, s->coords, xc)))
+  if ((status = to_dist (s, s->gu, s->useq, s->root ? unit_coordinates (s)
+                         : NULL, xc)))
     return status;
   TRY (MatNullSpaceCreateRigidBody (xc, &nsp));
   TRY (MatSetNearNullSpace (s->Kw, nsp));
@@ -884,6 +904,24 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   return build (s, &c);
 }
 
+/* The mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
+ * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
+ * against gaps: tuned as it is), so that PETSc sees the same numbers
+ * whatever the units (its GAMG with the rigid motions is not
+ * scale-invariant: with lengths and moduli scaled by powers of two, the
+ * results changed in their last bits, which the projected CG amplifies to
+ * 1e-9; chapter 11). */
+static double
+mean_diagonal (const lac_csc *K)
+{
+  double sum = 0;
+  for (size_t j = 0; j < K->ncol; j++)
+    for (int p = K->p[j]; p < K->p[j + 1]; p++)
+      if ((size_t) K->i[p] == j)
+        sum += fabs (K->x[p]);
+  return sum > 0 ? sum / (double) K->ncol : 1.0;
+}
+
 static int
 petsc_set (void *w, const lac_contact_system *sys)
 {
@@ -909,15 +947,17 @@ petsc_set (void *w, const lac_contact_system *sys)
   s->sys = sys;
   if (k)
     lac_system_column_scales (s->sys, s->xv, s->s);
+  s->kappa = s->mode == FIELDSPLIT ? 1.0 : mean_diagonal (sys->K);
   s->new_numbers = 1;
   return LAC_SUCCESS;
 }
 
 /* ---- collective: the values for the statuses ---------------------------- */
 
-/* Values of contact row c of K_W = K + C diag(w) C^T into cx. */
+/* Values of contact row c of K_W = K + C diag(w) C^T, times sc, into
+ * cx. */
 static void
-contact_values (lac_petsc *s, PetscInt c)
+contact_values (lac_petsc *s, PetscInt c, double sc)
 {
   const lac_csc *K = s->sys->K, *C = s->sys->C, *Ct = s->Ct;
   PetscInt j = s->crow[c];
@@ -933,7 +973,7 @@ contact_values (lac_petsc *s, PetscInt c)
     }
   for (PetscInt t = s->cp[c]; t < s->cp[c + 1]; t++)
     {
-      s->cx[t] = s->acc[s->ci[t]];
+      s->cx[t] = s->acc[s->ci[t]] * sc;
       s->acc[s->ci[t]] = 0;
     }
 }
@@ -1001,7 +1041,7 @@ insert_kw (lac_petsc *s, int all)
           PetscInt c0 = c, m = row_pattern (s, j, &c, &cols);
           const double *x = c > c0 ? s->cx + s->cp[c0] : K->x + K->p[j];
           if (c > c0)
-            contact_values (s, c0);
+            contact_values (s, c0, all ? 1.0 : 1 / s->kappa);
           else if (!all)
             continue;
           if (p > 0)
@@ -1067,7 +1107,7 @@ insert_multipliers (lac_petsc *s)
     {
       int on = s->stat[i] && s->w[i] > 0;
       TRY (MatSetValue (s->D, i, i, on ? 0.0 : 1.0, INSERT_VALUES));
-      TRY (MatSetValue (s->Sp, i, i, on ? -1 / s->w[i] : 1.0,
+      TRY (MatSetValue (s->Sp, i, i, on ? -s->kappa / s->w[i] : 1.0,
                         INSERT_VALUES));
     }
   for (size_t i = 0; i < s->k; i++)
@@ -1115,6 +1155,8 @@ update_values (lac_petsc *s, const lac_petsc_command *c)
                : s->size > 1 ? receive_rows (s) : LAC_SUCCESS, st;
   if ((st = assemble (s->Kw)))
     return st;
+  if (c->all)                             /* dimensionless for PETSc */
+    TRY (MatScale (s->Kw, 1 / c->scale));
   if (s->B && !status && s->root)
     status = insert_multipliers (s);
   if (s->B && (st = assemble (s->B)))
@@ -1140,7 +1182,7 @@ static int
 update (lac_petsc *s, const char *active)
 {
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_UPDATE,
-                          .all = s->new_numbers };
+                          .all = s->new_numbers, .scale = s->kappa };
   int status;
   if (!s->new_numbers && s->have_stat
       && (s->k == 0 || memcmp (active, s->stat, s->k) == 0))
@@ -1230,12 +1272,14 @@ projected_start (lac_petsc *s, Vec gl)
 }
 
 /* projected, after CG: U = u0 + x (in xu), lambda = (B^T B + D)^-1 B^T
- * (f_W - K_W U) (in sk), and the relative true residual of (*W):
- * [f_W - K_W U - B lambda; gl - B^T U] against [f_W; gl]. */
+ * (f_W - K_W U) (in sk), and the relative true residual of (*W), each
+ * block in its own unit (the larger of the two): the forces f_W - K_W U
+ * - B lambda against f_W (2-norms, as the CG's), the gaps gl - B^T U
+ * against |gl| + |B^T| |U| (max-norms). */
 static PetscErrorCode
 projected_finish (lac_petsc *s, Vec gl, double *res)
 {
-  PetscReal r1, r2, b1, b2;
+  PetscReal r1, r2, b1, b2, nB, nU;
   PetscCall (VecAXPY (s->xu, 1.0, s->u0));
   PetscCall (MatMult (s->Kw, s->xu, s->ru));
   PetscCall (VecAYPX (s->ru, -1.0, s->fw));
@@ -1246,10 +1290,12 @@ projected_finish (lac_petsc *s, Vec gl, double *res)
   PetscCall (VecNorm (s->ru, NORM_2, &r1));
   PetscCall (MatMultTranspose (s->B, s->xu, s->tk));
   PetscCall (VecAYPX (s->tk, -1.0, gl));
-  PetscCall (VecNorm (s->tk, NORM_2, &r2));
+  PetscCall (VecNorm (s->tk, NORM_INFINITY, &r2));
   PetscCall (VecNorm (s->fw, NORM_2, &b1));
-  PetscCall (VecNorm (gl, NORM_2, &b2));
-  *res = sqrt (r1 * r1 + r2 * r2) / fmax (sqrt (b1 * b1 + b2 * b2), 1e-300);
+  PetscCall (VecNorm (gl, NORM_INFINITY, &b2));
+  PetscCall (MatNorm (s->B, NORM_1, &nB));              /* |B^T|_inf */
+  PetscCall (VecNorm (s->xu, NORM_INFINITY, &nU));
+  *res = fmax (r1 / fmax (b1, 1e-300), r2 / fmax (b2 + nB * nU, 1e-300));
   return 0;
 }
 
@@ -1259,7 +1305,7 @@ static int
 step_projected (lac_petsc *s, const lac_petsc_command *c, const double *fw,
                 const double *g, double *U, double *lambda)
 {
-  PetscReal b1, b2;
+  PetscReal b1;
   double res = 0;
   int status;
   if ((status = to_dist (s, s->gu, s->useq, fw, s->fw))
@@ -1267,11 +1313,10 @@ step_projected (lac_petsc *s, const lac_petsc_command *c, const double *fw,
       || (status = to_dist (s, s->gu, s->useq, U, s->xu)))
     return status;
   TRY (projected_start (s, s->gk));
-  TRY (VecNorm (s->fw, NORM_2, &b1));
-  TRY (VecNorm (s->gk, NORM_2, &b2));
+  TRY (VecNorm (s->fw, NORM_2, &b1));     /* the CG's residual: forces */
   TRY (KSPSetInitialGuessNonzero (s->kp, PETSC_TRUE));
-  TRY (KSPSetTolerances (s->kp, 0.0, c->rtol * sqrt (b1 * b1 + b2 * b2),
-                         PETSC_DEFAULT, KSP_MAXIT));
+  TRY (KSPSetTolerances (s->kp, 0.0, c->rtol * b1, PETSC_DEFAULT,
+                         KSP_MAXIT));
   TRY (KSPSolve (s->kp, s->bu, s->xu));
   TRY (projected_finish (s, s->gk, &res));
   if ((status = check_ksp (s, s->kp, res, "projected CG on (*W)")))
@@ -1394,14 +1439,16 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
       if (active[i])
         s->idx[s->na++] = i;
       s->rhs[i] = active[i] ? -g[i] : 0.0;
-      s->lst[i] = active[i] ? lambda[i] : 0.0;
+      s->lst[i] = active[i] ? lambda[i] / s->kappa : 0.0;
     }
   load_vector (s, f, g, s->xv);
+  for (size_t j = 0; j < s->n; j++)
+    s->xv[j] /= s->kappa;                          /* f_W / kappa */
   if ((status = lac_petsc_command_send (&c))
       || (status = step_solve (s, &c, s->xv, s->rhs, U, s->lst)))
     return status;
   for (size_t i = 0; i < s->k; i++)
-    lambda[i] = active[i] ? s->lst[i] : 0.0;
+    lambda[i] = active[i] ? s->lst[i] * s->kappa : 0.0;
   return LAC_SUCCESS;
 }
 

@@ -41,12 +41,18 @@
  * Without multipliers (k = 0, plain elasticity) K U = f is solved by
  * conjugate gradients and GAMG.  The near-null space of the multigrid is
  * the rigid motions of the nodal coordinates (MatNullSpaceCreateRigidBody:
- * 3 in 2D, 6 in 3D) when they are given (lac_strategy_set_coordinates), the
- * constants of each component otherwise (the axisymmetric model, whose
- * only rigid motion is the translation along the axis).  Tolerances are
- * on the true, unpreconditioned residual ||b - A x|| / ||b|| of (*W) (of
- * K U = f when k = 0), which is reported with the iterations of every
- * solve.
+ * 3 in 2D, 6 in 3D) when they are given (lac_strategy_set_coordinates:
+ * centred on their mean and divided by their largest distance from it
+ * first), the constants of each component otherwise (the axisymmetric
+ * model, whose only rigid motion is the translation along the axis).
+ * Tolerances are on the true, unpreconditioned residual ||b - A x|| /
+ * ||b||: of K U = f when k = 0; of the forces of (*W) for the projected
+ * CG, whose constraint rows hold to rounding, so that no tolerance adds
+ * forces to gaps and nothing depends on the units (the same scene in mm
+ * and MPa or in m and Pa: chapter 11); fieldsplit's GMRES takes the norm
+ * of the whole of (*W), forces and gaps together.  The residual reported
+ * with the iterations of every solve is, for the projected CG, the larger
+ * of the relative residuals of the two rows of (*W), each in its unit.
  *
  * Processes.  The rows of the matrices and vectors are cut in N
  * contiguous ranges, whole nodes for U, one range per MPI process, and so
