@@ -128,8 +128,8 @@ lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
                      size_t nfree)
 {
   const lac_strategy_type *t = lac_strategy_type_of (want);
-  if (t)
-    return applies (t, nfree) ? want : refuse (t, nfree);
+  if (t)                         /* without contact (k = 0) any type */
+    return k == 0 || applies (t, nfree) ? want : refuse (t, nfree);
   if (want != LAC_STRATEGY_AUTO)
     return want;
   for (int j = 1; j < LAC_NSTRATEGIES; j++)

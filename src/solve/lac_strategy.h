@@ -145,7 +145,8 @@ const lac_strategy_type *lac_strategy_type_of (int kind);
 /* The strategy for a system of n displacements, k multipliers and nfree
  * rigid motions left free by the Dirichlet conditions, asked for `want`
  * (auto: the rule above).  LAC_NSTRATEGIES with a message if `want`
- * cannot solve such a system (its bodies property). */
+ * cannot solve such a system (its bodies property, when k > 0: without
+ * contact every type solves K U = F). */
 lac_strategy_kind lac_strategy_choose (lac_strategy_kind want, size_t n,
                                        size_t k, size_t nfree);
 

@@ -351,6 +351,8 @@ choice (void)
   check_message ("needs a body held by contact alone", "split's refusal");
   check_int (lac_strategy_choose (LAC_STRATEGY_AUGMENTED, 10, 1, 3),
              LAC_STRATEGY_AUGMENTED, "augmented: any");
+  check_int (lac_strategy_choose (LAC_STRATEGY_SPLIT, 10, 0, 0),
+             LAC_STRATEGY_SPLIT, "without contact, split too");
   for (int k = 0; k < LAC_NSTRATEGIES; k++)
     check_int (lac_strategy_from_name (lac_strategy_name (k)), k,
                "name of %d", k);
