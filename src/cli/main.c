@@ -108,9 +108,9 @@ static const char *help_text =
   "                    Dirichlet conditions), augmented, split (bodies\n"
   "                    held by contact alone), saddle, or petsc (Krylov\n"
   "                    methods and algebraic multigrid, no factorization,\n"
-  "                    on N MPI processes; also without contact; not with\n"
-  "                    large deformation); overrides the scene's [contact]\n"
-  "                    strategy (chapters 07, 11)\n"
+  "                    on N MPI processes; not with large deformation);\n"
+  "                    overrides the scene's [contact] strategy; without\n"
+  "                    contact, K U = F by that strategy (chapters 07, 11)\n"
   "  --petsc-options \"...\"  PETSc options for the petsc strategy, e.g.\n"
   "                    \"-fieldsplit_u_pc_type hypre -ksp_monitor\"; they win\n"
   "                    over the environment variable PETSC_OPTIONS\n"
@@ -396,15 +396,17 @@ launched_processes (void)
   return v ? atoi (v) : 1;
 }
 
-/* MPI and PETSc, when the run needs them: the petsc strategy, PETSc
- * options, or a launcher's processes (lac_petsc_initialize fails with
- * the install line in a build without PETSc).  *rank: this process. */
+/* MPI and PETSc, when the run needs them: a strategy whose type solves
+ * on the MPI processes, PETSc options, or a launcher's processes
+ * (lac_petsc_initialize fails with the install line in a build without
+ * PETSc).  *rank: this process. */
 static int
 start_processes (const cmdline *c, int *rank)
 {
+  const lac_strategy_type *t = lac_strategy_type_of (c->strategy);
   int size;
   *rank = 0;
-  if (c->strategy != LAC_STRATEGY_PETSC && !c->petsc_options
+  if (!(t && t->processes) && !c->petsc_options
       && launched_processes () <= 1)
     return EXIT_SUCCESS;
   if (lac_petsc_initialize (c->petsc_options))

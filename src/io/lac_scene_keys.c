@@ -112,9 +112,6 @@ static const key_spec exact_keys[] = {
 static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const char *const normal_names[] = { "obstacle", "slave", NULL };
 static const char *const method_names[] = { "lac", "p0", "nts", NULL };
-static const char *const strategy_names[] =             /* lac_strategy.h */
-  { "auto", "dense", "schur", "augmented", "saddle", "petsc", "split",
-    NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),
@@ -125,7 +122,9 @@ static const key_spec contact_keys[] = {
   ENUM (lac_scene_contact, normal, normal_names),
   NUM (lac_scene_contact, epsilon, 0, 1, 1, "a number in (0, 1]"),
   ENUM (lac_scene_contact, method, method_names),
-  ENUM (lac_scene_contact, strategy, strategy_names),
+  { "strategy", K_ENUM, F (lac_scene_contact, strategy), 0,  /* the table */
+    &lac_strategy_table[0].name, sizeof lac_strategy_table[0], 0, 0, 0,
+    NULL },
   INT (lac_scene_contact, max_iterations, 1, 100000,
        "an integer in 1..100000"),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),

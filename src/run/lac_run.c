@@ -44,25 +44,28 @@ large (const lac_run *r)
 }
 
 /* The large-deformation loop solves with the dense, schur or saddle
- * strategy, chosen by [scene] solver (lac_run_nonlinear.c); petsc, asked
- * for on the command line or in [contact], is refused, not replaced. */
+ * strategy, chosen by [scene] solver (lac_run_nonlinear.c); a type that
+ * is for small strain (petsc), asked for on the command line or in
+ * [contact], is refused, not replaced. */
 static int
 check_large_strategy (const lac_run *r)
 {
   const lac_scene *sc = r->scene;
+  int scene = sc->ncontact ? sc->contact[0].strategy : LAC_STRATEGY_AUTO;
+  const lac_strategy_type *t = lac_strategy_type_of (r->opts.strategy
+                                                     ? r->opts.strategy
+                                                     : scene);
   static const char why[] = "the large-deformation loop ([scene] "
     "large_deformation = yes) solves with the dense, schur or saddle "
-    "strategy, chosen by [scene] solver = dense, cholmod or umfpack; "
-    "petsc is for small strain";
-  if (!large (r))
+    "strategy, chosen by [scene] solver = dense, cholmod or umfpack";
+  if (!large (r) || !t || !t->small_strain)
     return LAC_SUCCESS;
-  if (r->opts.strategy == LAC_STRATEGY_PETSC)
-    LAC_ERROR (LAC_EINVAL, "--strategy petsc: %s", why);
-  if (r->opts.strategy == LAC_STRATEGY_AUTO && sc->ncontact
-      && sc->contact[0].strategy == LAC_STRATEGY_PETSC)
-    return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
-                            "petsc: %s", why);
-  return LAC_SUCCESS;
+  if (r->opts.strategy)
+    LAC_ERROR (LAC_EINVAL, "--strategy %s: %s; %s is for small strain",
+               t->name, why, t->name);
+  return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
+                          "%s: %s; %s is for small strain", t->name, why,
+                          t->name);
 }
 
 static int
@@ -112,7 +115,8 @@ stage_solve (lac_run *r)
     }
   if (!r->sol.u && !(r->sol.u = lac_malloc (r->sys.ndof * sizeof *r->sol.u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", r->sys.ndof);
-  return lac_run_nl_solve (r->scene, r->mesh, &r->mat, &r->setup, &r->sys,
+  return lac_run_nl_solve (r->scene, r->opts.strategy, r->mesh, &r->mat,
+                           &r->setup, &r->sys,
                            &r->nl, r->sol.u, r->progress, sizeof r->progress);
 }
 

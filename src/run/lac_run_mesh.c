@@ -143,23 +143,28 @@ geo_transfinite (const char *path)
 }
 
 /* How the solve stage will solve (for the memory a .geo's mesh needs):
- * the strategy of the active set (strategy, else the scene's), the
- * solver of a run without contact, of the large-deformation loop. */
+ * what the type of the strategy factorizes (the strategy asked for, else
+ * the scene's; auto: a Cholesky factor, schur or split), the solver of a
+ * run without contact or of the large-deformation loop. */
 static lac_mesh_solve
 solve_kind (const lac_scene *sc, int strategy)
 {
-  int want = strategy ? strategy
-             : sc->ncontact ? sc->contact[0].strategy : LAC_STRATEGY_AUTO;
-  int solver = sc->scene.solver;
-  if (want == LAC_STRATEGY_PETSC && !sc->scene.large_deformation)
+  static const lac_mesh_solve by_factor[] = {   /* lac_strategy_factor */
+    LAC_MESH_SOLVE_ITERATIVE, LAC_MESH_SOLVE_DENSE, LAC_MESH_SOLVE_LU,
+    LAC_MESH_SOLVE_CHOLESKY };
+  const lac_strategy_type *t = lac_strategy_type_of (strategy ? strategy
+                                                     : sc->ncontact
+                                                     ? sc->contact[0].strategy
+                                                     : LAC_STRATEGY_AUTO);
+  int large = sc->scene.large_deformation, solver = sc->scene.solver;
+  if (t && t->factor == LAC_FACTOR_NONE && !large)
     return LAC_MESH_SOLVE_ITERATIVE;
-  if (solver == LAC_SOLVER_DENSE || want == LAC_STRATEGY_DENSE)
+  if (solver == LAC_SOLVER_DENSE || (t && t->factor == LAC_FACTOR_DENSE))
     return LAC_MESH_SOLVE_DENSE;
-  if (sc->scene.large_deformation || !sc->ncontact)
+  if (large || (!sc->ncontact && !strategy))
     return solver == LAC_SOLVER_CHOLMOD ? LAC_MESH_SOLVE_CHOLESKY
                                         : LAC_MESH_SOLVE_LU;
-  return want == LAC_STRATEGY_SADDLE ? LAC_MESH_SOLVE_LU
-                                     : LAC_MESH_SOLVE_CHOLESKY;
+  return t ? by_factor[t->factor] : LAC_MESH_SOLVE_CHOLESKY;
 }
 
 int

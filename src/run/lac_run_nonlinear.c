@@ -126,8 +126,24 @@ nl_monitor (const lac_scene *sc, const lac_mesh *m, lac_run_nl *nl)
 }
 
 /* The problem of solve/lac_nonlinear.h and its workspace. */
+/* The strategy: the one asked for (the command line, else [contact]),
+ * else the first type that factorizes as [scene] solver says. */
+static lac_strategy_kind
+nl_strategy (const lac_scene *sc, int strategy, size_t nfree)
+{
+  static const lac_strategy_factor of_solver[] =      /* lac_solver_kind */
+    { [LAC_SOLVER_DENSE] = LAC_FACTOR_DENSE,
+      [LAC_SOLVER_UMFPACK] = LAC_FACTOR_LU,
+      [LAC_SOLVER_CHOLMOD] = LAC_FACTOR_CHOLESKY };
+  int want = strategy ? strategy : sc->ncontact ? sc->contact[0].strategy
+             : LAC_STRATEGY_AUTO;
+  if (want != LAC_STRATEGY_AUTO)
+    return (lac_strategy_kind) want;
+  return lac_strategy_choose_factor (of_solver[sc->scene.solver], nfree);
+}
+
 static int
-nl_setup (const lac_scene *sc, const lac_mesh *m,
+nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
           const lac_run_material *mat, const lac_run_setup *setup,
           const lac_run_system *sys, lac_run_nl *nl)
 {
@@ -155,9 +171,12 @@ nl_setup (const lac_scene *sc, const lac_mesh *m,
     }
   lac_nl_opts o;
   lac_nl_opts_init (&o);
-  o.kind = sc->scene.solver == LAC_SOLVER_DENSE ? LAC_STRATEGY_DENSE
-           : sc->scene.solver == LAC_SOLVER_CHOLMOD ? LAC_STRATEGY_SCHUR
-           : LAC_STRATEGY_SADDLE;
+  o.kind = lac_strategy_choose ((lac_strategy_kind) nl_strategy
+                                 (sc, strategy, sys->nfree), sys->ndof,
+                                 p->M ? p->M->n : 0, sys->nfree);
+  if (o.kind == LAC_NSTRATEGIES)
+    return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
+                            "%s", lac_error_message ());
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
   o.frozen = sc->steps.tangent == 1;
@@ -302,14 +321,15 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
 }
 
 int
-lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
+lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
                   const lac_run_material *mat, const lac_run_setup *setup,
                   const lac_run_system *sys, lac_run_nl *nl, double *u,
                   char *progress, size_t size)
 {
   size_t ndof = (size_t) m->dim * m->nnodes, j;
   int status;
-  if (!nl->ls && (status = nl_setup (sc, m, mat, setup, sys, nl)))
+  if (!nl->ls && (status = nl_setup (sc, strategy, m, mat, setup, sys,
+                                      nl)))
     return status;
   j = nl->next;
   if (!nl->in_step)

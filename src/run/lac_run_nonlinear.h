@@ -76,14 +76,16 @@ typedef struct lac_run_nl
   double *ukept;              /* owned, nkept * ndof displacements        */
 } lac_run_nl;
 
-/* One Newton iteration per call (solve/lac_loadstep.h), with its line in
+/* strategy: asked for on the command line (0: the scene's [contact]
+ * strategy, else the type that factorizes as [scene] solver says).
+ * One Newton iteration per call (solve/lac_loadstep.h), with its line in
  * progress (iteration, residual, statuses changed, active count, GMRES
  * iterations, time; a cut sub-step said once), and at the end of a load
  * step the step's line (load factor, iterations, cuts, residual, active
  * count, the monitor, and the times of assembly, pairing, factorization,
  * solves and the whole step): LAC_CONTINUE until the last step, then
  * LAC_SUCCESS with u (ndof, the caller's) the final displacement. */
-int lac_run_nl_solve (const lac_scene *sc, const lac_mesh *m,
+int lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
                       const lac_run_material *mat, const lac_run_setup *setup,
                       const lac_run_system *sys, lac_run_nl *nl, double *u,
                       char *progress, size_t size);

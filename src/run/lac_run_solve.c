@@ -9,10 +9,8 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "run/lac_run_scene.h"
-#include "solve/lac_petsc.h"
 
 #define NEWTON_TOL 1e-10
-#define PLAIN_RTOL 1e-10     /* petsc, no contact: relative residual of K */
 
 void
 lac_run_solution_clear (lac_run_solution *sol)
@@ -23,33 +21,54 @@ lac_run_solution_clear (lac_run_solution *sol)
   memset (sol, 0, sizeof *sol);
 }
 
-/* K u = b, no contact, by conjugate gradients and algebraic multigrid. */
-static int
-solve_plain_petsc (const lac_run_system *sys, lac_run_solution *sol,
-                   char *progress, size_t size)
+/* A type that factorizes nothing: its Krylov iterations (all solves),
+ * the true residual of its last solve and its processes, for the
+ * summary. */
+static void
+krylov_counts (const lac_strategy *s, lac_run_solution *sol)
 {
-  lac_contact_system cs = { sys->K, sys->b, NULL, NULL, NULL, 0, NULL,
-                            NULL };
-  lac_petsc *p = lac_petsc_alloc (1.0);
-  lac_solve_counts c;
-  int status;
-  if (!p)
-    return LAC_EDEP;
-  lac_petsc_set_coordinates (p, sys->coord_dim, sys->x);
-  memset (sol->u, 0, sys->ndof * sizeof *sol->u);
-  status = lac_petsc_set (p, &cs);
-  if (!status)
-    status = lac_petsc_solve (p, NULL, NULL, NULL, PLAIN_RTOL, sol->u, NULL);
-  lac_petsc_get_counts (p, &c);
+  lac_strategy_counts c;
+  if (lac_strategy_get_type (s)->factor != LAC_FACTOR_NONE)
+    return;
+  lac_strategy_get_counts (s, &c);
   sol->krylov = 1;
   sol->krylov_iterations = c.iterations;
   sol->krylov_residual = c.last_residual;
-  lac_petsc_rank (&(int) { 0 }, &sol->processes);
+  sol->processes = c.processes;
+}
+
+/* K u = b, no contact (k = 0), by the strategy asked for. */
+static int
+solve_plain_strategy (int strategy, const lac_run_system *sys,
+                      lac_run_solution *sol, char *progress, size_t size)
+{
+  static const double G[1] = { 0 };
+  double lambda[1] = { 0 };
+  lac_csc *C = lac_csc_alloc (sys->ndof, 0, 0);
+  lac_contact_system cs = { sys->K, sys->b, C, G, NULL, 0, NULL, NULL };
+  lac_strategy_kind kind = (lac_strategy_kind) strategy;   /* any, k = 0 */
+  lac_strategy *s = NULL;
+  lac_strategy_counts c;
+  int status = !C || !(s = lac_strategy_alloc (kind)) ? LAC_ENOMEM
+               : LAC_SUCCESS;
   if (!status)
-    snprintf (progress, size, "petsc: %s, %d iterations, true residual "
-              "%.1e", lac_petsc_method (p), c.last_iterations,
-              c.last_residual);
-  lac_petsc_free (p);
+    {
+      lac_strategy_set_coordinates (s, sys->coord_dim, sys->x);
+      memset (sol->u, 0, sys->ndof * sizeof *sol->u);
+      if (!(status = lac_strategy_set (s, &cs)))
+        status = lac_strategy_solve (s, "", sol->u, lambda);
+      krylov_counts (s, sol);
+      lac_strategy_get_counts (s, &c);
+    }
+  if (!status && sol->krylov)
+    snprintf (progress, size, "%s: %s, %d iterations, true residual %.1e",
+              lac_strategy_name (kind), lac_strategy_method (s),
+              c.last_iterations, c.last_residual);
+  else if (!status)
+    snprintf (progress, size, "%s, rcond %.1e", lac_strategy_method (s),
+              sol->rcond = c.rcond);
+  lac_strategy_free (s);
+  lac_csc_free (C);
   return status;
 }
 
@@ -148,24 +167,10 @@ contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
   if (!(sol->newton = lac_newton_alloc (&model, &o)))
     return LAC_ENOMEM;
   if (!(sol->newton->strategy = lac_strategy_alloc (sol->strategy)))
-    return sol->strategy == LAC_STRATEGY_PETSC ? LAC_EDEP : LAC_ENOMEM;
+    return LAC_EDEP;           /* the message says which and why */
   lac_strategy_set_coordinates (sol->newton->strategy, sys->coord_dim,
                                 sys->x);
   return lac_newton_begin (sol->newton);
-}
-
-/* The petsc strategy's counts after an iteration. */
-static void
-krylov_counts (lac_run_solution *sol)
-{
-  lac_strategy_counts c;
-  if (sol->strategy != LAC_STRATEGY_PETSC)
-    return;
-  lac_strategy_get_counts (sol->newton->strategy, &c);
-  sol->krylov = 1;
-  sol->krylov_iterations = c.iterations;
-  sol->krylov_residual = c.last_residual;
-  lac_petsc_rank (&(int) { 0 }, &sol->processes);
 }
 
 /* "N Krylov iterations (true residual r), M with the refinement". */
@@ -207,7 +212,7 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
       return lac_error_set (status, sc->path, "active-set iteration %zu: "
                             "%s", nw->nhist + 1, msg);
     }
-  krylov_counts (sol);
+  krylov_counts (nw->strategy, sol);
   if (status == LAC_SUCCESS)
     {
       h = nw->nhist ? &nw->hist[nw->nhist - 1] : NULL;
@@ -245,8 +250,8 @@ lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
   if (!sys->contact)
-    return strategy == LAC_STRATEGY_PETSC
-           ? solve_plain_petsc (sys, sol, progress, size)
+    return strategy != LAC_STRATEGY_AUTO
+           ? solve_plain_strategy (strategy, sys, sol, progress, size)
            : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
       && (status = contact_start (sc, strategy, setup, sys, sol)))

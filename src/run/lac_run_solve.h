@@ -6,11 +6,13 @@
  * Out: the displacement U; with contact, the multipliers, mean gaps,
  *      statuses and the history of the active set (solve/lac_newton.h).
  * Without contact, K U = b is solved once by the scene's solver (dense,
- * umfpack, cholmod), or with the petsc strategy by conjugate gradients
- * and algebraic multigrid (solve/lac_petsc.h) on the MPI processes.  With contact, the strategy is chosen from the
- * problem (solve/lac_strategy.h: the size, and whether a body is held by
- * contact alone) and each call does ONE active-set iteration, returning
- * LAC_CONTINUE with a progress line about it until the statuses settle.
+ * umfpack, cholmod), or by the strategy asked for on the command line
+ * with no multiplier (k = 0; --strategy petsc: conjugate gradients and
+ * algebraic multigrid on the MPI processes).  With contact, the strategy
+ * is chosen from the problem (solve/lac_strategy.h: the size, and whether
+ * a body is held by contact alone) and each call does ONE active-set
+ * iteration, returning LAC_CONTINUE with a progress line about it until
+ * the statuses settle.
  */
 #ifndef LAC_RUN_SOLVE_H
 #define LAC_RUN_SOLVE_H
@@ -32,7 +34,7 @@ typedef struct lac_run_solution
                                   the system of stage 4                    */
   lac_strategy_kind strategy;  /* with [contact]: the one chosen           */
   double rcond;                /* without contact: K's condition estimate   */
-  int krylov;                  /* 1: solved by the petsc strategy           */
+  int krylov;                  /* 1: by a strategy that factorizes nothing  */
   int krylov_iterations;       /* its Krylov iterations, all solves         */
   double krylov_residual;      /* the true relative residual of the last
                                   solve (before refinement)                */
@@ -46,8 +48,8 @@ int lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
                    lac_run_system *sys, lac_run_solution *sol,
                    char *progress, size_t size);
 void lac_run_solution_clear (lac_run_solution *sol);
-/* The petsc strategy's summary lines (processes, solver_iterations,
- * solver_residual); nothing for the direct solvers. */
+/* The summary lines of a strategy that factorizes nothing (processes,
+ * solver_iterations, solver_residual); nothing for the direct ones. */
 int lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum);
 
 #endif /* LAC_RUN_SOLVE_H */

@@ -4,7 +4,7 @@
  *
  * One solve of (*) for the statuses A:
  *   1. K_W = K + C_A W_A C_A^T, factorized when the statuses or the
- *      numbers changed (analysis kept; omega = 0: K, once in set);
+ *      numbers changed (analysis kept);
  *   2. U_0 = K_W^{-1} (f + C_A W_A g_A);
  *   3. S_W lambda_A = g_A - C_A^T U_0 by conjugate gradients from the
  *      given lambda_A, product v -> C_A^T K_W^{-1} C_A v;
@@ -24,26 +24,26 @@
  * omega = 10 (lac_augmented.h); many more mean a singular S_W. */
 #define PCG_MAXIT 300
 
-struct lac_augmented
+typedef struct lac_augmented
 {
   const lac_contact_system *sys;   /* borrowed                            */
   size_t n;
-  lac_solver *chol;                /* owned: the factor of K or K_W       */
-  lac_csc *A;                      /* owned, (b): K + C W C^T's pattern   */
+  lac_solver *chol;                /* owned: the factor of K_W            */
+  lac_csc *A;                      /* owned: K + C W C^T's pattern        */
   unsigned long long hK, hC;       /* patterns A was made for             */
-  lac_active act;                  /* owned; omega = 0: K alone           */
+  lac_active act;                  /* owned                               */
   int factor_failed;
   double *x, *y;                   /* owned, n: scratch of the products   */
   lac_solve_counts counts;
-};
+} lac_augmented;
 
-lac_augmented *
-lac_augmented_alloc (double omega)
+static void *
+augmented_alloc (void)
 {
   lac_augmented *s = lac_calloc (1, sizeof *s);
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "augmented solver");
-  s->act.omega = omega;
+  s->act.omega = LAC_AUGMENT_OMEGA;
   if (!(s->chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD)))
     {
       lac_free (s);
@@ -61,9 +61,10 @@ free_arrays (lac_augmented *s)
   s->x = s->y = NULL;
 }
 
-void
-lac_augmented_free (lac_augmented *s)
+static void
+augmented_free (void *w)
 {
+  lac_augmented *s = w;
   if (!s)
     return;
   free_arrays (s);
@@ -72,10 +73,10 @@ lac_augmented_free (lac_augmented *s)
   lac_free (s);
 }
 
-void
-lac_augmented_get_counts (const lac_augmented *s, lac_solve_counts *c)
+static void
+augmented_get_counts (const void *w, lac_solve_counts *c)
 {
-  *c = s->counts;
+  *c = ((const lac_augmented *) w)->counts;
 }
 
 static int
@@ -96,25 +97,18 @@ alloc_arrays (lac_augmented *s, size_t n, size_t k)
 }
 
 static int
-factor (lac_augmented *s, const lac_csc *A)
+augmented_set (void *w, const lac_contact_system *sys)
 {
-  return lac_solve_counts_factor (&s->counts, s->chol, A);
-}
-
-int
-lac_augmented_set (lac_augmented *s, const lac_contact_system *sys)
-{
+  lac_augmented *s = w;
   int status = alloc_arrays (s, sys->K->ncol, sys->C->ncol);
   if (status)
     return status;
   s->sys = sys;
   s->act.have_factor = 0;
   lac_system_column_scales (sys, s->x, s->act.s);
-  if (s->act.omega == 0)                      /* K = L L^T, once */
-    return factor (s, sys->K);
   unsigned long long hK = lac_csc_pattern_hash (sys->K);
   unsigned long long hC = lac_csc_pattern_hash (sys->C);
-  if (!s->A || hK != s->hK || hC != s->hC)    /* (b): K + C C^T pattern */
+  if (!s->A || hK != s->hK || hC != s->hC)    /* K + C C^T's pattern */
     {
       lac_csc_free (s->A);
       if (!(s->A = lac_csc_augment_pattern (sys->K, sys->C)))
@@ -125,7 +119,7 @@ lac_augmented_set (lac_augmented *s, const lac_contact_system *sys)
   return LAC_SUCCESS;
 }
 
-/* (b): K_W for the statuses, factorized if they or the numbers changed. */
+/* K_W for the statuses, factorized if they or the numbers changed. */
 static int
 factor_augmented (lac_augmented *s, const char *active)
 {
@@ -134,7 +128,7 @@ factor_augmented (lac_augmented *s, const char *active)
     return LAC_SUCCESS;
   if ((status = lac_csc_augment (s->A, s->sys->K, s->sys->C, s->act.w)))
     return status;
-  if ((status = factor (s, s->A)))
+  if ((status = lac_solve_counts_factor (&s->counts, s->chol, s->A)))
     {
       s->factor_failed = 1;
       return status;
@@ -166,7 +160,7 @@ schur_product (void *ctx, const double *v, double *q)
   return LAC_SUCCESS;
 }
 
-/* z = P r: W_A, or diag(s_A)^{-1} when omega = 0. */
+/* z = P r = W_A r. */
 static int
 schur_precondition (void *ctx, const double *r, double *z)
 {
@@ -174,8 +168,7 @@ schur_precondition (void *ctx, const double *r, double *z)
   for (size_t a = 0; a < act->na; a++)
     {
       size_t i = act->idx[a];
-      z[a] = act->omega > 0 ? act->w[i] * r[a]
-             : act->s[i] > 0 ? r[a] / act->s[i] : r[a];
+      z[a] = act->w[i] * r[a];
     }
   return LAC_SUCCESS;
 }
@@ -197,25 +190,24 @@ load_vector (lac_augmented *s, const double *f, const double *g,
     }
 }
 
-int
-lac_augmented_factor_failed (const lac_augmented *s)
+static int
+augmented_factor_failed (const void *w)
 {
-  return s->factor_failed;
+  return ((const lac_augmented *) w)->factor_failed;
 }
 
-int
-lac_augmented_solve (lac_augmented *s, const char *active, const double *f,
+static int
+augmented_solve (void *w, const char *active, const double *f,
                  const double *g, double rtol, double *U, double *lambda)
 {
+  lac_augmented *s = w;
   lac_active *act = &s->act;
   lac_pcg_info info;
   int status;
-  if (!s->sys)
-    LAC_ERROR (LAC_EINVAL, "lac_augmented_set was not called");
   s->factor_failed = 0;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
-  if (act->omega > 0 && (status = factor_augmented (s, active)))  /* 1. */
+  if ((status = factor_augmented (s, active)))           /* 1. */
     return status;
   lac_active_gather (act, active, lambda);
   load_vector (s, f, g, NULL, s->x);                     /* 2. U_0 */
@@ -231,3 +223,9 @@ lac_augmented_solve (lac_augmented *s, const char *active, const double *f,
   load_vector (s, f, g, act->lamA, s->x);                /* 4. U */
   return solve_kw (s, s->x, U);
 }
+
+const lac_strategy_ops lac_augmented_ops = {
+  .alloc = augmented_alloc, .free = augmented_free, .set = augmented_set,
+  .solve = augmented_solve, .get_counts = augmented_get_counts,
+  .factor_failed = augmented_factor_failed
+};

@@ -32,12 +32,14 @@
  * 53k dofs for omega = 10, 100, 1000) against the condition number of K_W
  * (omega times that of K): the strategy's refinement step
  * (solve/lac_strategy.c) recovers the digits that LAC_AUGMENT_OMEGA = 100
- * costs (lambda exact to 1e-13 on that patch test all the same).  omega = 0 is K itself
- * (every body held), with the preconditioner diag(1 / s_i): the
- * comparison of chapter 07, not a strategy.
+ * costs (lambda exact to 1e-13 on that patch test all the same).
  *
- * Ownership: the system is borrowed from lac_augmented_set until the next
- * set or lac_augmented_free.
+ * The operations of the type augmented of solve/lac_strategy.h: set makes
+ * the pattern of K + C C^T (kept while the patterns of K and C stay),
+ * solve factorizes K_W when the statuses changed and starts the
+ * conjugate gradients from the given lambda_A; factor_failed tells a
+ * failed factorization of K_W (not positive definite) from conjugate
+ * gradients that did not converge (dependent constraints).
  */
 #ifndef LAC_AUGMENTED_H
 #define LAC_AUGMENTED_H
@@ -46,24 +48,6 @@
 
 #define LAC_AUGMENT_OMEGA 100.0
 
-typedef struct lac_augmented lac_augmented;     /* opaque */
-
-lac_augmented *lac_augmented_alloc (double omega);
-void lac_augmented_free (lac_augmented *s);      /* NULL allowed */
-/* Borrow the system; make the pattern of K + C C^T (kept while the
- * patterns of K and C stay); omega = 0: factorize K. */
-int lac_augmented_set (lac_augmented *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active`, with the right-hand sides
- * f, g (NULL: F, G of the system); lambda holds the start of the
- * conjugate gradients on entry (a warm start), 0 on the inactive ones on
- * return.  rtol: the relative residual of the conjugate gradients. */
-int lac_augmented_solve (lac_augmented *s, const char *active,
-                         const double *f, const double *g, double rtol,
-                         double *U, double *lambda);
-void lac_augmented_get_counts (const lac_augmented *s, lac_solve_counts *c);
-/* 1 if the last error of lac_augmented_solve was the factorization of
- * K_W (not positive definite), 0 if it was something else (conjugate
- * gradients that did not converge: dependent constraints). */
-int lac_augmented_factor_failed (const lac_augmented *s);
+extern const lac_strategy_ops lac_augmented_ops;
 
 #endif /* LAC_AUGMENTED_H */

@@ -594,7 +594,9 @@ prepare (lac_newton *s, const lac_contact_system *sys, int news,
   int kept = 0, status;
   *lagged = 0;
   if (!s->strategy && !(s->strategy = lac_strategy_alloc (s->opts.kind)))
-    return LAC_EDEP;
+    return LAC_EDEP;                 /* the message says which and why */
+  if (s->model.type->nonlinear)      /* a tangent may not be positive */
+    lac_strategy_allow_fallback (s->strategy, 1);          /* definite */
   if (!w->strategy_set || (news == LAC_MODEL_NEW_K
                            && (w->it == 0 || !consistent
                                || w->gmres_last > LAC_NEWTON_LAG)))

@@ -48,55 +48,15 @@ lac_petsc_serve (void)
   return NO_PETSC (__func__);
 }
 
-lac_petsc *
-lac_petsc_alloc (double omega)
+/* The only operation: the others are never reached. */
+static void *
+petsc_alloc (void)
 {
-  (void) omega;
   NO_PETSC (__func__);
   return NULL;
 }
 
-void
-lac_petsc_free (lac_petsc *s)
-{
-  (void) s;
-}
-
-void
-lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x)
-{
-  (void) s, (void) dim, (void) x;
-}
-
-int
-lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
-{
-  (void) s, (void) sys;
-  return NO_PETSC (__func__);
-}
-
-int
-lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                 const double *g, double rtol, double *U, double *lambda)
-{
-  (void) s, (void) active, (void) f, (void) g, (void) rtol, (void) U;
-  (void) lambda;
-  return NO_PETSC (__func__);
-}
-
-void
-lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c)
-{
-  (void) s;
-  memset (c, 0, sizeof *c);
-}
-
-const char *
-lac_petsc_method (const lac_petsc *s)
-{
-  (void) s;
-  return "none (built without PETSc)";
-}
+const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 
 #else /* LAC_HAVE_PETSC */
 
@@ -117,7 +77,7 @@ enum { PROJECTED, FIELDSPLIT };   /* the contact solvers (-lac_contact)  */
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 
-struct lac_petsc
+typedef struct lac_petsc
 {
   double omega;                    /* W_i = omega / s_i                   */
   int rank, size, root;            /* root: rank 0                        */
@@ -134,6 +94,8 @@ struct lac_petsc
                                       touches them), their pattern (CSR)  */
   double *cx;                      /* owned: their values                 */
   double *s, *w;                   /* owned, k: c_i^T diag(K)^-1 c_i, W   */
+  double kappa;                    /* the mean of diag(K): PETSc's K_W and
+                                      f_W are divided by it              */
   char *stat;                      /* owned, k: statuses of the matrices  */
   int have_stat, new_numbers;
   double *acc, *xv, *yv;           /* owned, n: scratch                   */
@@ -161,12 +123,12 @@ struct lac_petsc
   double *mx;                      /* owned, chunk: its values            */
   lac_solve_counts counts;
   char method[200];
-};
+} lac_petsc;
 
 /* ---- the object --------------------------------------------------------- */
 
-lac_petsc *
-lac_petsc_alloc (double omega)
+static void *
+petsc_alloc (void)
 {
   lac_petsc *s;
   PetscBool set = PETSC_FALSE;
@@ -175,7 +137,7 @@ lac_petsc_alloc (double omega)
     return NULL;
   if (!(s = lac_calloc (1, sizeof *s)))
     LAC_ERROR_NULL (LAC_ENOMEM, "petsc strategy");
-  s->omega = omega;
+  s->omega = LAC_PETSC_OMEGA;
   PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL);
   PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
                          &set);
@@ -194,48 +156,27 @@ lac_petsc_alloc (double omega)
   return s;
 }
 
+#define COUNT(a) (sizeof (a) / sizeof *(a))
+
 static void
 free_petsc (lac_petsc *s)
 {
-  KSPDestroy (&s->ku);
-  KSPDestroy (&s->kp);
-  KSPDestroy (&s->kg);
-  KSPDestroy (&s->ks);
+  KSP *ksp[] = { &s->ku, &s->kp, &s->kg, &s->ks, &s->kl };
+  Mat *mat[] = { &s->G, &s->Ah, &s->A, &s->Bt, &s->B, &s->D, &s->Sp, &s->Kw,
+                 &s->Bl, &s->Gl };
+  Vec *vec[] = { &s->bu, &s->xu, &s->ru, &s->tu, &s->u0, &s->fw, &s->tk,
+                 &s->sk, &s->dk, &s->gk, &s->b, &s->x, &s->r, &s->dx,
+                 &s->useq, &s->lseq, &s->vl, &s->ul, &s->tl, &s->tg,
+                 &s->sl };
+  for (size_t i = 0; i < COUNT (ksp); i++)
+    KSPDestroy (ksp[i]);
   PCDestroy (&s->pg);
-  MatDestroy (&s->G);
-  MatDestroy (&s->Ah);
-  MatDestroy (&s->A);
-  MatDestroy (&s->Bt);
-  MatDestroy (&s->B);
-  MatDestroy (&s->D);
-  MatDestroy (&s->Sp);
-  MatDestroy (&s->Kw);
-  VecDestroy (&s->bu);
-  VecDestroy (&s->xu);
-  VecDestroy (&s->ru);
-  VecDestroy (&s->tu);
-  VecDestroy (&s->u0);
-  VecDestroy (&s->fw);
-  VecDestroy (&s->tk);
-  VecDestroy (&s->sk);
-  VecDestroy (&s->dk);
-  VecDestroy (&s->gk);
-  VecDestroy (&s->b);
-  VecDestroy (&s->x);
-  VecDestroy (&s->r);
-  VecDestroy (&s->dx);
-  VecDestroy (&s->useq);
-  VecDestroy (&s->lseq);
+  for (size_t i = 0; i < COUNT (mat); i++)
+    MatDestroy (mat[i]);
+  for (size_t i = 0; i < COUNT (vec); i++)
+    VecDestroy (vec[i]);
   VecScatterDestroy (&s->gu);
   VecScatterDestroy (&s->gl);
-  KSPDestroy (&s->kl);
-  MatDestroy (&s->Bl);
-  MatDestroy (&s->Gl);
-  VecDestroy (&s->vl);
-  VecDestroy (&s->ul);
-  VecDestroy (&s->tl);
-  VecDestroy (&s->tg);
-  VecDestroy (&s->sl);
   lac_free (s->mi);
   lac_free (s->mx);
   s->mi = NULL;
@@ -270,9 +211,10 @@ free_arrays (lac_petsc *s)
   s->have_stat = 0;
 }
 
-void
-lac_petsc_free (lac_petsc *s)
+static void
+petsc_free (void *w)
 {
+  lac_petsc *s = w;
   if (!s)
     return;
   if (s->root && s->built && s->size > 1)
@@ -285,22 +227,26 @@ lac_petsc_free (lac_petsc *s)
   lac_free (s);
 }
 
-void
-lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x)
+static void
+petsc_set_coordinates (void *w, int dim, const double *x)
 {
+  lac_petsc *s = w;
   s->dim = dim;
   s->coords = x;
 }
 
-void
-lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c)
+static void
+petsc_get_counts (const void *w, lac_solve_counts *c)
 {
+  const lac_petsc *s = w;
   *c = s->counts;
+  c->processes = s->size;
 }
 
-const char *
-lac_petsc_method (const lac_petsc *s)
+static const char *
+petsc_method (const void *w)
 {
+  const lac_petsc *s = w;
   return s->method[0] ? s->method : "petsc (not set)";
 }
 
@@ -575,6 +521,23 @@ to_root (const lac_petsc *s, VecScatter sc, Vec v, Vec seq, double *y)
   return LAC_SUCCESS;
 }
 
+/* The root: its nodal coordinates centred on their mean and divided by
+ * their largest distance from it, into xv (n): the rigid motions made of
+ * them do not depend on where the origin lies nor on the unit of length. */
+static const double *
+unit_coordinates (lac_petsc *s)
+{
+  size_t dim = (size_t) s->bs, nn = s->n / dim;
+  double c[3] = { 0, 0, 0 }, r = 0;
+  for (size_t j = 0; j < s->n; j++)
+    c[j % dim] += s->coords[j] / (double) nn;
+  for (size_t j = 0; j < s->n; j++)
+    r = fmax (r, fabs (s->coords[j] - c[j % dim]));
+  for (size_t j = 0; j < s->n; j++)
+    s->xv[j] = (s->coords[j] - c[j % dim]) / (r > 0 ? r : 1.0);
+  return s->xv;
+}
+
 /* The rigid motions of the nodal coordinates as K_W's near-null space. */
 static int
 near_null_space (lac_petsc *s)
@@ -585,7 +548,8 @@ near_null_space (lac_petsc *s)
   if (!s->coords_given)
     return LAC_SUCCESS;
   TRY (VecDuplicate (s->xu, &xc));
-  if ((status = to_dist (s, s->gu, s->useq, s->coords, xc)))
+  if ((status = to_dist (s, s->gu, s->useq, s->root ? unit_coordinates (s)
+                         : NULL, xc)))
     return status;
   TRY (MatNullSpaceCreateRigidBody (xc, &nsp));
   TRY (MatSetNearNullSpace (s->Kw, nsp));
@@ -940,9 +904,28 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   return build (s, &c);
 }
 
-int
-lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
+/* The mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
+ * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
+ * against gaps: tuned as it is), so that PETSc sees the same numbers
+ * whatever the units (its GAMG with the rigid motions is not
+ * scale-invariant: with lengths and moduli scaled by powers of two, the
+ * results changed in their last bits, which the projected CG amplifies to
+ * 1e-9; chapter 11). */
+static double
+mean_diagonal (const lac_csc *K)
 {
+  double sum = 0;
+  for (size_t j = 0; j < K->ncol; j++)
+    for (int p = K->p[j]; p < K->p[j + 1]; p++)
+      if ((size_t) K->i[p] == j)
+        sum += fabs (K->x[p]);
+  return sum > 0 ? sum / (double) K->ncol : 1.0;
+}
+
+static int
+petsc_set (void *w, const lac_contact_system *sys)
+{
+  lac_petsc *s = w;
   unsigned long long hK = lac_csc_pattern_hash (sys->K);
   unsigned long long hC = sys->C ? lac_csc_pattern_hash (sys->C) : 0;
   size_t k = sys->C ? sys->C->ncol : 0;
@@ -964,15 +947,17 @@ lac_petsc_set (lac_petsc *s, const lac_contact_system *sys)
   s->sys = sys;
   if (k)
     lac_system_column_scales (s->sys, s->xv, s->s);
+  s->kappa = s->mode == FIELDSPLIT ? 1.0 : mean_diagonal (sys->K);
   s->new_numbers = 1;
   return LAC_SUCCESS;
 }
 
 /* ---- collective: the values for the statuses ---------------------------- */
 
-/* Values of contact row c of K_W = K + C diag(w) C^T into cx. */
+/* Values of contact row c of K_W = K + C diag(w) C^T, times sc, into
+ * cx. */
 static void
-contact_values (lac_petsc *s, PetscInt c)
+contact_values (lac_petsc *s, PetscInt c, double sc)
 {
   const lac_csc *K = s->sys->K, *C = s->sys->C, *Ct = s->Ct;
   PetscInt j = s->crow[c];
@@ -988,7 +973,7 @@ contact_values (lac_petsc *s, PetscInt c)
     }
   for (PetscInt t = s->cp[c]; t < s->cp[c + 1]; t++)
     {
-      s->cx[t] = s->acc[s->ci[t]];
+      s->cx[t] = s->acc[s->ci[t]] * sc;
       s->acc[s->ci[t]] = 0;
     }
 }
@@ -1056,7 +1041,7 @@ insert_kw (lac_petsc *s, int all)
           PetscInt c0 = c, m = row_pattern (s, j, &c, &cols);
           const double *x = c > c0 ? s->cx + s->cp[c0] : K->x + K->p[j];
           if (c > c0)
-            contact_values (s, c0);
+            contact_values (s, c0, all ? 1.0 : 1 / s->kappa);
           else if (!all)
             continue;
           if (p > 0)
@@ -1122,7 +1107,7 @@ insert_multipliers (lac_petsc *s)
     {
       int on = s->stat[i] && s->w[i] > 0;
       TRY (MatSetValue (s->D, i, i, on ? 0.0 : 1.0, INSERT_VALUES));
-      TRY (MatSetValue (s->Sp, i, i, on ? -1 / s->w[i] : 1.0,
+      TRY (MatSetValue (s->Sp, i, i, on ? -s->kappa / s->w[i] : 1.0,
                         INSERT_VALUES));
     }
   for (size_t i = 0; i < s->k; i++)
@@ -1170,6 +1155,8 @@ update_values (lac_petsc *s, const lac_petsc_command *c)
                : s->size > 1 ? receive_rows (s) : LAC_SUCCESS, st;
   if ((st = assemble (s->Kw)))
     return st;
+  if (c->all)                             /* dimensionless for PETSc */
+    TRY (MatScale (s->Kw, 1 / c->scale));
   if (s->B && !status && s->root)
     status = insert_multipliers (s);
   if (s->B && (st = assemble (s->B)))
@@ -1195,7 +1182,7 @@ static int
 update (lac_petsc *s, const char *active)
 {
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_UPDATE,
-                          .all = s->new_numbers };
+                          .all = s->new_numbers, .scale = s->kappa };
   int status;
   if (!s->new_numbers && s->have_stat
       && (s->k == 0 || memcmp (active, s->stat, s->k) == 0))
@@ -1285,12 +1272,14 @@ projected_start (lac_petsc *s, Vec gl)
 }
 
 /* projected, after CG: U = u0 + x (in xu), lambda = (B^T B + D)^-1 B^T
- * (f_W - K_W U) (in sk), and the relative true residual of (*W):
- * [f_W - K_W U - B lambda; gl - B^T U] against [f_W; gl]. */
+ * (f_W - K_W U) (in sk), and the relative true residual of (*W), each
+ * block in its own unit (the larger of the two): the forces f_W - K_W U
+ * - B lambda against f_W (2-norms, as the CG's), the gaps gl - B^T U
+ * against |gl| + |B^T| |U| (max-norms). */
 static PetscErrorCode
 projected_finish (lac_petsc *s, Vec gl, double *res)
 {
-  PetscReal r1, r2, b1, b2;
+  PetscReal r1, r2, b1, b2, nB, nU;
   PetscCall (VecAXPY (s->xu, 1.0, s->u0));
   PetscCall (MatMult (s->Kw, s->xu, s->ru));
   PetscCall (VecAYPX (s->ru, -1.0, s->fw));
@@ -1301,10 +1290,12 @@ projected_finish (lac_petsc *s, Vec gl, double *res)
   PetscCall (VecNorm (s->ru, NORM_2, &r1));
   PetscCall (MatMultTranspose (s->B, s->xu, s->tk));
   PetscCall (VecAYPX (s->tk, -1.0, gl));
-  PetscCall (VecNorm (s->tk, NORM_2, &r2));
+  PetscCall (VecNorm (s->tk, NORM_INFINITY, &r2));
   PetscCall (VecNorm (s->fw, NORM_2, &b1));
-  PetscCall (VecNorm (gl, NORM_2, &b2));
-  *res = sqrt (r1 * r1 + r2 * r2) / fmax (sqrt (b1 * b1 + b2 * b2), 1e-300);
+  PetscCall (VecNorm (gl, NORM_INFINITY, &b2));
+  PetscCall (MatNorm (s->B, NORM_1, &nB));              /* |B^T|_inf */
+  PetscCall (VecNorm (s->xu, NORM_INFINITY, &nU));
+  *res = fmax (r1 / fmax (b1, 1e-300), r2 / fmax (b2 + nB * nU, 1e-300));
   return 0;
 }
 
@@ -1314,7 +1305,7 @@ static int
 step_projected (lac_petsc *s, const lac_petsc_command *c, const double *fw,
                 const double *g, double *U, double *lambda)
 {
-  PetscReal b1, b2;
+  PetscReal b1;
   double res = 0;
   int status;
   if ((status = to_dist (s, s->gu, s->useq, fw, s->fw))
@@ -1322,11 +1313,10 @@ step_projected (lac_petsc *s, const lac_petsc_command *c, const double *fw,
       || (status = to_dist (s, s->gu, s->useq, U, s->xu)))
     return status;
   TRY (projected_start (s, s->gk));
-  TRY (VecNorm (s->fw, NORM_2, &b1));
-  TRY (VecNorm (s->gk, NORM_2, &b2));
+  TRY (VecNorm (s->fw, NORM_2, &b1));     /* the CG's residual: forces */
   TRY (KSPSetInitialGuessNonzero (s->kp, PETSC_TRUE));
-  TRY (KSPSetTolerances (s->kp, 0.0, c->rtol * sqrt (b1 * b1 + b2 * b2),
-                         PETSC_DEFAULT, KSP_MAXIT));
+  TRY (KSPSetTolerances (s->kp, 0.0, c->rtol * b1, PETSC_DEFAULT,
+                         KSP_MAXIT));
   TRY (KSPSolve (s->kp, s->bu, s->xu));
   TRY (projected_finish (s, s->gk, &res));
   if ((status = check_ksp (s, s->kp, res, "projected CG on (*W)")))
@@ -1430,14 +1420,15 @@ load_vector (lac_petsc *s, const double *f, const double *g, double *x)
     }
 }
 
-int
-lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                 const double *g, double rtol, double *U, double *lambda)
+static int
+petsc_solve (void *w, const char *active, const double *f, const double *g,
+             double rtol, double *U, double *lambda)
 {
+  lac_petsc *s = w;
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_SOLVE, .rtol = rtol };
   int status;
   if (!s->sys || !s->built)
-    LAC_ERROR (LAC_EINVAL, "lac_petsc_set was not called");
+    LAC_ERROR (LAC_EINVAL, "petsc: set was not called");
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
   if ((status = update (s, active)))
@@ -1448,14 +1439,16 @@ lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
       if (active[i])
         s->idx[s->na++] = i;
       s->rhs[i] = active[i] ? -g[i] : 0.0;
-      s->lst[i] = active[i] ? lambda[i] : 0.0;
+      s->lst[i] = active[i] ? lambda[i] / s->kappa : 0.0;
     }
   load_vector (s, f, g, s->xv);
+  for (size_t j = 0; j < s->n; j++)
+    s->xv[j] /= s->kappa;                          /* f_W / kappa */
   if ((status = lac_petsc_command_send (&c))
       || (status = step_solve (s, &c, s->xv, s->rhs, U, s->lst)))
     return status;
   for (size_t i = 0; i < s->k; i++)
-    lambda[i] = active[i] ? s->lst[i] : 0.0;
+    lambda[i] = active[i] ? s->lst[i] * s->kappa : 0.0;
   return LAC_SUCCESS;
 }
 
@@ -1501,5 +1494,11 @@ lac_petsc_serve (void)
   lac_free (s);
   return status;
 }
+
+const lac_strategy_ops lac_petsc_ops = {
+  .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
+  .solve = petsc_solve, .get_counts = petsc_get_counts,
+  .method = petsc_method, .set_coordinates = petsc_set_coordinates
+};
 
 #endif /* LAC_HAVE_PETSC */

@@ -41,12 +41,18 @@
  * Without multipliers (k = 0, plain elasticity) K U = f is solved by
  * conjugate gradients and GAMG.  The near-null space of the multigrid is
  * the rigid motions of the nodal coordinates (MatNullSpaceCreateRigidBody:
- * 3 in 2D, 6 in 3D) when they are given (lac_petsc_set_coordinates), the
- * constants of each component otherwise (the axisymmetric model, whose
- * only rigid motion is the translation along the axis).  Tolerances are
- * on the true, unpreconditioned residual ||b - A x|| / ||b|| of (*W) (of
- * K U = f when k = 0), which is reported with the iterations of every
- * solve.
+ * 3 in 2D, 6 in 3D) when they are given (lac_strategy_set_coordinates:
+ * centred on their mean and divided by their largest distance from it
+ * first), the constants of each component otherwise (the axisymmetric
+ * model, whose only rigid motion is the translation along the axis).
+ * Tolerances are on the true, unpreconditioned residual ||b - A x|| /
+ * ||b||: of K U = f when k = 0; of the forces of (*W) for the projected
+ * CG, whose constraint rows hold to rounding, so that no tolerance adds
+ * forces to gaps and nothing depends on the units (the same scene in mm
+ * and MPa or in m and Pa: chapter 11); fieldsplit's GMRES takes the norm
+ * of the whole of (*W), forces and gaps together.  The residual reported
+ * with the iterations of every solve is, for the projected CG, the larger
+ * of the relative residuals of the two rows of (*W), each in its unit.
  *
  * Processes.  The rows of the matrices and vectors are cut in N
  * contiguous ranges, whole nodes for U, one range per MPI process, and so
@@ -69,11 +75,16 @@
  * for the blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega
  * W (> 0).  The defaults are those of an elastic body: nothing to tune.
  *
- * A build without PETSc (no LAC_HAVE_PETSC, chapter 13) compiles the same
- * interface: every function then fails with LAC_EDEP and the apt-get line.
- *
- * Ownership: the system and the coordinates are borrowed from set until
- * the next set or lac_petsc_free.
+ * The operations of the type petsc of solve/lac_strategy.h: alloc starts
+ * MPI and PETSc if nobody did (lac_petsc_initialize) and reads
+ * -lac_contact and -lac_omega; set_coordinates (before set) gives the
+ * rigid motions; set distributes K_W's pattern (kept while the patterns
+ * of K and C stay; new numbers: set again); solve's rtol is the relative
+ * unpreconditioned residual of (*W); method says what solves, e.g.
+ * "projected cg + gamg on K_W, 2 processes"; the counts give the
+ * processes.  A build without PETSc (no LAC_HAVE_PETSC, chapter 13)
+ * compiles the same: alloc and lac_petsc_serve fail with LAC_EDEP and the
+ * apt-get line.
  */
 #ifndef LAC_PETSC_H
 #define LAC_PETSC_H
@@ -88,25 +99,6 @@
  * on the root. */
 int lac_petsc_serve (void);
 
-typedef struct lac_petsc lac_petsc;     /* opaque */
-
-lac_petsc *lac_petsc_alloc (double omega);
-void lac_petsc_free (lac_petsc *s);      /* NULL allowed */
-/* The nodal coordinates (dof = dim*node + comp, the mesh's x; borrowed,
- * n entries) for the rigid motions; NULL: constants per component.
- * Before lac_petsc_set. */
-void lac_petsc_set_coordinates (lac_petsc *s, int dim, const double *x);
-/* Borrow the system (C NULL: no multipliers); distribute K_W's pattern
- * (kept while the patterns of K and C stay; new numbers: set again). */
-int lac_petsc_set (lac_petsc *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active` (NULL when k = 0),
- * right-hand sides f, g (NULL: F, G); U and lambda are the start (warm
- * start) on entry, the solution on return (lambda = 0 where inactive).
- * rtol: relative unpreconditioned residual of (*W). */
-int lac_petsc_solve (lac_petsc *s, const char *active, const double *f,
-                     const double *g, double rtol, double *U, double *lambda);
-void lac_petsc_get_counts (const lac_petsc *s, lac_solve_counts *c);
-/* What is solved, e.g. "gmres + fieldsplit(gamg, W), 2 processes". */
-const char *lac_petsc_method (const lac_petsc *s);
+extern const lac_strategy_ops lac_petsc_ops;
 
 #endif /* LAC_PETSC_H */

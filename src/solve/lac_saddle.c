@@ -13,9 +13,8 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-struct lac_saddle
+typedef struct lac_saddle
 {
-  lac_solver_kind kind;
   const lac_contact_system *sys;   /* borrowed                            */
   size_t n, k;
   lac_solver *solver;              /* owned: the factors of D A D          */
@@ -24,15 +23,14 @@ struct lac_saddle
   double *D;                       /* owned, n + k: the scaling            */
   double *work;                    /* owned, 2 (n + k)                     */
   lac_solve_counts counts;         /* factorizations (solves: not counted) */
-};
+} lac_saddle;
 
-lac_saddle *
-lac_saddle_alloc (lac_solver_kind kind)
+static void *
+saddle_alloc (lac_solver_kind kind)
 {
   lac_saddle *s = lac_calloc (1, sizeof *s);
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "saddle-point solver");
-  s->kind = kind;
   if (!(s->solver = lac_solver_alloc (kind)))
     {
       lac_free (s);
@@ -41,9 +39,22 @@ lac_saddle_alloc (lac_solver_kind kind)
   return s;
 }
 
-void
-lac_saddle_free (lac_saddle *s)
+static void *
+saddle_alloc_dense (void)
 {
+  return saddle_alloc (LAC_SOLVER_DENSE);
+}
+
+static void *
+saddle_alloc_lu (void)
+{
+  return saddle_alloc (LAC_SOLVER_UMFPACK);
+}
+
+static void
+saddle_free (void *w)
+{
+  lac_saddle *s = w;
   if (!s)
     return;
   lac_solver_free (s->solver);
@@ -53,9 +64,10 @@ lac_saddle_free (lac_saddle *s)
   lac_free (s);
 }
 
-int
-lac_saddle_set (lac_saddle *s, const lac_contact_system *sys)
+static int
+saddle_set (void *w, const lac_contact_system *sys)
 {
+  lac_saddle *s = w;
   size_t n = sys->K->ncol, k = sys->C->ncol;
   if (s->n != n || s->k != k || !s->D)
     {
@@ -162,16 +174,16 @@ factorize (lac_saddle *s, const char *active)
   return LAC_SUCCESS;
 }
 
-int
-lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
-                  const double *g, double *U, double *lambda)
+static int
+saddle_solve (void *w, const char *active, const double *f, const double *g,
+              double rtol, double *U, double *lambda)
 {
+  lac_saddle *s = w;
   size_t n = s->n, k = s->k;
   double *rhs = s->work, *sol = s->work + n + k;
   const double *D = s->D;
   int status = LAC_SUCCESS;
-  if (!s->sys)
-    LAC_ERROR (LAC_EINVAL, "lac_saddle_set was not called");
+  (void) rtol;
   if (!s->have_factor || memcmp (active, s->factored_for, k) != 0)
     status = factorize (s, active);
   if (status)
@@ -191,8 +203,18 @@ lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
   return LAC_SUCCESS;
 }
 
-void
-lac_saddle_get_counts (const lac_saddle *s, lac_solve_counts *c)
+static void
+saddle_get_counts (const void *w, lac_solve_counts *c)
 {
-  *c = s->counts;
+  *c = ((const lac_saddle *) w)->counts;
+  c->solves = 0;                    /* substitutions of the LU: not counted */
 }
+
+const lac_strategy_ops lac_saddle_dense_ops = {
+  .alloc = saddle_alloc_dense, .free = saddle_free, .set = saddle_set,
+  .solve = saddle_solve, .get_counts = saddle_get_counts
+};
+const lac_strategy_ops lac_saddle_lu_ops = {
+  .alloc = saddle_alloc_lu, .free = saddle_free, .set = saddle_set,
+  .solve = saddle_solve, .get_counts = saddle_get_counts
+};

@@ -12,30 +12,16 @@
  * explicit zeros), so UMFPACK's ordering and symbolic analysis are made
  * once and kept across active sets (lac_solver_refactor).
  *
- * Ownership: the system is borrowed from lac_saddle_set until the next
- * set or lac_saddle_free.
+ * The operations of the types dense (GSL) and saddle (UMFPACK) of
+ * solve/lac_strategy.h; their solve factorizes when the statuses changed
+ * since the last factorization.
  */
 #ifndef LAC_SADDLE_H
 #define LAC_SADDLE_H
 
-#include "linalg/lac_linalg.h"
 #include "solve/lac_system.h"
 
-typedef struct lac_saddle lac_saddle;     /* opaque */
-
-/* kind: LAC_SOLVER_DENSE or LAC_SOLVER_UMFPACK. */
-lac_saddle *lac_saddle_alloc (lac_solver_kind kind);
-void lac_saddle_free (lac_saddle *s);      /* NULL allowed */
-int lac_saddle_set (lac_saddle *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active` (lambda_i = 0 when
- * inactive), with F and G replaced by f and g (the right-hand sides of a
- * refinement step; NULL: those of the system).  Factorizes when the
- * statuses changed since the last factorization. */
-int lac_saddle_solve (lac_saddle *s, const char *active, const double *f,
-                      const double *g, double *U, double *lambda);
-/* Numeric factorizations, symbolic analyses, their time and flops made so
- * far, and the condition estimate of the last factorization (the solves
- * and iterations are not counted: 0). */
-void lac_saddle_get_counts (const lac_saddle *s, lac_solve_counts *c);
+extern const lac_strategy_ops lac_saddle_dense_ops;   /* GSL's dense LU */
+extern const lac_strategy_ops lac_saddle_lu_ops;      /* UMFPACK's LU   */
 
 #endif /* LAC_SADDLE_H */

@@ -9,7 +9,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-struct lac_schur
+typedef struct lac_schur
 {
   const lac_contact_system *sys;   /* borrowed                            */
   size_t n, k;
@@ -17,11 +17,12 @@ struct lac_schur
   double *S;                       /* owned, k x k: S(j, i) at S[i k + j] */
   char *have;                      /* owned, k: column i of S computed    */
   double *x;                       /* owned, n: scratch                   */
+  int factor_failed;               /* the last set's K = L L^T failed     */
   lac_solve_counts counts;
-};
+} lac_schur;
 
-lac_schur *
-lac_schur_alloc (void)
+static void *
+schur_alloc (void)
 {
   lac_schur *s = lac_calloc (1, sizeof *s);
   if (!s)
@@ -44,9 +45,10 @@ free_arrays (lac_schur *s)
   s->have = NULL;
 }
 
-void
-lac_schur_free (lac_schur *s)
+static void
+schur_free (void *w)
 {
+  lac_schur *s = w;
   if (!s)
     return;
   free_arrays (s);
@@ -54,14 +56,21 @@ lac_schur_free (lac_schur *s)
   lac_free (s);
 }
 
-void
-lac_schur_get_counts (const lac_schur *s, lac_solve_counts *c)
+static void
+schur_get_counts (const void *w, lac_solve_counts *c)
 {
-  *c = s->counts;
+  *c = ((const lac_schur *) w)->counts;
 }
 
-int
-lac_schur_set (lac_schur *s, const lac_contact_system *sys)
+static int
+schur_factor_failed (const void *w)
+{
+  return ((const lac_schur *) w)->factor_failed;
+}
+
+/* Borrow the system: arrays for its sizes, no column of S yet. */
+static int
+borrow (lac_schur *s, const lac_contact_system *sys)
 {
   size_t n = sys->K->ncol, k = sys->C->ncol;
   if (!s->x || s->n != n || s->k != k)
@@ -77,29 +86,26 @@ lac_schur_set (lac_schur *s, const lac_contact_system *sys)
     }
   s->sys = sys;
   memset (s->have, 0, k);
-  return lac_solve_counts_factor (&s->counts, s->chol, sys->K); /* K = LL^T */
+  return LAC_SUCCESS;
 }
 
-int
-lac_schur_reset (lac_schur *s, const lac_contact_system *sys)
+static int
+schur_set (void *w, const lac_contact_system *sys)
 {
-  size_t k = sys->C->ncol;
-  if (!s->x || s->n != sys->K->ncol)
-    LAC_ERROR (LAC_EINVAL, "lac_schur_reset before lac_schur_set, or another"
-               " order of K");
-  if (s->k != k)
-    {
-      lac_free (s->S);
-      lac_free (s->have);
-      s->S = lac_malloc ((k ? k * k : 1) * sizeof *s->S);
-      s->have = lac_malloc (k ? k : 1);
-      if (!s->S || !s->have)
-        LAC_ERROR (LAC_ENOMEM, "Schur complement of %zu multipliers", k);
-      s->k = k;
-    }
-  s->sys = sys;
-  memset (s->have, 0, k);
-  return LAC_SUCCESS;
+  lac_schur *s = w;
+  int status = borrow (s, sys);
+  if (!status)
+    status = lac_solve_counts_factor (&s->counts, s->chol, sys->K);
+  s->factor_failed = status == LAC_ESING;                   /* K = L L^T */
+  return status;
+}
+
+/* The factorization of the last set's K kept (the strategy checked that
+ * K has the same order). */
+static int
+schur_reset (void *w, const lac_contact_system *sys)
+{
+  return borrow (w, sys);
 }
 
 /* Columns idx[0..nb) of S: X = K^{-1} C(:, idx) in one block solve, then
@@ -192,15 +198,15 @@ schur_multipliers (lac_schur *s, const char *active, const double *b,
   return status;
 }
 
-int
-lac_schur_solve (lac_schur *s, const char *active, const double *f,
-                 const double *g, double *U, double *lambda)
+static int
+schur_solve (void *w, const char *active, const double *f, const double *g,
+             double rtol, double *U, double *lambda)
 {
-  const lac_csc *C;
+  lac_schur *s = w;
+  const lac_csc *C = s->sys->C;
   int status;
-  if (!s->sys)
-    LAC_ERROR (LAC_EINVAL, "lac_schur_set was not called");
-  C = s->sys->C;
+  (void) rtol;
+  s->factor_failed = 0;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
   if ((status = schur_columns (s, active))
@@ -223,3 +229,9 @@ lac_schur_solve (lac_schur *s, const char *active, const double *f,
   s->counts.solves++;
   return lac_solver_solve (s->chol, s->x, U);          /* U = K^-1 (.) */
 }
+
+const lac_strategy_ops lac_schur_ops = {
+  .alloc = schur_alloc, .free = schur_free, .set = schur_set,
+  .reset = schur_reset, .solve = schur_solve,
+  .get_counts = schur_get_counts, .factor_failed = schur_factor_failed
+};

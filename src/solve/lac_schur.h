@@ -16,8 +16,10 @@
  * (a new K every iteration) pays for the active columns at every
  * iteration.  Chapter 07 compares it with the augmented strategy (b).
  *
- * Ownership: the system is borrowed from lac_schur_set until the next set
- * or lac_schur_free.
+ * The operations of the type schur of solve/lac_strategy.h: set factors
+ * K (a K that is not positive definite: LAC_ESING, and factor_failed
+ * says so), reset keeps that factorization for another C (only the
+ * columns of S are forgotten).
  */
 #ifndef LAC_SCHUR_H
 #define LAC_SCHUR_H
@@ -26,21 +28,6 @@
 
 #define LAC_SCHUR_BLOCK 64
 
-typedef struct lac_schur lac_schur;     /* opaque */
-
-lac_schur *lac_schur_alloc (void);
-void lac_schur_free (lac_schur *s);      /* NULL allowed */
-/* Borrow the system, factorize K (the analysis kept for a K of the same
- * pattern), forget the columns of S. */
-int lac_schur_set (lac_schur *s, const lac_contact_system *sys);
-/* Borrow a system with the same K as the last set's (or a K whose old
- * factorization will do, as a preconditioner) and another C: keep the
- * factorization, forget the columns of S. */
-int lac_schur_reset (lac_schur *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active`, right-hand sides f, g
- * (NULL: F, G); lambda_i = 0 where inactive. */
-int lac_schur_solve (lac_schur *s, const char *active, const double *f,
-                     const double *g, double *U, double *lambda);
-void lac_schur_get_counts (const lac_schur *s, lac_solve_counts *c);
+extern const lac_strategy_ops lac_schur_ops;
 
 #endif /* LAC_SCHUR_H */

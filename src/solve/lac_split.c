@@ -21,6 +21,7 @@
 #include "linalg/lac_gmres.h"
 #include "linalg/lac_tasks.h"
 #include "solve/lac_active.h"
+#include "solve/lac_augmented.h"
 
 #define GMRES_RESTART 50
 #define GMRES_MAXIT 300     /* about ten are needed (lac_split.h) */
@@ -40,7 +41,7 @@ typedef struct part
   double *x, *y;           /* owned, n: scratch                          */
 } part;
 
-struct lac_split
+typedef struct lac_split
 {
   const lac_contact_system *sys;   /* borrowed                            */
   size_t n;
@@ -52,20 +53,22 @@ struct lac_split
   double *v;               /* owned, k: scratch                            */
   double *U0;              /* owned, n: U of the current product           */
   lac_solve_counts counts;
-};
+} lac_split;
 
-lac_split *
-lac_split_alloc (double omega)
+static void split_free (void *w);
+
+static void *
+split_alloc (void)
 {
   lac_split *s = lac_calloc (1, sizeof *s);
   if (!s)
     LAC_ERROR_NULL (LAC_ENOMEM, "split solver");
-  s->act.omega = omega;
+  s->act.omega = LAC_AUGMENT_OMEGA;
   s->H.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
   s->S.chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
   if (!s->H.chol || !s->S.chol)
     {
-      lac_split_free (s);
+      split_free (s);
       return NULL;
     }
   return s;
@@ -98,9 +101,10 @@ free_arrays (lac_split *s)
   s->v = s->U0 = NULL;
 }
 
-void
-lac_split_free (lac_split *s)
+static void
+split_free (void *w)
 {
+  lac_split *s = w;
   if (!s)
     return;
   free_arrays (s);
@@ -109,23 +113,16 @@ lac_split_free (lac_split *s)
   lac_free (s);
 }
 
-void
-lac_split_get_counts (const lac_split *s, lac_solve_counts *c)
+static void
+split_get_counts (const void *w, lac_solve_counts *c)
 {
-  *c = s->counts;
+  *c = ((const lac_split *) w)->counts;
 }
 
-int
-lac_split_factor_failed (const lac_split *s)
+static int
+split_factor_failed (const void *w)
 {
-  return s->factor_failed;
-}
-
-void
-lac_split_sizes (const lac_split *s, size_t *nH, size_t *nS)
-{
-  *nH = s->H.n;
-  *nS = s->S.n;
+  return ((const lac_split *) w)->factor_failed;
 }
 
 /* ---- the parts ---------------------------------------------------------- */
@@ -244,9 +241,10 @@ factor (lac_split *s, lac_solver *chol, const lac_csc *A)
   return status;
 }
 
-int
-lac_split_set (lac_split *s, const lac_contact_system *sys)
+static int
+split_set (void *w, const lac_contact_system *sys)
 {
+  lac_split *s = w;
   size_t n = sys->K->ncol, k = sys->C->ncol;
   char *in_S;
   long *loc;
@@ -400,15 +398,14 @@ precondition (void *ctx, const double *r, double *z)
   return LAC_SUCCESS;
 }
 
-int
-lac_split_solve (lac_split *s, const char *active, const double *f,
-                 const double *g, double rtol, double *U, double *lambda)
+static int
+split_solve (void *w, const char *active, const double *f, const double *g,
+             double rtol, double *U, double *lambda)
 {
+  lac_split *s = w;
   lac_active *act = &s->act;
   lac_gmres_info info;
   int status;
-  if (!s->sys)
-    LAC_ERROR (LAC_EINVAL, "lac_split_set was not called");
   s->factor_failed = 0;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
@@ -427,3 +424,9 @@ lac_split_solve (lac_split *s, const char *active, const double *f,
   lac_active_scatter (act, lambda);
   return triangular_solve (s, f, g, act->lamA, U);          /* 4. */
 }
+
+const lac_strategy_ops lac_split_ops = {
+  .alloc = split_alloc, .free = split_free, .set = split_set,
+  .solve = split_solve, .get_counts = split_get_counts,
+  .factor_failed = split_factor_failed
+};

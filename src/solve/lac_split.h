@@ -45,33 +45,18 @@
  * the mesh.  Each iteration is one forward and back substitution with
  * each factor.
  *
- * Ownership: the system is borrowed from lac_split_set until the next set
- * or lac_split_free.
+ * The operations of the type split of solve/lac_strategy.h (omega =
+ * LAC_AUGMENT_OMEGA): set finds the parts H and S from the connected
+ * components of K and from N and makes the pattern of K_SS + C_S C_S^T
+ * (nothing is factorized before the first solve); solve starts GMRES
+ * from the given lambda_A; factor_failed: the last error was a
+ * factorization (not positive definite).
  */
 #ifndef LAC_SPLIT_H
 #define LAC_SPLIT_H
 
 #include "solve/lac_system.h"
 
-typedef struct lac_split lac_split;     /* opaque */
-
-lac_split *lac_split_alloc (double omega);
-void lac_split_free (lac_split *s);      /* NULL allowed */
-/* Borrow the system; find the parts H and S from the connected
- * components of K and from N, make the pattern of K_SS + C_S C_S^T
- * (nothing is factorized before the first solve). */
-int lac_split_set (lac_split *s, const lac_contact_system *sys);
-/* U, lambda of (*) for the statuses `active`, right-hand sides f, g
- * (NULL: F, G of the system); lambda holds the start of GMRES on entry,
- * 0 on the inactive ones on return; rtol: GMRES's relative residual. */
-int lac_split_solve (lac_split *s, const char *active, const double *f,
-                     const double *g, double rtol, double *U,
-                     double *lambda);
-void lac_split_get_counts (const lac_split *s, lac_solve_counts *c);
-/* 1 if the last error was a factorization (not positive definite). */
-int lac_split_factor_failed (const lac_split *s);
-/* Unknowns of the parts held by Dirichlet conditions (H) and by contact
- * alone (S), after set. */
-void lac_split_sizes (const lac_split *s, size_t *nH, size_t *nS);
+extern const lac_strategy_ops lac_split_ops;
 
 #endif /* LAC_SPLIT_H */

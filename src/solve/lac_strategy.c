@@ -1,16 +1,16 @@
 /* lac_strategy.c -- solve the LAC system for a given active set
  *                   (see lac_strategy.h)          [LAC (17), Alg. 1 l. 21]
  *
- * The choice of the strategy, the dispatch to solve/lac_saddle.c (dense,
- * saddle), solve/lac_schur.c, solve/lac_augmented.c, solve/lac_split.c
- * and solve/lac_petsc.c, the check that the
- * active multipliers hold the bodies held by contact alone, the
- * refinement of every solve, and the fallback to the LU of the whole
- * system when a Cholesky factorization fails.
+ * The table of the types, the choice, and what every type shares: the
+ * check that the active multipliers hold the bodies held by contact
+ * alone, the refinement of every solve, the counts, and the fallback to
+ * the LU of the whole system when a Cholesky factorization fails.  The
+ * operations of each type are in its own file (solve/lac_saddle.c,
+ * lac_schur.c, lac_augmented.c, lac_split.c, lac_petsc.c).
  */
 #include "solve/lac_strategy.h"
 
-#include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include "base/lac_clock.h"
@@ -25,34 +25,55 @@
 #define CG_RTOL 1e-10     /* relative residual of the conjugate gradients */
 #define CG_RTOL_REFINE 1e-3  /* ... in a refinement step (a correction) */
 #define MAX_REFINE 3
-#define MAX_REFINE_KRYLOV 2  /* petsc: a step costs half a solve, ...  */
-#define TOL_KRYLOV 1e-11     /* ... so only above this backward error    */
+#define MAX_REFINE_KRYLOV 2  /* no factorization: a step costs half a  */
+#define TOL_KRYLOV 1e-11     /* solve, so only above this backward error */
+
+/* Each row: name, operations, the scenes it applies to, the size up to
+ * which auto takes it; what it factorizes, falls back unasked, refused
+ * by the large-deformation loop, solves on the MPI processes
+ * (lac_strategy_type).  Auto takes the first row that applies. */
+const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
+  { "auto", NULL, LAC_BODIES_ANY, 0,
+    LAC_FACTOR_NONE, 0, 0, 0 },
+  { "dense", &lac_saddle_dense_ops, LAC_BODIES_ANY, LAC_STRATEGY_DENSE_MAX,
+    LAC_FACTOR_DENSE, 0, 0, 0 },
+  { "schur", &lac_schur_ops, LAC_BODIES_HELD, SIZE_MAX,
+    LAC_FACTOR_CHOLESKY, 0, 0, 0 },
+  { "augmented", &lac_augmented_ops, LAC_BODIES_ANY, 0,
+    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
+  { "saddle", &lac_saddle_lu_ops, LAC_BODIES_ANY, 0,
+    LAC_FACTOR_LU, 0, 0, 0 },
+  { "petsc", &lac_petsc_ops, LAC_BODIES_ANY, 0,
+    LAC_FACTOR_NONE, 0, 1, 1 },
+  { "split", &lac_split_ops, LAC_BODIES_FLOATING, SIZE_MAX,
+    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
+  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0, 0 }
+};
+
+/* The type every failed Cholesky factorization falls back to. */
+#define FALLBACK (&lac_strategy_table[LAC_STRATEGY_SADDLE])
 
 struct lac_strategy
 {
-  lac_strategy_kind kind;          /* in use (saddle after a fallback)    */
+  const lac_strategy_type *type;   /* borrowed: in use (the fallback's)   */
+  void *w;                         /* owned: the type's workspace         */
+  int allow_fallback;              /* also for types that do not unasked  */
   const lac_contact_system *sys;   /* borrowed                            */
-  lac_saddle *saddle;              /* owned: dense, saddle, fallback      */
-  lac_schur *schur;                /* owned: schur                        */
-  lac_augmented *aug;              /* owned: augmented                    */
-  lac_split *split;                /* owned: split                        */
-  lac_petsc *petsc;                /* owned: petsc                        */
   double *r, *g, *dU, *dl;         /* owned: residuals and corrections    */
   size_t n, k;
   char fallback[512];              /* why the fallback happened, or ""    */
   lac_strategy_counts counts;
-  lac_solve_counts before;         /* counts of a Cholesky solver replaced
-                                      by saddle                           */
+  lac_solve_counts before;         /* counts of the type replaced by the
+                                      fallback                            */
 };
 
-static const char *const names[LAC_NSTRATEGIES] =
-  { "auto", "dense", "schur", "augmented", "saddle", "petsc", "split" };
+/* ---- the table ---------------------------------------------------------- */
 
 int
 lac_strategy_from_name (const char *name)
 {
   for (int k = 0; name && k < LAC_NSTRATEGIES; k++)
-    if (strcmp (name, names[k]) == 0)
+    if (strcmp (name, lac_strategy_table[k].name) == 0)
       return k;
   return -1;
 }
@@ -60,69 +81,108 @@ lac_strategy_from_name (const char *name)
 const char *
 lac_strategy_name (lac_strategy_kind kind)
 {
-  return (unsigned) kind < LAC_NSTRATEGIES ? names[kind] : "unknown";
+  return (unsigned) kind < LAC_NSTRATEGIES ? lac_strategy_table[kind].name
+                                           : "unknown";
+}
+
+const lac_strategy_type *
+lac_strategy_type_of (int kind)
+{
+  return kind > LAC_STRATEGY_AUTO && kind < LAC_NSTRATEGIES
+         ? &lac_strategy_table[kind] : NULL;
+}
+
+/* Does type t solve a system with nfree rigid motions left free? */
+static int
+applies (const lac_strategy_type *t, size_t nfree)
+{
+  return t->bodies == LAC_BODIES_ANY
+         || (t->bodies == LAC_BODIES_HELD) == (nfree == 0);
+}
+
+/* t refused for nfree rigid motions; the message names those that do. */
+static lac_strategy_kind
+refuse (const lac_strategy_type *t, size_t nfree)
+{
+  char use[200] = "";
+  for (int k = 1; k < LAC_NSTRATEGIES; k++)
+    if (applies (&lac_strategy_table[k], nfree))
+      snprintf (use + strlen (use), sizeof use - strlen (use), "%s%s",
+                *use ? ", " : "", lac_strategy_table[k].name);
+  if (t->bodies == LAC_BODIES_HELD)
+    lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy %s needs "
+                   "every body held by its Dirichlet conditions (K positive"
+                   " definite); %zu rigid motion%s held by contact alone: "
+                   "use %s", t->name, nfree, nfree == 1 ? " is" : "s are",
+                   use);
+  else
+    lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy %s needs a "
+                   "body held by contact alone (it augments the equations "
+                   "of those bodies only); every body is held by its "
+                   "Dirichlet conditions: use %s", t->name, use);
+  return LAC_NSTRATEGIES;
 }
 
 lac_strategy_kind
 lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
                      size_t nfree)
 {
-  if (want == LAC_STRATEGY_SCHUR && nfree > 0)
-    {
-      lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy schur "
-                     "needs every body held by its Dirichlet conditions (K "
-                     "positive definite); %zu rigid motion%s held by contact "
-                     "alone: use split, augmented, saddle or dense", nfree,
-                     nfree == 1 ? " is" : "s are");
-      return LAC_NSTRATEGIES;
-    }
-  if (want == LAC_STRATEGY_SPLIT && nfree == 0)
-    {
-      lac_error_set (LAC_EINVAL, "lac_strategy_choose", "strategy split "
-                     "needs a body held by contact alone (it augments the "
-                     "equations of those bodies only); every body is held "
-                     "by its Dirichlet conditions: use schur, augmented, "
-                     "saddle or dense");
-      return LAC_NSTRATEGIES;
-    }
+  const lac_strategy_type *t = lac_strategy_type_of (want);
+  if (t)                         /* without contact (k = 0) any type */
+    return k == 0 || applies (t, nfree) ? want : refuse (t, nfree);
   if (want != LAC_STRATEGY_AUTO)
     return want;
-  if (n + k <= LAC_STRATEGY_DENSE_MAX)
-    return LAC_STRATEGY_DENSE;
-  return nfree == 0 ? LAC_STRATEGY_SCHUR : LAC_STRATEGY_SPLIT;
+  for (int j = 1; j < LAC_NSTRATEGIES; j++)
+    if (n + k <= lac_strategy_table[j].auto_upto
+        && applies (&lac_strategy_table[j], nfree))
+      return (lac_strategy_kind) j;
+  return LAC_STRATEGY_SADDLE;          /* not reached with the table above */
 }
 
-static int fall_back (lac_strategy *s);
+lac_strategy_kind
+lac_strategy_choose_factor (lac_strategy_factor factor, size_t nfree)
+{
+  for (int j = 1; j < LAC_NSTRATEGIES; j++)
+    if (lac_strategy_table[j].factor == factor
+        && applies (&lac_strategy_table[j], nfree))
+      return (lac_strategy_kind) j;
+  return LAC_STRATEGY_SADDLE;
+}
 
 /* ---- alloc / set / free ------------------------------------------------- */
 
 lac_strategy *
-lac_strategy_alloc (lac_strategy_kind kind)
+lac_strategy_alloc_type (const lac_strategy_type *type)
 {
   lac_strategy *s;
-  if (kind <= LAC_STRATEGY_AUTO || kind >= LAC_NSTRATEGIES)
-    LAC_ERROR_NULL (LAC_EINVAL, "strategy %d: choose one first "
-                    "(lac_strategy_choose)", (int) kind);
+  if (!type || !type->ops)
+    LAC_ERROR_NULL (LAC_EINVAL, "strategy %s: choose one first "
+                    "(lac_strategy_choose)", type ? type->name : "NULL");
   if (!(s = lac_calloc (1, sizeof *s)))
     LAC_ERROR_NULL (LAC_ENOMEM, "strategy");
-  s->kind = kind;
-  if (kind == LAC_STRATEGY_DENSE || kind == LAC_STRATEGY_SADDLE)
-    s->saddle = lac_saddle_alloc (kind == LAC_STRATEGY_DENSE
-                                  ? LAC_SOLVER_DENSE : LAC_SOLVER_UMFPACK);
-  else if (kind == LAC_STRATEGY_SCHUR)
-    s->schur = lac_schur_alloc ();
-  else if (kind == LAC_STRATEGY_PETSC)
-    s->petsc = lac_petsc_alloc (LAC_PETSC_OMEGA);
-  else if (kind == LAC_STRATEGY_SPLIT)
-    s->split = lac_split_alloc (LAC_AUGMENT_OMEGA);
-  else
-    s->aug = lac_augmented_alloc (LAC_AUGMENT_OMEGA);
-  if (!s->saddle && !s->schur && !s->aug && !s->petsc && !s->split)
+  s->type = type;
+  if (!(s->w = type->ops->alloc ()))
     {
       lac_free (s);
       return NULL;
     }
   return s;
+}
+
+lac_strategy *
+lac_strategy_alloc (lac_strategy_kind kind)
+{
+  const lac_strategy_type *t = lac_strategy_type_of (kind);
+  if (!t)
+    LAC_ERROR_NULL (LAC_EINVAL, "strategy %d: choose one first "
+                    "(lac_strategy_choose)", (int) kind);
+  return lac_strategy_alloc_type (t);
+}
+
+void
+lac_strategy_allow_fallback (lac_strategy *s, int allow)
+{
+  s->allow_fallback = allow;
 }
 
 static void
@@ -141,45 +201,76 @@ lac_strategy_free (lac_strategy *s)
   if (!s)
     return;
   free_work (s);
-  lac_saddle_free (s->saddle);
-  lac_schur_free (s->schur);
-  lac_augmented_free (s->aug);
-  lac_split_free (s->split);
-  lac_petsc_free (s->petsc);
+  s->type->ops->free (s->w);
   lac_free (s);
 }
 
 void
 lac_strategy_set_coordinates (lac_strategy *s, int dim, const double *x)
 {
-  if (s->petsc)
-    lac_petsc_set_coordinates (s->petsc, dim, x);
+  if (s->type->ops->set_coordinates)
+    s->type->ops->set_coordinates (s->w, dim, x);
+}
+
+/* The residuals and corrections for n displacements, k multipliers. */
+static int
+work_arrays (lac_strategy *s, size_t n, size_t k)
+{
+  if (s->r && s->n == n && s->k == k)
+    return LAC_SUCCESS;
+  free_work (s);
+  s->r = lac_malloc (n * sizeof *s->r);
+  s->dU = lac_malloc (n * sizeof *s->dU);
+  s->g = lac_malloc ((k ? k : 1) * sizeof *s->g);
+  s->dl = lac_malloc ((k ? k : 1) * sizeof *s->dl);
+  if (!s->r || !s->dU || !s->g || !s->dl)
+    LAC_ERROR (LAC_ENOMEM, "strategy work arrays, n = %zu, k = %zu", n, k);
+  s->n = n;
+  s->k = k;
+  return LAC_SUCCESS;
+}
+
+/* Did the last error come from a Cholesky factorization that may fall
+ * back (the type does it unasked, or the caller allowed it)? */
+static int
+may_fall_back (const lac_strategy *s, int status)
+{
+  const lac_strategy_ops *ops = s->type->ops;
+  return status == LAC_ESING && ops->factor_failed
+         && (s->type->falls_back || s->allow_fallback)
+         && ops->factor_failed (s->w);
+}
+
+/* The factorization failed although the bodies are held: go on with
+ * the LU of the whole system, set on the system. */
+static int
+fall_back (lac_strategy *s)
+{
+  void *w;
+  snprintf (s->fallback, sizeof s->fallback, "%s: %s; the LU of the "
+            "saddle-point system (%s) from now on", s->type->name,
+            lac_error_message (), FALLBACK->name);
+  lac_error_clear ();
+  if (!(w = FALLBACK->ops->alloc ()))
+    return LAC_ENOMEM;
+  s->type->ops->get_counts (s->w, &s->before);
+  s->type->ops->free (s->w);
+  s->type = FALLBACK;
+  s->w = w;
+  return s->type->ops->set (s->w, s->sys);
 }
 
 int
 lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
 {
-  size_t n = sys->K->ncol, k = sys->C->ncol;
   double t0 = lac_seconds ();
-  int status;
-  if (!s->r || s->n != n || s->k != k)
-    {
-      free_work (s);
-      s->r = lac_malloc (n * sizeof *s->r);
-      s->dU = lac_malloc (n * sizeof *s->dU);
-      s->g = lac_malloc ((k ? k : 1) * sizeof *s->g);
-      s->dl = lac_malloc ((k ? k : 1) * sizeof *s->dl);
-      if (!s->r || !s->dU || !s->g || !s->dl)
-        LAC_ERROR (LAC_ENOMEM, "strategy work arrays, n = %zu", n);
-      s->n = n;
-      s->k = k;
-    }
+  int status = work_arrays (s, sys->K->ncol, sys->C->ncol);
+  if (status)
+    return status;
   s->sys = sys;
-  status = s->saddle ? lac_saddle_set (s->saddle, sys)
-           : s->schur ? lac_schur_set (s->schur, sys)
-           : s->petsc ? lac_petsc_set (s->petsc, sys)
-           : s->split ? lac_split_set (s->split, sys)
-           : lac_augmented_set (s->aug, sys);
+  status = s->type->ops->set (s->w, sys);
+  if (may_fall_back (s, status))
+    status = fall_back (s);
   s->counts.time_factor += lac_seconds () - t0;
   return status;
 }
@@ -188,86 +279,27 @@ int
 lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
                     int *kept)
 {
-  *kept = s->schur && s->sys && s->n == sys->K->ncol;
+  *kept = s->type->ops->reset && s->sys && s->n == sys->K->ncol;
   if (!*kept)
     return lac_strategy_set (s, sys);
   double t0 = lac_seconds ();
-  size_t k = sys->C->ncol;
-  if (s->k != k)
-    {
-      lac_free (s->g);
-      lac_free (s->dl);
-      s->g = lac_malloc ((k ? k : 1) * sizeof *s->g);
-      s->dl = lac_malloc ((k ? k : 1) * sizeof *s->dl);
-      if (!s->g || !s->dl)
-        LAC_ERROR (LAC_ENOMEM, "strategy work arrays, k = %zu", k);
-      s->k = k;
-    }
+  int status = work_arrays (s, sys->K->ncol, sys->C->ncol);
   s->sys = sys;
-  int status = lac_schur_reset (s->schur, sys);
+  if (!status)
+    status = s->type->ops->reset (s->w, sys);
   s->counts.time_solve += lac_seconds () - t0;
   return status;
 }
 
 /* ---- solve -------------------------------------------------------------- */
 
-/* One solve of (*) with right-hand sides f, g (NULL: F, G); rtol: the
- * conjugate gradients' tolerance (augmented). */
+/* One solve of (*) by the type, right-hand sides f, g (NULL: F, G);
+ * rtol: the tolerance of an inner Krylov method. */
 static int
 solve_once (lac_strategy *s, const char *active, const double *f,
             const double *g, double rtol, double *U, double *lambda)
 {
-  if (s->saddle)
-    return lac_saddle_solve (s->saddle, active, f, g, U, lambda);
-  if (s->schur)
-    return lac_schur_solve (s->schur, active, f, g, U, lambda);
-  if (s->petsc)
-    return lac_petsc_solve (s->petsc, active, f, g, rtol, U, lambda);
-  if (s->split)
-    return lac_split_solve (s->split, active, f, g, rtol, U, lambda);
-  return lac_augmented_solve (s->aug, active, f, g, rtol, U, lambda);
-}
-
-/* The factorization of K_W failed although the bodies are held: go on
- * with the LU of the whole system. */
-static int
-fall_back (lac_strategy *s)
-{
-  snprintf (s->fallback, sizeof s->fallback, "%s: %s; the LU of the "
-            "saddle-point system (saddle) from now on",
-            names[s->kind], lac_error_message ());
-  lac_error_clear ();
-  if (s->schur)
-    lac_schur_get_counts (s->schur, &s->before);
-  else if (s->split)
-    lac_split_get_counts (s->split, &s->before);
-  else
-    lac_augmented_get_counts (s->aug, &s->before);
-  lac_schur_free (s->schur);
-  lac_augmented_free (s->aug);
-  lac_split_free (s->split);
-  s->schur = NULL;
-  s->aug = NULL;
-  s->split = NULL;
-  s->kind = LAC_STRATEGY_SADDLE;
-  if (!(s->saddle = lac_saddle_alloc (LAC_SOLVER_UMFPACK)))
-    return LAC_ENOMEM;
-  return lac_saddle_set (s->saddle, s->sys);
-}
-
-/* The counts of the Cholesky-based solver in use into *sc (unchanged
- * without one: the saddle-point LU counts apart). */
-static void
-inner_counts (const lac_strategy *s, lac_solve_counts *sc)
-{
-  if (s->schur)
-    lac_schur_get_counts (s->schur, sc);
-  if (s->aug)
-    lac_augmented_get_counts (s->aug, sc);
-  if (s->split)
-    lac_split_get_counts (s->split, sc);
-  if (s->petsc)
-    lac_petsc_get_counts (s->petsc, sc);
+  return s->type->ops->solve (s->w, active, f, g, rtol, U, lambda);
 }
 
 /* Up to MAX_REFINE steps of iterative refinement on the residual of (*):
@@ -276,8 +308,9 @@ static int
 refine (lac_strategy *s, const char *active, double *U, double *lambda)
 {
   double be = lac_system_residual (s->sys, active, U, lambda, s->r, s->g);
-  int steps = s->petsc ? MAX_REFINE_KRYLOV : MAX_REFINE;
-  double tol = s->petsc ? TOL_KRYLOV : LAC_STRATEGY_TOL;
+  int krylov = s->type->factor == LAC_FACTOR_NONE;
+  int steps = krylov ? MAX_REFINE_KRYLOV : MAX_REFINE;
+  double tol = krylov ? TOL_KRYLOV : LAC_STRATEGY_TOL;
   for (int step = 0; step < steps && be > tol; step++)
     {
       double bnew;
@@ -315,17 +348,12 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
     return status;
   s->counts.solves++;
   status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
-  if (status == LAC_ESING && ((s->aug && lac_augmented_factor_failed (s->aug))
-                              || (s->split
-                                  && lac_split_factor_failed (s->split))))
-    {
-      if (!(status = fall_back (s)))
-        status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
-    }
+  if (may_fall_back (s, status) && !(status = fall_back (s)))
+    status = solve_once (s, active, NULL, NULL, CG_RTOL, U, lambda);
   if (!status)
     {
-      lac_solve_counts sc = { 0 };
-      inner_counts (s, &sc);
+      lac_solve_counts sc;
+      s->type->ops->get_counts (s->w, &sc);
       s->counts.last_iterations = sc.last_iterations;  /* before refine */
       s->counts.last_residual = sc.last_residual;
       status = refine (s, active, U, lambda);
@@ -347,16 +375,27 @@ lac_strategy_solve_rhs (lac_strategy *s, const char *active, const double *f,
   return status;
 }
 
+/* ---- what it is, what it did -------------------------------------------- */
+
 const char *
 lac_strategy_method (const lac_strategy *s)
 {
-  return s->petsc ? lac_petsc_method (s->petsc) : names[s->kind];
+  return s->type->ops->method ? s->type->ops->method (s->w) : s->type->name;
+}
+
+const lac_strategy_type *
+lac_strategy_get_type (const lac_strategy *s)
+{
+  return s->type;
 }
 
 lac_strategy_kind
 lac_strategy_kind_of (const lac_strategy *s)
 {
-  return s->kind;
+  for (int k = 1; k < LAC_NSTRATEGIES; k++)
+    if (s->type == &lac_strategy_table[k])
+      return (lac_strategy_kind) k;
+  return LAC_NSTRATEGIES;
 }
 
 const char *
@@ -368,26 +407,18 @@ lac_strategy_fallback (const lac_strategy *s)
 void
 lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c)
 {
-  lac_solve_counts sc = s->before;
+  const lac_solve_counts *b = &s->before;
+  lac_solve_counts sc;
+  s->type->ops->get_counts (s->w, &sc);
   *c = s->counts;
-  inner_counts (s, &sc);
-  c->substitutions = sc.solves;
-  c->iterations = sc.iterations;
-  c->factorizations = sc.factorizations;
-  c->analyses = sc.analyses;
+  c->substitutions = b->solves + sc.solves;
+  c->iterations = b->iterations + sc.iterations;
+  c->factorizations = b->factorizations + sc.factorizations;
+  c->analyses = b->analyses + sc.analyses;
   c->rcond = sc.rcond;
-  c->time_factor = sc.time_factor;
-  c->flops = sc.flops;
-  if (s->saddle)
-    {
-      lac_solve_counts sd;
-      lac_saddle_get_counts (s->saddle, &sd);
-      c->factorizations += sd.factorizations;
-      c->analyses += sd.analyses;
-      c->rcond = sd.rcond;
-      c->time_factor += sd.time_factor;
-      c->flops += sd.flops;
-    }
+  c->time_factor = b->time_factor + sc.time_factor;
+  c->flops = b->flops + sc.flops;
+  c->processes = sc.processes > 0 ? sc.processes : 1;
   c->time_solve = s->counts.time_solve + s->counts.time_factor
                   - c->time_factor;
 }

@@ -1,9 +1,8 @@
 /* lac_strategy.h -- solve the LAC system for a given active set
  *                                                 [LAC (17), Alg. 1 l. 21]
  *
- * Every iteration of Algorithm 1 -- of the linear active set
- * (solve/lac_newton.h) as of the large-deformation Newton loop
- * (solve/lac_nonlinear.h) -- solves the saddle-point system (*) of
+ * Every iteration of Algorithm 1 (solve/lac_newton.h), small strain or
+ * large deformation, solves the saddle-point system (*) of
  * solve/lac_system.h for the statuses of the moment.  How is chosen once
  * per scene, from the problem:
  *
@@ -35,39 +34,49 @@
  *                  (solve/lac_petsc.h; optional: a build without PETSc
  *                  says how to install it).
  *
- * `auto` picks dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur
- * when every body is held by its Dirichlet conditions (one factorization
- * for the whole active-set iteration), split when a body is held by
- * contact alone (chapter 07 has the measurements behind the rule).
- * Bodies held by contact alone are
- * known before anything is factorized (the system's N); (a) is refused
- * for them, (b') for scenes without them (nothing to augment: the
- * multipliers would be left to GMRES on S itself), and before (b) or (b')
- * factorizes, lac_system_check_held says whether
- * the active multipliers hold them (else a message naming the body and
- * its free motion, never NaN).  If the factorization of K + C_A W C_A^T
- * fails all the same (a large-deformation tangent past a limit point),
- * the strategy falls back to (c) for the rest of its life and says so
- * (lac_strategy_fallback); (a) reports a K that is not positive definite
- * as an error (LAC_ESING), its caller having said every body was held.
+ * Each way is a type (lac_strategy_type, in the spirit of GSL's
+ * gsl_*_type and PETSc's KSPType): its operations (lac_strategy_ops of
+ * solve/lac_system.h, one file each) and its properties, one row of
+ * lac_strategy_table.  The choice, the refusals and the fallback read the
+ * properties; nothing outside this module asks which strategy runs.
+ * Bodies held by contact alone are known before anything is factorized
+ * (the system's N): (a) is refused for them, (b') for scenes without
+ * them (nothing to augment: the multipliers would be left to GMRES on S
+ * itself).  `auto` takes the first row that applies up to its size:
+ * dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur when every body
+ * is held (one factorization for the whole active-set iteration), split
+ * when a body is held by contact alone (chapter 07 has the measurements).
+ * Before (b) or (b') factorizes, lac_system_check_held says whether the
+ * active multipliers hold the bodies (else a message naming the body and
+ * its free motion, never NaN).  If a Cholesky factorization fails all the
+ * same (a large-deformation tangent past a limit point), the type's
+ * factor_failed says so and the strategy falls back to (c) for the rest
+ * of its life and says so (lac_strategy_fallback): unasked for (b) and
+ * (b'); for (a) only when allowed (lac_strategy_allow_fallback: the
+ * large-deformation loop), a linear scene reporting a K that is not
+ * positive definite as an error (LAC_ESING), its caller having said every
+ * body was held.  Every type solves a system without contact too (k = 0:
+ * K U = F).  A new strategy is one file and one row of the table
+ * (tests/unit/t503-strategy-table.c registers one of its own).
  *
  * After the solve, the residual of (*) is computed in full and up to
  * three steps of iterative refinement (the same solver on the residual,
- * conjugate gradients to 1e-6 only) bring the backward error to
+ * an inner Krylov method to 1e-3 only) bring the backward error to
  * LAC_STRATEGY_TOL where they can: without them the augmented strategy
  * leaves errors of a few 1e-12 on lambda (K_W's condition number is
  * omega times K's), with one of them the Taylor patch tests are exact to
- * 1e-14.  The petsc strategy refines only above a backward error of
- * 1e-11 (two steps at most): a step costs half a Krylov solve, and the
- * projected CG to 1e-10 (true residual) usually gives 1e-12 and lambda
- * to about 1e-10 at once.
+ * 1e-14.  A type that factorizes nothing (petsc) refines only above a
+ * backward error of 1e-11 (two steps at most): a step costs half a
+ * Krylov solve, and the projected CG to 1e-10 (true residual) usually
+ * gives 1e-12 and lambda to about 1e-10 at once.
  *
  * Usage:
  *   lac_strategy *s = lac_strategy_alloc (kind);
  *   lac_strategy_set (s, &sys);          (new numbers: set again)
  *   lac_strategy_solve (s, active, U, lambda);   (U, lambda: warm start)
  *   lac_strategy_free (s);
- * Ownership: the system is borrowed from set until the next set or free.
+ * Ownership: the system is borrowed from set until the next set or free,
+ * the type from alloc until free.
  */
 #ifndef LAC_STRATEGY_H
 #define LAC_STRATEGY_H
@@ -86,17 +95,65 @@ typedef enum
 #define LAC_STRATEGY_TOL 1e-15       /* backward error aimed at: a few
                                         units of rounding (2.2e-16)     */
 
+/* What a type factorizes (the memory a mesh needs, run/lac_run_mesh.c);
+ * NONE: Krylov methods to a tolerance. */
+typedef enum
+{
+  LAC_FACTOR_NONE, LAC_FACTOR_DENSE, LAC_FACTOR_LU, LAC_FACTOR_CHOLESKY
+} lac_strategy_factor;
+
+/* The scenes a type applies to: any, every body held by its Dirichlet
+ * conditions (nfree = 0: K positive definite), a body held by contact
+ * alone (nfree > 0). */
+typedef enum
+{
+  LAC_BODIES_ANY, LAC_BODIES_HELD, LAC_BODIES_FLOATING
+} lac_strategy_bodies;
+
+/* A strategy's type: a row of lac_strategy_table, or the caller's
+ * (lac_strategy_alloc_type). */
+typedef struct lac_strategy_type
+{
+  const char *name;             /* first: the scene keys read the names */
+  const lac_strategy_ops *ops;  /* NULL: auto (a choice, not a type)     */
+  lac_strategy_bodies bodies;   /* the others: lac_strategy_choose
+                                   refuses it                           */
+  size_t auto_upto;             /* auto takes it up to n + k unknowns
+                                   (0: never)                           */
+  lac_strategy_factor factor;   /* NONE: the Krylov counts are reported,
+                                   refinement only above 1e-11          */
+  int falls_back;               /* a failed Cholesky factorization falls
+                                   back to saddle unasked               */
+  int small_strain;             /* refused by the large-deformation loop */
+  int processes;                /* solves on N MPI processes: MPI and
+                                   PETSc started before the scene, the
+                                   processes 1..N-1 serving process 0   */
+} lac_strategy_type;
+
+/* The types in lac_strategy_kind order, auto first, ended by a row whose
+ * name is NULL.  A new strategy is one file (its lac_strategy_ops) and
+ * one row here (and its kind). */
+extern const lac_strategy_type lac_strategy_table[];
+
 /* "auto" | "dense" | "schur" | "augmented" | "saddle" | "petsc" |
- * "split" -> kind,
- * -1 if unknown; and back. */
+ * "split" -> kind, -1 if unknown; and back. */
 int lac_strategy_from_name (const char *name);
 const char *lac_strategy_name (lac_strategy_kind kind);
+/* The row of a concrete kind; NULL for auto or an unknown kind. */
+const lac_strategy_type *lac_strategy_type_of (int kind);
 /* The strategy for a system of n displacements, k multipliers and nfree
  * rigid motions left free by the Dirichlet conditions, asked for `want`
  * (auto: the rule above).  LAC_NSTRATEGIES with a message if `want`
- * cannot solve such a system (schur with nfree > 0). */
+ * cannot solve such a system (its bodies property, when k > 0: without
+ * contact every type solves K U = F). */
 lac_strategy_kind lac_strategy_choose (lac_strategy_kind want, size_t n,
                                        size_t k, size_t nfree);
+
+/* The first type of the table that factorizes as `factor` and applies to
+ * nfree rigid motions left free (a scene's [scene] solver: dense,
+ * UMFPACK's LU or CHOLMOD's Cholesky); saddle if none does. */
+lac_strategy_kind lac_strategy_choose_factor (lac_strategy_factor factor,
+                                              size_t nfree);
 
 typedef struct lac_strategy lac_strategy;     /* opaque */
 
@@ -116,11 +173,18 @@ typedef struct lac_strategy_counts
   int last_iterations; /* Krylov iterations of the last solve of (*),
                           before refinement (schur, augmented, petsc)      */
   double last_residual; /* and its relative residual (petsc: the true one) */
+  int processes;       /* MPI processes that solve (1: no MPI)           */
 } lac_strategy_counts;
 
 /* kind: a concrete one (from lac_strategy_choose), not auto. */
 lac_strategy *lac_strategy_alloc (lac_strategy_kind kind);
+/* Any type, the table's or the caller's (borrowed until free). */
+lac_strategy *lac_strategy_alloc_type (const lac_strategy_type *type);
 void lac_strategy_free (lac_strategy *s);      /* NULL allowed */
+/* allow = 1: a failed Cholesky factorization falls back to saddle also
+ * for a type that does not do it unasked (schur: the large-deformation
+ * loop); 0: only for those that do (the default). */
+void lac_strategy_allow_fallback (lac_strategy *s, int allow);
 int lac_strategy_set (lac_strategy *s, const lac_contact_system *sys);
 /* U, lambda of (*) for the statuses `active` (1: in contact); on entry
  * they are the start (warm start of the conjugate gradients), on return
@@ -143,14 +207,17 @@ int lac_strategy_solve_rhs (lac_strategy *s, const char *active,
                             double *lambda);
 /* The nodal coordinates for the petsc strategy's multigrid (dof =
  * dim*node + comp, n entries, borrowed until free; NULL: none, e.g. the
- * axisymmetric model); the other strategies ignore them.  Before set. */
+ * axisymmetric model); the types without set_coordinates ignore them.
+ * Before set. */
 void lac_strategy_set_coordinates (lac_strategy *s, int dim,
                                    const double *x);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);
-/* The strategy in use (the fallback once it happened). */
+/* The strategy in use (the fallback once it happened); its type.  The
+ * kind of a type not in the table is LAC_NSTRATEGIES. */
 lac_strategy_kind lac_strategy_kind_of (const lac_strategy *s);
+const lac_strategy_type *lac_strategy_get_type (const lac_strategy *s);
 /* Why the strategy fell back to saddle, NULL if it did not. */
 const char *lac_strategy_fallback (const lac_strategy *s);
 void lac_strategy_get_counts (const lac_strategy *s, lac_strategy_counts *c);

@@ -67,7 +67,37 @@ typedef struct lac_solve_counts
                           factorizations, summed (the analyses' counts)  */
   int last_iterations; /* Krylov iterations of the last solve            */
   double last_residual; /* its relative residual ||b - A x|| / ||b||      */
+  int processes;       /* MPI processes that solve (0: one, no MPI)      */
 } lac_solve_counts;
+
+/* The operations of one way of solving (*): a strategy's type
+ * (solve/lac_strategy.h; one file each).  w: the workspace alloc made;
+ * the system is borrowed from set (or reset) until the next one or free.
+ * NULL marks an optional operation. */
+typedef struct lac_strategy_ops
+{
+  void *(*alloc) (void);                 /* NULL, a message, if it fails */
+  void (*free) (void *w);
+  /* Borrow the system; factorize what depends on K alone, or nothing. */
+  int (*set) (void *w, const lac_contact_system *sys);
+  /* Optional: another C, the factorization of the last set's K kept. */
+  int (*reset) (void *w, const lac_contact_system *sys);
+  /* U, lambda of (*) for the statuses `active` (k = 0 too: K U = F),
+   * right-hand sides f, g (NULL: F, G); U, lambda: start on entry,
+   * solution on return (lambda_i = 0 where inactive); rtol: of an inner
+   * Krylov method. */
+  int (*solve) (void *w, const char *active, const double *f,
+                const double *g, double rtol, double *U, double *lambda);
+  void (*get_counts) (const void *w, lac_solve_counts *c);
+  /* Optional: 1 if the last error was a Cholesky factorization (not
+   * positive definite), what triggers the fallback. */
+  int (*factor_failed) (const void *w);
+  /* Optional: what solves, e.g. "projected cg + gamg on K_W, 2
+   * processes" (else the type's name). */
+  const char *(*method) (const void *w);
+  /* Optional: nodal coordinates (dof = dim * node + comp), before set. */
+  void (*set_coordinates) (void *w, int dim, const double *x);
+} lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
  *   r = F - K U + C_A lambda_A   (n),   g = G_A - C_A^T U   (k; 0 on I).

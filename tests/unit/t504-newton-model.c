@@ -1,4 +1,4 @@
-/* t503: Algorithm 1 over a contact model of the test's own: the interface
+/* t504: Algorithm 1 over a contact model of the test's own: the interface
  *       of solve/lac_contact_model.h and the check of the macro-elements
  *       left without a multiplier                     [LAC Alg. 1, (18)]
  *
