@@ -78,3 +78,33 @@ case "$B" in
     sbx_bad max-memory-1 "box.geo|gmsh could not mesh|out of memory (limit 1 byte, --max-memory)" \
       - "$SBX_LAC" $SBX_RUN --max-memory 1 ;;
 esac
+
+# ---- an address-space limit and OpenBLAS ---------------------------------
+# ulimit -v: OpenBLAS 0.3.21 waited forever for a buffer the limit refused
+# (in fork, at exit, in a factorization; src/cli/lac_cli_limits.h).  Now
+# a run ends within the time limit: a result, or one line that names the
+# limit or says "out of memory".  A limit below what lac's libraries and
+# one buffer take (about 610 MB here), one that a split solve of the 3D
+# patch test needs, one it does not fit in.
+sbx_limit () {
+  name=$1; v=$2; shift 2
+  (ulimit -v "$v"; exec timeout 120 "$SBX_LAC" "$@") > "$SBX/$name.out" 2> "$SBX/$name.err"
+  rc=$?
+  if [ $rc -eq 0 ] && grep -q '^active_macro_elements\|^max_von_mises' "$SBX/$name.out"; then
+    sbx_ok "limit-$name"
+  elif [ $rc -eq 1 ] && [ "$(wc -l < "$SBX/$name.err")" -eq 1 ] \
+       && grep -qE 'ulimit -v|out of memory' "$SBX/$name.err"; then
+    sbx_ok "limit-$name"
+  else
+    sbx_fail "limit-$name" "exit status $rc (124: hung): $(head -2 "$SBX/$name.err")"
+  fi
+}
+case "$B" in
+  *asan*) echo "SKIP case limit-ulimit-v (AddressSanitizer cannot run under ulimit -v)" ;;
+  *)
+    sbx_limit v500M 500000 run tests/bad/box.scene --no-output --quiet
+    sbx_limit v800M-split 800000 run chapters/08-experiments/taylor3d.scene \
+      --set mesh.numbers=n=12 --strategy split --no-output --quiet
+    sbx_limit v650M-split 650000 run chapters/08-experiments/taylor3d.scene \
+      --set mesh.numbers=n=14 --strategy split --no-output --quiet ;;
+esac

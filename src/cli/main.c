@@ -24,6 +24,7 @@
 #include <unistd.h>
 #include "cli/lac_cli.h"
 #include "cli/lac_cli_infsup.h"
+#include "cli/lac_cli_limits.h"
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
 #include "run/lac_run.h"
@@ -523,11 +524,26 @@ serve (void)
   return LAC_CLI_FAILURE;
 }
 
+/* lac --help, lac --version, lac CMD --help: nothing to compute. */
+static int
+asks_help (int argc, char **argv)
+{
+  for (int k = 1; k < argc; k++)
+    if (!strcmp (argv[k], "--help") || !strcmp (argv[k], "-h"))
+      return 1;
+  return argc == 2 && !strcmp (argv[1], "--version");
+}
+
 int
 main (int argc, char **argv)
 {
   cmdline c;
   int ret;
+  if (lac_cli_fit_limits (argv, !asks_help (argc, argv)))  /* ulimit -v */
+    {
+      fflush (stderr);
+      _exit (LAC_CLI_FAILURE);     /* exit () may wait for a stuck thread */
+    }
   if (argc < 2)
     return lac_cli_usage_error (NULL, "no command", NULL);
   /* The other subcommands parse their own arguments (and --help). */

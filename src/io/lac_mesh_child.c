@@ -13,6 +13,7 @@
 #define _GNU_SOURCE            /* close_range, REG_RSP */
 #include "io/lac_mesh_child.h"
 
+#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -188,6 +189,20 @@ blame_memory (int status, double limit, double max_memory)
   return status;
 }
 
+/* OpenBLAS in the child: one thread.  fork's pre-fork handler joined its
+ * workers, and the first parallel BLAS call would start them again, each
+ * wanting a 128 MB buffer that the memory limit may refuse: OpenBLAS
+ * 0.3.21 then retries forever (cli/lac_cli_limits.h).  Found by its own
+ * symbol: with the reference BLAS there is nothing to do. */
+static void
+one_blas_thread (void)
+{
+  void (*set) (int) = (void (*) (int)) dlsym (RTLD_DEFAULT,
+                                              "openblas_set_num_threads");
+  if (set)
+    set (1);
+}
+
 /* Everything between fork and _exit. */
 static void
 child (int data, int talk, pid_t parent, lac_mesh_child_fn fn, void *arg,
@@ -201,6 +216,7 @@ child (int data, int talk, pid_t parent, lac_mesh_child_fn fn, void *arg,
   if (getppid () != parent)
     _exit (127);
   data = own_descriptors (data, talk);
+  one_blas_thread ();
   set_limit (RLIMIT_CORE, 0);
   set_limit (RLIMIT_CPU, max_seconds + 1);
 #ifndef LAC_ASAN
