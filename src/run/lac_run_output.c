@@ -248,9 +248,9 @@ lac_run_output_failed (const char *scene, const char *dir, int status,
                        const volatile sig_atomic_t *stop)
 {
   char msg[700];
-  if (stop && *stop)                  /* the batch's own words suffice */
-    return status;
   lac_run_inner_message (msg, sizeof msg);
+  if (stop && *stop)                  /* the batch's own words suffice */
+    return lac_error_set (LAC_EIO, scene, "%s", msg);
   return lac_error_set (status, scene, "%s; nothing was published: the "
                         "files in '%s' are those of the earlier run", msg,
                         dir);

@@ -38,7 +38,8 @@ int lac_run_output (const lac_run_output_in *in, lac_output_batch **keep,
 
 /* The message of a failed output stage or commit, stored with the scene
  * (scene: its path) and the assurance that the files in dir are those of
- * the earlier run; an interruption keeps the batch's message. */
+ * the earlier run; after an interruption (stop set) the batch's own
+ * words, which say so, with LAC_EIO. */
 int lac_run_output_failed (const char *scene, const char *dir, int status,
                            const volatile sig_atomic_t *stop);
 
