@@ -15,18 +15,24 @@
  * processes, process 0 runs the scene (and alone prints and writes) and
  * the others serve its petsc strategy (solve/lac_petsc.h).
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "cli/lac_cli.h"
 #include "cli/lac_cli_infsup.h"
+#include "cli/lac_cli_limits.h"
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
 #include "run/lac_run.h"
 #include "solve/lac_petsc.h"
 #include "solve/lac_strategy.h"
+#include "io/lac_output_batch.h"
 #include "io/lac_scene.h"
+#include "run/lac_run_scene.h"
 #include "base/lac_status.h"
 
 #ifndef LAC_VERSION
@@ -128,9 +134,10 @@ static const char *help_text =
   "                    need more is refused before gmsh makes it\n"
   "\n"
   "output files in DIR (written beside it, in .NAME.lac-new-PID, and put in\n"
-  "place all at once at the end: a run that fails, or gets SIGINT or\n"
-  "SIGTERM, leaves the complete files of the earlier run and no temporary;\n"
-  "files of DIR that a run never writes are kept):\n"
+  "place all at once at the end, once the summary is on stdout: a run that\n"
+  "fails, gets SIGINT or SIGTERM, or cannot write its summary leaves the\n"
+  "complete files of the earlier run and no temporary; files of DIR that a\n"
+  "run never writes are kept; DIR must be a writable directory):\n"
   "  solution.vtu      mesh, displacement, stresses, von Mises (ParaView;\n"
   "                    binary, or text with --set output.vtu_format=ascii)\n"
   "  nodes.csv         one row per node: coordinates, displacement, stress\n"
@@ -311,8 +318,98 @@ print_failure (int status)
   lac_cli_print_error (*m ? m : lac_strerror (status));
 }
 
+/* A failure found here, "SCENE: what; the outputs" on one line. */
+static int
+fail_here (const lac_run *r, const char *what, int e)
+{
+  char msg[512];
+  snprintf (msg, sizeof msg, "%s: %s (%s)%s%s%s", r->scene->path, what,
+            strerror (e), r->opts.no_output ? "" : "; nothing was published:"
+            " the files in '", r->opts.no_output ? "" : r->out_dir,
+            r->opts.no_output ? "" : "' are those of the earlier run");
+  lac_cli_print_error (msg);
+  return LAC_EIO;
+}
+
+/* The summary on stdout, flushed and checked before the files are
+ * published: a pipe whose reader is gone (EPIPE: SIGPIPE is ignored), a
+ * full disk, a stdout that cannot be written, or a progress line that
+ * stderr did not take, is a failed run that leaves the earlier files. */
+static int
+print_summary (const lac_run *r)
+{
+  errno = 0;
+  for (size_t k = 0; k < r->res.summary.n; k++)
+    printf ("%s = %s\n", r->res.summary.key[k], r->res.summary.val[k]);
+  if (fflush (stdout) != 0 || ferror (stdout))
+    return fail_here (r, "cannot write the summary to stdout",
+                      errno ? errno : EIO);
+  if (ferror (stderr))
+    return fail_here (r, "cannot write the progress lines to stderr", EIO);
+  return LAC_SUCCESS;
+}
+
+/* Run the stages, reporting each; a progress line that stderr did not
+ * take stops the run (its files could not be published anyway). */
+static int
+run_stages (const cmdline *c, lac_run *r)
+{
+  int status;
+  do
+    {
+      int stage = r->stage;
+      catch_stop (stage >= LAC_STAGE_OUTPUT);
+      status = lac_run_iterate (r);
+      if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
+        {
+          fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
+                   LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
+                   r->time[stage]);
+          if (stage == LAC_STAGE_SOLVE && r->stage != stage)
+            print_fallback (r);
+          if (ferror (stderr))
+            return fail_here (r, "cannot write the progress lines to "
+                              "stderr", EIO);
+        }
+    }
+  while (status == LAC_CONTINUE);
+  if (status != LAC_SUCCESS)
+    print_failure (status);
+  return status;
+}
+
+/* What can be checked before a run about its output directory. */
+static int
+check_output (const lac_run *r)
+{
+  char msg[700];
+  int status;
+  if (r->opts.no_output || !(status = lac_output_batch_check (r->out_dir)))
+    return LAC_SUCCESS;
+  lac_run_inner_message (msg, sizeof msg);
+  lac_error_set (status, r->scene->path, "%s", msg);
+  print_failure (status);
+  return status;
+}
+
+/* The effects, and the MPI processes if more than one. */
+static void
+print_start (const lac_scene *sc, const lac_run *r)
+{
+  int rank, size;
+  fprintf (stderr, "lac: %s: %s\nlac: effects:", sc->path, sc->scene.title);
+  for (size_t k = 0; k < r->neffects; k++)
+    fprintf (stderr, "%s %s", k ? "," : "", r->effects[k]);
+  fprintf (stderr, "\n");
+  lac_petsc_rank (&rank, &size);
+  if (size > 1)
+    fprintf (stderr, "lac: %d MPI processes: process 0 reads, assembles "
+             "and writes; the petsc strategy solves on all %d\n", size,
+             size);
+}
+
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
- * summary. */
+ * summary; 4. publish the files, last, when nothing else can fail. */
 static int
 cmd_run (const cmdline *c)
 {
@@ -320,7 +417,7 @@ cmd_run (const cmdline *c)
   lac_run *r = NULL;
   lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
                         c->max_memory, &stop_signal };
-  int rank, size, status;
+  int status;
 
   /* 1. The scene, with the overrides. */
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
@@ -335,54 +432,56 @@ cmd_run (const cmdline *c)
       lac_scene_free (sc);
       return LAC_CLI_FAILURE;
     }
+  lac_run_hold_files (r);
   if (!c->quiet)
-    {
-      fprintf (stderr, "lac: %s: %s\nlac: effects:", sc->path,
-               sc->scene.title);
-      for (size_t k = 0; k < r->neffects; k++)
-        fprintf (stderr, "%s %s", k ? "," : "", r->effects[k]);
-      fprintf (stderr, "\n");
-      lac_petsc_rank (&rank, &size);
-      if (size > 1)
-        fprintf (stderr, "lac: %d MPI processes: process 0 reads, assembles "
-                 "and writes; the petsc strategy solves on all %d\n", size,
-                 size);
-    }
+    print_start (sc, r);
 
-  /* 2. The stages. */
-  do
-    {
-      int stage = r->stage;
-      catch_stop (stage == LAC_STAGE_OUTPUT);
-      status = lac_run_iterate (r);
-      if (!c->quiet && (status == LAC_CONTINUE || status == LAC_SUCCESS))
-        {
-          fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
-                   LAC_NSTAGES, lac_run_stage_name (stage), r->progress,
-                   r->time[stage]);
-          if (stage == LAC_STAGE_SOLVE && r->stage != stage)
-            print_fallback (r);
-        }
-    }
-  while (status == LAC_CONTINUE);
-
-  /* 3. The summary. */
-  if (status == LAC_SUCCESS)
-    for (size_t k = 0; k < r->res.summary.n; k++)
-      printf ("%s = %s\n", r->res.summary.key[k], r->res.summary.val[k]);
-  else
+  /* 2. The stages; 3. the summary; 4. the files. */
+  status = check_output (r);
+  if (!status)
+    status = run_stages (c, r);
+  if (!status)
+    status = print_summary (r);
+  if (!status && (status = lac_run_publish (r)))
     print_failure (status);
   lac_run_free (r);
   lac_scene_free (sc);
   catch_stop (0);
   if (stop_signal && status != LAC_SUCCESS)  /* end as the signal asked */
     raise (stop_signal);
-  if (fflush (stdout) != 0)
+  return status == LAC_SUCCESS ? EXIT_SUCCESS : LAC_CLI_FAILURE;
+}
+
+/* Before lac run opens any file: a closed stdin or stderr gets /dev/null
+ * opened read-only in its place, so that no file of the run becomes fd 0
+ * or 2 (messages would be written into it) and writes to it fail (seen at
+ * the end); a closed stdout likewise, and then the run is refused at once:
+ * its summary would be lost.  A reader of stdout that goes away makes
+ * writes fail with EPIPE (SIGPIPE ignored) instead of killing lac, maybe
+ * after the files were published. */
+static int
+prepare_streams (void)
+{
+  int closed_stdout = 0;
+  for (int fd = 0; fd < 3; fd++)
+    if (fcntl (fd, F_GETFD) < 0 && errno == EBADF)
+      {
+        int n = open ("/dev/null", O_RDONLY);   /* the lowest free: fd */
+        if (n >= 0 && n != fd)
+          {
+            dup2 (n, fd);
+            close (n);
+          }
+        closed_stdout |= fd == 1;
+      }
+  signal (SIGPIPE, SIG_IGN);
+  if (closed_stdout)
     {
-      lac_cli_print_error ("cannot write the summary to stdout");
+      lac_cli_print_error ("stdout is closed: the summary of the run would "
+                           "be lost (>/dev/null discards it)");
       return LAC_CLI_FAILURE;
     }
-  return status == LAC_SUCCESS ? EXIT_SUCCESS : LAC_CLI_FAILURE;
+  return EXIT_SUCCESS;
 }
 
 /* The number of processes an MPI launcher started (Open MPI, MPICH),
@@ -428,11 +527,26 @@ serve (void)
   return LAC_CLI_FAILURE;
 }
 
+/* lac --help, lac --version, lac CMD --help: nothing to compute. */
+static int
+asks_help (int argc, char **argv)
+{
+  for (int k = 1; k < argc; k++)
+    if (!strcmp (argv[k], "--help") || !strcmp (argv[k], "-h"))
+      return 1;
+  return argc == 2 && !strcmp (argv[1], "--version");
+}
+
 int
 main (int argc, char **argv)
 {
   cmdline c;
   int ret;
+  if (lac_cli_fit_limits (argv, !asks_help (argc, argv)))  /* ulimit -v */
+    {
+      fflush (stderr);
+      _exit (LAC_CLI_FAILURE);     /* exit () may wait for a stuck thread */
+    }
   if (argc < 2)
     return lac_cli_usage_error (NULL, "no command", NULL);
   /* The other subcommands parse their own arguments (and --help). */
@@ -458,6 +572,8 @@ main (int argc, char **argv)
     }
   if (strcmp (argv[1], "run") != 0)
     return lac_cli_usage_error (NULL, "unknown command", argv[1]);
+  if (prepare_streams () != EXIT_SUCCESS)
+    return LAC_CLI_FAILURE;
   memset (&c, 0, sizeof c);
   if (!(c.set = malloc ((size_t) argc * sizeof *c.set)))
     {

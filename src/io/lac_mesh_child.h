@@ -14,14 +14,21 @@
  *     kills the child);
  *   - no core dumps, stdin from /dev/null, stdout and stderr into a pipe
  *     that the parent keeps the end of (gmsh's own words about a failure,
- *     never shown raw), SIGINT and SIGTERM back to their defaults, and the
- *     child is killed if the parent dies;
+ *     never shown raw), no other descriptor of lac's but the answer's,
+ *     SIGINT and SIGTERM back to their defaults, and the child is killed
+ *     if the parent dies;
+ *   - gmsh's session shuts itself in a sandbox (lac_mesh_sandbox.h): no
+ *     programs, no writes;
  *
  * and the mesh comes back through a pipe (lac_mesh_wire.h).  Whatever
- * happens in the child becomes a status and one message in the caller:
- * "gmsh could not read 'FILE': killed by signal 11 (Segmentation fault);
- * the file is malformed or truncated", "... ran out of memory (limit
- * 5.9 GB, --max-memory)", "... took longer than 3600 s".
+ * happens in the child becomes a status and one message in the caller,
+ * which names the limit it hit: "gmsh could not read 'FILE': killed by
+ * signal 11 (Segmentation fault); the file is malformed or truncated",
+ * "... out of memory (limit 5.9 GB, --max-memory)" (also when the reader
+ * failed without a word within reach of the limit: gmsh swallows
+ * std::bad_alloc), "... its stack overflowed (stack limit 64 KiB, ulimit
+ * -s)", "... within the time limit of 3600 s", "... the script tried to
+ * write 'x.msh' (openat): writes outside lac's output are not allowed".
  *
  * Only the child calls _exit, after it has written its answer: the
  * process that called lac_mesh_child_run never exits here.

@@ -26,6 +26,10 @@
  * the child process of each read they die with it; Mesh.Algorithm 8
  * crashes gmsh 4.8 and is replaced by 6; a parse error thrown as an
  * exception poisons later parses (see open_file).
+ *
+ * The session runs sandboxed (lac_mesh_sandbox.h): a .geo cannot start
+ * programs or write files.  So lac_gmsh_session must run in a child
+ * process only: the sandbox cannot be left.
  */
 #include "io/lac_mesh_gmsh_session.h"
 
@@ -38,6 +42,7 @@
 #include "io/lac_mesh_gmsh_estimate.h"
 #include "io/lac_mesh_gmsh_groups.h"
 #include "io/lac_mesh_gmsh_reader.h"
+#include "io/lac_mesh_sandbox.h"
 #include "base/lac_status.h"
 
 static int
@@ -247,10 +252,15 @@ lac_gmsh_session (const char *path, int kind, const lac_mesh_opts *opts,
                       argv);
   if (argc < 0)
     return LAC_EINVAL;
+  /* The sandbox (lac_mesh_sandbox.h): while gmsh starts, writes fail
+   * quietly (FLTK's preferences); from the file on, they end the child. */
+  if ((status = lac_mesh_sandbox_enter (LAC_SANDBOX_INIT)))
+    return status;
   gmshInitialize (argc, argv, 0, &ierr);
   if (ierr)
-    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize", path);
-  else
+    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize (gmsh "
+                       "gives no details)", path);
+  else if (!(status = lac_mesh_sandbox_enter (LAC_SANDBOX_SCRIPT)))
     status = read_model (&R, kind, out);
   /* No gmshFinalize: the child process ends right after this, and gmsh
    * 4.8 has been seen to crash in it after a malformed file, which would

@@ -3,7 +3,9 @@
  * What lac_mesh_read (lac_mesh_gmsh.c) runs in its child process
  * (lac_mesh_child.h): gmshInitialize, open the .msh or mesh the .geo, copy
  * the model into a lac_mesh.  gmsh is not finalized: the child process
- * that called it ends, and nothing of gmsh outlives it.
+ * that called it ends, and nothing of gmsh outlives it.  The session
+ * shuts the process in a sandbox first (lac_mesh_sandbox.h: no programs,
+ * no writes), for good: call it in a child process only.
  */
 #ifndef LAC_MESH_GMSH_SESSION_H
 #define LAC_MESH_GMSH_SESSION_H

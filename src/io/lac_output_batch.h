@@ -13,6 +13,12 @@
  * back.  Either way DIR holds the complete files of one run, the earlier
  * or the new, at every moment.
  *
+ * Refusals: a DIR that is not a writable directory (read-only, a file,
+ * a link to a file) fails at lac_output_batch_alloc, and at the commit a
+ * foreign subdirectory that could not be moved back: DIR is never
+ * replaced by a directory without its foreign files.  The new DIR takes
+ * the earlier one's permission bits.
+ *
  * Interruption: a batch freed without commit removes its temporary
  * directory, so a run that fails leaves DIR as it was.  A run killed
  * outright leaves its temporary directory behind; lac_output_batch_alloc
@@ -39,6 +45,13 @@ typedef struct lac_output_batch lac_output_batch;
  * sets to interrupt.  NULL with a message on failure. */
 lac_output_batch *lac_output_batch_alloc (const char *dir,
                                           const volatile sig_atomic_t *stop);
+
+/* What can be known before a run writes anything: DIR, if it exists, is
+ * a directory (a symbolic link to one stands for it) that this process
+ * may write into, and so is its parent; if it does not exist, the deepest
+ * part of its path that does is a writable directory.  LAC_EIO with a
+ * message naming the path and the reason otherwise. */
+int lac_output_batch_check (const char *dir);
 
 /* Remove the temporary directory unless committed.  NULL allowed. */
 void lac_output_batch_free (lac_output_batch *b);

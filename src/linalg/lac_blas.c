@@ -4,6 +4,7 @@
 #include "linalg/lac_blas.h"
 
 #include <dlfcn.h>
+#include <sys/resource.h>
 
 typedef void (*set_threads_fn) (int);
 typedef int (*get_int_fn) (void);
@@ -17,10 +18,19 @@ set_threads (int n)
     set (n);
 }
 
+int
+lac_blas_limited (void)
+{
+  struct rlimit rl;
+  return getrlimit (RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY;
+}
+
 void
 lac_blas_parallel (void)
 {
   get_int_fn procs;
+  if (lac_blas_limited ())
+    return;
   *(void **) &procs = dlsym (RTLD_DEFAULT, "openblas_get_num_procs");
   if (procs)
     set_threads (procs ());

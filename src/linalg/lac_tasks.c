@@ -59,7 +59,8 @@ lac_tasks_pair (lac_task *a, void *ca, lac_task *b, void *cb)
   int started, levels;
   lac_blas_serial ();
   levels = omp_levels (0);
-  started = pthread_create (&th, NULL, thread_main, &jb) == 0;
+  started = !lac_blas_limited ()      /* a BLAS buffer each (lac_blas.h) */
+            && pthread_create (&th, NULL, thread_main, &jb) == 0;
   run (&ja);
   if (started)
     pthread_join (th, NULL);

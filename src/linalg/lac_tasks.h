@@ -13,7 +13,8 @@
  * with the BLAS on one thread (linalg/lac_blas.h) and the OpenMP loops
  * inside the libraries (CHOLMOD's) on one thread, so that the two tasks
  * do not crowd four threads and more onto two cores.  If no thread can be
- * started, b runs after a.
+ * started, or the address space is limited (each thread would need a
+ * BLAS buffer of its own, lac_blas.h), b runs after a.
  */
 #ifndef LAC_TASKS_H
 #define LAC_TASKS_H

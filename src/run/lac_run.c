@@ -192,7 +192,24 @@ stage_output (lac_run *r)
       snprintf (r->progress, sizeof r->progress, "no files written");
       return status;
     }
-  return lac_run_output (&in, r->progress, sizeof r->progress);
+  return lac_run_output (&in, r->hold ? &r->batch : NULL,
+                         r->progress, sizeof r->progress);
+}
+
+void
+lac_run_hold_files (lac_run *r)
+{
+  r->hold = 1;
+}
+
+int
+lac_run_publish (lac_run *r)
+{
+  int status = r->batch ? lac_output_commit (r->batch) : LAC_SUCCESS;
+  lac_output_batch_free (r->batch);
+  r->batch = NULL;
+  return status ? lac_run_output_failed (r->scene->path, r->out_dir, status,
+                                         r->opts.stop) : LAC_SUCCESS;
 }
 
 /* ---- the run ------------------------------------------------------------ */
@@ -268,6 +285,7 @@ lac_run_free (lac_run *r)
 {
   if (!r)
     return;
+  lac_output_batch_free (r->batch);      /* unpublished: removed */
   lac_run_results_clear (&r->res);
   lac_run_nl_clear (&r->nl);
   lac_run_solution_clear (&r->sol);

@@ -42,6 +42,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include "io/lac_output_batch.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
 #include "run/lac_run_nonlinear.h"
@@ -92,6 +93,9 @@ typedef struct lac_run
   lac_run_solution sol;     /* 5: U (both kinds), the active set         */
   lac_run_nl nl;            /* 5, large deformation: the load steps      */
   lac_run_results res;      /* 6: stresses, errors, the summary          */
+  int hold;                 /* lac_run_hold_files was called           */
+  lac_output_batch *batch;  /* 7, held: the files, written, not yet
+                               published                                 */
 
   /* reports */
   double time[LAC_NSTAGES]; /* seconds per stage                         */
@@ -112,6 +116,14 @@ void lac_run_free (lac_run *r);     /* NULL allowed */
 int lac_run_iterate (lac_run *r);
 /* Run every remaining stage. */
 int lac_run_all (lac_run *r);
+/* The output stage will write the files but not publish them: the caller
+ * does what else could fail first (main: the summary on stdout), then
+ * calls lac_run_publish.  Unpublished files are removed by lac_run_free. */
+void lac_run_hold_files (lac_run *r);
+/* After the last stage of a run that holds its files: put them in place
+ * (lac_output_commit), or, on failure, leave the earlier ones with a
+ * message.  LAC_SUCCESS when there is nothing to publish. */
+int lac_run_publish (lac_run *r);
 
 /* query */
 const char *lac_run_stage_name (int stage);     /* "mesh", ... */

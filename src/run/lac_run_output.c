@@ -54,17 +54,15 @@ write_fields (const lac_run_output_in *in, lac_output_batch *b)
   return status;
 }
 
-/* summary.txt, written last, then the batch renamed into place. */
+/* summary.txt, written last. */
 static int
 write_summary (const lac_run_output_in *in, lac_output_batch *b)
 {
   const lac_summary *s = &in->res->summary;
   const char *path = lac_output_batch_add (b, "summary.txt");
-  int status = path ? lac_output_summary (path, s->n,
-                                          (const char *const *) s->key,
-                                          (const char *const *) s->val)
-                    : LAC_ENOMEM;
-  return status ? status : lac_output_commit (b);
+  return path ? lac_output_summary (path, s->n, (const char *const *) s->key,
+                                    (const char *const *) s->val)
+              : LAC_ENOMEM;
 }
 
 static int
@@ -247,22 +245,33 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
 }
 
 int
-lac_run_output (const lac_run_output_in *in, char *progress, size_t size)
+lac_run_output_failed (const char *scene, const char *dir, int status,
+                       const volatile sig_atomic_t *stop)
+{
+  char msg[700];
+  lac_run_inner_message (msg, sizeof msg);
+  if (stop && *stop)                  /* the batch's own words suffice */
+    return lac_error_set (LAC_EIO, scene, "%s", msg);
+  return lac_error_set (status, scene, "%s; nothing was published: the "
+                        "files in '%s' are those of the earlier run", msg,
+                        dir);
+}
+
+int
+lac_run_output (const lac_run_output_in *in, lac_output_batch **keep,
+                char *progress, size_t size)
 {
   lac_output_batch *b = lac_output_batch_alloc (in->dir, in->stop);
-  int status;
-  if (!b)
-    return LAC_EIO;
-  status = in->post.nl ? output_nonlinear (in, b, progress, size)
-                  : output_linear (in, b, progress, size);
-  lac_output_batch_free (b);
-  if (status && !(in->stop && *in->stop))
-    {
-      char msg[700];
-      lac_run_inner_message (msg, sizeof msg);
-      status = lac_error_set (status, in->post.sc->path, "%s; nothing was "
-                              "published: the files in '%s' are those of the "
-                              "earlier run", msg, in->dir);
-    }
-  return status;
+  int status = b ? LAC_SUCCESS : LAC_EIO;
+  if (!status)
+    status = in->post.nl ? output_nonlinear (in, b, progress, size)
+                         : output_linear (in, b, progress, size);
+  if (!status && !keep)
+    status = lac_output_commit (b);
+  if (!status && keep)
+    *keep = b;
+  else
+    lac_output_batch_free (b);
+  return status ? lac_run_output_failed (in->post.sc->path, in->dir, status,
+                                         in->stop) : LAC_SUCCESS;
 }

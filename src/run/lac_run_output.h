@@ -7,14 +7,16 @@
  *      matrix), for large deformation the per-step curve, contact.csv of
  *      the last step, contact_steps.csv, step_NNN.vtu and steps.pvd
  *      ([steps] vtu_every), and summary.txt last.  Everything is written
- *      into a batch (io/lac_output.h) and renamed into place at the end,
- *      so that a failed run leaves the files of an earlier one.
+ *      into a batch (io/lac_output_batch.h) and put in place at the end,
+ *      all at once, so that a failed run leaves the files of an earlier
+ *      one; the caller may publish the batch itself, later.
  */
 #ifndef LAC_RUN_OUTPUT_H
 #define LAC_RUN_OUTPUT_H
 
 #include <signal.h>
 #include <stddef.h>
+#include "io/lac_output_batch.h"
 #include "run/lac_run_post.h"
 
 /* What stage 7 reads: what stage 6 read, and its results. */
@@ -27,7 +29,18 @@ typedef struct lac_run_output_in
                                      and publish nothing (NULL: never)    */
 } lac_run_output_in;
 
-int lac_run_output (const lac_run_output_in *in, char *progress,
-                    size_t size);
+/* Write the files into a batch (io/lac_output_batch.h).  keep NULL: then
+ * publish them.  Else *keep is the batch, complete but not published,
+ * for the caller to commit once everything else that could fail has
+ * been done (lac_run_publish).  A failure leaves the earlier files. */
+int lac_run_output (const lac_run_output_in *in, lac_output_batch **keep,
+                    char *progress, size_t size);
+
+/* The message of a failed output stage or commit, stored with the scene
+ * (scene: its path) and the assurance that the files in dir are those of
+ * the earlier run; after an interruption (stop set) the batch's own
+ * words, which say so, with LAC_EIO. */
+int lac_run_output_failed (const char *scene, const char *dir, int status,
+                           const volatile sig_atomic_t *stop);
 
 #endif /* LAC_RUN_OUTPUT_H */

@@ -5,7 +5,9 @@
  * a batch freed without commit or interrupted leaves the earlier files and
  * no temporaries; a new run's files replace the earlier run's (no mixed
  * set), files a run never writes are kept, and what a killed run left
- * beside the directory is cleaned up by the next batch.
+ * beside the directory is cleaned up by the next batch.  A file, a link
+ * to a file, a path under a file are refused with the path and the reason;
+ * a link to a directory stands for it, which keeps its permissions.
  */
 #include <dirent.h>
 #include <stdio.h>
@@ -245,6 +247,54 @@ test_batches (void)
   check_int (count_in (base), 1, "nothing else beside");
 }
 
+/* What is not a writable directory is refused before anything is
+ * written, with the path and the reason; a link to a directory stands for
+ * it; the new directory keeps the earlier one's permission bits. */
+static void
+test_refusals (void)
+{
+  char file[96], link[96], sub[128], real[96];
+  const char *key[] = { "run" }, *v3[] = { "3" };
+  struct stat st;
+  lac_output_batch *b;
+  snprintf (file, sizeof file, "%s/afile", base);
+  snprintf (link, sizeof link, "%s/link", base);
+  snprintf (real, sizeof real, "%s/real", base);
+  put (base, "afile", "x\n");
+  check_true (lac_output_batch_alloc (file, NULL) == NULL, "a file");
+  check_message ("afile' exists and is a regular file, not a directory",
+                 "a file");
+  check_int (lac_output_batch_check (file), LAC_EIO, "check: a file");
+  snprintf (sub, sizeof sub, "%s/x", file);
+  check_int (lac_output_batch_check (sub), LAC_EIO, "check: under a file");
+  check_message ("afile' is not a directory", "under a file");
+  check_int (symlink ("afile", link), 0, "link to a file");
+  check_true (lac_output_batch_alloc (link, NULL) == NULL, "link to a file");
+  check_message ("is a symbolic link to 'afile', which is a regular file",
+                 "link to a file");
+  unlink (link);
+
+  mkdir (real, 0750);
+  check_int (symlink ("real", link), 0, "link to a directory");
+  if ((b = lac_output_batch_alloc (link, NULL)))
+    {
+      lac_output_summary (lac_output_batch_add (b, "summary.txt"), 1, key,
+                          v3);
+      check_status (lac_output_commit (b), LAC_SUCCESS, "through a link");
+      lac_output_batch_free (b);
+    }
+  check_int (lstat (link, &st) == 0 && S_ISLNK (st.st_mode), 1,
+             "the link stays a link");
+  check_int (stat (real, &st) == 0 ? (int) (st.st_mode & 0777) : -1, 0750,
+             "the directory keeps its permissions");
+  check_int (count_in (real), 1, "the files in the linked directory");
+  snprintf (sub, sizeof sub, "%s/summary.txt", real);
+  unlink (sub);
+  rmdir (real);
+  unlink (link);
+  unlink (file);
+}
+
 static void
 cleanup (void)
 {
@@ -278,6 +328,7 @@ main (void)
   if (m)
     test_files (m);
   test_batches ();
+  test_refusals ();
   lac_mesh_free (m);
   cleanup ();
   rmdir (base);
