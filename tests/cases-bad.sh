@@ -161,7 +161,7 @@ fi
 
 "$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
 rc=$?
-if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M or 2e9, got 12Q" "$RB/mm-usage.err"; then
+if [ $rc -eq 2 ] && grep -q -- "--max-memory '12Q': not a decimal number.*expected a size such as 8G, 500M or 2e9" "$RB/mm-usage.err"; then
   rb_ok bad-max-memory-usage
 else
   rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
@@ -180,6 +180,52 @@ rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
   run tests/bad/box.scene $KB --set material.steel.E=1e-300
 rbad normal-two-bodies "--set|normal = 'slave'|an obstacle only" \
   run chapters/08-experiments/taylor2d.scene $KB --set contact.interface.normal=slave
+# One checked parser (src/base/lac_number.c) for every number a user
+# writes: beyond a double, subnormal, nan, inf, hexadecimal are refused
+# with the limit they broke, never "expected a number" for a number.
+rbad E-overflow "E-overflow.scene:12:|E = '1e400'|magnitude at most 1e+30|beyond the range of a double" \
+  run tests/bad/E-overflow.scene $KB
+rbad E-subnormal "--set|E = '4.9e-324'|magnitude at least 1e-30|too small for a double" \
+  run tests/bad/box.scene $KB --set material.steel.E=4.9e-324
+rbad traction-overflow "--set|traction = '1e400 0'|magnitude at most 1e+30|beyond the range" \
+  run tests/bad/box.scene $KB --set "load.pull.traction=1e400 0"
+rbad E-nan "--set|E = 'nan'|not a finite number" run tests/bad/box.scene $KB --set material.steel.E=nan
+rbad E-hex "--set|E = '0x10'|not a decimal number" run tests/bad/box.scene $KB --set material.steel.E=0x10
+rbad level-huge "--set|level = '3e9'|above the largest allowed value 12" \
+  run tests/bad/box.scene $KB --set level=3e9
+# The numbers a .geo receives: gmsh would make a count from nan, inf or
+# above 2^31 - 1 into 2 (a 6-node mesh, exit status 0).
+rbad numbers-nan "numbers-nan.scene:9:|numbers = 'n=nan'|not a finite number|gmsh makes a count beyond 32 bits" \
+  run tests/bad/numbers-nan.scene $KB
+for v in 1e400 3e9 -inf; do
+  rbad "numbers-$v" "--set|n = '$v'|at most 2147483647 in magnitude" \
+    run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=n=$v"
+done
+rbad numbers-twice "--set|'n' given twice" run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=n=2 n=3"
+rbad numbers-level "--set|level is set by [mesh] level" \
+  run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=level=3"
+"$LAC" run tests/bad/numbers-nan.scene --set mesh.numbers=n=3 --no-output > "$RB/numbers3.out" 2> "$RB/numbers3.err"
+if grep -q '\] mesh *91 nodes' "$RB/numbers3.err"; then
+  rb_ok bad-numbers-good
+else
+  rb_fail bad-numbers-good "n = 3 does not give the 13 x 7 nodes of tri6: $(grep mesh "$RB/numbers3.err")"
+fi
+# Command-line numbers: the same parser, a usage error (status 2) naming
+# the limit.
+"$LAC" run tests/bad/box.scene $KB --max-memory 1 > /dev/null 2> "$RB/mm-tiny.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--max-memory '1': 1 bytes, below the smallest allowed size 1e+08 bytes" "$RB/mm-tiny.err"; then
+  rb_ok bad-max-memory-tiny
+else
+  rb_fail bad-max-memory-tiny "exit $rc: $(head -1 "$RB/mm-tiny.err")"
+fi
+"$LAC" render "$RB/keep" --width 1e9 > /dev/null 2> "$RB/width.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--width '1e9': above the largest allowed value 8192" "$RB/width.err"; then
+  rb_ok bad-render-width
+else
+  rb_fail bad-render-width "exit $rc: $(head -1 "$RB/width.err")"
+fi
 rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
   run tests/bad/contrast.scene $KB
 

@@ -74,8 +74,8 @@ const char lac_cli_render_help[] =
   "  --scale S|auto    draw the mesh at x + S u (0); auto: the largest\n"
   "                    displacement is drawn as 10% of the mesh size\n"
   "  --edges           draw the cell edges\n"
-  "  --az A, --el E    3D view: azimuth and elevation in degrees (35, 25;\n"
-  "                    z up, azimuth 0 looks along +y)\n"
+  "  --az A, --el E    3D view: azimuth and elevation in degrees, -360..360\n"
+  "                    (35, 25; z up, azimuth 0 looks along +y)\n"
   "  --range MIN:MAX   fixed colour range (default: the field's range;\n"
   "                    the same range for several pictures compares them)\n"
   "  --box X0:X1:Y0:Y1[:Z0:Z1]  frame this box (model coordinates) with the\n"
@@ -88,7 +88,7 @@ const char lac_cli_render_help[] =
   "                    (not with --contact: contact.csv is the last step)\n"
   "  --title TEXT      title line (default: the scene title and the scale)\n"
   "  --units TEXT      units shown with the field name over the colour bar\n"
-  "  --width W, --height H   image size in pixels (800 x 600)\n"
+  "  --width W, --height H   image size in pixels, 32..8192 (800 x 600)\n"
   "  --out FILE.png    output file (RESULT_DIR/FIELD.png, or\n"
   "                    RESULT_DIR/contact.png with --contact)\n"
   "  --contact         draw the contact results of RESULT_DIR/contact.csv:\n"
@@ -110,10 +110,8 @@ const char lac_cli_render_help[] =
 static int
 to_double (const char *s, double *v)
 {
-  char *e;
-  errno = 0;
-  *v = strtod (s, &e);
-  return e != s && *e == '\0' && errno == 0 && isfinite (*v);
+  char why[160];
+  return lac_number_parse (s, NULL, v, why, sizeof why);
 }
 
 /* --box X0:X1:Y0:Y1[:Z0:Z1] into o->box_lo, o->box_hi; 1 if malformed (4
@@ -139,23 +137,25 @@ parse_box (const char *v, lac_render_opts *o)
          || (n == 6 && !(b[5] > b[4]));
 }
 
-/* The numeric options; 1 if argv[*k] was one, -1 on a bad value. */
+/* The numeric options; 1 if argv[*k] was one, -1 on a bad value (the
+ * usage line printed, naming the limit broken). */
 static int
 numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
 {
   static const char *const names[] = { "--az", "--el", "--width",
                                        "--height" };
+  static const lac_number_spec angle = { -360, 360, 0, 0, 0 };
+  static const lac_number_spec pixels = { 32, 8192, 0, 1, 0 };
   double *dst[2] = { &a->opts.azimuth, &a->opts.elevation }, v;
   const char *s;
   for (int i = 0; i < 4; i++)
     if ((s = lac_cli_option_value (argc, argv, k, names[i], missing)))
       {
-        if (!to_double (s, &v))
+        if (!lac_cli_number ("render", names[i], s, i < 2 ? &angle
+                             : &pixels, &v))
           return -1;
         if (i < 2)
           *dst[i] = v;
-        else if (v != floor (v) || v < 32 || v > 8192)
-          return -1;
         else
           *(i == 2 ? &a->opts.width : &a->opts.height) = (int) v;
         return 1;
@@ -216,7 +216,7 @@ parse_args (int argc, char **argv, render_args *a)
             return lac_cli_usage_error ("render", "bad value for", opt);
         }
       else if (r < 0)
-        return lac_cli_usage_error ("render", "bad value for", opt);
+        return LAC_CLI_USAGE;
       else if (missing)
         return lac_cli_usage_error ("render", "missing value after", opt);
       else if (!strcmp (opt, "--edges"))

@@ -26,6 +26,7 @@
 #include "run/lac_run.h"
 #include "solve/lac_petsc.h"
 #include "solve/lac_strategy.h"
+#include "io/lac_mesh_opts.h"
 #include "io/lac_scene.h"
 #include "base/lac_status.h"
 
@@ -58,8 +59,8 @@ static const char *help_text =
   "                   iteration)\n"
   "  [mesh]           file = NAME.geo|NAME.msh ... (relative to the scene),\n"
   "                   size (1), order = 1|2, level (0), numbers = NAME=VALUE\n"
-  "                   ... (more .geo numbers), recombine = yes|no,\n"
-  "                   inverted = flip|reject (flip)\n"
+  "                   ... (more .geo numbers, |VALUE| < 2^31), recombine =\n"
+  "                   yes|no, inverted = flip|reject (flip)\n"
   "  [material NAME]  group (all other cells), E, nu,\n"
   "                   law = linear|neo_hookean (linear)\n"
   "  [dirichlet NAME] group, and ux/uy/uz (axisymmetric ur/uz) = VALUE, or\n"
@@ -222,10 +223,16 @@ parse_run_args (int argc, char **argv, cmdline *c)
       else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
                                           &missing)))
         {
-          if ((c->max_memory = lac_cli_bytes (v)) <= 0)
-            return lac_cli_usage_error (NULL, "--max-memory: expected a "
-                                        "size such as 8G, 500M or 2e9, got",
-                                        v);
+          char why[200], what[400];
+          if (!lac_cli_bytes (v, LAC_MESH_RUN_BYTES_MIN, &c->max_memory,
+                              why, sizeof why))
+            {
+              snprintf (what, sizeof what, "--max-memory '%.64s': %s; "
+                        "expected a size such as 8G, 500M or 2e9, at least "
+                        "100M (what a run of lac needs before any mesh)", v,
+                        why);
+              return lac_cli_usage_error (NULL, what, NULL);
+            }
         }
       else if (missing)
         return lac_cli_usage_error (NULL, "missing value after", argv[k]);

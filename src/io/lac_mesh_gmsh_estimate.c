@@ -299,7 +299,7 @@ lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o)
     default:
       break;
     }
-  return 1e8 + 24 * r * n + factor;
+  return LAC_MESH_RUN_BYTES_MIN + 24 * r * n + factor;
 }
 
 /* lac_gmsh_estimate: see lac_mesh_gmsh_estimate.h. */

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "fem/lac_exact.h"
+#include "io/lac_mesh_opts.h"
 #include "io/lac_scene_keys.h"
 #include "io/lac_scene_query.h"
 #include "base/lac_mem.h"
@@ -117,6 +118,8 @@ finish_mesh (lac_scene *sc)
   const lac_scene_element_spec *info = lac_scene_elements;
   const char *const *names = lac_scene_element_names;
   lac_scene_mesh *m = &sc->mesh;
+  lac_mesh_number num[LAC_MESH_MAX_NUMBERS];
+  char why[400];
   int el = -1, status;
   if (m->sec.line == 0)
     return lac_scene_where_error (sc->path, 0, LAC_EINVAL, "no [mesh] "
@@ -140,6 +143,9 @@ finish_mesh (lac_scene *sc)
       m->order = info[el].order;
       m->recombine = info[el].recombine;
     }
+  if (m->numbers && lac_mesh_numbers_split (m->numbers, num, why,
+                                            sizeof why) < 0)
+    return lac_scene_error (sc, &m->sec, "numbers", LAC_EINVAL, "%s", why);
 
   /* The files, relative to the scene's directory. */
   return mesh_files (sc, m);

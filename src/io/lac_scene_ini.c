@@ -25,6 +25,7 @@
 #include "io/lac_scene_keys.h"
 #include "io/lac_scene_query.h"
 #include "base/lac_mem.h"
+#include "base/lac_number.h"
 #include "base/lac_status.h"
 
 /* --set aliases */
@@ -356,15 +357,6 @@ set_one (raw *r, const char *path, const char *arg)
 /* ---- step 3: build ---------------------------------------------------- */
 
 static int
-parse_number (const char *s, double *x)
-{
-  char *end;
-  errno = 0;
-  *x = strtod (s, &end);
-  return end != s && *end == '\0' && errno != ERANGE && isfinite (*x);
-}
-
-static int
 parse_bool (const char *s, int *b)
 {
   static const char *const yes[] = { "yes", "true", "on", "1" };
@@ -379,14 +371,11 @@ parse_bool (const char *s, int *b)
   return 0;
 }
 
+/* A value that must be > 0: at least 1 / LAC_SCENE_NUM_MAX. */
 static int
-in_range (const key_spec *ks, double x)
+positive (const key_spec *ks)
 {
-  if ((ks->open & 1) ? x <= ks->lo : x < ks->lo)
-    return 0;
-  if ((ks->open & 2) ? x >= ks->hi : x > ks->hi)
-    return 0;
-  return 1;
+  return ks->type != K_VEC && ks->lo == 0 && (ks->open & 1);
 }
 
 /* |x| <= LAC_SCENE_NUM_MAX, and x >= 1 / LAC_SCENE_NUM_MAX for a value
@@ -394,14 +383,15 @@ in_range (const key_spec *ks, double x)
 static int
 in_scale (const key_spec *ks, double x)
 {
-  int positive = ks->type != K_VEC && ks->lo == 0 && (ks->open & 1);
   return fabs (x) <= LAC_SCENE_NUM_MAX
-         && (!positive || x >= 1 / LAC_SCENE_NUM_MAX);
+         && (!positive (ks) || x >= 1 / LAC_SCENE_NUM_MAX);
 }
 
+/* why: what the number is besides (a double's overflow or underflow), or
+ * NULL. */
 static int
 out_of_scale (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
-              double x)
+              double x, const char *why)
 {
   char range[64];
   if (fabs (x) > LAC_SCENE_NUM_MAX)
@@ -409,9 +399,34 @@ out_of_scale (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
   else
     snprintf (range, sizeof range, "at least %g", 1 / LAC_SCENE_NUM_MAX);
   return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s of "
-                          "magnitude %s: products with the other values of "
-                          "the scene could overflow or vanish in double "
-                          "precision", ks->expect, range);
+                          "magnitude %s%s%s%s: products with the other values"
+                          " of the scene could overflow or vanish in double "
+                          "precision", ks->expect, range, why ? " (it is " : "",
+                          why ? why : "", why ? ")" : "");
+}
+
+/* The number val of key ks into *x: a finite double (lac_number.h), in
+ * the key's range, within LAC_SCENE_NUM_MAX; a message naming the limit
+ * broken otherwise. */
+static int
+store_number (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
+              const char *val, double *x)
+{
+  lac_number_spec range = { ks->lo, ks->hi, ks->open, ks->type == K_INT, 0 };
+  char why[160];
+  if (!lac_number_parse (val, NULL, x, why, sizeof why))
+    {
+      if (isinf (*x) || (!isnan (*x) && positive (ks)))
+        return out_of_scale (sc, s, ks, isinf (*x) ? *x : 0, why);
+      return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: %s",
+                              ks->expect, why);
+    }
+  if (ks->type != K_VEC && !lac_number_check (*x, &range, why, sizeof why))
+    return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: %s",
+                            ks->expect, why);
+  if (ks->type != K_INT && !in_scale (ks, *x))
+    return out_of_scale (sc, s, ks, *x, NULL);
+  return LAC_SUCCESS;
 }
 
 /* The j-th name of an enum key (NULL past the last). */
@@ -446,17 +461,21 @@ store_vec (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
            const char *val)
 {
   double *v = (double *) ((char *) s + ks->off);
-  int *n = (int *) ((char *) s + ks->off_n);
+  int *n = (int *) ((char *) s + ks->off_n), status;
   char buf[256], *tok, *save = NULL;
+  if (strlen (val) >= sizeof buf)
+    return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: a "
+                            "value of %zu characters is not that", ks->expect,
+                            strlen (val));
   snprintf (buf, sizeof buf, "%s", val);
   *n = 0;
   for (tok = strtok_r (buf, " \t,", &save); tok;
        tok = strtok_r (NULL, " \t,", &save))
-    if (*n == 3 || !parse_number (tok, &v[(*n)++]))
-      return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
-                              ks->expect);
-    else if (!in_scale (ks, v[*n - 1]))
-      return out_of_scale (sc, s, ks, v[*n - 1]);
+    if (*n == 3)
+      return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: "
+                              "more than 3", ks->expect);
+    else if ((status = store_number (sc, s, ks, tok, &v[(*n)++])))
+      return status;
   if (*n < 1)             /* the count is checked against the model later */
     return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
                             ks->expect);
@@ -470,6 +489,7 @@ store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
   const key_spec *ks = &lac_scene_sections[s->kind].keys[k];
   char *base = (char *) s;
   double x;
+  int status;
   switch (ks->type)
     {
     case K_STR:
@@ -485,12 +505,8 @@ store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
       }
     case K_NUM:
     case K_INT:
-      if (!parse_number (val, &x) || !in_range (ks, x)
-          || (ks->type == K_INT && x != floor (x)))
-        return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
-                                ks->expect);
-      if (ks->type == K_NUM && !in_scale (ks, x))
-        return out_of_scale (sc, s, ks, x);
+      if ((status = store_number (sc, s, ks, val, &x)))
+        return status;
       if (ks->type == K_INT)
         *(int *) (base + ks->off) = (int) x;
       else
