@@ -118,3 +118,33 @@ lac_text_escape_line (char *dst, size_t size, const char *src)
 {
   escape (dst, size, src, 0);
 }
+
+/* The largest k <= n at which s is not inside a UTF-8 sequence. */
+static size_t
+char_start (const char *s, size_t n)
+{
+  while (n > 0 && ((unsigned char) s[n] & 0xC0) == 0x80)
+    n--;
+  return n;
+}
+
+void
+lac_text_fit (char *dst, size_t size, const char *src)
+{
+  static const char gap[] = " ... ";
+  size_t n = strlen (src), head, tail, start;
+  if (n < size || size < 4 * sizeof gap)
+    {
+      snprintf (dst, size, "%s", src);
+      return;
+    }
+  head = char_start (src, (size - sizeof gap) / 4);
+  start = n - (size - sizeof gap - head);         /* the most that fits */
+  while (((unsigned char) src[start] & 0xC0) == 0x80)
+    start++;                                      /* a whole character */
+  tail = n - start;
+  memcpy (dst, src, head);
+  memcpy (dst + head, gap, sizeof gap - 1);
+  memcpy (dst + head + sizeof gap - 1, src + n - tail, tail);
+  dst[head + sizeof gap - 1 + tail] = '\0';
+}

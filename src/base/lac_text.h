@@ -9,7 +9,10 @@
  *                    that are not UTF-8 (RFC 3629: no overlong forms, no
  *                    surrogates, nothing above U+10FFFF);
  *   lac_text_escape  a copy in which every such byte is written \xNN, so
- *                    that a message never sends raw binary to a terminal.
+ *                    that a message never sends raw binary to a terminal;
+ *   lac_text_fit     a copy cut to a buffer by dropping its middle, so
+ *                    that a message keeps its reason (at the end) when a
+ *                    long path quoted before it does not fit.
  */
 #ifndef LAC_TEXT_H
 #define LAC_TEXT_H
@@ -28,5 +31,11 @@ long lac_text_line (const char *text, size_t off);
 void lac_text_escape (char *dst, size_t size, const char *src);
 /* The same with the line feed too as \x0A: one line (a stored message). */
 void lac_text_escape_line (char *dst, size_t size, const char *src);
+
+/* Copy the string src to dst (size > 0 bytes, always terminated); when
+ * src does not fit, its middle is replaced by " ... " and its beginning
+ * (a quarter) and its end (the rest) are kept, cut between UTF-8
+ * characters. */
+void lac_text_fit (char *dst, size_t size, const char *src);
 
 #endif /* LAC_TEXT_H */

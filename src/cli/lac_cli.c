@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/lac_status.h"
 
 void
 lac_cli_print_error (const char *msg)
@@ -13,6 +14,21 @@ lac_cli_print_error (const char *msg)
   for (const char *p = msg; *p; p++)
     fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
   fputc ('\n', stderr);
+}
+
+void
+lac_cli_print_failure (const char *place, int status)
+{
+  const char *m = lac_error_message ();
+  char *msg = NULL;
+  size_t n;
+  if (!*m)
+    m = lac_strerror (status);
+  if (place && !lac_error_placed ()
+      && (msg = malloc (n = strlen (place) + strlen (m) + 3)) != NULL)
+    snprintf (msg, n, "%s: %s", place, m);
+  lac_cli_print_error (msg ? msg : m);
+  free (msg);
 }
 
 int

@@ -14,6 +14,12 @@ enum { LAC_CLI_FAILURE = 1, LAC_CLI_USAGE = 2 };
 /* "lac: MESSAGE" on stderr, as one line (newlines become blanks). */
 void lac_cli_print_error (const char *msg);
 
+/* The failure of a library call: "lac: PLACE: MESSAGE" when the stored
+ * message names no place of its own (base/lac_status.h), else "lac:
+ * MESSAGE"; what status means when the library left no message.  place
+ * may be NULL. */
+void lac_cli_print_failure (const char *place, int status);
+
 /* A bad command line: "lac: CMD: WHAT ARG (try lac CMD --help)" on
  * stderr (cmd NULL: lac itself; arg may be NULL); returns LAC_CLI_USAGE. */
 int lac_cli_usage_error (const char *cmd, const char *what, const char *arg);

@@ -205,7 +205,7 @@ lac_cli_infsup (int argc, char **argv)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL };
-  int ret;
+  int ret, status;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
     {
@@ -221,18 +221,19 @@ lac_cli_infsup (int argc, char **argv)
     }
   /* 1. The scene: it must have multipliers. */
   ret = LAC_CLI_FAILURE;
-  if (lac_scene_read (a.scene, a.nset, a.set, &sc))
-    lac_cli_print_error (lac_error_message ());
+  if ((status = lac_scene_read (a.scene, a.nset, a.set, &sc)))
+    lac_cli_print_failure (a.scene, status);
   else if (sc->ncontact == 0)
     fprintf (stderr, "lac: %s: no [contact] section: the inf-sup constant "
              "[LAC (10)] is a property of the contact multipliers; add a "
              "[contact NAME] section with slave and master groups\n",
              sc->path);
   else if (!(r = lac_run_alloc (sc, &ro)))
-    lac_cli_print_error (lac_error_message ());
+    lac_cli_print_failure (sc->path, LAC_ENOMEM);
   /* 2.-4. The stages up to assemble, then the estimate. */
-  else if (run_to_assemble (r, a.quiet) || estimate (r, &a))
-    lac_cli_print_error (lac_error_message ());
+  else if ((status = run_to_assemble (r, a.quiet))
+           || (status = estimate (r, &a)))
+    lac_cli_print_failure (sc->path, status);
   else
     ret = fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
   lac_run_free (r);

@@ -454,9 +454,9 @@ lac_cli_render (int argc, char **argv)
   if ((ret = parse_args (argc, argv, &a)))
     return ret;
   result_paths (&a, path, sizeof path, out, sizeof out);
-  if (lac_render_result_read (path, &res))
+  if ((ret = lac_render_result_read (path, &res)))
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (path, ret);
       return LAC_CLI_FAILURE;
     }
   if (a.list)
@@ -471,7 +471,7 @@ lac_cli_render (int argc, char **argv)
   lac_render_result_free (res);
   if (ret)
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (path, ret);
       return LAC_CLI_FAILURE;
     }
   printf ("%s\n", out);

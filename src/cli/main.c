@@ -309,14 +309,6 @@ catch_stop (int on)
   saved = 1;
 }
 
-/* The message of a failure, or what its status means if a library left
- * none (one line in every case). */
-static void
-print_failure (int status)
-{
-  const char *m = lac_error_message ();
-  lac_cli_print_error (*m ? m : lac_strerror (status));
-}
 
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
  * summary. */
@@ -333,12 +325,12 @@ cmd_run (const cmdline *c)
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
   if (status)
     {
-      print_failure (status);
+      lac_cli_print_failure (c->scene, status);
       return LAC_CLI_FAILURE;
     }
   if (!(r = lac_run_alloc (sc, &opts)))
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (sc->path, LAC_ENOMEM);
       lac_scene_free (sc);
       return LAC_CLI_FAILURE;
     }
@@ -378,7 +370,7 @@ cmd_run (const cmdline *c)
     for (size_t k = 0; k < r->res.summary.n; k++)
       printf ("%s = %s\n", r->res.summary.key[k], r->res.summary.val[k]);
   else
-    print_failure (status);
+    lac_cli_print_failure (sc->path, status);
   lac_run_free (r);
   lac_scene_free (sc);
   catch_stop (0);

@@ -69,10 +69,7 @@ file_kind (const char *path, int *kind)
 static int
 with_path (const char *path, int status)
 {
-  char msg[768];
-  const char *m = lac_error_message (), *colon = strstr (m, ": ");
-  snprintf (msg, sizeof msg, "%s", colon ? colon + 2 : m);
-  return READ_FAIL (status, "'%s': %s", path, msg);
+  return READ_FAIL (status, "'%s': %s", path, lac_error_message ());
 }
 
 /* lac_mesh_read: see lac_mesh_gmsh.h. */
