@@ -257,6 +257,76 @@ else
   rb_fail bad-no-raw-bytes "raw bytes in: $raw"
 fi
 
+# ---- inputs: regular files of bounded size ------------------------------
+# A scene or mesh path is checked for what it is before a byte is read
+# (src/base/lac_input.c): /dev/zero was read without end, a named pipe
+# without a writer blocked forever, a symbolic link to /dev/zero made
+# lac's process grow past 6 GB.  `timeout` turns a hang into a failure.
+mkfifo "$RB/pipe.scene" "$RB/pipe.msh" 2> /dev/null
+ln -sf /dev/zero "$RB/zero.msh"
+truncate -s 5M "$RB/huge.scene"
+truncate -s 200M "$RB/huge.msh"
+LACT="$LAC"; LAC="$RB/lac-timeout"
+printf '#!/bin/sh\nexec timeout 60 "%s" "$@"\n' "$(pwd)/$LACT" > "$LAC"
+chmod +x "$LAC"
+rbad dev-zero "/dev/zero: a character device, not a regular file" run /dev/zero $KB
+rbad pipe-scene "pipe.scene: a named pipe, not a regular file" run "$RB/pipe.scene" $KB
+rbad dir-scene "tests/bad: a directory, not a regular file" run tests/bad $KB
+rbad huge-scene "huge.scene: 5.24 MB, more than the limit of 4 MB" run "$RB/huge.scene" $KB
+rbad pipe-mesh "[mesh] file|pipe.msh: a named pipe, not a regular file" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/pipe.msh"
+rbad zero-mesh "[mesh] file|zero.msh: a character device, not a regular file" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/zero.msh"
+rbad huge-msh "[mesh] file|huge.msh: 210 MB, more than the limit of 100 MB (--max-memory)" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/huge.msh" --max-memory 100M
+LAC="$LACT"
+cp tests/bad/box.geo "$RB/box.geo"
+# Linear time in the number of sections: 80,000 materials (a pairwise
+# check of their groups took minutes) and 50,000 loads and Dirichlet
+# sections are read, checked and run in seconds.
+awk 'BEGIN { while ((getline l < "tests/bad/box.scene") > 0) print l
+             for (k = 0; k < 80000; k++) printf "[material m%d]\ngroup = g%d\nE = 1\nnu = 0.3\n", k, k }' \
+  > "$RB/many-materials.scene"
+t0=$(date +%s)
+rbad many-materials "many-materials.scene|[material m0] group = 'g0'|no physical group" \
+  run "$RB/many-materials.scene" $KB
+t1=$(date +%s)
+if [ $((t1 - t0)) -le 30 ]; then rb_ok bad-many-materials-time
+else rb_fail bad-many-materials-time "80,000 materials took $((t1 - t0)) s"; fi
+awk 'BEGIN { while ((getline l < "tests/bad/box.scene") > 0) print l
+             for (k = 0; k < 50000; k++)
+               if (k % 2) printf "[dirichlet d%d]\ngroup = left\nclamp = yes\n", k
+               else printf "[load l%d]\ngroup = right\ntraction = 1e-5 0\n", k }' \
+  > "$RB/many-loads.scene"
+t0=$(date +%s)
+if "$LAC" run "$RB/many-loads.scene" --no-output --quiet > "$RB/many-loads.out" 2> "$RB/many-loads.err" \
+   && [ $(($(date +%s) - t0)) -le 30 ]; then
+  rb_ok bad-many-sections
+else
+  rb_fail bad-many-sections "exit or time ($(($(date +%s) - t0)) s): $(head -1 "$RB/many-loads.err")"
+fi
+
+# ---- messages: the place and the reason, never a function ----------------
+# A message longer than the buffer (here the scene's path twice, 4,200
+# bytes) loses its middle, not its reason.
+deep="$RB/$(awk 'BEGIN { for (k = 0; k < 300; k++) printf "dir%d/", k }')"
+mkdir -p "$deep" && cp $SB "$deep/"
+rbad long-path "box-msh.scene:10: [mesh] file = 'box.msh': |...|dir299//box.msh: cannot open (No such file or directory)" \
+  run "$deep/box-msh.scene" $KB
+rbad long-set "--set|3000 characters, at most 511" \
+  run $SB $KB --set "mesh.file=$(awk 'BEGIN { for (k = 0; k < 2990; k++) printf "a" }')"
+# A message from deep inside names the scene and the stage.
+ln -sf /etc/hostname "$RB/not-a-dir"
+rbad out-not-dir "box.scene: output stage: |not-a-dir' is not a directory" \
+  run tests/bad/box.scene --quiet --out "$RB/not-a-dir"
+# No message of this file names a function of lac ('lac_x_y: ...').
+named=$(grep -lE '(^lac: |: )[a-z][a-z0-9]*_[a-z0-9_]*: ' "$RB"/*.err 2>/dev/null)
+if [ -z "$named" ]; then
+  rb_ok bad-no-function-names
+else
+  rb_fail bad-no-function-names "in $named: $(cat $named | head -2)"
+fi
+
 # ---- outputs: all or nothing ---------------------------------------------
 # A write that fails half-way (file size limit: the write gets EFBIG): the
 # earlier results stay, byte for byte, and no temporary is left beside.

@@ -10,9 +10,10 @@
  *                    surrogates, nothing above U+10FFFF);
  *   lac_text_escape  a copy in which every such byte is written \xNN, so
  *                    that a message never sends raw binary to a terminal;
- *   lac_text_fit     a copy cut to a buffer by dropping its middle, so
- *                    that a message keeps its reason (at the end) when a
- *                    long path quoted before it does not fit.
+ *   lac_text_fit     a copy cut to a buffer by shortening its longest
+ *                    words (paths) in their middle, so that a message
+ *                    keeps its place and its reason when long paths
+ *                    quoted in it do not fit.
  */
 #ifndef LAC_TEXT_H
 #define LAC_TEXT_H
@@ -33,9 +34,10 @@ void lac_text_escape (char *dst, size_t size, const char *src);
 void lac_text_escape_line (char *dst, size_t size, const char *src);
 
 /* Copy the string src to dst (size > 0 bytes, always terminated); when
- * src does not fit, its middle is replaced by " ... " and its beginning
- * (a quarter) and its end (the rest) are kept, cut between UTF-8
- * characters. */
+ * src does not fit, its words (runs without a blank) longer than some
+ * length L are cut to their first third, "..." and their end, L as large
+ * as fits; if that is not enough (L below 48), the middle of the whole
+ * is replaced by " ... ".  Cuts fall between UTF-8 characters. */
 void lac_text_fit (char *dst, size_t size, const char *src);
 
 #endif /* LAC_TEXT_H */

@@ -18,10 +18,10 @@
  */
 #include "io/lac_mesh_gmsh.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "base/lac_input.h"
 #include "base/lac_status.h"
 #include "fem/lac_mesh_check.h"
 #include "io/lac_mesh_child.h"
@@ -46,23 +46,21 @@ session (void *arg, lac_mesh **out)
   return lac_gmsh_session (a->path, a->kind, a->opts, out);
 }
 
-/* The kind of file from its extension, and that it can be opened. */
+/* The kind of file from its extension, and that it is a regular file
+ * that opens, no larger than the memory the read may take (gmsh would
+ * block on a named pipe and read /dev/zero until the limit killed it:
+ * base/lac_input.h). */
 static int
-file_kind (const char *path, int *kind)
+file_kind (const char *path, double max_memory, int *kind)
 {
   const char *ext = strrchr (path, '.');
-  FILE *f;
   if (ext && strcmp (ext, ".geo") == 0)
     *kind = LAC_GMSH_GEO;
   else if (ext && strcmp (ext, ".msh") == 0)
     *kind = LAC_GMSH_MSH;
   else
     return READ_FAIL (LAC_EINVAL, "'%s': expected a .msh or .geo file", path);
-  if (!(f = fopen (path, "r")))
-    return READ_FAIL (lac_status_errno (errno), "cannot open '%s': %s", path,
-                      strerror (errno));
-  fclose (f);
-  return LAC_SUCCESS;
+  return lac_input_check (path, max_memory, "--max-memory", NULL);
 }
 
 /* A lac_mesh_* message, with the file in front. */
@@ -89,9 +87,9 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
     o = *opts;
   if (o.max_memory <= 0)
     o.max_memory = lac_mesh_default_memory ();
-  if ((status = file_kind (path, &kind)))
+  if ((status = file_kind (path, o.max_memory, &kind)))
     return status;
-  if (kind == LAC_GMSH_MSH && (status = lac_msh_check (path)))
+  if (kind == LAC_GMSH_MSH && (status = lac_msh_check (path, o.max_memory)))
     return status;
   arg = (session_arg) { path, kind, &o };
   status = lac_mesh_child_run (kind == LAC_GMSH_GEO ? "mesh" : "read", path,

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "fem/lac_spaces.h"
@@ -398,40 +399,11 @@ lac_msh_check_text (const char *path, const char *text, size_t len)
 
 /* lac_msh_check: see lac_mesh_msh_check.h. */
 int
-lac_msh_check (const char *path)
+lac_msh_check (const char *path, double max_bytes)
 {
-  FILE *f = fopen (path, "rb");
   char *text = NULL;
-  size_t len = 0, cap = 0;
-  int status = LAC_SUCCESS;
-  if (!f)
-    return lac_error_set (lac_status_errno (errno), "lac_mesh_read",
-                          "cannot open '%s': %s",
-                          path, strerror (errno));
-  for (;;)
-    {
-      size_t k;
-      if (len + 65536 > cap)
-        {
-          char *p = lac_realloc (text, cap = 2 * cap + 65536);
-          if (!p)
-            {
-              status = lac_error_set (LAC_ENOMEM, "lac_mesh_read", "'%s': "
-                                      "out of memory reading %zu bytes",
-                                      path, cap);
-              break;
-            }
-          text = p;
-        }
-      k = fread (text + len, 1, cap - len, f);
-      len += k;
-      if (k == 0)
-        break;
-    }
-  if (!status && ferror (f))
-    status = lac_error_set (LAC_EIO, "lac_mesh_read", "cannot read '%s'",
-                            path);
-  fclose (f);
+  size_t len = 0;
+  int status = lac_input_read (path, max_bytes, "--max-memory", &text, &len);
   if (!status)
     status = lac_msh_check_text (path, text, len);
   lac_free (text);

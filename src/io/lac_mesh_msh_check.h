@@ -26,9 +26,11 @@
 
 #include <stddef.h>
 
-/* LAC_SUCCESS, LAC_EIO (cannot read, or not a valid mesh file: the message
- * names the line) or LAC_ENOMEM. */
-int lac_msh_check (const char *path);
+/* LAC_SUCCESS, LAC_EIO (cannot read, not a regular file or larger than
+ * max_bytes, or not a valid mesh file: the message names the line) or
+ * LAC_ENOMEM.  The file is read whole (base/lac_input.h), so max_bytes
+ * (--max-memory) bounds what lac's own process takes for it. */
+int lac_msh_check (const char *path, double max_bytes);
 
 /* The same on the len bytes of text (for tests and fuzzing). */
 int lac_msh_check_text (const char *path, const char *text, size_t len);

@@ -243,6 +243,10 @@ set_split (const char *arg, char buf[512], char sec[600], char keyout[512],
   char keybuf[512], *eq, *dot, *last;
   const char *key;
   const section_spec *sp;
+  if (strlen (arg) >= 512)              /* the buffers below: never cut */
+    return lac_error_set (LAC_EINVAL, "--set", "'%.40s...': %zu characters,"
+                          " at most 511 (a scene line holds at most 197)",
+                          arg, strlen (arg));
   snprintf (buf, 512, "%s", arg);
   if (!(eq = strchr (buf, '=')))
     return lac_error_set (LAC_EINVAL, "--set", "'%s': expected KEY=VALUE "
@@ -525,13 +529,78 @@ store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
   LAC_ERROR (LAC_ESANITY, "key type %d", (int) ks->type);
 }
 
-static int
-build_header (lac_scene *sc, const raw_entry *h)
+/* The headers by their normalized name ("material steel"): an
+ * open-addressing table of the first header of each name, so that the
+ * section of an entry and a header given twice are found in constant
+ * time.  A scene of n sections is read in time linear in n (a search
+ * through the sections for each entry made 100,000 sections take 137 s). */
+typedef struct heads
 {
+  size_t *slot;     /* owned, size: 1 + header index, 0 for empty        */
+  size_t size;      /* a power of 2, at least twice the headers          */
+  int *kind;        /* owned, nh: the kind of each header's section      */
+  size_t *index;    /* owned, nh: its index among the sections of kind   */
+} heads;
+
+static size_t
+name_hash (const char *s)
+{
+  size_t h = 14695981039346656037u;               /* FNV-1a */
+  for (; *s; s++)
+    h = (h ^ (unsigned char) *s) * 1099511628211u;
+  return h;
+}
+
+/* The index of the first header named sec, or r->nh if none. */
+static size_t
+heads_find (const heads *H, const raw *r, const char *sec)
+{
+  for (size_t i = name_hash (sec) & (H->size - 1); H->slot[i];
+       i = (i + 1) & (H->size - 1))
+    if (strcmp (r->h[H->slot[i] - 1].sec, sec) == 0)
+      return H->slot[i] - 1;
+  return r->nh;
+}
+
+static int
+heads_init (heads *H, const raw *r)
+{
+  H->size = 16;
+  while (H->size < 2 * r->nh)
+    H->size *= 2;
+  H->slot = lac_calloc (H->size, sizeof *H->slot);
+  H->kind = lac_calloc (r->nh + 1, sizeof *H->kind);
+  H->index = lac_calloc (r->nh + 1, sizeof *H->index);
+  if (!H->slot || !H->kind || !H->index)
+    LAC_ERROR (LAC_ENOMEM, "the index of %zu sections", r->nh);
+  for (size_t k = 0; k < r->nh; k++)
+    if (heads_find (H, r, r->h[k].sec) == r->nh)
+      {
+        size_t i = name_hash (r->h[k].sec) & (H->size - 1);
+        while (H->slot[i])
+          i = (i + 1) & (H->size - 1);
+        H->slot[i] = k + 1;
+      }
+  return LAC_SUCCESS;
+}
+
+static void
+heads_free (heads *H)
+{
+  lac_free (H->slot);
+  lac_free (H->kind);
+  lac_free (H->index);
+}
+
+/* Header k of r: a new section of sc. */
+static int
+build_header (lac_scene *sc, const raw *r, heads *H, size_t k)
+{
+  const raw_entry *h = &r->h[k];
   char buf[512], list[256];
   const char *name;
   int kind = lac_scene_split_section (h->sec, buf, sizeof buf, &name);
-  lac_scene_section *s;
+  size_t first = heads_find (H, r, h->sec);
   if (kind < 0)
     {
       lac_scene_section_list (list, sizeof list);
@@ -545,32 +614,37 @@ build_header (lac_scene *sc, const raw_entry *h)
   if (!lac_scene_sections[kind].named && name[0])
     return lac_scene_where_error (sc->path, h->line, LAC_EINVAL, "[%s]: [%s] "
                                   "takes no name", h->sec, buf);
-  if ((s = lac_scene_section_find (sc, kind, name)) != NULL)
+  if (first != k)
     return lac_scene_where_error (sc->path, h->line, LAC_EINVAL, "[%s]: "
                                   "section given twice (first at line %d)",
-                                  h->sec, s->line);
+                                  h->sec, r->h[first].line);
   if (!lac_scene_section_new (sc, kind, name, h->line))
     LAC_ERROR (LAC_ENOMEM, "out of memory");
+  H->kind[k] = kind;
+  H->index[k] = lac_scene_section_count (sc, kind) - 1;
   return LAC_SUCCESS;
 }
 
 static int
-build_entry (lac_scene *sc, const raw_entry *e)
+build_entry (lac_scene *sc, const raw *r, const heads *H,
+             const raw_entry *e)
 {
   char buf[512], list[256];
   const char *name;
+  size_t h;
   int kind, k;
   lac_scene_section *s;
   if (e->sec[0] == '\0')
     return lac_scene_where_error (sc->path, e->line, LAC_EINVAL, "%s = '%s': "
                                   "key outside any [section]", e->key,
                                   e->val);
-  kind = lac_scene_split_section (e->sec, buf, sizeof buf, &name);
-  if (kind < 0 || !(s = lac_scene_section_find (sc, kind, name)))
+  if ((h = heads_find (H, r, e->sec)) == r->nh
+      || !(s = lac_scene_section_get (sc, kind = H->kind[h], H->index[h])))
     LAC_ERROR (LAC_ESANITY, "entry of unknown section [%s]", e->sec);
   if ((k = lac_scene_key_index (kind, e->key)) < 0)
     {
       const section_spec *sp = &lac_scene_sections[kind];
+      lac_scene_split_section (e->sec, buf, sizeof buf, &name);
       lac_scene_join_names (list, sizeof list, &sp->keys[0].name,
                             (size_t) sp->nkeys, sizeof (key_spec));
       return lac_scene_where_error (sc->path, e->line, LAC_EINVAL, "[%s] %s: "
@@ -593,16 +667,18 @@ static int
 build (lac_scene *sc, const raw *r)
 {
   size_t ih = 0, ie = 0;
-  int status = LAC_SUCCESS;
+  heads H = { 0 };
+  int status = heads_init (&H, r);
   while (status == LAC_SUCCESS && (ih < r->nh || ie < r->ne))
     {
       long long lh = ih < r->nh ? r->h[ih].order : (long long) INT_MAX + 1;
       long long le = ie < r->ne ? r->e[ie].order : (long long) INT_MAX + 1;
       if (lh <= le)
-        status = build_header (sc, &r->h[ih++]);
+        status = build_header (sc, r, &H, ih++);
       else
-        status = build_entry (sc, &r->e[ie++]);
+        status = build_entry (sc, r, &H, &r->e[ie++]);
     }
+  heads_free (&H);
   return status;
 }
 

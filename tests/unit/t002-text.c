@@ -28,10 +28,17 @@ test_fit (void)
   check_true (strlen (lac_error_message ()) < 1024
               && !strncmp (lac_error_message (), "s.scene:3: cannot open 'aa",
                            26)
-              && strstr (lac_error_message (), " ... ")
+              && strstr (lac_error_message (), "aa...aa")
               && strstr (lac_error_message (), "aaa' (No such file or "
                          "directory)"), "a long path loses its middle, "
               "not the reason: '%.60s...'", lac_error_message ());
+  lac_error_place (LAC_EIO, path, "[mesh] file = '%s': %s: cannot open",
+                   path, path);
+  check_true (strlen (lac_error_message ()) < 1024
+              && strstr (lac_error_message (), "[mesh] file = 'aa")
+              && strstr (lac_error_message (), "aa: cannot open"),
+              "three long paths: each loses its middle, the words between "
+              "stay: '%s'", lac_error_message ());
   check_int (lac_error_placed (), 1, "placed");
   lac_text_fit (out, sizeof out, "short");
   check_true (!strcmp (out, "short"), "fits: '%s'", out);
