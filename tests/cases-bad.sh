@@ -83,6 +83,18 @@ rbad huge-type "huge-type.msh|line 51|element 19 has type 24989999994" \
 rbad huge-tags "huge-tags.msh|line 51|integer '2000000000000000000' is too large" \
   run $SB $KB --set mesh.file=huge-tags.msh
 
+# Tags: gmsh reads MSH 2 tags as int (2^32 + 1 became 1, "overlapping
+# cells"), keeps the last coordinates of a node tag given twice and drops
+# one of two elements of a tag (a hole, exit status 0).
+rbad tag-wrap "tag-wrap.msh|line 29|node tag 4294967297 is too large|integers from 1 to 2147483647" \
+  run $SB $KB --set mesh.file=tag-wrap.msh
+rbad dup-node "dup-node.msh|line 29|node tag 3 is given twice (first at line 17)" \
+  run $SB $KB --set mesh.file=dup-node.msh
+rbad dup-element "dup-element.msh|line 61|element tag 29 is given twice (first at line 60)" \
+  run $SB $KB --set mesh.file=dup-element.msh
+rbad dup-node-v41 "dup-node-v41.msh|line 31|node tag 1 is given twice (first at line 28)" \
+  run $SB $KB --set mesh.file=dup-node-v41.msh
+
 # ---- meshes: the cells as a mesh -----------------------------------------
 rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
   run $SB $KB --set mesh.file=dup-cell.msh

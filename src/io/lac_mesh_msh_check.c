@@ -9,6 +9,8 @@
 #include "io/lac_mesh_msh_check.h"
 
 #include <errno.h>
+#include <limits.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,6 +32,14 @@ static const signed char type_nodes[32] = {
  * long once converted back from the double it is kept in. */
 #define INT_TOO_LARGE 1e18
 
+/* A node or element tag and the line that gave it. */
+typedef struct tag_line
+{
+  double tag;
+  long line;
+  int element;         /* 0 a node tag, 1 an element tag */
+} tag_line;
+
 typedef struct cur
 {
   const char *path, *p, *end;
@@ -38,6 +48,9 @@ typedef struct cur
   size_t n;
   int ntok;            /* numbers on it (all counted, MAXTOK kept) */
   double tok[MAXTOK];
+  tag_line *tags;      /* owned, ntags: every node and element tag    */
+  size_t ntags, captags;
+  double tag_max;      /* the largest tag the format's reader takes    */
 } cur;
 
 static int
@@ -146,6 +159,61 @@ expect_end (cur *c, const char *name)
 }
 
 /* ---------------------------------------------------------------------- */
+/* node tags                                                               */
+/* ---------------------------------------------------------------------- */
+
+/* The node (element = 0) or element tag t of the current line: a
+ * positive integer gmsh reads without wrapping (MSH 2: an int, a tag
+ * 2^32 + 1 was read as 1), kept with its line for the check of tags
+ * given twice. */
+static int
+add_tag (cur *c, double t, int element)
+{
+  const char *what = element ? "element" : "node";
+  if (t != floor (t))
+    return bad (c, "%s tag %g is not an integer", what, t);
+  if (t < 1 || t > c->tag_max)
+    return bad (c, "%s tag %.0f is %s: gmsh reads the tags of this format "
+                "as integers from 1 to %.0f", what, t, t < 1 ? "not "
+                "positive" : "too large", c->tag_max);
+  if (lac_grow (&c->tags, c->ntags + 1, &c->captags, sizeof *c->tags, 1024))
+    return lac_error_set (LAC_ENOMEM, "lac_mesh_read", "'%s': the tags of "
+                          "%zu nodes and elements", c->path, c->ntags + 1);
+  c->tags[c->ntags++] = (tag_line) { t, c->line, element };
+  return LAC_SUCCESS;
+}
+
+static int
+by_tag_line (const void *a, const void *b)
+{
+  const tag_line *x = a, *y = b;
+  if (x->element != y->element)
+    return x->element - y->element;
+  return x->tag != y->tag ? (x->tag > y->tag) - (x->tag < y->tag)
+                          : (x->line > y->line) - (x->line < y->line);
+}
+
+/* No tag twice: gmsh keeps the coordinates of the last node of a tag
+ * (the cells of both then share a node) and one element of a tag (a
+ * hole in the mesh), without a word. */
+static int
+tags_distinct (cur *c)
+{
+  if (c->ntags > 1)
+    qsort (c->tags, c->ntags, sizeof *c->tags, by_tag_line);
+  for (size_t k = 1; k < c->ntags; k++)
+    if (c->tags[k].tag == c->tags[k - 1].tag
+        && c->tags[k].element == c->tags[k - 1].element)
+      {
+        c->line = c->tags[k].line;
+        return bad (c, "%s tag %.0f is given twice (first at line %ld)",
+                    c->tags[k].element ? "element" : "node",
+                    c->tags[k].tag, c->tags[k - 1].line);
+      }
+  return LAC_SUCCESS;
+}
+
+/* ---------------------------------------------------------------------- */
 /* sections                                                                */
 /* ---------------------------------------------------------------------- */
 
@@ -194,7 +262,7 @@ element_22 (cur *c)
     return bad (c, "element %.0f (type %d) has %d nodes after its tags, a "
                 "type %d element has %d", c->tok[0], type,
                 c->ntok - 3 - ntags, type, type_nodes[type]);
-  return LAC_SUCCESS;
+  return add_tag (c, c->tok[0], 1);
 }
 
 static int
@@ -212,6 +280,8 @@ nodes_22 (cur *c)
         return bad (c, "a node line has 4 numbers (tag x y z), found %d "
                     "(%lld nodes declared, this is node line %lld)",
                     c->ntok, n, k + 1);
+      if ((status = add_tag (c, c->tok[0], 0)))
+        return status;
     }
   return expect_end (c, "Nodes");
 }
@@ -258,7 +328,8 @@ nodes_41 (cur *c)
         return bad (c, "the node blocks hold more nodes than the header "
                     "says");
       for (long long k = 0; k < n; k++)
-        if (!number_line (c, 1, "$Nodes", &status) || c->ntok != 1)
+        if (!number_line (c, 1, "$Nodes", &status) || c->ntok != 1
+            || (status = add_tag (c, c->tok[0], 0)))
           return status ? status : bad (c, "a node tag line has 1 number, "
                                         "found %d", c->ntok);
       for (long long k = 0; k < n; k++)
@@ -311,6 +382,8 @@ elements_41 (cur *c)
             return bad (c, "element %.0f (type %d) has %d nodes, expected "
                         "%d", c->tok[0], type, c->ntok - 1,
                         type_nodes[type]);
+          if ((status = add_tag (c, c->tok[0], 1)))
+            return status;
         }
     }
   if (total != 0)
@@ -394,7 +467,12 @@ lac_msh_check_text (const char *path, const char *text, size_t len)
                                   ".msh file?)");
   if ((status = mesh_format (&c, &v4, &binary)) || binary)
     return status;
-  return sections (&c, v4);
+  c.tag_max = v4 ? INT_TOO_LARGE : INT_MAX;
+  status = sections (&c, v4);
+  if (!status)
+    status = tags_distinct (&c);
+  lac_free (c.tags);
+  return status;
 }
 
 /* lac_msh_check: see lac_mesh_msh_check.h. */
