@@ -269,6 +269,37 @@ else
   rb_fail bad-no-raw-bytes "raw bytes in: $raw"
 fi
 
+# ---- contradictions: an error naming both places ------------------------
+rbad dirichlet-twice "dirichlet-twice.scene:22:|[dirichlet pushed]|ux = 0.5 at node 1|[dirichlet left] (line 17) imposes ux = 0|contradictory" \
+  run tests/bad/dirichlet-twice.scene $KB
+rbad dirichlet-node "dirichlet-node.scene:22:|[dirichlet lifted]|uy = 0.1 at node 1 at (0, 0)|[dirichlet left] (line 17) imposes uy = 0" \
+  run tests/bad/dirichlet-node.scene $KB
+# Equal values are not a contradiction: the clamped left side is also a
+# symmetry plane x = 0, and the answer is that of box.scene.
+sed 's/^ux = 0.5$/symmetry = x/' tests/bad/dirichlet-twice.scene > "$RB/dirichlet-equal.scene"
+cp tests/bad/box.geo "$RB/box.geo"
+"$LAC" run "$RB/dirichlet-equal.scene" --no-output --quiet > "$RB/dirichlet-equal.out" 2>&1
+"$LAC" run tests/bad/box.scene --no-output --quiet > "$RB/box.out" 2>&1
+if cmp -s "$RB/dirichlet-equal.out" "$RB/box.out"; then rb_ok bad-dirichlet-equal
+else rb_fail bad-dirichlet-equal "$(tail -1 "$RB/dirichlet-equal.out")"; fi
+rbad interior-load "interior-load.scene:22:|[load inside] group = 'mid'|inside the body" \
+  run tests/bad/interior-load.scene $KB
+# A tri6 among tri3 cells: gmsh drops it from the entity (a hole, exit
+# status 0 with a warning); in an entity of its own it is not conforming.
+rbad mixed-order "mixed-order.msh|16 2D elements (15 tri3, 1 tri6), gmsh read 15|hole" \
+  run $SB $KB --set mesh.file=mixed-order.msh --set element=tri3
+rbad mixed-order-entity "mixed-order-entity.msh|cells 18 (tri3) and 19 (tri6) share the vertices of a face but not all its nodes|not conforming" \
+  run $SB $KB --set mesh.file=mixed-order-entity.msh --set element=tri3
+rbad curve-collision "--set|curve = 'solution.vtu'|another output under this name" \
+  run chapters/08-experiments/ring.scene $KB --set steps.curve=solution.vtu
+rbad curve-path "--set|curve = '../curve.csv'|without '/'" \
+  run chapters/08-experiments/ring.scene $KB --set steps.curve=../curve.csv
+"$LAC" render "$RB/keep" --out "$RB/keep/nodes.csv" > /dev/null 2> "$RB/render-out.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q "expected a file name ending in .png" "$RB/render-out.err" \
+   && rb_sums | cmp -s - "$RB/keep.sums"; then rb_ok bad-render-out
+else rb_fail bad-render-out "exit $rc: $(head -1 "$RB/render-out.err")"; fi
+
 # ---- inputs: regular files of bounded size ------------------------------
 # A scene or mesh path is checked for what it is before a byte is read
 # (src/base/lac_input.c): /dev/zero was read without end, a named pipe

@@ -238,6 +238,12 @@ parse_args (int argc, char **argv, render_args *a)
   if (a->vtu && a->contact)
     return lac_cli_usage_error ("render", "--contact draws contact.csv, "
                                 "the last step: not with", "--vtu");
+  if (a->out && (strlen (a->out) < 5
+                 || strcmp (a->out + strlen (a->out) - 4, ".png")))
+    return lac_cli_usage_error ("render", "--out: expected a file name "
+                                "ending in .png (a PNG is written there; "
+                                "it must not replace a result file), got",
+                                a->out);
   return 0;
 }
 

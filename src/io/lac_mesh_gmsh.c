@@ -63,6 +63,29 @@ file_kind (const char *path, double max_memory, int *kind)
   return lac_input_check (path, max_memory, "--max-memory", NULL);
 }
 
+/* Every element of the top dimension of the file came back as a cell:
+ * gmsh 4.8 drops an element of a second order from an entity of first-
+ * order ones (a tri6 among tri3) without a word, and the mesh then has
+ * a hole that the solve does not see. */
+static int
+all_cells (const char *path, const lac_msh_counts *c, const lac_mesh *m)
+{
+  char types[256] = "";
+  size_t n = 0, want = c->by_dim[m->dim];
+  if (want == 0 || want == m->ncells)
+    return LAC_SUCCESS;
+  for (int t = 1; t < LAC_MSH_NTYPES && n < sizeof types; t++)
+    if (c->by_type[t] && lac_msh_type_dim (t) == m->dim)
+      n += (size_t) snprintf (types + n, sizeof types - n, "%s%zu %s",
+                              n ? ", " : "", c->by_type[t],
+                              lac_msh_type_name (t));
+  return READ_FAIL (LAC_EINVAL, "'%s': the file has %zu %dD elements (%s), "
+                    "gmsh read %zu of them: it drops elements of a second "
+                    "order from an entity of another order, which would "
+                    "leave a hole in the mesh; give each entity elements of "
+                    "one order", path, want, m->dim, types, m->ncells);
+}
+
 /* A lac_mesh_* message, with the file in front. */
 static int
 with_path (const char *path, int status)
@@ -75,6 +98,7 @@ int
 lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
 {
   lac_mesh_opts o = { 0 };
+  lac_msh_counts counts = { { 0 }, { 0 } };
   session_arg arg;
   int kind = LAC_GMSH_MSH, status;
 
@@ -89,12 +113,18 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
     o.max_memory = lac_mesh_default_memory ();
   if ((status = file_kind (path, o.max_memory, &kind)))
     return status;
-  if (kind == LAC_GMSH_MSH && (status = lac_msh_check (path, o.max_memory)))
+  if (kind == LAC_GMSH_MSH
+      && (status = lac_msh_check (path, o.max_memory, &counts)))
     return status;
   arg = (session_arg) { path, kind, &o };
   status = lac_mesh_child_run (kind == LAC_GMSH_GEO ? "mesh" : "read", path,
                                session, &arg, o.max_memory, o.max_seconds,
                                out);
+  if (!status && (status = all_cells (path, &counts, *out)))
+    {
+      lac_mesh_free (*out);
+      *out = NULL;
+    }
   if (!status && ((status = lac_mesh_validate (*out))
                   || (status = lac_mesh_check_topology (*out))))
     {

@@ -27,6 +27,19 @@ static const signed char type_nodes[32] = {
   12, 15, 15, 21, 4, 5, 6, 20, 35, 56
 };
 
+/* Their dimensions and names (gmsh reference manual, element types). */
+static const signed char type_dim[32] = {
+  -1, 1, 2, 2, 3, 3, 3, 3, 1, 2, 2, 3, 3, 3, 3, 0, 2, 3, 3, 3, 2, 2, 2, 2,
+  2, 2, 1, 1, 1, 3, 3, 3
+};
+static const char *const type_name[32] = {
+  "?", "seg2", "tri3", "quad4", "tet4", "hex8", "prism6", "pyramid5",
+  "seg3", "tri6", "quad9", "tet10", "hex27", "prism18", "pyramid14",
+  "point", "quad8", "hex20", "prism15", "pyramid13", "tri9", "tri10",
+  "tri12", "tri15", "tri15i", "tri21", "seg4", "seg5", "seg6", "tet20",
+  "tet35", "tet56"
+};
+
 #define MAXTOK 64      /* numbers of one line that we look at */
 /* Integers beyond this are refused: every count and tag then fits a long
  * long once converted back from the double it is kept in. */
@@ -51,6 +64,7 @@ typedef struct cur
   tag_line *tags;      /* owned, ntags: every node and element tag    */
   size_t ntags, captags;
   double tag_max;      /* the largest tag the format's reader takes    */
+  lac_msh_counts *counts;   /* borrowed, may be NULL                    */
 } cur;
 
 static int
@@ -162,6 +176,26 @@ expect_end (cur *c, const char *name)
 /* node tags                                                               */
 /* ---------------------------------------------------------------------- */
 
+int
+lac_msh_type_dim (int t)
+{
+  return t >= 1 && t < 32 ? type_dim[t] : -1;
+}
+
+const char *
+lac_msh_type_name (int t)
+{
+  return t >= 1 && t < 32 ? type_name[t] : "?";
+}
+
+/* One more element of gmsh type t (known) in the counts. */
+static void
+count_type (cur *c, int t)
+{
+  if (c->counts)
+    c->counts->by_type[t]++, c->counts->by_dim[type_dim[t]]++;
+}
+
 /* The node (element = 0) or element tag t of the current line: a
  * positive integer gmsh reads without wrapping (MSH 2: an int, a tag
  * 2^32 + 1 was read as 1), kept with its line for the check of tags
@@ -262,6 +296,7 @@ element_22 (cur *c)
     return bad (c, "element %.0f (type %d) has %d nodes after its tags, a "
                 "type %d element has %d", c->tok[0], type,
                 c->ntok - 3 - ntags, type, type_nodes[type]);
+  count_type (c, type);
   return add_tag (c, c->tok[0], 1);
 }
 
@@ -382,6 +417,7 @@ elements_41 (cur *c)
             return bad (c, "element %.0f (type %d) has %d nodes, expected "
                         "%d", c->tok[0], type, c->ntok - 1,
                         type_nodes[type]);
+          count_type (c, type);
           if ((status = add_tag (c, c->tok[0], 1)))
             return status;
         }
@@ -453,15 +489,19 @@ sections (cur *c, int v4)
   return LAC_SUCCESS;
 }
 
-/* lac_msh_check_text: see lac_mesh_msh_check.h. */
-int
-lac_msh_check_text (const char *path, const char *text, size_t len)
+/* The check of text, the elements counted into counts (may be NULL). */
+static int
+check_text (const char *path, const char *text, size_t len,
+            lac_msh_counts *counts)
 {
   cur c = { 0 };
   int status, v4 = 0, binary = 0;
   c.path = path;
   c.p = text;
   c.end = text + len;
+  c.counts = counts;
+  if (counts)
+    memset (counts, 0, sizeof *counts);
   if (!next_line (&c, &status) || status || !is_line (&c, "$MeshFormat"))
     return status ? status : bad (&c, "expected $MeshFormat (is this a "
                                   ".msh file?)");
@@ -472,18 +512,29 @@ lac_msh_check_text (const char *path, const char *text, size_t len)
   if (!status)
     status = tags_distinct (&c);
   lac_free (c.tags);
+  if (status && counts)
+    memset (counts, 0, sizeof *counts);
   return status;
+}
+
+/* lac_msh_check_text: see lac_mesh_msh_check.h. */
+int
+lac_msh_check_text (const char *path, const char *text, size_t len)
+{
+  return check_text (path, text, len, NULL);
 }
 
 /* lac_msh_check: see lac_mesh_msh_check.h. */
 int
-lac_msh_check (const char *path, double max_bytes)
+lac_msh_check (const char *path, double max_bytes, lac_msh_counts *counts)
 {
   char *text = NULL;
   size_t len = 0;
   int status = lac_input_read (path, max_bytes, "--max-memory", &text, &len);
+  if (counts)
+    memset (counts, 0, sizeof *counts);
   if (!status)
-    status = lac_msh_check_text (path, text, len);
+    status = check_text (path, text, len, counts);
   lac_free (text);
   return status;
 }

@@ -16,6 +16,7 @@
 #include <string.h>
 #include "fem/lac_exact.h"
 #include "io/lac_mesh_opts.h"
+#include "io/lac_output_batch.h"
 #include "io/lac_scene_keys.h"
 #include "io/lac_scene_query.h"
 #include "base/lac_input.h"
@@ -505,6 +506,29 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   return LAC_SUCCESS;
 }
 
+/* [steps] curve: a file of the output directory that no other output of
+ * the run has (curve = solution.vtu overwrote the solution), named
+ * without a directory (it is written into the output directory). */
+static int
+check_curve (lac_scene *sc)
+{
+  const char *c = sc->steps.curve;
+  if (!c)
+    return LAC_SUCCESS;
+  if (strchr (c, '/') || c[0] == '.')
+    return lac_scene_error (sc, &sc->steps.sec, "curve", LAC_EINVAL,
+                            "expected a file name of the output directory, "
+                            "without '/' and not starting with '.'");
+  if (strcmp (c, "curve.csv") && lac_output_batch_ours (c))
+    return lac_scene_error (sc, &sc->steps.sec, "curve", LAC_EINVAL,
+                            "the run writes another output under this name "
+                            "(solution.vtu, nodes.csv, contact.csv, "
+                            "contact_steps.csv, contact.vtu, K.mtx, "
+                            "summary.txt, steps.pvd, step_NNN.vtu): give the "
+                            "curve a name of its own");
+  return LAC_SUCCESS;
+}
+
 /* The keys of the large-deformation run (lac_nonlinear.h) and the keys
  * that need it: law = neo_hookean and [steps]; [exact] (small-strain
  * solutions) and the comparison contact methods do not go with it. */
@@ -522,6 +546,8 @@ finish_nonlinear (lac_scene *sc)
                             "steps need [scene] large_deformation = yes");
   if (!m->large_deformation)
     return LAC_SUCCESS;
+  if (check_curve (sc))
+    return LAC_EINVAL;
   if (sc->exact.sec.line != 0)
     return lac_scene_error (sc, &sc->exact.sec, NULL, LAC_EINVAL, "the "
                             "exact solutions are small-strain solutions; "
