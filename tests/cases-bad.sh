@@ -171,6 +171,19 @@ else
   rb_fail estimate-petsc-memory "petsc '$gp' GB, Cholesky '$gc' GB"
 fi
 
+# A size factor far below 1 on an unstructured mesh: gmsh's count of
+# segments on a curve overflowed (size = 1e-10 gave fewer cells than size
+# = 1, exit status 0); the estimate now reaches a small factor in steps
+# and stops at the first that passes the limit.
+for sz in 1e-10 1e-29; do
+  rbad "size-$sz" "cylinder-tets.geo|size = $sz|already at size|(more at $sz)|--max-memory" \
+    run tests/bad/cylinder-tets.scene $KB --set size=$sz
+done
+n1=$(real_nodes tests/bad/cylinder-tets.scene --set size=1)
+nh=$(real_nodes tests/bad/cylinder-tets.scene --set size=0.5)
+if [ -n "$n1" ] && [ -n "$nh" ] && [ "$nh" -gt $((2 * n1)) ]; then rb_ok bad-size-half
+else rb_fail bad-size-half "size 0.5: '$nh' nodes, size 1: '$n1'"; fi
+
 "$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
 rc=$?
 if [ $rc -eq 2 ] && grep -q -- "--max-memory '12Q': not a decimal number.*expected a size such as 8G, 500M or 2e9" "$RB/mm-usage.err"; then
@@ -299,6 +312,27 @@ rc=$?
 if [ $rc -eq 2 ] && grep -q "expected a file name ending in .png" "$RB/render-out.err" \
    && rb_sums | cmp -s - "$RB/keep.sums"; then rb_ok bad-render-out
 else rb_fail bad-render-out "exit $rc: $(head -1 "$RB/render-out.err")"; fi
+
+# ---- messages that blamed the wrong thing -------------------------------
+# gmsh crashing under a small stack limit: the limit is named, not the
+# .geo (not under AddressSanitizer, whose own stack use is larger).
+if [ -z "$ASAN_OPTIONS" ]; then
+  (ulimit -s 64; "$LAC" run tests/bad/box.scene $KB > "$RB/stack.out" 2> "$RB/stack.err")
+  if grep -q "the stack limit is 64 kB (ulimit -s)" "$RB/stack.err" && [ "$(wc -l < "$RB/stack.err")" -eq 1 ]; then
+    rb_ok bad-stack-limit
+  else
+    rb_fail bad-stack-limit "$(head -1 "$RB/stack.err")"
+  fi
+fi
+# lac infsup with one multiplier: no second eigenvalue, and no nan.
+"$LAC" infsup chapters/08-experiments/taylor2d.scene --quiet > "$RB/infsup1.out" 2> "$RB/infsup1.err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q '^multipliers = 1$' "$RB/infsup1.out" \
+   && ! grep -qi 'nan' "$RB/infsup1.out" && ! grep -q '^lambda_2' "$RB/infsup1.out"; then
+  rb_ok bad-infsup-one
+else
+  rb_fail bad-infsup-one "exit $rc: $(grep -i 'nan\|lambda_2' "$RB/infsup1.out" | head -2)"
+fi
 
 # ---- inputs: regular files of bounded size ------------------------------
 # A scene or mesh path is checked for what it is before a byte is read

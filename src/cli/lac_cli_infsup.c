@@ -55,7 +55,8 @@ const char lac_cli_infsup_help[] =
   "  --quiet           no progress lines on stderr\n"
   "\n"
   "stdout: 'name = value' lines: beta_h, lambda_min, lambda_2 (next\n"
-  "eigenvalue), multipliers, ndof, fixed_dofs, h_max, h_min, norm, path,\n"
+  "eigenvalue; absent with a single multiplier, or when the sparse path\n"
+  "did not find it), multipliers, ndof, fixed_dofs, h_max, h_min, norm, path,\n"
   "criterion_min (the smallest phibar sqrt(delta) of [LAC Def. 1] among the\n"
   "multipliers, with its macro-element), iterations, residual, least_stable\n"
   "(multiplier and macro-element where the eigenvector is largest).\n"
@@ -161,6 +162,13 @@ estimate (lac_run *r, const args *a)
   o.path = a->path;
   if ((status = lac_infsup_estimate (energy ? r->sys.K : G, c->C, M, &o, &res)))
     goto done;
+  if (!isfinite (res->beta) || !isfinite (res->lambda_min))
+    {
+      status = lac_error_place (LAC_EDEP, r->scene->path, "the smallest "
+                                "eigenvalue of the %zu multipliers is %g, not "
+                                "a finite number", c->k, res->lambda_min);
+      goto done;
+    }
   double hmin = HUGE_VAL, hmax = 0, cmin = HUGE_VAL;
   size_t mcrit = 0;
   for (size_t i = 0; i < c->k; i++)
@@ -171,7 +179,8 @@ estimate (lac_run *r, const args *a)
     }
   printf ("beta_h = %.10e\n", res->beta);
   printf ("lambda_min = %.10e\n", res->lambda_min);
-  printf ("lambda_2 = %.10e\n", res->lambda_2);
+  if (isfinite (res->lambda_2))          /* none with one multiplier */
+    printf ("lambda_2 = %.10e\n", res->lambda_2);
   printf ("multipliers = %zu\n", c->k);
   printf ("ndof = %zu\n", r->sys.ndof);
   printf ("fixed_dofs = %zu\n", nfixed);

@@ -225,6 +225,22 @@ restore (int status, const char *msg)
   return lac_error_set (status, NULL, "%s", msg);
 }
 
+/* A crash under a small stack limit (ulimit -s) is the limit's doing, not
+ * the file's: gmsh 4.8 needs more than 64 kB to mesh a square. */
+static const char *
+stack_hint (int ws, char *buf, size_t size)
+{
+  struct rlimit rl;
+  if (!WIFSIGNALED (ws) || (WTERMSIG (ws) != SIGSEGV
+                            && WTERMSIG (ws) != SIGBUS)
+      || getrlimit (RLIMIT_STACK, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY
+      || rl.rlim_cur >= 8u << 20)
+    return NULL;
+  snprintf (buf, size, "the stack limit is %.0f kB (ulimit -s), below the "
+            "8192 kB gmsh is used to: raise it", (double) rl.rlim_cur / 1024);
+  return buf;
+}
+
 /* How the child ended, as a status and one message. */
 static int
 verdict (const char *verb, const char *path, int ws, const answer *a,
@@ -255,9 +271,10 @@ verdict (const char *verb, const char *path, int ws, const answer *a,
                               "--max-memory)", verb, path, how,
                               max_memory / 1e9);
       return lac_error_set (LAC_EIO, "lac_mesh_read", "gmsh could not %s "
-                            "'%s': %s; %s", verb, path, how, verb[0] == 'r'
-                            ? file : "the .geo script or its options are "
-                            "beyond gmsh");
+                            "'%s': %s; %s", verb, path, how,
+                            stack_hint (ws, msg, sizeof msg) ? msg
+                            : verb[0] == 'r' ? file : "the .geo script or its "
+                            "options are beyond gmsh");
     }
   st = lac_mesh_wire_read (a->buf, a->len, &status, msg, sizeof msg, out);
   if (st)
