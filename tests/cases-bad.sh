@@ -171,6 +171,11 @@ else
   rb_fail estimate-petsc-memory "petsc '$gp' GB, Cholesky '$gc' GB"
 fi
 
+# A transfinite count gmsh would make 2 (3e9 nodes per curve: a mesh of 4
+# nodes, exit status 0): refused with its line.
+rbad transfinite-huge "transfinite-huge.geo|line 16|Transfinite Curve {...} = 3e9|above the largest allowed value 2147483647" \
+  run tests/bad/box.scene $KB --set mesh.file=transfinite-huge.geo
+
 # A size factor far below 1 on an unstructured mesh: gmsh's count of
 # segments on a curve overflowed (size = 1e-10 gave fewer cells than size
 # = 1, exit status 0); the estimate now reaches a small factor in steps

@@ -25,6 +25,7 @@
 #include "base/lac_status.h"
 #include "fem/lac_mesh_check.h"
 #include "io/lac_mesh_child.h"
+#include "io/lac_mesh_geo_check.h"
 #include "io/lac_mesh_gmsh_session.h"
 #include "io/lac_mesh_msh_check.h"
 
@@ -115,6 +116,8 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
     return status;
   if (kind == LAC_GMSH_MSH
       && (status = lac_msh_check (path, o.max_memory, &counts)))
+    return status;
+  if (kind == LAC_GMSH_GEO && (status = lac_geo_check (path, o.max_memory)))
     return status;
   arg = (session_arg) { path, kind, &o };
   status = lac_mesh_child_run (kind == LAC_GMSH_GEO ? "mesh" : "read", path,
