@@ -89,6 +89,8 @@ escape (char *dst, size_t size, const char *src, int keep_lf)
       const char *w = bad_byte (s, i, n, &step);
       if (s[i] == '\n')
         w = keep_lf ? NULL : "a line feed", step = 1;
+      else if (s[i] == '\r' && !keep_lf)   /* its line feed goes as \x0A */
+        w = "a carriage return", step = 1;
       if (w)
         {
           if (o + 5 > size)

@@ -30,7 +30,9 @@ long lac_text_line (const char *text, size_t off);
 /* Copy the string src to dst (size > 0 bytes, always terminated, cut if
  * needed), with bad bytes as \xNN; tab and line feed are kept. */
 void lac_text_escape (char *dst, size_t size, const char *src);
-/* The same with the line feed too as \x0A: one line (a stored message). */
+/* The same with the line feed too as \x0A, and every carriage return as
+ * \x0D (the one before a line feed would otherwise stand alone): one line
+ * (a stored message). */
 void lac_text_escape_line (char *dst, size_t size, const char *src);
 
 /* Copy the string src to dst (size > 0 bytes, always terminated); when

@@ -86,7 +86,8 @@ count (const char *path, scan *c)
   long line = c->line;
   double x;
   for (e = s; e < c->end && *e != ';' && *e != '\n'
-       && !(e > s && !ident_char (e[-1]) && !strncmp (e, "Using", 5)); e++)
+       && !(e > s && !ident_char (e[-1]) && c->end - e >= 5
+            && !memcmp (e, "Using", 5)); e++)  /* the text has no NUL */
     ;
   while (e > s && isspace ((unsigned char) e[-1]))
     e--;

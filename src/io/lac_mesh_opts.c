@@ -15,6 +15,9 @@
 
 #include "base/lac_number.h"
 
+/* What separates the pairs: blanks (any white space) and commas. */
+#define SEP " \t\n\r\v\f,"
+
 static int
 ident_char (char c, int first)
 {
@@ -64,9 +67,9 @@ lac_mesh_numbers_split (const char *numbers, lac_mesh_number *out,
                         char *why, size_t size)
 {
   int n = 0;
-  for (const char *p = numbers; p && *(p += strspn (p, " \t,"));)
+  for (const char *p = numbers; p && *(p += strspn (p, SEP));)
     {
-      size_t len = strcspn (p, " \t,");
+      size_t len = strcspn (p, SEP);
       if (n == LAC_MESH_MAX_NUMBERS)
         return snprintf (why, size, "more than %d NAME=VALUE pairs",
                          LAC_MESH_MAX_NUMBERS), -1;

@@ -86,6 +86,9 @@ main (void)
   check_message ("key 'r\\xE9\\x07'", "stored message escaped");
   lac_error_set (LAC_EINVAL, "f", "group 'a\nb'\tc");
   check_message ("group 'a\\x0Ab'\tc", "stored message on one line");
+  lac_error_set (LAC_EINVAL, "f", "a\r\r\nb");    /* found by fuzz_numbers */
+  check_true (!strcmp (lac_error_message (), "a\\x0D\\x0D\\x0Ab"),
+              "a CR before a LF escaped with it: '%s'", lac_error_message ());
   lac_error_set (LAC_ENOMEM, "f", "%zu nodes", (size_t) 7);
   check_true (!strcmp (lac_error_message (), "out of memory: 7 nodes"),
               "ENOMEM says so: '%s'", lac_error_message ());

@@ -93,6 +93,8 @@ test_geo_numbers (void)
   check_true (k == 3 && !strcmp (n[0].name, "n") && n[0].value == 28
               && !strcmp (n[1].name, "m") && n[1].value == -3.5
               && n[2].value == 1e-3, "the pairs read back");
+  check_int (lac_mesh_numbers_split ("n=1\nm=2\r\v", n, why, sizeof why), 2,
+             "pairs separated by any white space (found by fuzz_numbers)");
   check_int (lac_mesh_numbers_split (NULL, n, why, sizeof why), 0, "none");
   check_int (lac_mesh_numbers_split (" ,, ", n, why, sizeof why), 0,
              "blanks");

@@ -4,6 +4,7 @@
  * (the counts a .geo writes as numbers)                      [LAC §2, §3.1] */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -188,6 +189,19 @@ test_geo (void)
   for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
     check_status (lac_geo_check_text ("t.geo", good[i], strlen (good[i])),
                   LAC_SUCCESS, "geo '%s'", good[i]);
+  /* A text that ends inside a count, without a NUL after it (found by
+   * fuzz_numbers: read past the end, seen under AddressSanitizer). */
+  {
+    static const char cut[] = "Transfinite Curve{1} = 5 Usi";
+    char *t = malloc (sizeof cut - 1);
+    if (t)
+      {
+        memcpy (t, cut, sizeof cut - 1);
+        check_status (lac_geo_check_text ("t.geo", t, sizeof cut - 1),
+                      LAC_SUCCESS, "geo cut inside 'Using'");
+        free (t);
+      }
+  }
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
     {
       check_status (lac_geo_check_text ("t.geo", bad[i][0],
