@@ -361,6 +361,8 @@ rbad zero-mesh "[mesh] file|zero.msh: a character device, not a regular file" \
   run $SB $KB --set "mesh.file=$(pwd)/$RB/zero.msh"
 rbad huge-msh "[mesh] file|huge.msh: 210 MB, more than the limit of 100 MB (--max-memory)" \
   run $SB $KB --set "mesh.file=$(pwd)/$RB/huge.msh" --max-memory 100M
+mkdir -p "$RB/pipe-result" && mkfifo "$RB/pipe-result/solution.vtu" 2> /dev/null
+rbad render-pipe "pipe-result/solution.vtu: a named pipe, not a regular file" render "$RB/pipe-result"
 LAC="$LACT"
 cp tests/bad/box.geo "$RB/box.geo"
 # Linear time in the number of sections: 80,000 materials (a pairwise
