@@ -200,6 +200,20 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
   return 1;
 }
 
+/* What a value option expects, for the usage line of a bad value. */
+static const char *
+expected (const char *opt)
+{
+  if (!strncmp (opt, "--scale", 7))
+    return "expected a finite number (the displacement's scale) or auto";
+  if (!strncmp (opt, "--box", 5))
+    return "expected X0:X1:Y0:Y1 or X0:X1:Y0:Y1:Z0:Z1, finite numbers, each "
+           "lower bound below its upper one";
+  if (!strncmp (opt, "--range", 7))
+    return "expected MIN:MAX, finite numbers, MIN below MAX";
+  return "bad value";
+}
+
 static int
 parse_args (int argc, char **argv, render_args *a)
 {
@@ -213,7 +227,16 @@ parse_args (int argc, char **argv, render_args *a)
           || (r = numeric_option (argc, argv, &k, a, &missing)) > 0)
         {
           if (bad)
-            return lac_cli_usage_error ("render", "bad value for", opt);
+            {
+              char what[400];
+              if (strchr (opt, '='))
+                snprintf (what, sizeof what, "%.140s: %s", opt,
+                          expected (opt));
+              else
+                snprintf (what, sizeof what, "%.40s '%.100s': %s", opt,
+                          argv[k], expected (opt));
+              return lac_cli_usage_error ("render", what, NULL);
+            }
         }
       else if (r < 0)
         return LAC_CLI_USAGE;
