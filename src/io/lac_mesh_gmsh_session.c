@@ -235,8 +235,10 @@ lac_gmsh_session (const char *path, int kind, const lac_mesh_opts *opts,
   if (argc < 0)
     return LAC_EINVAL;
   gmshInitialize (argc, argv, 0, &ierr);
-  if (ierr)
-    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize", path);
+  if (ierr)                          /* its first allocations failed */
+    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize within "
+                       "the memory limit of %.3g GB (--max-memory)", path,
+                       opts->max_memory / 1e9);
   else
     status = read_model (&R, kind, out);
   /* No gmshFinalize: the child process ends right after this, and gmsh
