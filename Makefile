@@ -134,7 +134,8 @@ $(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
 # ---- tests ---------------------------------------------------------------
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)
 # the harnesses of make fuzz on the inputs that once crashed them
-REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh
+REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh \
+            $(B)/tests/replay_numbers
 # the key tables for the book's doc tests (tests/cases-doc.sh)
 DOCTEST  := $(B)/tests/scene_keys
 test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac $(DOCTEST)
@@ -232,7 +233,7 @@ $(B)/exercises/%: exercises/%/main.c $(LIB)
 # fuzzing per harness (FUZZ_HARNESSES: a subset).  Crashes go to
 # build/fuzz/crashes/; the status is 1 if there is any.
 FUZZ_SECONDS   ?= 60
-FUZZ_HARNESSES ?= scene mesh gmsh
+FUZZ_HARNESSES ?= scene mesh gmsh numbers
 FUZZ_B   := build/fuzz
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all \
             -fno-omit-frame-pointer

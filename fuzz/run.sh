@@ -10,7 +10,9 @@
 #   mesh   every .msh of tests/meshes/ and tests/bad/ (byte 0 in front: the
 #          line check) and the streams the child sends for them and for
 #          the .geo of tests/meshes/ (byte 1 in front: BUILD/tools/make_seeds);
-#   gmsh   the .msh files as they are.
+#   gmsh   the .msh files as they are;
+#   numbers numbers of every kind (byte 0), [mesh] numbers (byte 1), --set
+#          lines (byte 2) and the .geo scripts of the project (byte 3).
 # Each harness runs SECONDS (libFuzzer's -max_total_time), one process;
 # FUZZ_RUNS (environment), if set, stops it after that many executions.
 # Prints per harness the executions, the corpus size and the crashes
@@ -21,7 +23,7 @@ F=${1:?fuzz build directory}
 S=${2:-60}
 B=${3:-build}
 shift 3
-H=${*:-scene mesh gmsh}
+H=${*:-scene mesh gmsh numbers}
 mkdir -p "$F/corpus" "$F/crashes" "$F/seeds"
 
 seeds_scene () {
@@ -50,6 +52,25 @@ seeds_gmsh () {
   d="$F/seeds/gmsh"; rm -rf "$d"; mkdir -p "$d"; k=0
   for f in tests/meshes/*.msh tests/bad/*.msh; do
     cp "$f" "$d/g$k"; k=$((k + 1))
+  done
+}
+
+seeds_numbers () {
+  d="$F/seeds/numbers"; rm -rf "$d"; mkdir -p "$d"; k=0
+  for s in 12 -0.25 2.1e5 .5 1e308 1e400 4.9e-324 nan 0x10 " 12" 3e9 \
+           2147483647 1e-31 0.4999999999999999; do
+    printf '\0%s' "$s" > "$d/n$k"; k=$((k + 1))
+  done
+  for s in "n=28" "n=28, m=3.5" "n=nan" "level=3" "a=1 a=2"; do
+    printf '\1%s' "$s" > "$d/n$k"; k=$((k + 1))
+  done
+  for s in "material.steel.E=3000" "load.pull.traction=1e400 0" \
+           "mesh.numbers=n=3" "level=12" "mesh.size=1e-29" \
+           "dirichlet.left.ux=0.5"; do
+    printf '\2%s' "$s" > "$d/n$k"; k=$((k + 1))
+  done
+  for f in chapters/*/*.geo tests/bad/*.geo tests/meshes/*.geo; do
+    { printf '\3'; cat "$f"; } > "$d/n$k"; k=$((k + 1))
   done
 }
 

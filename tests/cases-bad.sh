@@ -83,6 +83,18 @@ rbad huge-type "huge-type.msh|line 51|element 19 has type 24989999994" \
 rbad huge-tags "huge-tags.msh|line 51|integer '2000000000000000000' is too large" \
   run $SB $KB --set mesh.file=huge-tags.msh
 
+# Tags: gmsh reads MSH 2 tags as int (2^32 + 1 became 1, "overlapping
+# cells"), keeps the last coordinates of a node tag given twice and drops
+# one of two elements of a tag (a hole, exit status 0).
+rbad tag-wrap "tag-wrap.msh|line 29|node tag 4294967297 is too large|integers from 1 to 2147483647" \
+  run $SB $KB --set mesh.file=tag-wrap.msh
+rbad dup-node "dup-node.msh|line 29|node tag 3 is given twice (first at line 17)" \
+  run $SB $KB --set mesh.file=dup-node.msh
+rbad dup-element "dup-element.msh|line 61|element tag 29 is given twice (first at line 60)" \
+  run $SB $KB --set mesh.file=dup-element.msh
+rbad dup-node-v41 "dup-node-v41.msh|line 31|node tag 1 is given twice (first at line 28)" \
+  run $SB $KB --set mesh.file=dup-node-v41.msh
+
 # ---- meshes: the cells as a mesh -----------------------------------------
 rbad dup-cell "dup-cell.msh|cells 19 and 30 have the same vertices" \
   run $SB $KB --set mesh.file=dup-cell.msh
@@ -159,9 +171,27 @@ else
   rb_fail estimate-petsc-memory "petsc '$gp' GB, Cholesky '$gc' GB"
 fi
 
+# A transfinite count gmsh would make 2 (3e9 nodes per curve: a mesh of 4
+# nodes, exit status 0): refused with its line.
+rbad transfinite-huge "transfinite-huge.geo|line 16|Transfinite Curve {...} = 3e9|above the largest allowed value 2147483647" \
+  run tests/bad/box.scene $KB --set mesh.file=transfinite-huge.geo
+
+# A size factor far below 1 on an unstructured mesh: gmsh's count of
+# segments on a curve overflowed (size = 1e-10 gave fewer cells than size
+# = 1, exit status 0); the estimate now reaches a small factor in steps
+# and stops at the first that passes the limit.
+for sz in 1e-10 1e-29; do
+  rbad "size-$sz" "cylinder-tets.geo|size = $sz|already at size|(more at $sz)|--max-memory" \
+    run tests/bad/cylinder-tets.scene $KB --set size=$sz
+done
+n1=$(real_nodes tests/bad/cylinder-tets.scene --set size=1)
+nh=$(real_nodes tests/bad/cylinder-tets.scene --set size=0.5)
+if [ -n "$n1" ] && [ -n "$nh" ] && [ "$nh" -gt $((2 * n1)) ]; then rb_ok bad-size-half
+else rb_fail bad-size-half "size 0.5: '$nh' nodes, size 1: '$n1'"; fi
+
 "$LAC" run tests/bad/box.scene $KB --max-memory 12Q > /dev/null 2> "$RB/mm-usage.err"
 rc=$?
-if [ $rc -eq 2 ] && grep -q -- "--max-memory: expected a size such as 8G, 500M or 2e9, got 12Q" "$RB/mm-usage.err"; then
+if [ $rc -eq 2 ] && grep -q -- "--max-memory '12Q': not a decimal number.*expected a size such as 8G, 500M or 2e9" "$RB/mm-usage.err"; then
   rb_ok bad-max-memory-usage
 else
   rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
@@ -180,6 +210,52 @@ rbad E-tiny "--set|E = '1e-300'|magnitude at least 1e-30" \
   run tests/bad/box.scene $KB --set material.steel.E=1e-300
 rbad normal-two-bodies "--set|normal = 'slave'|an obstacle only" \
   run chapters/08-experiments/taylor2d.scene $KB --set contact.interface.normal=slave
+# One checked parser (src/base/lac_number.c) for every number a user
+# writes: beyond a double, subnormal, nan, inf, hexadecimal are refused
+# with the limit they broke, never "expected a number" for a number.
+rbad E-overflow "E-overflow.scene:12:|E = '1e400'|magnitude at most 1e+30|beyond the range of a double" \
+  run tests/bad/E-overflow.scene $KB
+rbad E-subnormal "--set|E = '4.9e-324'|magnitude at least 1e-30|too small for a double" \
+  run tests/bad/box.scene $KB --set material.steel.E=4.9e-324
+rbad traction-overflow "--set|traction = '1e400 0'|magnitude at most 1e+30|beyond the range" \
+  run tests/bad/box.scene $KB --set "load.pull.traction=1e400 0"
+rbad E-nan "--set|E = 'nan'|not a finite number" run tests/bad/box.scene $KB --set material.steel.E=nan
+rbad E-hex "--set|E = '0x10'|not a decimal number" run tests/bad/box.scene $KB --set material.steel.E=0x10
+rbad level-huge "--set|level = '3e9'|above the largest allowed value 12" \
+  run tests/bad/box.scene $KB --set level=3e9
+# The numbers a .geo receives: gmsh would make a count from nan, inf or
+# above 2^31 - 1 into 2 (a 6-node mesh, exit status 0).
+rbad numbers-nan "numbers-nan.scene:9:|numbers = 'n=nan'|not a finite number|gmsh makes a count beyond 32 bits" \
+  run tests/bad/numbers-nan.scene $KB
+for v in 1e400 3e9 -inf; do
+  rbad "numbers-$v" "--set|n = '$v'|at most 2147483647 in magnitude" \
+    run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=n=$v"
+done
+rbad numbers-twice "--set|'n' given twice" run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=n=2 n=3"
+rbad numbers-level "--set|level is set by [mesh] level" \
+  run tests/bad/numbers-nan.scene $KB --set "mesh.numbers=level=3"
+"$LAC" run tests/bad/numbers-nan.scene --set mesh.numbers=n=3 --no-output > "$RB/numbers3.out" 2> "$RB/numbers3.err"
+if grep -q '\] mesh *91 nodes' "$RB/numbers3.err"; then
+  rb_ok bad-numbers-good
+else
+  rb_fail bad-numbers-good "n = 3 does not give the 13 x 7 nodes of tri6: $(grep mesh "$RB/numbers3.err")"
+fi
+# Command-line numbers: the same parser, a usage error (status 2) naming
+# the limit.
+"$LAC" run tests/bad/box.scene $KB --max-memory 1 > /dev/null 2> "$RB/mm-tiny.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--max-memory '1': 1 bytes, below the smallest allowed size 1e+08 bytes" "$RB/mm-tiny.err"; then
+  rb_ok bad-max-memory-tiny
+else
+  rb_fail bad-max-memory-tiny "exit $rc: $(head -1 "$RB/mm-tiny.err")"
+fi
+"$LAC" render "$RB/keep" --width 1e9 > /dev/null 2> "$RB/width.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- "--width '1e9': above the largest allowed value 8192" "$RB/width.err"; then
+  rb_ok bad-render-width
+else
+  rb_fail bad-render-width "exit $rc: $(head -1 "$RB/width.err")"
+fi
 rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
   run tests/bad/contrast.scene $KB
 
@@ -209,6 +285,131 @@ if [ -z "$raw" ]; then
   rb_ok bad-no-raw-bytes
 else
   rb_fail bad-no-raw-bytes "raw bytes in: $raw"
+fi
+
+# ---- contradictions: an error naming both places ------------------------
+rbad dirichlet-twice "dirichlet-twice.scene:22:|[dirichlet pushed]|ux = 0.5 at node 1|[dirichlet left] (line 17) imposes ux = 0|contradictory" \
+  run tests/bad/dirichlet-twice.scene $KB
+rbad dirichlet-node "dirichlet-node.scene:22:|[dirichlet lifted]|uy = 0.1 at node 1 at (0, 0)|[dirichlet left] (line 17) imposes uy = 0" \
+  run tests/bad/dirichlet-node.scene $KB
+# Equal values are not a contradiction: the clamped left side is also a
+# symmetry plane x = 0, and the answer is that of box.scene.
+sed 's/^ux = 0.5$/symmetry = x/' tests/bad/dirichlet-twice.scene > "$RB/dirichlet-equal.scene"
+cp tests/bad/box.geo "$RB/box.geo"
+"$LAC" run "$RB/dirichlet-equal.scene" --no-output --quiet > "$RB/dirichlet-equal.out" 2>&1
+"$LAC" run tests/bad/box.scene --no-output --quiet > "$RB/box.out" 2>&1
+if cmp -s "$RB/dirichlet-equal.out" "$RB/box.out"; then rb_ok bad-dirichlet-equal
+else rb_fail bad-dirichlet-equal "$(tail -1 "$RB/dirichlet-equal.out")"; fi
+rbad interior-load "interior-load.scene:22:|[load inside] group = 'mid'|inside the body" \
+  run tests/bad/interior-load.scene $KB
+# A tri6 among tri3 cells: gmsh drops it from the entity (a hole, exit
+# status 0 with a warning); in an entity of its own it is not conforming.
+rbad mixed-order "mixed-order.msh|16 2D elements (15 tri3, 1 tri6), gmsh read 15|hole" \
+  run $SB $KB --set mesh.file=mixed-order.msh --set element=tri3
+rbad mixed-order-entity "mixed-order-entity.msh|cells 18 (tri3) and 19 (tri6) share the vertices of a face but not all its nodes|not conforming" \
+  run $SB $KB --set mesh.file=mixed-order-entity.msh --set element=tri3
+rbad curve-collision "--set|curve = 'solution.vtu'|another output under this name" \
+  run chapters/10-large-deformation/ring.scene $KB --set steps.curve=solution.vtu
+rbad curve-path "--set|curve = '../curve.csv'|without '/'" \
+  run chapters/10-large-deformation/ring.scene $KB --set steps.curve=../curve.csv
+"$LAC" render "$RB/keep" --out "$RB/keep/nodes.csv" > /dev/null 2> "$RB/render-out.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q "expected a file name ending in .png" "$RB/render-out.err" \
+   && rb_sums | cmp -s - "$RB/keep.sums"; then rb_ok bad-render-out
+else rb_fail bad-render-out "exit $rc: $(head -1 "$RB/render-out.err")"; fi
+
+# ---- messages that blamed the wrong thing -------------------------------
+# gmsh crashing under a small stack limit: the limit is named, not the
+# .geo (not under AddressSanitizer, whose own stack use is larger).
+if [ -z "$ASAN_OPTIONS" ]; then
+  (ulimit -s 64; "$LAC" run tests/bad/box.scene $KB > "$RB/stack.out" 2> "$RB/stack.err")
+  if grep -q "stack limit 64 KiB, ulimit -s" "$RB/stack.err" && [ "$(wc -l < "$RB/stack.err")" -eq 1 ]; then
+    rb_ok bad-stack-limit
+  else
+    rb_fail bad-stack-limit "$(head -1 "$RB/stack.err")"
+  fi
+fi
+# lac infsup with one multiplier: no second eigenvalue, and no nan.
+"$LAC" infsup chapters/08-experiments/taylor2d.scene --quiet > "$RB/infsup1.out" 2> "$RB/infsup1.err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q '^multipliers = 1$' "$RB/infsup1.out" \
+   && ! grep -qi 'nan' "$RB/infsup1.out" && ! grep -q '^lambda_2' "$RB/infsup1.out"; then
+  rb_ok bad-infsup-one
+else
+  rb_fail bad-infsup-one "exit $rc: $(grep -i 'nan\|lambda_2' "$RB/infsup1.out" | head -2)"
+fi
+
+# ---- inputs: regular files of bounded size ------------------------------
+# A scene or mesh path is checked for what it is before a byte is read
+# (src/base/lac_input.c): /dev/zero was read without end, a named pipe
+# without a writer blocked forever, a symbolic link to /dev/zero made
+# lac's process grow past 6 GB.  `timeout` turns a hang into a failure.
+mkfifo "$RB/pipe.scene" "$RB/pipe.msh" 2> /dev/null
+ln -sf /dev/zero "$RB/zero.msh"
+truncate -s 5M "$RB/huge.scene"
+truncate -s 200M "$RB/huge.msh"
+LACT="$LAC"; LAC="$RB/lac-timeout"
+printf '#!/bin/sh\nexec timeout 60 "%s" "$@"\n' "$(pwd)/$LACT" > "$LAC"
+chmod +x "$LAC"
+rbad dev-zero "/dev/zero: a character device, not a regular file" run /dev/zero $KB
+rbad pipe-scene "pipe.scene: a named pipe, not a regular file" run "$RB/pipe.scene" $KB
+rbad dir-scene "tests/bad: a directory, not a regular file" run tests/bad $KB
+rbad huge-scene "huge.scene: 5.24 MB, more than the limit of 4 MB" run "$RB/huge.scene" $KB
+rbad pipe-mesh "[mesh] file|pipe.msh: a named pipe, not a regular file" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/pipe.msh"
+rbad zero-mesh "[mesh] file|zero.msh: a character device, not a regular file" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/zero.msh"
+rbad huge-msh "[mesh] file|huge.msh: 210 MB, more than the limit of 100 MB (--max-memory)" \
+  run $SB $KB --set "mesh.file=$(pwd)/$RB/huge.msh" --max-memory 100M
+mkdir -p "$RB/pipe-result" && mkfifo "$RB/pipe-result/solution.vtu" 2> /dev/null
+rbad render-pipe "pipe-result/solution.vtu: a named pipe, not a regular file" render "$RB/pipe-result"
+LAC="$LACT"
+cp tests/bad/box.geo "$RB/box.geo"
+# Linear time in the number of sections: 80,000 materials (a pairwise
+# check of their groups took minutes) and 50,000 loads and Dirichlet
+# sections are read, checked and run in seconds.
+awk 'BEGIN { while ((getline l < "tests/bad/box.scene") > 0) print l
+             for (k = 0; k < 80000; k++) printf "[material m%d]\ngroup = g%d\nE = 1\nnu = 0.3\n", k, k }' \
+  > "$RB/many-materials.scene"
+t0=$(date +%s)
+rbad many-materials "many-materials.scene|[material m0] group = 'g0'|no physical group" \
+  run "$RB/many-materials.scene" $KB
+t1=$(date +%s)
+if [ $((t1 - t0)) -le 30 ]; then rb_ok bad-many-materials-time
+else rb_fail bad-many-materials-time "80,000 materials took $((t1 - t0)) s"; fi
+awk 'BEGIN { while ((getline l < "tests/bad/box.scene") > 0) print l
+             for (k = 0; k < 50000; k++)
+               if (k % 2) printf "[dirichlet d%d]\ngroup = left\nclamp = yes\n", k
+               else printf "[load l%d]\ngroup = right\ntraction = 1e-5 0\n", k }' \
+  > "$RB/many-loads.scene"
+t0=$(date +%s)
+if "$LAC" run "$RB/many-loads.scene" --no-output --quiet > "$RB/many-loads.out" 2> "$RB/many-loads.err" \
+   && [ $(($(date +%s) - t0)) -le 30 ]; then
+  rb_ok bad-many-sections
+else
+  rb_fail bad-many-sections "exit or time ($(($(date +%s) - t0)) s): $(head -1 "$RB/many-loads.err")"
+fi
+
+# ---- messages: the place and the reason, never a function ----------------
+# A message longer than the buffer (here the scene's path twice, 4,200
+# bytes) loses its middle, not its reason.
+deep="$RB/$(awk 'BEGIN { for (k = 0; k < 300; k++) printf "dir%d/", k }')"
+mkdir -p "$deep" && cp $SB "$deep/"
+rbad long-path "box-msh.scene:10: [mesh] file = 'box.msh': |...|dir299//box.msh: cannot open (No such file or directory)" \
+  run "$deep/box-msh.scene" $KB
+rbad long-set "--set|3000 characters, at most 511" \
+  run $SB $KB --set "mesh.file=$(awk 'BEGIN { for (k = 0; k < 2990; k++) printf "a" }')"
+# An output path that is a link to a file: refused before the run, with
+# the scene, the path and what it is.
+ln -sf /etc/hostname "$RB/not-a-dir"
+rbad out-not-dir "box.scene: the output directory|not-a-dir' is a symbolic link|not a directory" \
+  run tests/bad/box.scene --quiet --out "$RB/not-a-dir"
+# No message of this file names a function of lac ('lac_x_y: ...').
+named=$(grep -lE '(^lac: |: )[a-z][a-z0-9]*_[a-z0-9_]*: ' "$RB"/*.err 2>/dev/null)
+if [ -z "$named" ]; then
+  rb_ok bad-no-function-names
+else
+  rb_fail bad-no-function-names "in $named: $(cat $named | head -2)"
 fi
 
 # ---- outputs: all or nothing ---------------------------------------------

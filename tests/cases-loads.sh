@@ -129,5 +129,5 @@ done
 TWO=tests/meshes/taylor-two-files.scene
 loads_bad same-group "--set|group 'upper_bottom'|defined in 'taylor-upper.geo' and in '$PWD/chapters/08-experiments/taylor2d.geo'|distinct group names" \
   $TWO --set "mesh.file=taylor-upper.geo $PWD/chapters/08-experiments/taylor2d.geo"
-loads_bad second-missing "--set|[mesh] file|cannot open tests/meshes/nothere.geo" $TWO --set "mesh.file=taylor-upper.geo nothere.geo"
+loads_bad second-missing "--set|[mesh] file|tests/meshes/nothere.geo: cannot open" $TWO --set "mesh.file=taylor-upper.geo nothere.geo"
 loads_bad second-broken "--set|[mesh] file|garbage.msh: " $TWO --set "mesh.file=taylor-upper.geo garbage.msh"

@@ -19,12 +19,13 @@ tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
 # infsup SCENE ARGS... -> "k ndof h_max beta_h lambda_2 criterion_min"
+# (lambda_2: - with a single multiplier, which has no second eigenvalue)
 infsup () {
   "$LAC" infsup "$@" --quiet | awk -F' = ' '
     { v[$1] = $2 }
     END { split (v["criterion_min"], c, " ");
           printf "%s %s %s %s %s %s\n", v["multipliers"], v["ndof"], v["h_max"],
-                 v["beta_h"], v["lambda_2"], c[1] }'
+                 v["beta_h"], v["lambda_2"] == "" ? "-" : v["lambda_2"], c[1] }'
 }
 
 echo "Table 1. Geometrically conforming: beta_h against h (Taylor blocks)"
@@ -33,8 +34,9 @@ for s in taylor2d:0 taylor2d:1 taylor2d:2 taylor2d:3 taylor2d:6 taylor2d:9 \
          taylor2d:12 taylor3d:0 taylor3d:1 taylor3d:2 taylor3d:3; do
   scene=${s%%:*}; l=${s##*:}
   infsup "$here/../08-experiments/$scene.scene" --set level="$l" |
-    awk -v s="$scene" -v l="$l" '{ printf "%-9s %5s %5s %7s %8.3f %9.5f %12.5f\n",
-                                   s, l, $1, $2, $3, $4, sqrt ($5) }'
+    awk -v s="$scene" -v l="$l" '{ printf "%-9s %5s %5s %7s %8.3f %9.5f %12s\n",
+                                   s, l, $1, $2, $3, $4,
+                                   $5 == "-" ? "-" : sprintf ("%.5f", sqrt ($5)) }'
 done
 
 echo

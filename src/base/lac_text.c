@@ -89,6 +89,8 @@ escape (char *dst, size_t size, const char *src, int keep_lf)
       const char *w = bad_byte (s, i, n, &step);
       if (s[i] == '\n')
         w = keep_lf ? NULL : "a line feed", step = 1;
+      else if (s[i] == '\r' && !keep_lf)   /* its line feed goes as \x0A */
+        w = "a carriage return", step = 1;
       if (w)
         {
           if (o + 5 > size)
@@ -117,4 +119,97 @@ void
 lac_text_escape_line (char *dst, size_t size, const char *src)
 {
   escape (dst, size, src, 0);
+}
+
+/* The largest k <= n at which s is not inside a UTF-8 sequence. */
+static size_t
+char_start (const char *s, size_t n)
+{
+  while (n > 0 && ((unsigned char) s[n] & 0xC0) == 0x80)
+    n--;
+  return n;
+}
+
+/* The smallest k >= n at which s is not inside a UTF-8 sequence. */
+static size_t
+char_next (const char *s, size_t n)
+{
+  while (((unsigned char) s[n] & 0xC0) == 0x80)
+    n++;
+  return n;
+}
+
+/* Copy src to dst (NULL: only count) with every word (a run without a
+ * blank) longer than L bytes cut to about L: its first third, "...", its
+ * end (a path keeps its file name).  Returns the length of the result. */
+static size_t
+cut_words (char *dst, const char *src, size_t L)
+{
+  size_t o = 0;
+  for (const char *p = src; *p;)
+    {
+      size_t w = strcspn (p, " "), b = strspn (p + w, " ");
+      size_t head = w > L ? char_start (p, L / 3) : w;
+      size_t tail = w > L ? w - char_next (p, w - (L - L / 3 - 3)) : 0;
+      if (dst)
+        {
+          memcpy (dst + o, p, head);
+          if (w > L)
+            memcpy (dst + o + head, "...", 3), memcpy (dst + o + head + 3,
+                                                       p + w - tail, tail);
+          memcpy (dst + o + head + (w > L ? 3 + tail : 0), p + w, b);
+        }
+      o += head + (w > L ? 3 + tail : 0) + b;
+      p += w + b;
+    }
+  if (dst)
+    dst[o] = '\0';
+  return o;
+}
+
+/* The whole of src, its middle replaced by " ... ". */
+static void
+cut_middle (char *dst, size_t size, const char *src)
+{
+  static const char gap[] = " ... ";
+  size_t n = strlen (src), head, tail, start;
+  head = char_start (src, (size - sizeof gap) / 4);
+  start = n - (size - sizeof gap - head);         /* the most that fits */
+  start = char_next (src, start);                 /* a whole character */
+  tail = n - start;
+  memcpy (dst, src, head);
+  memcpy (dst + head, gap, sizeof gap - 1);
+  memcpy (dst + head + sizeof gap - 1, src + n - tail, tail);
+  dst[head + sizeof gap - 1 + tail] = '\0';
+}
+
+/* Long words (paths) are shortened first, by the most that keeps every
+ * word as long as possible (a bisection on the longest length kept);
+ * when even words of 48 bytes leave too much, the middle goes. */
+void
+lac_text_fit (char *dst, size_t size, const char *src)
+{
+  size_t lo = 48, hi = strlen (src);
+  if (hi < size || size < 256)
+    {
+      if (hi < size)
+        snprintf (dst, size, "%s", src);
+      else
+        cut_middle (dst, size, src);
+      return;
+    }
+  if (cut_words (NULL, src, lo) >= size)
+    {
+      cut_middle (dst, size, src);
+      return;
+    }
+  while (lo + 1 < hi)                 /* fits at lo, not at hi */
+    {
+      size_t mid = lo + (hi - lo) / 2;
+      if (cut_words (NULL, src, mid) < size)
+        lo = mid;
+      else
+        hi = mid;
+    }
+  cut_words (dst, src, lo);
 }

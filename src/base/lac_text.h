@@ -9,7 +9,11 @@
  *                    that are not UTF-8 (RFC 3629: no overlong forms, no
  *                    surrogates, nothing above U+10FFFF);
  *   lac_text_escape  a copy in which every such byte is written \xNN, so
- *                    that a message never sends raw binary to a terminal.
+ *                    that a message never sends raw binary to a terminal;
+ *   lac_text_fit     a copy cut to a buffer by shortening its longest
+ *                    words (paths) in their middle, so that a message
+ *                    keeps its place and its reason when long paths
+ *                    quoted in it do not fit.
  */
 #ifndef LAC_TEXT_H
 #define LAC_TEXT_H
@@ -26,7 +30,16 @@ long lac_text_line (const char *text, size_t off);
 /* Copy the string src to dst (size > 0 bytes, always terminated, cut if
  * needed), with bad bytes as \xNN; tab and line feed are kept. */
 void lac_text_escape (char *dst, size_t size, const char *src);
-/* The same with the line feed too as \x0A: one line (a stored message). */
+/* The same with the line feed too as \x0A, and every carriage return as
+ * \x0D (the one before a line feed would otherwise stand alone): one line
+ * (a stored message). */
 void lac_text_escape_line (char *dst, size_t size, const char *src);
+
+/* Copy the string src to dst (size > 0 bytes, always terminated); when
+ * src does not fit, its words (runs without a blank) longer than some
+ * length L are cut to their first third, "..." and their end, L as large
+ * as fits; if that is not enough (L below 48), the middle of the whole
+ * is replaced by " ... ".  Cuts fall between UTF-8 characters. */
+void lac_text_fit (char *dst, size_t size, const char *src);
 
 #endif /* LAC_TEXT_H */

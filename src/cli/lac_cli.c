@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/lac_status.h"
 
 void
 lac_cli_print_error (const char *msg)
@@ -13,6 +14,21 @@ lac_cli_print_error (const char *msg)
   for (const char *p = msg; *p; p++)
     fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
   fputc ('\n', stderr);
+}
+
+void
+lac_cli_print_failure (const char *place, int status)
+{
+  const char *m = lac_error_message ();
+  char *msg = NULL;
+  size_t n;
+  if (!*m)
+    m = lac_strerror (status);
+  if (place && !lac_error_placed ()
+      && (msg = malloc (n = strlen (place) + strlen (m) + 3)) != NULL)
+    snprintf (msg, n, "%s: %s", place, m);
+  lac_cli_print_error (msg ? msg : m);
+  free (msg);
 }
 
 int
@@ -46,18 +62,44 @@ lac_cli_option_value (int argc, char **argv, int *k, const char *name,
   return argv[++*k];
 }
 
-double
-lac_cli_bytes (const char *s)
+int
+lac_cli_bytes (const char *s, double min, double *bytes, char *why,
+               size_t size)
 {
   static const char suffix[] = "kMGT";
-  char *end;
-  double v = strtod (s, &end);
-  const char *p = *end ? strchr (suffix, *end) : NULL;
-  if (end == s || !isfinite (v) || v <= 0)
-    return -1;
-  if (*end && (!p || end[1] != '\0'))
-    return -1;
-  for (const char *q = suffix; p && q <= p; q++)
-    v *= 1000;
-  return v;
+  static const lac_number_spec positive = { 0, HUGE_VAL, 1, 0, 0 };
+  char num[64];
+  size_t n = strlen (s);
+  const char *p = n ? strchr (suffix, s[n - 1]) : NULL;
+  double scale = 1;
+  if (p && *p)
+    {
+      n--;
+      for (const char *q = suffix; q <= p; q++)
+        scale *= 1000;
+    }
+  if (n >= sizeof num)
+    return snprintf (why, size, "not a size"), 0;
+  snprintf (num, sizeof num, "%.*s", (int) n, s);
+  if (!lac_number_parse (num, &positive, bytes, why, size))
+    return 0;
+  *bytes *= scale;
+  if (!isfinite (*bytes))
+    return snprintf (why, size, "beyond the range of a double"), 0;
+  if (*bytes < min)
+    return snprintf (why, size, "%.3g bytes, below the smallest allowed "
+                     "size %.3g bytes", *bytes, min), 0;
+  return 1;
+}
+
+int
+lac_cli_number (const char *cmd, const char *option, const char *s,
+                const lac_number_spec *spec, double *x)
+{
+  char what[512], why[200];
+  if (lac_number_parse (s, spec, x, why, sizeof why))
+    return 1;
+  snprintf (what, sizeof what, "%s '%.200s': %s", option, s, why);
+  lac_cli_usage_error (cmd, what, NULL);
+  return 0;
 }

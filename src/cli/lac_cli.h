@@ -5,11 +5,20 @@
 #ifndef LAC_CLI_H
 #define LAC_CLI_H
 
+#include <stddef.h>
+#include "base/lac_number.h"
+
 /* Exit statuses of lac and its subcommands besides 0, success. */
 enum { LAC_CLI_FAILURE = 1, LAC_CLI_USAGE = 2 };
 
 /* "lac: MESSAGE" on stderr, as one line (newlines become blanks). */
 void lac_cli_print_error (const char *msg);
+
+/* The failure of a library call: "lac: PLACE: MESSAGE" when the stored
+ * message names no place of its own (base/lac_status.h), else "lac:
+ * MESSAGE"; what status means when the library left no message.  place
+ * may be NULL. */
+void lac_cli_print_failure (const char *place, int status);
 
 /* A bad command line: "lac: CMD: WHAT ARG (try lac CMD --help)" on
  * stderr (cmd NULL: lac itself; arg may be NULL); returns LAC_CLI_USAGE. */
@@ -22,7 +31,14 @@ const char *lac_cli_option_value (int argc, char **argv, int *k,
                                   const char *name, int *missing);
 
 /* A size in bytes: a number with an optional suffix k, M, G or T (powers
- * of 1000, as the messages print GB); -1 if it is not one, or not > 0. */
-double lac_cli_bytes (const char *s);
+ * of 1000, as the messages print GB), at least min bytes.  1 with *bytes,
+ * or 0 with the reason in why (base/lac_number.h: which limit it broke). */
+int lac_cli_bytes (const char *s, double min, double *bytes, char *why,
+                   size_t size);
+
+/* A number option (base/lac_number.h, within spec).  1 with *x, or 0
+ * after the usage line "lac: CMD: OPTION 'VALUE': REASON (try ...)". */
+int lac_cli_number (const char *cmd, const char *option, const char *s,
+                    const lac_number_spec *spec, double *x);
 
 #endif /* LAC_CLI_H */

@@ -55,7 +55,8 @@ const char lac_cli_infsup_help[] =
   "  --quiet           no progress lines on stderr\n"
   "\n"
   "stdout: 'name = value' lines: beta_h, lambda_min, lambda_2 (next\n"
-  "eigenvalue), multipliers, ndof, fixed_dofs, h_max, h_min, norm, path,\n"
+  "eigenvalue; absent with a single multiplier, or when the sparse path\n"
+  "did not find it), multipliers, ndof, fixed_dofs, h_max, h_min, norm, path,\n"
   "criterion_min (the smallest phibar sqrt(delta) of [LAC Def. 1] among the\n"
   "multipliers, with its macro-element), iterations, residual, least_stable\n"
   "(multiplier and macro-element where the eigenvector is largest).\n"
@@ -161,6 +162,13 @@ estimate (lac_run *r, const args *a)
   o.path = a->path;
   if ((status = lac_infsup_estimate (energy ? r->sys.K : G, c->C, M, &o, &res)))
     goto done;
+  if (!isfinite (res->beta) || !isfinite (res->lambda_min))
+    {
+      status = lac_error_place (LAC_EDEP, r->scene->path, "the smallest "
+                                "eigenvalue of the %zu multipliers is %g, not "
+                                "a finite number", c->k, res->lambda_min);
+      goto done;
+    }
   double hmin = HUGE_VAL, hmax = 0, cmin = HUGE_VAL;
   size_t mcrit = 0;
   for (size_t i = 0; i < c->k; i++)
@@ -171,7 +179,8 @@ estimate (lac_run *r, const args *a)
     }
   printf ("beta_h = %.10e\n", res->beta);
   printf ("lambda_min = %.10e\n", res->lambda_min);
-  printf ("lambda_2 = %.10e\n", res->lambda_2);
+  if (isfinite (res->lambda_2))          /* none with one multiplier */
+    printf ("lambda_2 = %.10e\n", res->lambda_2);
   printf ("multipliers = %zu\n", c->k);
   printf ("ndof = %zu\n", r->sys.ndof);
   printf ("fixed_dofs = %zu\n", nfixed);
@@ -205,7 +214,7 @@ lac_cli_infsup (int argc, char **argv)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL };
-  int ret;
+  int ret, status;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
     {
@@ -221,18 +230,19 @@ lac_cli_infsup (int argc, char **argv)
     }
   /* 1. The scene: it must have multipliers. */
   ret = LAC_CLI_FAILURE;
-  if (lac_scene_read (a.scene, a.nset, a.set, &sc))
-    lac_cli_print_error (lac_error_message ());
+  if ((status = lac_scene_read (a.scene, a.nset, a.set, &sc)))
+    lac_cli_print_failure (a.scene, status);
   else if (sc->ncontact == 0)
     fprintf (stderr, "lac: %s: no [contact] section: the inf-sup constant "
              "[LAC (10)] is a property of the contact multipliers; add a "
              "[contact NAME] section with slave and master groups\n",
              sc->path);
   else if (!(r = lac_run_alloc (sc, &ro)))
-    lac_cli_print_error (lac_error_message ());
+    lac_cli_print_failure (sc->path, LAC_ENOMEM);
   /* 2.-4. The stages up to assemble, then the estimate. */
-  else if (run_to_assemble (r, a.quiet) || estimate (r, &a))
-    lac_cli_print_error (lac_error_message ());
+  else if ((status = run_to_assemble (r, a.quiet))
+           || (status = estimate (r, &a)))
+    lac_cli_print_failure (sc->path, status);
   else
     ret = fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
   lac_run_free (r);

@@ -74,8 +74,8 @@ const char lac_cli_render_help[] =
   "  --scale S|auto    draw the mesh at x + S u (0); auto: the largest\n"
   "                    displacement is drawn as 10% of the mesh size\n"
   "  --edges           draw the cell edges\n"
-  "  --az A, --el E    3D view: azimuth and elevation in degrees (35, 25;\n"
-  "                    z up, azimuth 0 looks along +y)\n"
+  "  --az A, --el E    3D view: azimuth and elevation in degrees, -360..360\n"
+  "                    (35, 25; z up, azimuth 0 looks along +y)\n"
   "  --range MIN:MAX   fixed colour range (default: the field's range;\n"
   "                    the same range for several pictures compares them)\n"
   "  --box X0:X1:Y0:Y1[:Z0:Z1]  frame this box (model coordinates) with the\n"
@@ -88,7 +88,7 @@ const char lac_cli_render_help[] =
   "                    (not with --contact: contact.csv is the last step)\n"
   "  --title TEXT      title line (default: the scene title and the scale)\n"
   "  --units TEXT      units shown with the field name over the colour bar\n"
-  "  --width W, --height H   image size in pixels (800 x 600)\n"
+  "  --width W, --height H   image size in pixels, 32..8192 (800 x 600)\n"
   "  --out FILE.png    output file (RESULT_DIR/FIELD.png, or\n"
   "                    RESULT_DIR/contact.png with --contact)\n"
   "  --contact         draw the contact results of RESULT_DIR/contact.csv:\n"
@@ -110,10 +110,8 @@ const char lac_cli_render_help[] =
 static int
 to_double (const char *s, double *v)
 {
-  char *e;
-  errno = 0;
-  *v = strtod (s, &e);
-  return e != s && *e == '\0' && errno == 0 && isfinite (*v);
+  char why[160];
+  return lac_number_parse (s, NULL, v, why, sizeof why);
 }
 
 /* --box X0:X1:Y0:Y1[:Z0:Z1] into o->box_lo, o->box_hi; 1 if malformed (4
@@ -139,23 +137,25 @@ parse_box (const char *v, lac_render_opts *o)
          || (n == 6 && !(b[5] > b[4]));
 }
 
-/* The numeric options; 1 if argv[*k] was one, -1 on a bad value. */
+/* The numeric options; 1 if argv[*k] was one, -1 on a bad value (the
+ * usage line printed, naming the limit broken). */
 static int
 numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
 {
   static const char *const names[] = { "--az", "--el", "--width",
                                        "--height" };
+  static const lac_number_spec angle = { -360, 360, 0, 0, 0 };
+  static const lac_number_spec pixels = { 32, 8192, 0, 1, 0 };
   double *dst[2] = { &a->opts.azimuth, &a->opts.elevation }, v;
   const char *s;
   for (int i = 0; i < 4; i++)
     if ((s = lac_cli_option_value (argc, argv, k, names[i], missing)))
       {
-        if (!to_double (s, &v))
+        if (!lac_cli_number ("render", names[i], s, i < 2 ? &angle
+                             : &pixels, &v))
           return -1;
         if (i < 2)
           *dst[i] = v;
-        else if (v != floor (v) || v < 32 || v > 8192)
-          return -1;
         else
           *(i == 2 ? &a->opts.width : &a->opts.height) = (int) v;
         return 1;
@@ -200,6 +200,20 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
   return 1;
 }
 
+/* What a value option expects, for the usage line of a bad value. */
+static const char *
+expected (const char *opt)
+{
+  if (!strncmp (opt, "--scale", 7))
+    return "expected a finite number (the displacement's scale) or auto";
+  if (!strncmp (opt, "--box", 5))
+    return "expected X0:X1:Y0:Y1 or X0:X1:Y0:Y1:Z0:Z1, finite numbers, each "
+           "lower bound below its upper one";
+  if (!strncmp (opt, "--range", 7))
+    return "expected MIN:MAX, finite numbers, MIN below MAX";
+  return "bad value";
+}
+
 static int
 parse_args (int argc, char **argv, render_args *a)
 {
@@ -213,10 +227,19 @@ parse_args (int argc, char **argv, render_args *a)
           || (r = numeric_option (argc, argv, &k, a, &missing)) > 0)
         {
           if (bad)
-            return lac_cli_usage_error ("render", "bad value for", opt);
+            {
+              char what[400];
+              if (strchr (opt, '='))
+                snprintf (what, sizeof what, "%.140s: %s", opt,
+                          expected (opt));
+              else
+                snprintf (what, sizeof what, "%.40s '%.100s': %s", opt,
+                          argv[k], expected (opt));
+              return lac_cli_usage_error ("render", what, NULL);
+            }
         }
       else if (r < 0)
-        return lac_cli_usage_error ("render", "bad value for", opt);
+        return LAC_CLI_USAGE;
       else if (missing)
         return lac_cli_usage_error ("render", "missing value after", opt);
       else if (!strcmp (opt, "--edges"))
@@ -238,6 +261,12 @@ parse_args (int argc, char **argv, render_args *a)
   if (a->vtu && a->contact)
     return lac_cli_usage_error ("render", "--contact draws contact.csv, "
                                 "the last step: not with", "--vtu");
+  if (a->out && (strlen (a->out) < 5
+                 || strcmp (a->out + strlen (a->out) - 4, ".png")))
+    return lac_cli_usage_error ("render", "--out: expected a file name "
+                                "ending in .png (a PNG is written there; "
+                                "it must not replace a result file), got",
+                                a->out);
   return 0;
 }
 
@@ -454,9 +483,9 @@ lac_cli_render (int argc, char **argv)
   if ((ret = parse_args (argc, argv, &a)))
     return ret;
   result_paths (&a, path, sizeof path, out, sizeof out);
-  if (lac_render_result_read (path, &res))
+  if ((ret = lac_render_result_read (path, &res)))
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (path, ret);
       return LAC_CLI_FAILURE;
     }
   if (a.list)
@@ -471,7 +500,7 @@ lac_cli_render (int argc, char **argv)
   lac_render_result_free (res);
   if (ret)
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (path, ret);
       return LAC_CLI_FAILURE;
     }
   printf ("%s\n", out);

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -20,8 +21,8 @@ summary_value (const char *dir, const char *key, char *buf, size_t len)
   FILE *fp;
   int found = 0;
   snprintf (path, sizeof path, "%s/summary.txt", dir);
-  if (!(fp = fopen (path, "r")))
-    return 0;
+  if (lac_input_check (path, HUGE_VAL, "", NULL) || !(fp = fopen (path, "r")))
+    return 0;                    /* (a named pipe there would block) */
   while (!found && fgets (line, sizeof line, fp))
     if (!strncmp (line, key, n) && !strncmp (line + n, " = ", 3))
       {
@@ -115,6 +116,16 @@ lac_cli_result_contact (const char *dir, macro_rows *r)
   FILE *fp;
   memset (r, 0, sizeof *r);
   snprintf (path, sizeof path, "%s/contact.csv", dir);
+  if ((status = lac_input_check (path, HUGE_VAL, "", NULL)))
+    {
+      const char *m = lac_error_message ();      /* "PATH: reason" */
+      size_t n = strlen (path);
+      if (!strncmp (m, path, n) && !strncmp (m + n, ": ", 2))
+        m += n + 2;
+      return lac_error_place (status, path, "%s; --contact needs the "
+                              "contact.csv of a run with a [contact] "
+                              "section", m);
+    }
   if (!(fp = fopen (path, "r")))
     LAC_ERROR (LAC_EIO, "cannot open '%s' (%s): --contact needs the "
                "contact.csv of a run with a [contact] section", path,

@@ -31,6 +31,7 @@
 #include "solve/lac_petsc.h"
 #include "solve/lac_strategy.h"
 #include "io/lac_output_batch.h"
+#include "io/lac_mesh_opts.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_scene.h"
 #include "base/lac_status.h"
@@ -64,8 +65,8 @@ static const char *help_text =
   "                   iteration)\n"
   "  [mesh]           file = NAME.geo|NAME.msh ... (relative to the scene),\n"
   "                   size (1), order = 1|2, level (0), numbers = NAME=VALUE\n"
-  "                   ... (more .geo numbers), recombine = yes|no,\n"
-  "                   inverted = flip|reject (flip)\n"
+  "                   ... (more .geo numbers, |VALUE| < 2^31), recombine =\n"
+  "                   yes|no, inverted = flip|reject (flip)\n"
   "  [material NAME]  group (all other cells), E, nu,\n"
   "                   law = linear|neo_hookean (linear)\n"
   "  [dirichlet NAME] group, and ux/uy/uz (axisymmetric ur/uz) = VALUE, or\n"
@@ -114,12 +115,16 @@ static const char *help_text =
   "                    Dirichlet conditions), augmented, split (bodies\n"
   "                    held by contact alone), saddle, or petsc (Krylov\n"
   "                    methods and algebraic multigrid, no factorization,\n"
-  "                    on N MPI processes; not with large deformation);\n"
-  "                    overrides the scene's [contact] strategy; without\n"
-  "                    contact, K U = F by that strategy (chapters 07, 11)\n"
-  "  --petsc-options \"...\"  PETSc options for the petsc strategy, e.g.\n"
-  "                    \"-fieldsplit_u_pc_type hypre -ksp_monitor\"; they win\n"
-  "                    over the environment variable PETSC_OPTIONS\n"
+  "                    on N MPI processes; also without contact; not with\n"
+  "                    large deformation); overrides the scene's [contact]\n"
+  "                    strategy (chapters 07, 11)\n"
+  "  --petsc-options \"...\"  PETSc options for the petsc strategy; they win\n"
+  "                    over the environment variable PETSC_OPTIONS.  The\n"
+  "                    solve of K alone (no [contact]) takes the prefix\n"
+  "                    elast_ (-elast_ksp_monitor -elast_pc_type hypre),\n"
+  "                    the projected CG of a contact scene none\n"
+  "                    (-ksp_monitor); chapter 11 lists them.  PETSc does\n"
+  "                    not say when an option goes unused\n"
   "  --out DIR         output directory (created if needed).  Default: the\n"
   "                    scene's [scene] out, else out/<scene name without\n"
   "                    .scene>, relative to the current directory\n"
@@ -229,10 +234,16 @@ parse_run_args (int argc, char **argv, cmdline *c)
       else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
                                           &missing)))
         {
-          if ((c->max_memory = lac_cli_bytes (v)) <= 0)
-            return lac_cli_usage_error (NULL, "--max-memory: expected a "
-                                        "size such as 8G, 500M or 2e9, got",
-                                        v);
+          char why[200], what[400];
+          if (!lac_cli_bytes (v, LAC_MESH_RUN_BYTES_MIN, &c->max_memory,
+                              why, sizeof why))
+            {
+              snprintf (what, sizeof what, "--max-memory '%.64s': %s; "
+                        "expected a size such as 8G, 500M or 2e9, at least "
+                        "100M (what a run of lac needs before any mesh)", v,
+                        why);
+              return lac_cli_usage_error (NULL, what, NULL);
+            }
         }
       else if (missing)
         return lac_cli_usage_error (NULL, "missing value after", argv[k]);
@@ -309,14 +320,6 @@ catch_stop (int on)
   saved = 1;
 }
 
-/* The message of a failure, or what its status means if a library left
- * none (one line in every case). */
-static void
-print_failure (int status)
-{
-  const char *m = lac_error_message ();
-  lac_cli_print_error (*m ? m : lac_strerror (status));
-}
 
 /* A failure found here, "SCENE: what; the outputs" on one line. */
 static int
@@ -374,7 +377,7 @@ run_stages (const cmdline *c, lac_run *r)
     }
   while (status == LAC_CONTINUE);
   if (status != LAC_SUCCESS)
-    print_failure (status);
+    lac_cli_print_failure (r->scene->path, status);
   return status;
 }
 
@@ -388,7 +391,7 @@ check_output (const lac_run *r)
     return LAC_SUCCESS;
   lac_run_inner_message (msg, sizeof msg);
   lac_error_set (status, r->scene->path, "%s", msg);
-  print_failure (status);
+  lac_cli_print_failure (r->scene->path, status);
   return status;
 }
 
@@ -423,12 +426,12 @@ cmd_run (const cmdline *c)
   status = lac_scene_read (c->scene, c->nset, c->set, &sc);
   if (status)
     {
-      print_failure (status);
+      lac_cli_print_failure (c->scene, status);
       return LAC_CLI_FAILURE;
     }
   if (!(r = lac_run_alloc (sc, &opts)))
     {
-      lac_cli_print_error (lac_error_message ());
+      lac_cli_print_failure (sc->path, LAC_ENOMEM);
       lac_scene_free (sc);
       return LAC_CLI_FAILURE;
     }
@@ -443,7 +446,7 @@ cmd_run (const cmdline *c)
   if (!status)
     status = print_summary (r);
   if (!status && (status = lac_run_publish (r)))
-    print_failure (status);
+    lac_cli_print_failure (r->scene->path, status);
   lac_run_free (r);
   lac_scene_free (sc);
   catch_stop (0);

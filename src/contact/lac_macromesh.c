@@ -261,10 +261,8 @@ slave_group (const lac_mesh *m, const char *slave, const lac_group **G)
   *G = lac_mesh_group (m, slave);
   if (!*G)
     {
-      char msg[768];
-      const char *p = strstr (lac_error_message (), ": ");
-      snprintf (msg, sizeof msg, "%s", p ? p + 2 : lac_error_message ());
-      LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group: %s", msg);
+      LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group: %s",
+                       lac_error_message ());
     }
   if ((*G)->dim != m->dim - 1)
     LAC_MACRO_ERROR (LAC_EINVAL, "slave contact group '%s' has dimension "

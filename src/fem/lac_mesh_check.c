@@ -12,7 +12,10 @@
  *     the same vertices (a cell listed twice, under the same tag or
  *     another) and must lie on opposite sides of it: the centroids of
  *     their vertices give signed distances of opposite signs to the plane
- *     (the line, in 2D) of the face's vertices.
+ *     (the line, in 2D) of the face's vertices; and they must share all
+ *     its nodes, not its vertices only (a tri6 beside a tri3, or two
+ *     quadratic cells with mid-edge nodes of their own, are not
+ *     conforming: the displacement would jump across the face).
  *
  * Why face by face: summed over a mesh whose cells are all positively
  * oriented, the measures of the cells always equal the volume enclosed by
@@ -231,12 +234,49 @@ check_twice (const lac_mesh *m, size_t a, size_t b)
   return LAC_SUCCESS;
 }
 
-/* Two cells that share a face: the same cell twice, or folded? */
+/* The nodes of face f of cell c, sorted; returns their number. */
 static int
-check_pair (const lac_mesh *m, size_t a, int fa, size_t b)
+face_nodes_sorted (const lac_mesh *m, size_t c, int f, int *v)
+{
+  const lac_refelem *re = lac_refelem_get (m->type[c]);
+  int n = lac_refelem_get (re->face_type[f])->nnodes;
+  for (int a = 0; a < n; a++)
+    v[a] = m->conn[m->ptr[c] + (size_t) re->face_node[f][a]];
+  for (int i = 1; i < n; i++)
+    for (int j = i; j > 0 && v[j - 1] > v[j]; j--)
+      {
+        int t = v[j];
+        v[j] = v[j - 1];
+        v[j - 1] = t;
+      }
+  return n;
+}
+
+/* Cells a and b, which share the vertices of face fa of a and fb of b,
+ * share all its nodes. */
+static int
+check_conforming (const lac_mesh *m, size_t a, int fa, size_t b, int fb)
+{
+  int va[LAC_MAX_NODES], vb[LAC_MAX_NODES];
+  int na = face_nodes_sorted (m, a, fa, va), nb = face_nodes_sorted (m, b, fb,
+                                                                     vb);
+  if (na == nb && !memcmp (va, vb, (size_t) na * sizeof *va))
+    return LAC_SUCCESS;
+  LAC_ERROR (LAC_EINVAL, "cells %zu (%s) and %zu (%s) share the vertices of "
+             "a face but not all its nodes (%d and %d nodes): the mesh is "
+             "not conforming there, the displacement would jump across the "
+             "face (cells of one order, sharing their edge and face nodes)",
+             m->cell_tag[a], lac_refelem_get (m->type[a])->name,
+             m->cell_tag[b], lac_refelem_get (m->type[b])->name, na, nb);
+}
+
+/* Two cells that share a face: the same cell twice, folded, or not
+ * conforming? */
+static int
+check_pair (const lac_mesh *m, size_t a, int fa, size_t b, int fb)
 {
   int status = check_twice (m, a, b);
-  if (status)
+  if (status || (status = check_conforming (m, a, fa, b, fb)))
     return status;
   if (folded (m, a, fa, b))
     LAC_ERROR (LAC_EINVAL, "cells %zu and %zu overlap: both lie on the same "
@@ -297,7 +337,7 @@ add_face (const lac_mesh *m, slot *t, size_t cap, size_t c, int f)
                "belongs to two cells at most)", m->cell_tag[t[h].cell],
                m->cell_tag[t[h].cell2], m->cell_tag[c]);
   t[h].cell2 = c;
-  return check_pair (m, t[h].cell, t[h].face, c);
+  return check_pair (m, t[h].cell, t[h].face, c, f);
 }
 
 static int

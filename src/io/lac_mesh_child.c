@@ -329,18 +329,11 @@ said_nomem (const answer *a, const char *msg)
                      || strstr (msg, "out of memory")));
 }
 
-/* A message stored by the child, "func: text", stored again here. */
+/* A message stored by the child, stored again here. */
 static int
 restore (int status, const char *msg)
 {
-  const char *colon = strstr (msg, ": ");
-  if (colon && colon > msg && !memchr (msg, ' ', (size_t) (colon - msg)))
-    {
-      char func[64];
-      snprintf (func, sizeof func, "%.*s", (int) (colon - msg), msg);
-      return lac_error_set (status, func, "%s", colon + 2);
-    }
-  return lac_error_set (status, "lac_mesh_read", "%s", msg);
+  return lac_error_set (status, NULL, "%s", msg);
 }
 
 /* bytes as "20.2 GB", "350.0 MB", "12.0 kB" or "1 byte(s)". */
@@ -427,8 +420,7 @@ verdict (const char *verb, const char *path, int ws, const answer *a,
   st = lac_mesh_wire_read (a->buf, a->len, &status, msg, sizeof msg, out);
   if (st)
     {
-      const char *m = lac_error_message (), *colon = strstr (m, ": ");
-      snprintf (msg, sizeof msg, "%s", colon ? colon + 2 : m);
+      snprintf (msg, sizeof msg, "%s", lac_error_message ());
       return lac_error_set (st, "lac_mesh_read", "gmsh could not %s '%s': "
                             "%s", verb, path, msg);
     }

@@ -51,6 +51,7 @@
 #include <gmshc.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "base/lac_mem.h"
@@ -299,22 +300,30 @@ lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o)
     default:
       break;
     }
-  return 1e8 + 24 * r * n + factor;
+  return LAC_MESH_RUN_BYTES_MIN + 24 * r * n + factor;
 }
 
-/* lac_gmsh_estimate: see lac_mesh_gmsh_estimate.h. */
-int
-lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes, double *bytes)
+/* The estimate on the 1D mesh made with size factor g (g <= 0: as the
+ * options are): nodes, bytes, and the curves (*cv, owned by the caller,
+ * sorted by tag). */
+static int
+estimate_at (lac_gmsh_reader *R, int dim, double g, curve **cv, size_t *ncv,
+             double *nodes, double *bytes)
 {
-  curve *cv = NULL;
   int *dimtags = NULL, ierr = 0, status;
-  size_t ncv = 0, nd = 0;
+  size_t nd = 0;
   cells k = cells_asked (R->opts);
   *nodes = *bytes = 0;
-  gmshModelMeshGenerate (1, &ierr);
+  *cv = NULL;
+  *ncv = 0;
+  gmshModelMeshClear (NULL, 0, &ierr);
+  if (!ierr && g > 0)
+    gmshOptionSetNumber ("Mesh.MeshSizeFactor", g, &ierr);
+  if (!ierr)
+    gmshModelMeshGenerate (1, &ierr);
   if (ierr)
     return lac_gmsh_fail (R, LAC_EDEP, "meshing the curves failed");
-  if ((status = read_curves (R, &cv, &ncv)))
+  if ((status = read_curves (R, cv, ncv)))
     return status;
   gmshModelGetEntities (&dimtags, &nd, dim, &ierr);
   if (ierr)
@@ -324,14 +333,97 @@ lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes, double *bytes)
       int *tags = NULL;
       size_t n = 0, nf = 0;
       if (!(status = entity_curves (R, dim, dimtags[e + 1], &tags, &n, &nf)))
-        *nodes += entity_nodes (cv, ncv, tags, n, nf, dim, dimtags[e + 1],
+        *nodes += entity_nodes (*cv, *ncv, tags, n, nf, dim, dimtags[e + 1],
                                 k);
       gmshFree (tags);
     }
   gmshFree (dimtags);
-  lac_free (cv);
   if (!status && *nodes > 0)
     *bytes = lac_gmsh_run_bytes (*nodes, dim, R->opts);
+  return status;
+}
+
+/* A curve with fewer segments at a smaller size factor: gmsh's count of
+ * the segments overflowed its int (a curve asked for more than 2^31
+ * segments gets 1). */
+static int
+shrunk (const lac_gmsh_reader *R, const curve *prev, size_t np,
+        const curve *cur, size_t nc, double gprev, double g)
+{
+  for (size_t i = 0, j = 0; i < nc && j < np; i++)
+    {
+      while (j < np && prev[j].tag < cur[i].tag)
+        j++;
+      if (j < np && prev[j].tag == cur[i].tag && cur[i].seg < prev[j].seg)
+        return READ_ERR (LAC_EINVAL, "'%s': size = %g asks gmsh for more "
+                         "segments on curve %d than its 32-bit counts hold "
+                         "(%.0f at size %g, %.0f at size %g): the mesh would "
+                         "be coarser, not finer", R->path, R->opts->size,
+                         cur[i].tag, prev[j].seg, gprev, cur[i].seg, g);
+    }
+  return LAC_SUCCESS;
+}
+
+/* Has every curve the same segments in both meshes? */
+static int
+same_counts (const curve *a, size_t na, const curve *b, size_t nb)
+{
+  if (na != nb)
+    return 0;
+  for (size_t i = 0; i < na; i++)
+    if (a[i].tag != b[i].tag || a[i].seg != b[i].seg)
+      return 0;
+  return 1;
+}
+
+/* lac_gmsh_estimate: see lac_mesh_gmsh_estimate.h. */
+int
+lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes, double *bytes)
+{
+  curve *cv = NULL;
+  size_t ncv = 0;
+  int status = estimate_at (R, dim, 0, &cv, &ncv, nodes, bytes);
+  lac_free (cv);
+  return status;
+}
+
+/* The estimate at the size factor f = o->size < 1, reached in steps from
+ * 1: each step halves the factor (by 16 when no curve changed: they are
+ * transfinite or extruded), so that a 1D mesh is at most 16 times the
+ * one before, whose estimate was within the limit; a step whose estimate
+ * passes the limit stops (a smaller factor only makes more nodes: the
+ * nodes and bytes are then lower bounds, *early = that factor).  gmsh meshed the
+ * curves at f at once: a size of 1e-10 overflowed its counts (1 segment
+ * a curve, fewer cells than at size 1) or took the memory of the 1D mesh. */
+static int
+estimate_steps (lac_gmsh_reader *R, int dim, double *nodes, double *bytes,
+                double *early)
+{
+  const lac_mesh_opts *o = R->opts;
+  curve *prev = NULL, *cur = NULL;
+  size_t np = 0, nc = 0;
+  double g = 1, gprev = 1;
+  int status = LAC_SUCCESS, changed = 1;
+  *early = 0;
+  for (int step = 0; !status; step++)
+    {
+      status = estimate_at (R, dim, g, &cur, &nc, nodes, bytes);
+      if (!status && step > 0)
+        status = shrunk (R, prev, np, cur, nc, gprev, g);
+      changed = step == 0 || !same_counts (prev, np, cur, nc);
+      lac_free (prev);
+      prev = cur, np = nc, cur = NULL;
+      if (status || g <= o->size)
+        break;
+      if (o->max_memory > 0 && *bytes > o->max_memory)
+        {
+          *early = g;
+          break;
+        }
+      gprev = g;
+      g = fmax (o->size, g / (changed ? 2 : 16));
+    }
+  lac_free (prev);
   return status;
 }
 
@@ -344,15 +436,21 @@ int
 lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim)
 {
   const lac_mesh_opts *o = R->opts;
-  double nodes, bytes;
-  int status = lac_gmsh_estimate (R, dim, &nodes, &bytes);
+  double nodes, bytes, early = 0;
+  char at[64] = "";
+  int status = o->size > 0 && o->size < 1
+               ? estimate_steps (R, dim, &nodes, &bytes, &early)
+               : lac_gmsh_estimate (R, dim, &nodes, &bytes);
   int s = o->solve >= 0 && o->solve <= LAC_MESH_SOLVE_ITERATIVE ? o->solve
           : 0;
   if (status || o->max_memory <= 0 || bytes <= o->max_memory)
     return status;
+  if (early > 0)
+    snprintf (at, sizeof at, " already at size %g (more at %g)", early,
+              o->size);
   return READ_ERR (LAC_EINVAL, "'%s': level = %d, size = %g: an estimated "
-                   "%.2g nodes, which need about %.3g GB of memory with %s, "
-                   "more than the limit of %.3g GB (--max-memory)", R->path,
-                   o->level, o->size > 0 ? o->size : 1, nodes, bytes / 1e9,
-                   solve_names[s], o->max_memory / 1e9);
+                   "%.2g nodes%s, which need about %.3g GB of memory with "
+                   "%s, more than the limit of %.3g GB (--max-memory)",
+                   R->path, o->level, o->size > 0 ? o->size : 1, nodes, at,
+                   bytes / 1e9, solve_names[s], o->max_memory / 1e9);
 }

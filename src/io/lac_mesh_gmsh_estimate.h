@@ -38,7 +38,11 @@ double lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o);
 
 /* lac_gmsh_estimate, and an error (LAC_EINVAL, naming the file, level,
  * size, the nodes, the memory and how the run solves) when the bytes
- * exceed R->opts->max_memory. */
+ * exceed R->opts->max_memory.  A size factor below 1 is reached in steps
+ * from 1 (halving it, so that no 1D mesh is made much larger than one
+ * already within the limit); a curve with fewer segments at a smaller
+ * factor is an error too: gmsh's count of segments overflowed (size =
+ * 1e-10 gave 1 segment a curve and fewer cells than size = 1). */
 int lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim);
 
 #endif /* LAC_MESH_GMSH_ESTIMATE_H */

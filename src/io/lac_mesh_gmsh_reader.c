@@ -30,11 +30,9 @@ lac_gmsh_reader_free (lac_gmsh_reader *R)
 int
 lac_gmsh_with_path (const lac_gmsh_reader *R, int status)
 {
-  char msg[768];
   if (!status)
     return status;
-  snprintf (msg, sizeof msg, "%s", lac_error_message ());
-  return READ_ERR (status, "'%s': %s", R->path, msg);
+  return READ_ERR (status, "'%s': %s", R->path, lac_error_message ());
 }
 
 /* Set the message for a failed gmsh call, with gmsh's last error. */

@@ -185,50 +185,36 @@ read_model (lac_gmsh_reader *R, int kind, lac_mesh **out)
 }
 
 /* argv for gmshInitialize: "-setnumber level N" and one "-setnumber NAME
- * VALUE" per pair of `numbers` ("n=28, m=3"); the strings in buf.
- * Returns argc, or -1 with a message for a malformed pair. */
+ * VALUE" per pair of `numbers` ("n=28, m=3"), checked by
+ * lac_mesh_numbers_split (lac_mesh_opts.h); the strings in buf, the
+ * values written back exactly (%.17g).  Returns argc, or -1 with a
+ * message. */
 static int
 number_args (const char *path, int level, const char *numbers, char *buf,
              size_t size, char **argv)
 {
   static char prog[] = "lac", set[] = "-setnumber", lev[] = "level";
-  int argc = 0;
-  size_t used = 0;
+  lac_mesh_number num[LAC_MESH_MAX_NUMBERS];
+  char why[400];
+  int argc = 0, n = lac_mesh_numbers_split (numbers, num, why, sizeof why);
+  size_t used;
+  if (n < 0)
+    return READ_ERR (LAC_EINVAL, "'%s': numbers = '%s': %s", path, numbers,
+                     why), -1;
   argv[argc++] = prog;
   argv[argc++] = set;
   argv[argc++] = lev;
   argv[argc++] = buf;
   used = (size_t) snprintf (buf, size, "%d", level) + 1;
-  for (const char *p = numbers; p && *p;)
+  for (int k = 0; k < n; k++)
     {
-      size_t nl = 0, vl;
-      char *end;
-      p += strspn (p, " \t,");
-      if (!*p)
-        break;
-      while (p[nl] == '_' || (p[nl] >= 'a' && p[nl] <= 'z')
-             || (p[nl] >= 'A' && p[nl] <= 'Z') || (nl > 0 && p[nl] >= '0'
-                                                   && p[nl] <= '9'))
-        nl++;
-      vl = strcspn (p + nl + 1, " \t,");
-      if (nl == 0 || p[nl] != '=' || vl == 0
-          || argc + 3 > 3 + 3 * (LAC_MESH_MAX_NUMBERS + 1)
-          || used + nl + vl + 2 > size)
-        return READ_ERR (LAC_EINVAL, "'%s': numbers = '%s': expected at "
-                         "most %d NAME=VALUE pairs", path, numbers,
-                         LAC_MESH_MAX_NUMBERS), -1;
       argv[argc++] = set;
-      argv[argc++] = memcpy (buf + used, p, nl);
-      buf[used + nl] = '\0';
-      used += nl + 1;
-      argv[argc++] = memcpy (buf + used, p + nl + 1, vl);
-      buf[used + vl] = '\0';
-      strtod (buf + used, &end);
-      if (*end != '\0')
-        return READ_ERR (LAC_EINVAL, "'%s': numbers: '%s' is not a number",
-                         path, buf + used), -1;
-      used += vl + 1;
-      p += nl + 1 + vl;
+      argv[argc++] = buf + used;
+      used += (size_t) snprintf (buf + used, size - used, "%s",
+                                 num[k].name) + 1;
+      argv[argc++] = buf + used;
+      used += (size_t) snprintf (buf + used, size - used, "%.17g",
+                                 num[k].value) + 1;
     }
   argv[argc] = NULL;
   return argc;
@@ -240,7 +226,8 @@ lac_gmsh_session (const char *path, int kind, const lac_mesh_opts *opts,
                   lac_mesh **out)
 {
   lac_gmsh_reader R = { 0 };
-  char buf[1024], *argv[4 + 3 * LAC_MESH_MAX_NUMBERS + 4];
+  char buf[(LAC_MESH_NUMBER_NAME + 32) * (LAC_MESH_MAX_NUMBERS + 1)];
+  char *argv[4 + 3 * LAC_MESH_MAX_NUMBERS + 4];
   int ierr = 0, status, argc;
 
   *out = NULL;
@@ -257,9 +244,10 @@ lac_gmsh_session (const char *path, int kind, const lac_mesh_opts *opts,
   if ((status = lac_mesh_sandbox_enter (LAC_SANDBOX_INIT)))
     return status;
   gmshInitialize (argc, argv, 0, &ierr);
-  if (ierr)
-    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize (gmsh "
-                       "gives no details)", path);
+  if (ierr)                          /* its first allocations failed */
+    status = READ_ERR (LAC_EDEP, "'%s': gmsh failed to initialize within "
+                       "the memory limit of %.3g GB (--max-memory)", path,
+                       opts->max_memory / 1e9);
   else if (!(status = lac_mesh_sandbox_enter (LAC_SANDBOX_SCRIPT)))
     status = read_model (&R, kind, out);
   /* No gmshFinalize: the child process ends right after this, and gmsh

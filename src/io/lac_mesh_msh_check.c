@@ -9,11 +9,14 @@
 #include "io/lac_mesh_msh_check.h"
 
 #include <errno.h>
+#include <limits.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "fem/lac_spaces.h"
@@ -24,10 +27,31 @@ static const signed char type_nodes[32] = {
   12, 15, 15, 21, 4, 5, 6, 20, 35, 56
 };
 
+/* Their dimensions and names (gmsh reference manual, element types). */
+static const signed char type_dim[32] = {
+  -1, 1, 2, 2, 3, 3, 3, 3, 1, 2, 2, 3, 3, 3, 3, 0, 2, 3, 3, 3, 2, 2, 2, 2,
+  2, 2, 1, 1, 1, 3, 3, 3
+};
+static const char *const type_name[32] = {
+  "?", "seg2", "tri3", "quad4", "tet4", "hex8", "prism6", "pyramid5",
+  "seg3", "tri6", "quad9", "tet10", "hex27", "prism18", "pyramid14",
+  "point", "quad8", "hex20", "prism15", "pyramid13", "tri9", "tri10",
+  "tri12", "tri15", "tri15i", "tri21", "seg4", "seg5", "seg6", "tet20",
+  "tet35", "tet56"
+};
+
 #define MAXTOK 64      /* numbers of one line that we look at */
 /* Integers beyond this are refused: every count and tag then fits a long
  * long once converted back from the double it is kept in. */
 #define INT_TOO_LARGE 1e18
+
+/* A node or element tag and the line that gave it. */
+typedef struct tag_line
+{
+  double tag;
+  long line;
+  int element;         /* 0 a node tag, 1 an element tag */
+} tag_line;
 
 typedef struct cur
 {
@@ -37,6 +61,10 @@ typedef struct cur
   size_t n;
   int ntok;            /* numbers on it (all counted, MAXTOK kept) */
   double tok[MAXTOK];
+  tag_line *tags;      /* owned, ntags: every node and element tag    */
+  size_t ntags, captags;
+  double tag_max;      /* the largest tag the format's reader takes    */
+  lac_msh_counts *counts;   /* borrowed, may be NULL                    */
 } cur;
 
 static int
@@ -145,6 +173,81 @@ expect_end (cur *c, const char *name)
 }
 
 /* ---------------------------------------------------------------------- */
+/* node tags                                                               */
+/* ---------------------------------------------------------------------- */
+
+int
+lac_msh_type_dim (int t)
+{
+  return t >= 1 && t < 32 ? type_dim[t] : -1;
+}
+
+const char *
+lac_msh_type_name (int t)
+{
+  return t >= 1 && t < 32 ? type_name[t] : "?";
+}
+
+/* One more element of gmsh type t (known) in the counts. */
+static void
+count_type (cur *c, int t)
+{
+  if (c->counts)
+    c->counts->by_type[t]++, c->counts->by_dim[type_dim[t]]++;
+}
+
+/* The node (element = 0) or element tag t of the current line: a
+ * positive integer gmsh reads without wrapping (MSH 2: an int, a tag
+ * 2^32 + 1 was read as 1), kept with its line for the check of tags
+ * given twice. */
+static int
+add_tag (cur *c, double t, int element)
+{
+  const char *what = element ? "element" : "node";
+  if (t != floor (t))
+    return bad (c, "%s tag %g is not an integer", what, t);
+  if (t < 1 || t > c->tag_max)
+    return bad (c, "%s tag %.0f is %s: gmsh reads the tags of this format "
+                "as integers from 1 to %.0f", what, t, t < 1 ? "not "
+                "positive" : "too large", c->tag_max);
+  if (lac_grow (&c->tags, c->ntags + 1, &c->captags, sizeof *c->tags, 1024))
+    return lac_error_set (LAC_ENOMEM, "lac_mesh_read", "'%s': the tags of "
+                          "%zu nodes and elements", c->path, c->ntags + 1);
+  c->tags[c->ntags++] = (tag_line) { t, c->line, element };
+  return LAC_SUCCESS;
+}
+
+static int
+by_tag_line (const void *a, const void *b)
+{
+  const tag_line *x = a, *y = b;
+  if (x->element != y->element)
+    return x->element - y->element;
+  return x->tag != y->tag ? (x->tag > y->tag) - (x->tag < y->tag)
+                          : (x->line > y->line) - (x->line < y->line);
+}
+
+/* No tag twice: gmsh keeps the coordinates of the last node of a tag
+ * (the cells of both then share a node) and one element of a tag (a
+ * hole in the mesh), without a word. */
+static int
+tags_distinct (cur *c)
+{
+  if (c->ntags > 1)
+    qsort (c->tags, c->ntags, sizeof *c->tags, by_tag_line);
+  for (size_t k = 1; k < c->ntags; k++)
+    if (c->tags[k].tag == c->tags[k - 1].tag
+        && c->tags[k].element == c->tags[k - 1].element)
+      {
+        c->line = c->tags[k].line;
+        return bad (c, "%s tag %.0f is given twice (first at line %ld)",
+                    c->tags[k].element ? "element" : "node",
+                    c->tags[k].tag, c->tags[k - 1].line);
+      }
+  return LAC_SUCCESS;
+}
+
+/* ---------------------------------------------------------------------- */
 /* sections                                                                */
 /* ---------------------------------------------------------------------- */
 
@@ -193,7 +296,8 @@ element_22 (cur *c)
     return bad (c, "element %.0f (type %d) has %d nodes after its tags, a "
                 "type %d element has %d", c->tok[0], type,
                 c->ntok - 3 - ntags, type, type_nodes[type]);
-  return LAC_SUCCESS;
+  count_type (c, type);
+  return add_tag (c, c->tok[0], 1);
 }
 
 static int
@@ -211,6 +315,8 @@ nodes_22 (cur *c)
         return bad (c, "a node line has 4 numbers (tag x y z), found %d "
                     "(%lld nodes declared, this is node line %lld)",
                     c->ntok, n, k + 1);
+      if ((status = add_tag (c, c->tok[0], 0)))
+        return status;
     }
   return expect_end (c, "Nodes");
 }
@@ -257,7 +363,8 @@ nodes_41 (cur *c)
         return bad (c, "the node blocks hold more nodes than the header "
                     "says");
       for (long long k = 0; k < n; k++)
-        if (!number_line (c, 1, "$Nodes", &status) || c->ntok != 1)
+        if (!number_line (c, 1, "$Nodes", &status) || c->ntok != 1
+            || (status = add_tag (c, c->tok[0], 0)))
           return status ? status : bad (c, "a node tag line has 1 number, "
                                         "found %d", c->ntok);
       for (long long k = 0; k < n; k++)
@@ -310,6 +417,9 @@ elements_41 (cur *c)
             return bad (c, "element %.0f (type %d) has %d nodes, expected "
                         "%d", c->tok[0], type, c->ntok - 1,
                         type_nodes[type]);
+          count_type (c, type);
+          if ((status = add_tag (c, c->tok[0], 1)))
+            return status;
         }
     }
   if (total != 0)
@@ -379,61 +489,52 @@ sections (cur *c, int v4)
   return LAC_SUCCESS;
 }
 
-/* lac_msh_check_text: see lac_mesh_msh_check.h. */
-int
-lac_msh_check_text (const char *path, const char *text, size_t len)
+/* The check of text, the elements counted into counts (may be NULL). */
+static int
+check_text (const char *path, const char *text, size_t len,
+            lac_msh_counts *counts)
 {
   cur c = { 0 };
   int status, v4 = 0, binary = 0;
   c.path = path;
   c.p = text;
   c.end = text + len;
+  c.counts = counts;
+  if (counts)
+    memset (counts, 0, sizeof *counts);
   if (!next_line (&c, &status) || status || !is_line (&c, "$MeshFormat"))
     return status ? status : bad (&c, "expected $MeshFormat (is this a "
                                   ".msh file?)");
   if ((status = mesh_format (&c, &v4, &binary)) || binary)
     return status;
-  return sections (&c, v4);
+  c.tag_max = v4 ? INT_TOO_LARGE : INT_MAX;
+  status = sections (&c, v4);
+  if (!status)
+    status = tags_distinct (&c);
+  lac_free (c.tags);
+  if (status && counts)
+    memset (counts, 0, sizeof *counts);
+  return status;
+}
+
+/* lac_msh_check_text: see lac_mesh_msh_check.h. */
+int
+lac_msh_check_text (const char *path, const char *text, size_t len)
+{
+  return check_text (path, text, len, NULL);
 }
 
 /* lac_msh_check: see lac_mesh_msh_check.h. */
 int
-lac_msh_check (const char *path)
+lac_msh_check (const char *path, double max_bytes, lac_msh_counts *counts)
 {
-  FILE *f = fopen (path, "rb");
   char *text = NULL;
-  size_t len = 0, cap = 0;
-  int status = LAC_SUCCESS;
-  if (!f)
-    return lac_error_set (lac_status_errno (errno), "lac_mesh_read",
-                          "cannot open '%s': %s",
-                          path, strerror (errno));
-  for (;;)
-    {
-      size_t k;
-      if (len + 65536 > cap)
-        {
-          char *p = lac_realloc (text, cap = 2 * cap + 65536);
-          if (!p)
-            {
-              status = lac_error_set (LAC_ENOMEM, "lac_mesh_read", "'%s': "
-                                      "out of memory reading %zu bytes",
-                                      path, cap);
-              break;
-            }
-          text = p;
-        }
-      k = fread (text + len, 1, cap - len, f);
-      len += k;
-      if (k == 0)
-        break;
-    }
-  if (!status && ferror (f))
-    status = lac_error_set (LAC_EIO, "lac_mesh_read", "cannot read '%s'",
-                            path);
-  fclose (f);
+  size_t len = 0;
+  int status = lac_input_read (path, max_bytes, "--max-memory", &text, &len);
+  if (counts)
+    memset (counts, 0, sizeof *counts);
   if (!status)
-    status = lac_msh_check_text (path, text, len);
+    status = check_text (path, text, len, counts);
   lac_free (text);
   return status;
 }

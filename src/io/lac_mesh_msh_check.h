@@ -26,9 +26,29 @@
 
 #include <stddef.h>
 
-/* LAC_SUCCESS, LAC_EIO (cannot read, or not a valid mesh file: the message
- * names the line) or LAC_ENOMEM. */
-int lac_msh_check (const char *path);
+/* The elements of a file by gmsh type (1..31) and by the dimension of
+ * their type: what gmsh must give back (gmsh 4.8 drops a tri6 element
+ * from a surface of tri3 elements without a word; lac_mesh_read compares
+ * the counts).  All zero for a binary file. */
+#define LAC_MSH_NTYPES 32
+typedef struct lac_msh_counts
+{
+  size_t by_type[LAC_MSH_NTYPES];
+  size_t by_dim[4];
+} lac_msh_counts;
+
+/* LAC_SUCCESS, LAC_EIO (cannot read, not a regular file or larger than
+ * max_bytes, or not a valid mesh file: the message names the line) or
+ * LAC_ENOMEM.  The file is read whole (base/lac_input.h), so max_bytes
+ * (--max-memory) bounds what lac's own process takes for it.  counts
+ * (may be NULL) receives the elements of the file. */
+int lac_msh_check (const char *path, double max_bytes,
+                   lac_msh_counts *counts);
+
+/* The dimension of gmsh element type t (0..3), -1 if lac does not know
+ * it; its name ("tri6"), "?" if none. */
+int lac_msh_type_dim (int t);
+const char *lac_msh_type_name (int t);
 
 /* The same on the len bytes of text (for tests and fuzzing). */
 int lac_msh_check_text (const char *path, const char *text, size_t len);

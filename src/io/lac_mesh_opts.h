@@ -3,12 +3,28 @@
  * What lac_mesh_read (lac_mesh_gmsh.h) is asked to do with a .msh or .geo
  * file, in a header of its own so that the parts of the reader that run in
  * the child process (lac_mesh_gmsh_session.h, lac_mesh_gmsh_reader.h) see
- * the options without seeing the driver.  No .c file.
+ * the options without seeing the driver; lac_mesh_opts.c checks the
+ * numbers a .geo receives, for the scene (which names its line) and for
+ * the session (which passes them to gmsh).
  */
 #ifndef LAC_MESH_OPTS_H
 #define LAC_MESH_OPTS_H
 
+#include <stddef.h>
+
 #define LAC_MESH_MAX_NUMBERS 16
+/* The longest NAME of a number (gmsh 4.8 aborts on a name of 1,100
+ * letters, chapter 01, bad-input.md). */
+#define LAC_MESH_NUMBER_NAME 63
+/* The largest magnitude of a number: gmsh converts the counts a .geo
+ * computes (Transfinite Curve {...} = n) to 32-bit integers, and a count
+ * beyond them (or nan) silently becomes 2. */
+#define LAC_MESH_NUMBER_MAX 2147483647.0
+
+/* Bytes a run of lac needs before any mesh (its libraries, buffers): the
+ * constant term of the estimate (lac_mesh_gmsh_estimate.h), and the
+ * smallest --max-memory (below it gmsh cannot even start). */
+#define LAC_MESH_RUN_BYTES_MIN 1e8
 
 /* How the run will solve, for the memory part of a .geo's size estimate
  * (lac_mesh_gmsh_estimate.h): a sparse Cholesky factor (cholmod, and the
@@ -42,5 +58,22 @@ typedef struct lac_mesh_opts
                           recombine, order and serendipity             */
   int solve;           /* lac_mesh_solve, for the estimate             */
 } lac_mesh_opts;
+
+/* One NAME=VALUE of lac_mesh_opts.numbers. */
+typedef struct lac_mesh_number
+{
+  char name[LAC_MESH_NUMBER_NAME + 1];
+  double value;
+} lac_mesh_number;
+
+/* Split numbers ("n=28, m=3": pairs separated by blanks or commas) into
+ * out[0 .. LAC_MESH_MAX_NUMBERS-1]: each NAME a .geo identifier (a letter
+ * or _, then letters, digits, _; at most LAC_MESH_NUMBER_NAME; not
+ * `level`, which the option level sets; not twice), each VALUE a number
+ * (base/lac_number.h) of magnitude at most LAC_MESH_NUMBER_MAX.  Returns
+ * the count (0 for NULL or blanks), or -1 with the reason in why (naming
+ * the pair). */
+int lac_mesh_numbers_split (const char *numbers, lac_mesh_number *out,
+                            char *why, size_t size);
 
 #endif /* LAC_MESH_OPTS_H */

@@ -20,6 +20,7 @@
 #include "io/lac_scene_check.h"
 #include "io/lac_scene_ini.h"
 #include "io/lac_scene_keys.h"
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_text.h"
 #include "base/lac_status.h"
@@ -134,38 +135,12 @@ int
 lac_scene_read (const char *path, size_t nset, const char *const *set,
                 lac_scene **out)
 {
-  FILE *f;
-  char *text = NULL, *p;
-  size_t len = 0, cap = 0, n;
-  int status;
+  char *text = NULL;
+  size_t len = 0;
+  int status = lac_input_read (path, LAC_SCENE_MAX_BYTES, "a scene is a "
+                               "small text file", &text, &len);
   *out = NULL;
-  if (!(f = fopen (path, "r")))
-    return lac_error_set (lac_status_errno (errno), path,
-                          "cannot open scene file (%s)", strerror (errno));
-  do
-    {
-      if (cap - len < 4096)
-        {
-          cap = cap ? 2 * cap : 8192;
-          if (!(p = lac_realloc (text, cap)))
-            {
-              lac_free (text);
-              fclose (f);
-              LAC_ERROR (LAC_ENOMEM, "out of memory reading %s", path);
-            }
-          text = p;
-        }
-      n = fread (text + len, 1, cap - len - 1, f);
-      len += n;
-    }
-  while (n > 0);
-  status = ferror (f) ? errno : 0;
-  fclose (f);
-  text[len] = '\0';
-  if (status)
-    status = lac_error_set (LAC_EIO, path, "cannot read scene file (%s)",
-                            strerror (status));
-  else
+  if (!status)
     status = lac_scene_read_buffer (text, len, path, nset, set, out);
   lac_free (text);
   return status;

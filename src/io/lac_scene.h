@@ -11,7 +11,8 @@
  *
  * Syntax: `[section]` or `[section NAME]` headers, `key = value` lines,
  * comments from `;` or `#` at the start of a line, or after a blank inside
- * a line.  Numbers are C numbers (1e3, -0.25); booleans yes|no, true|false,
+ * a line.  Numbers are decimal C numbers (1e3, -0.25), finite doubles,
+ * through the one checked parser of base/lac_number.h; booleans yes|no, true|false,
  * on|off, 1|0; vectors are 2 or 3 numbers separated by blanks.
  *
  *   section / key          value                      default
@@ -41,7 +42,9 @@
  *     order                1 | 2 (.geo)               from element, else 1
  *     level                refinement level 0..12, exported to the .geo as
  *                          the number `level`         0
- *     numbers              "NAME=VALUE ..." more numbers for the .geo  none
+ *     numbers              "NAME=VALUE ..." more numbers for the .geo,
+ *                          each finite, |VALUE| <= 2^31 - 1
+ *                          (lac_mesh_opts.h)             none
  *     recombine            yes | no: quadrangles/hexahedra (.geo)
  *                                                     from element
  *     inverted             flip | reject: cells with det J < 0     flip

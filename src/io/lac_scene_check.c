@@ -10,12 +10,16 @@
  */
 #include "io/lac_scene_check.h"
 
-#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "fem/lac_exact.h"
+#include "io/lac_mesh_opts.h"
+#include "io/lac_output_batch.h"
 #include "io/lac_scene_keys.h"
 #include "io/lac_scene_query.h"
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
@@ -58,23 +62,23 @@ finish_scene (lac_scene *sc)
 
 
 /* One name of [mesh] file: its path, relative to the scene's directory,
- * checked to open. */
+ * checked to be a regular file that opens (a named pipe would block the
+ * run, a device feed it without end: base/lac_input.h; its size is
+ * checked against --max-memory when it is read). */
 static int
 mesh_path (lac_scene *sc, lac_scene_mesh *m, const char *name, char **path)
 {
   size_t len = strlen (sc->dir) + strlen (name) + 2;
-  FILE *f;
+  int status;
   if (!(*path = lac_malloc (len)))
     LAC_ERROR (LAC_ENOMEM, "out of memory");
   if (name[0] == '/')
     snprintf (*path, len, "%s", name);
   else
     snprintf (*path, len, "%s/%s", sc->dir, name);
-  if (!(f = fopen (*path, "r")))
-    return lac_scene_error (sc, &m->sec, "file", lac_status_errno (errno),
-                            "cannot open %s "
-                            "(%s)", *path, strerror (errno));
-  fclose (f);
+  if ((status = lac_input_check (*path, HUGE_VAL, "", NULL)))
+    return lac_scene_error (sc, &m->sec, "file", status, "%s",
+                            lac_error_message ());
   return LAC_SUCCESS;
 }
 
@@ -117,6 +121,8 @@ finish_mesh (lac_scene *sc)
   const lac_scene_element_spec *info = lac_scene_elements;
   const char *const *names = lac_scene_element_names;
   lac_scene_mesh *m = &sc->mesh;
+  lac_mesh_number num[LAC_MESH_MAX_NUMBERS];
+  char why[400];
   int el = -1, status;
   if (m->sec.line == 0)
     return lac_scene_where_error (sc->path, 0, LAC_EINVAL, "no [mesh] "
@@ -140,6 +146,9 @@ finish_mesh (lac_scene *sc)
       m->order = info[el].order;
       m->recombine = info[el].recombine;
     }
+  if (m->numbers && lac_mesh_numbers_split (m->numbers, num, why,
+                                            sizeof why) < 0)
+    return lac_scene_error (sc, &m->sec, "numbers", LAC_EINVAL, "%s", why);
 
   /* The files, relative to the scene's directory. */
   return mesh_files (sc, m);
@@ -157,6 +166,45 @@ check_nu (lac_scene *sc, lac_scene_section *sec, double nu)
                           "stiffness singular in double precision; lac "
                           "takes nu <= %.9g (lambda / mu <= 1e8)",
                           2 * nu / (1 - 2 * nu), LAC_SCENE_NU_MAX);
+}
+
+/* Sections in the order of their group, then of their position. */
+typedef struct by_group
+{
+  const char *group;
+  size_t k;
+} by_group;
+
+static int
+group_order (const void *a, const void *b)
+{
+  const by_group *x = a, *y = b;
+  int c = strcmp (x->group, y->group);
+  return c ? c : (x->k > y->k) - (x->k < y->k);
+}
+
+/* No group in two [material] sections: the sections sorted by group (a
+ * pairwise comparison was quadratic in the number of sections). */
+static int
+materials_distinct (lac_scene *sc)
+{
+  by_group *g = lac_malloc ((sc->nmaterial + 1) * sizeof *g);
+  size_t n = 0;
+  int status = LAC_SUCCESS;
+  if (!g)
+    LAC_ERROR (LAC_ENOMEM, "%zu materials", sc->nmaterial);
+  for (size_t k = 0; k < sc->nmaterial; k++)
+    if (sc->material[k].group)
+      g[n++] = (by_group) { sc->material[k].group, k };
+  qsort (g, n, sizeof *g, group_order);
+  for (size_t i = 1; i < n && !status; i++)
+    if (strcmp (g[i - 1].group, g[i].group) == 0)
+      status = lac_scene_error (sc, &sc->material[g[i].k].sec, "group",
+                                LAC_EINVAL, "group already used by "
+                                "[material %s]",
+                                sc->material[g[i - 1].k].sec.name);
+  lac_free (g);
+  return status;
 }
 
 static int
@@ -182,14 +230,8 @@ finish_materials (lac_scene *sc)
                                 nogroup->sec.name);
       if (!m->group)
         nogroup = m;
-      for (size_t j = 0; j < k && m->group; j++)
-        if (sc->material[j].group
-            && strcmp (sc->material[j].group, m->group) == 0)
-          return lac_scene_error (sc, &m->sec, "group", LAC_EINVAL,
-                                  "group already used by [material %s]",
-                                  sc->material[j].sec.name);
     }
-  return LAC_SUCCESS;
+  return materials_distinct (sc);
 }
 
 /* The components ux, uy, uz, ur given: fixed[] and value[], their number
@@ -464,6 +506,29 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   return LAC_SUCCESS;
 }
 
+/* [steps] curve: a file of the output directory that no other output of
+ * the run has (curve = solution.vtu overwrote the solution), named
+ * without a directory (it is written into the output directory). */
+static int
+check_curve (lac_scene *sc)
+{
+  const char *c = sc->steps.curve;
+  if (!c)
+    return LAC_SUCCESS;
+  if (strchr (c, '/') || c[0] == '.')
+    return lac_scene_error (sc, &sc->steps.sec, "curve", LAC_EINVAL,
+                            "expected a file name of the output directory, "
+                            "without '/' and not starting with '.'");
+  if (strcmp (c, "curve.csv") && lac_output_batch_ours (c))
+    return lac_scene_error (sc, &sc->steps.sec, "curve", LAC_EINVAL,
+                            "the run writes another output under this name "
+                            "(solution.vtu, nodes.csv, contact.csv, "
+                            "contact_steps.csv, contact.vtu, K.mtx, "
+                            "summary.txt, steps.pvd, step_NNN.vtu): give the "
+                            "curve a name of its own");
+  return LAC_SUCCESS;
+}
+
 /* The keys of the large-deformation run (lac_nonlinear.h) and the keys
  * that need it: law = neo_hookean and [steps]; [exact] (small-strain
  * solutions) and the comparison contact methods do not go with it. */
@@ -481,6 +546,8 @@ finish_nonlinear (lac_scene *sc)
                             "steps need [scene] large_deformation = yes");
   if (!m->large_deformation)
     return LAC_SUCCESS;
+  if (check_curve (sc))
+    return LAC_EINVAL;
   if (sc->exact.sec.line != 0)
     return lac_scene_error (sc, &sc->exact.sec, NULL, LAC_EINVAL, "the "
                             "exact solutions are small-strain solutions; "

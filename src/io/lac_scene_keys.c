@@ -270,12 +270,13 @@ named_at (lac_scene *sc, int kind, size_t k)
          : kind == SEC_CONTACT ? &sc->contact[k].sec : &sc->load[k].sec;
 }
 
-#define GROW(arr, n)                                                    \
+/* One more section at the end of a named kind's array, zeroed; the
+ * arrays double as they grow (lac_grow), so that a scene of n sections
+ * is read in time linear in n. */
+#define GROW(arr, n, cap)                                               \
   do {                                                                  \
-    void *p_ = lac_realloc ((arr), ((n) + 1) * sizeof *(arr));          \
-    if (!p_)                                                            \
+    if (lac_grow (&(arr), (n) + 1, &(cap), sizeof *(arr), 4))           \
       return NULL;                                                      \
-    (arr) = p_;                                                         \
     memset (&(arr)[(n)], 0, sizeof *(arr));                             \
     s = &(arr)[(n)++].sec;                                              \
   } while (0)
@@ -285,14 +286,28 @@ named_grow (lac_scene *sc, int kind)
 {
   lac_scene_section *s;
   if (kind == SEC_MATERIAL)
-    GROW (sc->material, sc->nmaterial);
+    GROW (sc->material, sc->nmaterial, sc->cap[0]);
   else if (kind == SEC_DIRICHLET)
-    GROW (sc->dirichlet, sc->ndirichlet);
+    GROW (sc->dirichlet, sc->ndirichlet, sc->cap[1]);
   else if (kind == SEC_CONTACT)
-    GROW (sc->contact, sc->ncontact);
+    GROW (sc->contact, sc->ncontact, sc->cap[2]);
   else
-    GROW (sc->load, sc->nload);
+    GROW (sc->load, sc->nload, sc->cap[3]);
   return s;
+}
+
+lac_scene_section *
+lac_scene_section_get (lac_scene *sc, int kind, size_t k)
+{
+  if (!lac_scene_sections[kind].named)
+    return singleton (sc, kind);
+  return k < named_count (sc, kind) ? named_at (sc, kind, k) : NULL;
+}
+
+size_t
+lac_scene_section_count (const lac_scene *sc, int kind)
+{
+  return lac_scene_sections[kind].named ? named_count (sc, kind) : 1;
 }
 
 lac_scene_section *

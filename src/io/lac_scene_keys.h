@@ -70,7 +70,11 @@ int lac_scene_split_section (const char *sec, char *buf, size_t size,
 /* The existing section (kind, name), or NULL. */
 lac_scene_section *lac_scene_section_find (lac_scene *sc, int kind,
                                            const char *name);
-/* A new section (NULL: out of memory). */
+/* The k-th section of a kind (k ignored for an unnamed kind), NULL past
+ * the last; and how many a kind has (1 for an unnamed kind). */
+lac_scene_section *lac_scene_section_get (lac_scene *sc, int kind, size_t k);
+size_t lac_scene_section_count (const lac_scene *sc, int kind);
+/* A new section (NULL: out of memory); a named one goes last. */
 lac_scene_section *lac_scene_section_new (lac_scene *sc, int kind,
                                           const char *name, int line);
 int lac_scene_key_index (int kind, const char *key);  /* -1 if unknown */

@@ -14,21 +14,25 @@
 #include "io/lac_scene_keys.h"
 #include "base/lac_status.h"
 
+/* Room for a message before lac_error_place escapes and fits it: a
+ * value quoted from --set, a path, the words around them. */
+#define ROOM 8192
+
 int
 lac_scene_where_error (const char *path, int line, int status,
                        const char *fmt, ...)
 {
-  char where[512], msg[768];
+  char where[4200], msg[ROOM];
   va_list ap;
   if (line > 0)
-    snprintf (where, sizeof where, "%s:%d", path, line);
+    snprintf (where, sizeof where, "%.4096s:%d", path, line);
   else
-    snprintf (where, sizeof where, "%s",
+    snprintf (where, sizeof where, "%.4096s",
               line == LAC_SCENE_FROM_SET ? "--set" : path);
   va_start (ap, fmt);
   vsnprintf (msg, sizeof msg, fmt, ap);
   va_end (ap);
-  return lac_error_set (status, where, "%s", msg);
+  return lac_error_place (status, where, "%s", msg);
 }
 
 int
@@ -42,27 +46,29 @@ int
 lac_scene_error (const lac_scene *sc, const lac_scene_section *s,
                  const char *key, int status, const char *fmt, ...)
 {
-  char label[300] = "", keypart[400] = "", msg[600];
+  char msg[ROOM];
   int k = (s && key) ? lac_scene_key_index (s->kind, key) : -1;
   int line = (k >= 0) ? s->key_line[k] : 0;
+  size_t n = 0;
   va_list ap;
   if (s && s->name)
-    snprintf (label, sizeof label, "[%s %s]", lac_scene_sections[s->kind].name,
-              s->name);
+    n = (size_t) snprintf (msg, sizeof msg, "[%s %.512s]",
+                           lac_scene_sections[s->kind].name, s->name);
   else if (s)
-    snprintf (label, sizeof label, "[%s]", lac_scene_sections[s->kind].name);
+    n = (size_t) snprintf (msg, sizeof msg, "[%s]",
+                           lac_scene_sections[s->kind].name);
   if (k >= 0 && line != 0)
-    snprintf (keypart, sizeof keypart, " %s = '%s'", key,
-              s->key_raw[k] ? s->key_raw[k] : "");
+    n += (size_t) snprintf (msg + n, sizeof msg - n, " %s = '%.2048s'", key,
+                            s->key_raw[k] ? s->key_raw[k] : "");
   else if (key)
-    snprintf (keypart, sizeof keypart, " %s", key);
+    n += (size_t) snprintf (msg + n, sizeof msg - n, " %s", key);
+  n += (size_t) snprintf (msg + n, sizeof msg - n, ": ");
   if (line == 0 && s)
     line = s->line;
   va_start (ap, fmt);
-  vsnprintf (msg, sizeof msg, fmt, ap);
+  vsnprintf (msg + n, sizeof msg - n, fmt, ap);
   va_end (ap);
-  return lac_scene_where_error (sc->path, line, status, "%s%s: %s", label,
-                                keypart, msg);
+  return lac_scene_where_error (sc->path, line, status, "%s", msg);
 }
 
 const char *

@@ -20,6 +20,12 @@
 
 #define LAC_SCENE_MAX_KEYS 16
 
+/* The largest scene file read: a scene is a few kilobytes of text (the
+ * largest of lac's is 3 kB); a path to anything larger, or to what is not
+ * a regular file (/dev/zero, a named pipe), is refused before it is read
+ * (base/lac_input.h). */
+#define LAC_SCENE_MAX_BYTES 4e6
+
 /* Every real value of a scene is at most LAC_SCENE_NUM_MAX in magnitude,
  * and a value that must be > 0 at least 1 / LAC_SCENE_NUM_MAX: products
  * of moduli, loads, lengths and displacements then stay far from the
@@ -188,6 +194,8 @@ typedef struct lac_scene
   lac_scene_output output;
   lac_scene_steps steps;        /* steps.sec.line == 0: no [steps]       */
   size_t nmaterial, ndirichlet, nload, ncontact;
+  size_t cap[4];                /* allocated: material, dirichlet,
+                                   contact, load (they grow by doubling) */
   lac_scene_material *material;     /* owned, nmaterial  */
   lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */
   lac_scene_load *load;             /* owned, nload      */

@@ -21,7 +21,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/lac_input.h"
 #include "base/lac_mem.h"
+#include "io/lac_mesh_child.h"
 #include "render/lac_render.h"
 #include "base/lac_status.h"
 
@@ -113,34 +115,16 @@ appended_start (vtu_file *f, size_t len)
   return LAC_SUCCESS;
 }
 
+/* The whole file: a regular file of at most 80 % of the machine's memory
+ * (base/lac_input.h: a named pipe in the result directory blocked lac
+ * render, /dev/zero fed it without end). */
 static int
 slurp (vtu_file *f)
 {
-  FILE *fp = fopen (f->path, "rb");
-  long len;
-  if (!fp)
-    LAC_ERROR (LAC_EIO, "cannot open '%s' (%s)", f->path, strerror (errno));
-  if (fseek (fp, 0, SEEK_END) != 0 || (len = ftell (fp)) < 0
-      || fseek (fp, 0, SEEK_SET) != 0)
-    {
-      fclose (fp);
-      LAC_ERROR (LAC_EIO, "cannot read '%s'", f->path);
-    }
-  f->text = lac_malloc ((size_t) len + 1);
-  if (!f->text)
-    {
-      fclose (fp);
-      LAC_ERROR (LAC_ENOMEM, "cannot hold '%s' (%ld bytes) in memory",
-                 f->path, len);
-    }
-  if (fread (f->text, 1, (size_t) len, fp) != (size_t) len)
-    {
-      fclose (fp);
-      LAC_ERROR (LAC_EIO, "cannot read '%s'", f->path);
-    }
-  f->text[len] = '\0';
-  fclose (fp);
-  return appended_start (f, (size_t) len);
+  size_t len = 0;
+  int status = lac_input_read (f->path, lac_mesh_default_memory (), "80 % "
+                               "of the memory", &f->text, &len);
+  return status ? status : appended_start (f, len);
 }
 
 /* The value of attribute `name` of the tag starting at p (up to '>'),

@@ -297,6 +297,20 @@ lac_run_free (lac_run *r)
   lac_free (r);
 }
 
+/* A failed stage whose message names no place (a module deep inside
+ * knows a node or a vertex, not the run): the scene and the stage go in
+ * front, so that the one line says which run and which step failed
+ * (base/lac_status.h). */
+static int
+placed (const lac_run *r, int status)
+{
+  if (lac_error_placed ())
+    return status;
+  return lac_error_place (status, r->scene->path, "%s stage: %s",
+                          stage_names[r->stage], *lac_error_message ()
+                          ? lac_error_message () : lac_strerror (status));
+}
+
 int
 lac_run_iterate (lac_run *r)
 {
@@ -313,7 +327,7 @@ lac_run_iterate (lac_run *r)
   if (status == LAC_CONTINUE)                 /* an iteration: same stage */
     return LAC_CONTINUE;
   if (status)
-    return status;
+    return placed (r, status);
   r->stage++;
   return r->stage < LAC_NSTAGES ? LAC_CONTINUE : LAC_SUCCESS;
 }

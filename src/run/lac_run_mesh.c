@@ -9,6 +9,7 @@
 #include "base/lac_status.h"
 #include "io/lac_mesh_gmsh.h"
 #include "io/lac_scene_query.h"
+#include "run/lac_run_conflict.h"
 #include "run/lac_run_scene.h"
 #include "solve/lac_strategy.h"
 
@@ -210,7 +211,8 @@ lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
       if ((status = add_file (sc, k, gend, mesh, one)))
         return status;
     }
-  if ((status = check_mesh (sc, model, *mesh)))
+  if ((status = check_mesh (sc, model, *mesh))
+      || (status = lac_run_conflicts (sc, model, *mesh)))
     return status;
   n = (size_t) snprintf (progress, size, "%zu nodes, %zu cells (%s), %zu "
                         "groups", (*mesh)->nnodes, (*mesh)->ncells,

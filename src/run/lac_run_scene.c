@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "base/lac_status.h"
+#include "base/lac_text.h"
 
 void
 lac_run_exact (const lac_scene *sc, lac_model model, lac_exact *e)
@@ -18,11 +19,7 @@ lac_run_exact (const lac_scene *sc, lac_model model, lac_exact *e)
 void
 lac_run_inner_message (char *buf, size_t size)
 {
-  const char *m = lac_error_message (), *colon = strstr (m, ": ");
-  if (strncmp (m, "lac_", 4) == 0 && colon && !memchr (m, ' ', (size_t)
-                                                       (colon - m)))
-    m = colon + 2;
-  snprintf (buf, size, "%s", m);
+  lac_text_fit (buf, size, lac_error_message ());
 }
 
 /* "body, left, right" */

@@ -27,7 +27,7 @@ const lac_group *lac_run_group (const lac_scene *sc, const lac_mesh *m,
 const lac_group *lac_run_contact_group (const lac_scene *sc,
                                         const lac_mesh *m, const char *key,
                                         const char *name);
-/* The current error message without its "lac_function: " prefix. */
+/* The current error message, fitted to buf (base/lac_text.h). */
 void lac_run_inner_message (char *buf, size_t size);
 /* Distinct cell types of the mesh, "tri6" or "tri6+quad8". */
 void lac_run_cell_types (const lac_mesh *m, char *buf, size_t size);

@@ -14,6 +14,44 @@ first (const char *s, size_t n)
   return (long) lac_text_check (s, n, NULL);
 }
 
+/* A message longer than the buffer keeps its beginning and its end (the
+ * reason), cut between UTF-8 characters. */
+static void
+test_fit (void)
+{
+  char path[3000], out[64];
+  memset (path, 'a', sizeof path - 1);
+  path[sizeof path - 1] = '\0';
+  path[1000] = '/';
+  lac_error_place (LAC_EIO, "s.scene:3", "cannot open '%s' (No such file "
+                   "or directory)", path);
+  check_true (strlen (lac_error_message ()) < 1024
+              && !strncmp (lac_error_message (), "s.scene:3: cannot open 'aa",
+                           26)
+              && strstr (lac_error_message (), "aa...aa")
+              && strstr (lac_error_message (), "aaa' (No such file or "
+                         "directory)"), "a long path loses its middle, "
+              "not the reason: '%.60s...'", lac_error_message ());
+  lac_error_place (LAC_EIO, path, "[mesh] file = '%s': %s: cannot open",
+                   path, path);
+  check_true (strlen (lac_error_message ()) < 1024
+              && strstr (lac_error_message (), "[mesh] file = 'aa")
+              && strstr (lac_error_message (), "aa: cannot open"),
+              "three long paths: each loses its middle, the words between "
+              "stay: '%s'", lac_error_message ());
+  check_int (lac_error_placed (), 1, "placed");
+  lac_text_fit (out, sizeof out, "short");
+  check_true (!strcmp (out, "short"), "fits: '%s'", out);
+  lac_text_fit (out, sizeof out, "\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9"
+                "\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9"
+                "\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9"
+                "\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9x");
+  check_true (strlen (out) < sizeof out
+              && lac_text_check (out, strlen (out), NULL) == strlen (out)
+              && out[strlen (out) - 1] == 'x', "fitted between UTF-8 "
+              "characters: '%s'", out);
+}
+
 int
 main (void)
 {
@@ -47,10 +85,17 @@ main (void)
   lac_error_set (LAC_EINVAL, "f", "key '%s'", "r\xe9\x07");
   check_message ("key 'r\\xE9\\x07'", "stored message escaped");
   lac_error_set (LAC_EINVAL, "f", "group 'a\nb'\tc");
-  check_message ("f: group 'a\\x0Ab'\tc", "stored message on one line");
+  check_message ("group 'a\\x0Ab'\tc", "stored message on one line");
+  lac_error_set (LAC_EINVAL, "f", "a\r\r\nb");    /* found by fuzz_numbers */
+  check_true (!strcmp (lac_error_message (), "a\\x0D\\x0D\\x0Ab"),
+              "a CR before a LF escaped with it: '%s'", lac_error_message ());
   lac_error_set (LAC_ENOMEM, "f", "%zu nodes", (size_t) 7);
-  check_message ("f: out of memory: 7 nodes", "ENOMEM says so");
-  lac_error_set (LAC_ENOMEM, "f", "out of memory here");
-  check_message ("f: out of memory here", "ENOMEM said once");
+  check_true (!strcmp (lac_error_message (), "out of memory: 7 nodes"),
+              "ENOMEM says so: '%s'", lac_error_message ());
+  lac_error_place (LAC_ENOMEM, "x.msh", "out of memory here");
+  check_true (!strcmp (lac_error_message (), "x.msh: out of memory here"),
+              "ENOMEM said once, after the place: '%s'",
+              lac_error_message ());
+  test_fit ();
   return check_summary ();
 }

@@ -1,13 +1,16 @@
 /* t042: a mesh that can be trusted: lac_mesh_validate (arrays),
  * lac_mesh_check_topology (flat, repeated, overcrowded and folded cells)
- * and lac_msh_check_text (the lines of a .msh file)           [LAC §2, §3.1] */
+ * and lac_msh_check_text (the lines of a .msh file); lac_geo_check_text
+ * (the counts a .geo writes as numbers)                      [LAC §2, §3.1] */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "base/lac_status.h"
 #include "fem/lac_mesh_check.h"
+#include "io/lac_mesh_geo_check.h"
 #include "io/lac_mesh_msh_check.h"
 
 /* The unit square cut into four triangles around its centre (node 5),
@@ -160,11 +163,60 @@ msh_lines (void)
                 "4.1 block count");
 }
 
+/* The transfinite counts of a .geo: numbers from 2 to 2^31 - 1; other
+ * numbers refused with their line; expressions, comments, strings and
+ * other statements left alone. */
+static void
+test_geo (void)
+{
+  static const char *const good[] = {
+    "Transfinite Curve{1, 3} = 2 * n + 1;\n",
+    "Transfinite Curve {:} = 2147483647 Using Progression 1.1;\n",
+    "// Transfinite Curve{1} = 3e9;\nTransfinite Line{2} = 2;",
+    "/* Transfinite Curve{1} = 0;\n */ x = 1;",
+    "Printf(\"Transfinite Curve{1} = 3e9;\");",
+    "Transfinite Surface{1} = {1, 2, 3, 4};",
+    "Transfinite Curve{1} = n;", "MyTransfinite Curve{1} = 1;",
+  };
+  static const char *const bad[][2] = {
+    { "x = 1;\nTransfinite Curve{1, 3} = 3e9;", "line 2: Transfinite Curve "
+      "{...} = 3e9: above the largest allowed value 2147483647" },
+    { "Transfinite Line {1} =\n 1 Using Bump 2;", "line 2: Transfinite Curve"
+      " {...} = 1: below the smallest allowed value 2" },
+    { "Transfinite Curve{ {1} } = 10.5;", "= 10.5: not an integer" },
+    { "Transfinite Curve{1} = 1e400;", "beyond the range of a double" },
+  };
+  for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
+    check_status (lac_geo_check_text ("t.geo", good[i], strlen (good[i])),
+                  LAC_SUCCESS, "geo '%s'", good[i]);
+  /* A text that ends inside a count, without a NUL after it (found by
+   * fuzz_numbers: read past the end, seen under AddressSanitizer). */
+  {
+    static const char cut[] = "Transfinite Curve{1} = 5 Usi";
+    char *t = malloc (sizeof cut - 1);
+    if (t)
+      {
+        memcpy (t, cut, sizeof cut - 1);
+        check_status (lac_geo_check_text ("t.geo", t, sizeof cut - 1),
+                      LAC_SUCCESS, "geo cut inside 'Using'");
+        free (t);
+      }
+  }
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+    {
+      check_status (lac_geo_check_text ("t.geo", bad[i][0],
+                                        strlen (bad[i][0])), LAC_EINVAL,
+                    "geo '%s'", bad[i][0]);
+      check_message (bad[i][1], "geo '%s'", bad[i][0]);
+    }
+}
+
 int
 main (void)
 {
   topology ();
   validate ();
   msh_lines ();
+  test_geo ();
   return check_summary ();
 }
