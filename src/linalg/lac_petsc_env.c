@@ -84,6 +84,19 @@ lac_petsc_memory_reply (void)
 }
 
 int
+lac_petsc_agree (int status)
+{
+  return status;
+}
+
+int
+lac_petsc_bcast (void *buf, size_t bytes)
+{
+  (void) buf, (void) bytes;
+  return LAC_SUCCESS;
+}
+
+int
 lac_petsc_fail (int err, const char *func, const char *call)
 {
   return lac_error_set (LAC_EDEP, func, "PETSc: %s: error %d", call, err);
@@ -232,6 +245,49 @@ lac_petsc_memory_reply (void)
   double mine = own_peak_mb (), sum = 0;
   if (MPI_Reduce (&mine, &sum, 1, MPI_DOUBLE, MPI_SUM, 0, PETSC_COMM_WORLD))
     LAC_ERROR (LAC_EDEP, "MPI_Reduce of the peak memory failed");
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_agree (int status)
+{
+  struct { int status; char msg[480]; } e;
+  int rank, size, mine, first;
+  lac_petsc_rank (&rank, &size);
+  if (size == 1)
+    return status;
+  mine = status ? rank : size;
+  if (MPI_Allreduce (&mine, &first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the processes' statuses failed");
+  if (first == size)
+    return LAC_SUCCESS;
+  memset (&e, 0, sizeof e);
+  if (rank == first)
+    {
+      e.status = status;
+      snprintf (e.msg, sizeof e.msg, "%s", lac_error_message ());
+    }
+  if (MPI_Bcast (&e, (int) sizeof e, MPI_BYTE, first, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Bcast of process %d's error failed", first);
+  if (rank == first && first == 0)
+    return status;
+  if (first == 0)
+    return lac_error_restore (e.status, e.msg);
+  return lac_error_set (e.status, NULL, "process %d: %s", first, e.msg);
+}
+
+/* In pieces of at most 1 GB (MPI's counts are int). */
+int
+lac_petsc_bcast (void *buf, size_t bytes)
+{
+  char *p = buf;
+  for (size_t done = 0; done < bytes;)
+    {
+      size_t m = bytes - done < (1u << 30) ? bytes - done : (1u << 30);
+      if (MPI_Bcast (p + done, (int) m, MPI_BYTE, 0, PETSC_COMM_WORLD))
+        LAC_ERROR (LAC_EDEP, "MPI_Bcast of %zu bytes failed", bytes);
+      done += m;
+    }
   return LAC_SUCCESS;
 }
 

@@ -18,6 +18,8 @@
 #ifndef LAC_PETSC_ENV_H
 #define LAC_PETSC_ENV_H
 
+#include <stddef.h>
+
 #define LAC_PETSC_INSTALL "apt-get install -y --no-install-recommends " \
   "libpetsc-real-dev openmpi-bin, then make clean && make"
 
@@ -60,7 +62,7 @@ typedef struct lac_petsc_command
   int mode, bs, coords;     /* build: the contact solver (-lac_contact),
                                block size, coordinates given              */
   int all;                  /* update: every row (new numbers)            */
-  int chunk;                /* build: entries per message of K_W's rows   */
+  int cells;                /* build: K from the cells (fem/lac_assembly_dist.h) */
   int warm;                 /* solve: the start is the last solution      */
   long long n, k;           /* build: displacements, multipliers          */
   double rtol;              /* solve: relative residual                   */
@@ -73,6 +75,13 @@ int lac_petsc_command_send (const lac_petsc_command *c);
 int lac_petsc_command_receive (lac_petsc_command *c);
 /* The others, on LAC_PETSC_CMD_MEMORY: their share of the sum. */
 int lac_petsc_memory_reply (void);
+/* Every process, after a step that may fail on some of them and before
+ * the next collective call: status on every process is the status of
+ * the first process that failed (LAC_SUCCESS if none), with its message
+ * ("process 1: ..." when it is not the root).  One process: status. */
+int lac_petsc_agree (int status);
+/* The root's `bytes` bytes at buf to every process (MPI_Bcast). */
+int lac_petsc_bcast (void *buf, size_t bytes);
 /* LAC_EDEP (LAC_ENOMEM) with PETSc's message for the failed call `call`
  * of `func` (err: its PetscErrorCode). */
 int lac_petsc_fail (int err, const char *func, const char *call);

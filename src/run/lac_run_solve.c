@@ -54,6 +54,7 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
   if (!status)
     {
       lac_strategy_set_coordinates (s, sys->coord_dim, sys->x);
+      lac_strategy_set_mesh (s, sys->cells.mesh ? &sys->cells : NULL);
       memset (sol->u, 0, sys->ndof * sizeof *sol->u);
       if (!(status = lac_strategy_set (s, &cs)))
         status = lac_strategy_solve (s, "", sol->u, lambda);
@@ -170,6 +171,8 @@ contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
     return LAC_EDEP;           /* the message says which and why */
   lac_strategy_set_coordinates (sol->newton->strategy, sys->coord_dim,
                                 sys->x);
+  lac_strategy_set_mesh (sol->newton->strategy,
+                         sys->cells.mesh ? &sys->cells : NULL);
   return lac_newton_begin (sol->newton);
 }
 

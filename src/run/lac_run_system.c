@@ -22,6 +22,7 @@ lac_run_system_clear (lac_run_system *sys)
   lac_bodies_free (sys->bodies);
   lac_run_plate_clear (&sys->ties);
   lac_free (sys->N);
+  lac_free (sys->fixed);
   for (size_t j = 0; sys->N_what && j < sys->nfree; j++)
     lac_free (sys->N_what[j]);
   lac_free (sys->N_what);
@@ -231,17 +232,16 @@ contact_matrices (const lac_scene *sc, lac_model model, const lac_mesh *m,
 
 /* ---- the stage -------------------------------------------------------- */
 
-/* The number of distinct fixed dofs. */
+/* The fixed dofs and their number. */
 static int
 count_fixed (lac_run_system *sys)
 {
-  char *seen = lac_calloc (sys->ndof, 1);
+  char *seen = sys->fixed = lac_calloc (sys->ndof, 1);
   if (!seen)
     LAC_ERROR (LAC_ENOMEM, "out of memory");
   for (size_t k = 0; k < sys->dir->n; k++)
     if (!seen[sys->dir->dof[k]])
       seen[sys->dir->dof[k]] = 1, sys->nfixed++;
-  lac_free (seen);
   return LAC_SUCCESS;
 }
 
@@ -319,6 +319,8 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
   T = NULL;
   if ((status = eliminate (sc, sys)))
     goto done;
+  if (!plates)                      /* K is the cells' (and Dirichlet's) */
+    sys->cells = (lac_dist_source) { m, &mat->elastic, sys->fixed };
   if (sys->ties.n)
     snprintf (progress, size, "%zu dofs (%zu fixed, %zu tied to %zu rigid "
               "plates), %zu nonzeros in K", sys->ndof, sys->nfixed,

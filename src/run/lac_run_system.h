@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include "contact/lac_contact.h"
 #include "fem/lac_assembly.h"
+#include "fem/lac_assembly_dist.h"
 #include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
@@ -43,6 +44,10 @@ typedef struct lac_run_system
                               the rigid motions of the petsc strategy's
                               multigrid; NULL for the axisymmetric model
                               (its one rigid motion: along the axis)    */
+  lac_dist_source cells;   /* what K was assembled from (mesh NULL: rigid
+                              plates, large deformation), for the petsc
+                              strategy's assembly on its processes      */
+  char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
 } lac_run_system;
 
 int lac_run_system_build (const lac_scene *sc, lac_model model,

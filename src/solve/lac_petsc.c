@@ -1,30 +1,29 @@
 /* lac_petsc.c -- the LAC system by Krylov methods and algebraic multigrid
  *                (see lac_petsc.h)                [LAC (17), Alg. 1 l. 21]
  *
- * The root (process 0) holds the whole system; every step that involves
- * PETSc is a collective one, which the root starts by a command
- * (linalg/lac_petsc_env.h) and the other processes make in
- * lac_petsc_serve:
+ * The root (process 0) runs Algorithm 1; every step that involves PETSc
+ * is a collective one, which the root starts by a command
+ * (linalg/lac_petsc_env.h) and the other processes follow in
+ * lac_petsc_serve, with the same functions and none of the root's data:
  *
- *   build   the layout (nodes and multipliers cut in N ranges), the
- *           matrices K_W and B = -C_A (n x k) preallocated from the counts
- *           the root makes for every row, the near-null space, the
- *           solvers (projected: the multigrid of K_W, CG on P K_W;
- *           fieldsplit: the nest [K_W B; B^T D], GMRES);
- *   update  the values: every row of K_W (new numbers) or its contact
- *           rows (K + C_A W_A C_A^T changes only there): the root inserts
- *           its own and sends each process its rows in messages of at most
- *           `chunk` entries (compressed rows), which that process inserts
- *           (one message per chunk, not PETSc's stash of single entries);
- *           B for the statuses (through PETSc's assembly); then B^T B + D
- *           (projected) or D and the Schur preconditioner Sp
+ *   build   the rows and the assembly of fem/lac_assembly_dist.h (the
+ *           cells partitioned by PETSc, C on every process), K_W and
+ *           B = -C_A (n x k) preallocated from the own cells and columns,
+ *           the near-null space, the solvers (projected: the multigrid
+ *           of K_W, CG on P K_W; fieldsplit: the nest [K_W B; B^T D],
+ *           GMRES);
+ *   update  the statuses and W from the root; new numbers: K_W = K /
+ *           kappa from the own cells; then K_W += C (W - W_old) C^T /
+ *           kappa by the owners of the columns that changed; B; then
+ *           B^T B + D (projected) or D and the Schur preconditioner Sp
  *           (fieldsplit), D = 1 on the inactive;
  *   solve   the right-hand side and the start from the root, one Krylov
  *           solve, its true residual, the solution back to the root.
  *
- * Before a command the root prepares what is its alone (the transpose of
- * C, the pattern of the contact rows, W), so that a failure there sends
- * nothing.  PETSc's errors become LAC_EDEP with PETSc's message.
+ * A failure on one process is agreed on by all before the next
+ * collective call (lac_petsc_agree): the root returns it with the message
+ * of the process that failed.  PETSc's errors become LAC_EDEP with
+ * PETSc's message.
  */
 #include "solve/lac_petsc.h"
 
@@ -61,6 +60,7 @@ const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 #else /* LAC_HAVE_PETSC */
 
 #include <petscksp.h>
+#include "fem/lac_assembly_dist.h"
 
 _Static_assert (sizeof (PetscInt) == sizeof (int), "lac_csc's int indices "
                 "are handed to PETSc: a PETSc with 32-bit indices");
@@ -68,9 +68,6 @@ _Static_assert (sizeof (PetscScalar) == sizeof (double), "real PETSc");
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
-#define ROWS_CHUNK (1 << 18)  /* entries of K_W per message, at least    */
-#define TAG_ROWS 7301         /* the messages of K_W's rows: indices     */
-#define TAG_VALS 7302         /*   and values                            */
 
 enum { PROJECTED, FIELDSPLIT };   /* the contact solvers (-lac_contact)  */
 
@@ -82,26 +79,25 @@ typedef struct lac_petsc
   double omega;                    /* W_i = omega / s_i                   */
   int rank, size, root;            /* root: rank 0                        */
   size_t n, k;
-  int mode, coords_given, built;
+  int mode, coords_given, built, cells;   /* cells: K from the cells     */
   PetscInt bs, r0, r1, l0, l1;     /* block size; own rows of U, lambda   */
+  lac_dist *dist;                  /* owned: the rows, the cells, C       */
   /* the root's: the whole system */
   const lac_contact_system *sys;   /* borrowed                            */
+  const lac_dist_source *src;      /* borrowed: the cells of K, or NULL   */
   int dim;                         /* components per node (coordinates)   */
   const double *coords;            /* borrowed, n, or NULL                */
   unsigned long long hK, hC;       /* patterns the matrices were made for */
-  lac_csc *Ct;                     /* owned: C^T, k x n                   */
-  PetscInt nc, *crow, *cp, *ci;    /* owned: the contact rows of K_W (C
-                                      touches them), their pattern (CSR)  */
-  double *cx;                      /* owned: their values                 */
-  double *s, *w;                   /* owned, k: c_i^T diag(K)^-1 c_i, W   */
-  double kappa;                    /* the mean of diag(K): PETSc's K_W and
-                                      f_W are divided by it              */
-  char *stat;                      /* owned, k: statuses of the matrices  */
+  double *s;                       /* owned, k: c_i^T diag(K)^-1 c_i      */
   int have_stat, new_numbers;
-  double *acc, *xv, *yv;           /* owned, n: scratch                   */
+  double *xv;                      /* owned, n: scratch                   */
   size_t na, *idx;                 /* owned, k: the active multipliers    */
   double *rhs, *lst;               /* owned, k                            */
-  /* every process: its rows */
+  /* every process */
+  double *w, *wold, *dw;           /* owned, k: W, the W in K_W, change   */
+  char *stat;                      /* owned, k: statuses of the matrices  */
+  double kappa;                    /* the mean of diag(K): PETSc's K_W and
+                                      f_W are divided by it              */
   Mat Kw, B;                       /* K_W; B = -C_A (n x k)               */
   Mat G, Ah;                       /* projected: B^T B + D; P K_W (shell) */
   Mat Bt, D, Sp, A;                /* fieldsplit: A = [K_W B; B^T D]      */
@@ -112,15 +108,11 @@ typedef struct lac_petsc
   Vec b, x, r, dx;                 /* fieldsplit: (*W)                    */
   Vec useq, lseq;                  /* U, lambda whole on the root (empty
                                       elsewhere)                          */
-  VecScatter gu, gl;               /* distributed <-> root                */
+  VecScatter gu, gl;               /* root -> distributed (forward)       */
   Mat Bl, Gl;                      /* projected, N > 1: the own rows of
                                       B (k columns), a copy of G          */
   KSP kl;                          /*   its LU (prefix gram_local_)       */
   Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)       */
-  int chunk;                       /* entries per message of K_W's rows  */
-  PetscInt *mi;                    /* owned, 3 + 3 chunk: a message's
-                                      rows, lengths, columns (N > 1)      */
-  double *mx;                      /* owned, chunk: its values            */
   lac_solve_counts counts;
   char method[200];
 } lac_petsc;
@@ -177,37 +169,25 @@ free_petsc (lac_petsc *s)
     VecDestroy (vec[i]);
   VecScatterDestroy (&s->gu);
   VecScatterDestroy (&s->gl);
-  lac_free (s->mi);
-  lac_free (s->mx);
-  s->mi = NULL;
-  s->mx = NULL;
+  lac_dist_free (s->dist);
+  s->dist = NULL;
   s->built = 0;
 }
 
 static void
 free_arrays (lac_petsc *s)
 {
-  lac_csc_free (s->Ct);
-  s->Ct = NULL;
-  lac_free (s->crow);
-  lac_free (s->cp);
-  lac_free (s->ci);
-  lac_free (s->cx);
-  lac_free (s->s);
-  lac_free (s->w);
-  lac_free (s->stat);
-  lac_free (s->acc);
-  lac_free (s->xv);
-  lac_free (s->yv);
+  double **d[] = { &s->s, &s->xv, &s->rhs, &s->lst, &s->w, &s->wold,
+                   &s->dw };
+  for (size_t i = 0; i < COUNT (d); i++)
+    {
+      lac_free (*d[i]);
+      *d[i] = NULL;
+    }
   lac_free (s->idx);
-  lac_free (s->rhs);
-  lac_free (s->lst);
-  s->crow = s->cp = s->ci = NULL;
-  s->cx = s->s = s->w = s->acc = s->xv = s->yv = NULL;
-  s->rhs = s->lst = NULL;
-  s->stat = NULL;
+  lac_free (s->stat);
   s->idx = NULL;
-  s->nc = 0;
+  s->stat = NULL;
   s->have_stat = 0;
 }
 
@@ -252,16 +232,6 @@ petsc_method (const void *w)
 
 /* ---- layout ------------------------------------------------------------- */
 
-/* Rows [a, b) of U on process p: whole nodes (blocks of bs) in N
- * contiguous ranges. */
-static void
-u_range (const lac_petsc *s, int p, PetscInt *a, PetscInt *b)
-{
-  size_t bs = (size_t) s->bs, nb = s->n / bs;
-  *a = (PetscInt) (bs * (nb * (size_t) p / (size_t) s->size));
-  *b = (PetscInt) (bs * (nb * ((size_t) p + 1) / (size_t) s->size));
-}
-
 /* Multipliers [a, b) on process p: PETSc's split of k in N ranges. */
 static void
 l_range (const lac_petsc *s, int p, PetscInt *a, PetscInt *b)
@@ -271,217 +241,114 @@ l_range (const lac_petsc *s, int p, PetscInt *a, PetscInt *b)
   *b = *a + q + (p < r);
 }
 
-/* ---- the root: patterns ------------------------------------------------- */
-
+/* The root's arrays for a new pattern. */
 static int
 alloc_arrays (lac_petsc *s, size_t n, size_t k)
 {
   size_t k1 = k ? k : 1;
   free_arrays (s);
   s->s = lac_calloc (k1, sizeof *s->s);
-  s->w = lac_calloc (k1, sizeof *s->w);
-  s->stat = lac_calloc (k1, 1);
   s->idx = lac_malloc (k1 * sizeof *s->idx);
   s->rhs = lac_malloc (k1 * sizeof *s->rhs);
   s->lst = lac_malloc (k1 * sizeof *s->lst);
-  s->acc = lac_calloc (n, sizeof *s->acc);
   s->xv = lac_malloc (n * sizeof *s->xv);
-  s->yv = lac_malloc (n * sizeof *s->yv);
-  if (!s->s || !s->w || !s->stat || !s->idx || !s->rhs
-      || !s->lst || !s->acc || !s->xv || !s->yv)
+  if (!s->s || !s->idx || !s->rhs || !s->lst || !s->xv)
     LAC_ERROR (LAC_ENOMEM, "petsc strategy, n = %zu, k = %zu", n, k);
   return LAC_SUCCESS;
 }
 
+/* Every process: the statuses, W and the W of K_W now (k each). */
 static int
-cmp_int (const void *a, const void *b)
+alloc_weights (lac_petsc *s)
 {
-  int x = *(const int *) a, y = *(const int *) b;
-  return (x > y) - (x < y);
-}
-
-/* Pattern of row j of K + C C^T (j a contact row) into cols (sorted);
- * returns its length.  mark: n ints, != j + 1 on entry. */
-static PetscInt
-contact_row (const lac_petsc *s, PetscInt j, int *mark, PetscInt *cols)
-{
-  const lac_csc *K = s->sys->K, *C = s->sys->C, *Ct = s->Ct;
-  PetscInt m = 0;
-  for (int p = K->p[j]; p < K->p[j + 1]; p++)
-    if (mark[K->i[p]] != j + 1)
-      mark[K->i[p]] = j + 1, cols[m++] = K->i[p];
-  for (int q = Ct->p[j]; q < Ct->p[j + 1]; q++)
-    for (int p = C->p[Ct->i[q]]; p < C->p[Ct->i[q] + 1]; p++)
-      if (mark[C->i[p]] != j + 1)
-        mark[C->i[p]] = j + 1, cols[m++] = C->i[p];
-  qsort (cols, (size_t) m, sizeof *cols, cmp_int);
-  return m;
-}
-
-/* Append row j's pattern (m entries) to ci, growing it; 0 or ENOMEM. */
-static int
-append_row (lac_petsc *s, const PetscInt *cols, PetscInt m, size_t *cap)
-{
-  size_t nnz = (size_t) s->cp[s->nc];
-  if (nnz + (size_t) m > *cap)
-    {
-      PetscInt *ci;
-      *cap = 2 * (nnz + (size_t) m);
-      if (!(ci = lac_realloc (s->ci, *cap * sizeof *ci)))
-        return LAC_ENOMEM;
-      s->ci = ci;
-    }
-  memcpy (s->ci + nnz, cols, (size_t) m * sizeof *cols);
-  s->cp[s->nc + 1] = (PetscInt) (nnz + (size_t) m);
+  size_t k1 = s->k ? s->k : 1;
+  lac_free (s->w);
+  lac_free (s->wold);
+  lac_free (s->dw);
+  lac_free (s->stat);
+  s->w = lac_calloc (k1, sizeof *s->w);
+  s->wold = lac_calloc (k1, sizeof *s->wold);
+  s->dw = lac_calloc (k1, sizeof *s->dw);
+  s->stat = lac_calloc (k1, 1);
+  if (!s->w || !s->wold || !s->dw || !s->stat)
+    return LAC_ERRMSG (LAC_ENOMEM, "the weights of %zu multipliers", s->k);
   return LAC_SUCCESS;
 }
 
-/* The contact rows (those C touches) and their pattern (crow, cp, ci). */
+/* A preallocator of the own rows of U, columns of U (lam = 0) or of the
+ * multipliers (lam = 1). */
 static int
-contact_pattern (lac_petsc *s)
+preallocator (lac_petsc *s, int lam, Mat *P)
 {
-  const lac_csc *Ct = s->Ct;
-  size_t cap = 0, rows = 0;
-  int *mark = lac_calloc (s->n, sizeof *mark), status = LAC_SUCCESS;
-  PetscInt *cols = lac_malloc (s->n * sizeof *cols);
-  for (size_t j = 0; Ct && j < s->n; j++)
-    rows += Ct->p[j + 1] > Ct->p[j];
-  s->nc = 0;
-  s->crow = lac_malloc ((rows + 1) * sizeof *s->crow);
-  s->cp = lac_calloc (rows + 1, sizeof *s->cp);
-  if (!mark || !cols || !s->crow || !s->cp)
-    status = LAC_ENOMEM;
-  for (PetscInt j = 0; Ct && !status && j < (PetscInt) s->n; j++)
-    if (Ct->p[j + 1] > Ct->p[j])
-      {
-        PetscInt m = contact_row (s, j, mark, cols);
-        if (!(status = append_row (s, cols, m, &cap)))
-          s->crow[s->nc++] = j;
-      }
-  lac_free (cols);
-  lac_free (mark);
-  if (!status && !(s->cx = lac_malloc (((size_t) s->cp[s->nc] + 1)
-                                       * sizeof *s->cx)))
-    status = LAC_ENOMEM;
-  if (status)
-    LAC_ERROR (status, "the contact rows of K_W, n = %zu", s->n);
+  PetscInt nl = s->r1 - s->r0;
+  TRY (MatCreate (PETSC_COMM_WORLD, P));
+  TRY (MatSetType (*P, MATPREALLOCATOR));
+  TRY (MatSetSizes (*P, nl, lam ? s->l1 - s->l0 : nl, (PetscInt) s->n,
+                    lam ? (PetscInt) s->k : (PetscInt) s->n));
+  TRY (MatSetBlockSize (*P, lam ? 1 : s->bs));
+  TRY (MatSetUp (*P));
   return LAC_SUCCESS;
 }
 
-/* The pattern of row j of K_W: a contact row (*c advanced) or K's; rows
- * are visited in increasing order. */
-static PetscInt
-row_pattern (const lac_petsc *s, PetscInt j, PetscInt *c,
-             const PetscInt **cols)
-{
-  const lac_csc *K = s->sys->K;
-  if (*c < s->nc && s->crow[*c] == j)
-    {
-      *cols = s->ci + s->cp[*c];
-      (*c)++;
-      return s->cp[*c] - s->cp[*c - 1];
-    }
-  *cols = K->i + K->p[j];
-  return K->p[j + 1] - K->p[j];
-}
-
-/* The root: for every row j of K_W (lam = 0) or of B (lam = 1), the
- * entries in the columns of j's own process (d) and the others (o). */
-static void
-count_rows (const lac_petsc *s, int lam, PetscInt *d, PetscInt *o)
-{
-  PetscInt c = 0;
-  for (int p = 0; p < s->size; p++)
-    {
-      PetscInt a, b, c0, c1;
-      u_range (s, p, &a, &b);
-      if (lam)
-        l_range (s, p, &c0, &c1);
-      else
-        c0 = a, c1 = b;
-      for (PetscInt j = a; j < b; j++)
-        {
-          const PetscInt *cols = s->Ct ? s->Ct->i + s->Ct->p[j] : NULL;
-          PetscInt m = lam ? s->Ct->p[j + 1] - s->Ct->p[j]
-                       : row_pattern (s, j, &c, &cols);
-          d[j] = o[j] = 0;
-          for (PetscInt t = 0; t < m; t++)
-            cols[t] >= c0 && cols[t] < c1 ? d[j]++ : o[j]++;
-        }
-    }
-}
-
-/* ---- collective: build -------------------------------------------------- */
-
-/* dnz, onz of the own rows of K_W (lam = 0) or B (lam = 1): counted by the
- * root, sent to each process. */
+/* M of the sizes of P with P's pattern. */
 static int
-own_counts (lac_petsc *s, int lam, PetscInt *dnz, PetscInt *onz)
+create_from (lac_petsc *s, Mat P, int lam, Mat *M)
 {
-  PetscInt *d = NULL, *o = NULL;
-  int *cnt = lac_malloc ((size_t) s->size * sizeof *cnt);
-  int *dsp = lac_malloc ((size_t) s->size * sizeof *dsp), status = 0;
-  if (s->root)
-    {
-      d = lac_malloc ((s->n + 1) * sizeof *d);
-      o = lac_malloc ((s->n + 1) * sizeof *o);
-    }
-  if (!cnt || !dsp || (s->root && (!d || !o)))
-    status = LAC_ENOMEM;        /* the root: memory is all it can lack */
-  for (int p = 0; !status && p < s->size; p++)
-    {
-      PetscInt a, b;
-      u_range (s, p, &a, &b);
-      dsp[p] = (int) a;
-      cnt[p] = (int) (b - a);
-    }
-  if (!status && s->root)
-    count_rows (s, lam, d, o);
-  if (!status
-      && (MPI_Scatterv (d, cnt, dsp, MPI_INT, dnz, (int) (s->r1 - s->r0),
-                        MPI_INT, 0, PETSC_COMM_WORLD)
-          || MPI_Scatterv (o, cnt, dsp, MPI_INT, onz, (int) (s->r1 - s->r0),
-                           MPI_INT, 0, PETSC_COMM_WORLD)))
-    status = LAC_EDEP;
-  lac_free (cnt);
-  lac_free (dsp);
-  lac_free (d);
-  lac_free (o);
-  if (status)
-    LAC_ERROR (status, "the preallocation of %s, n = %zu",
-               lam ? "B" : "K_W", s->n);
+  PetscInt m, n, M0, N0;
+  TRY (MatGetLocalSize (P, &m, &n));
+  TRY (MatGetSize (P, &M0, &N0));
+  TRY (MatCreate (PETSC_COMM_WORLD, M));
+  TRY (MatSetSizes (*M, m, n, M0, N0));
+  TRY (MatSetType (*M, MATAIJ));
+  TRY (MatSetBlockSize (*M, lam ? 1 : s->bs));
+  TRY (MatPreallocatorPreallocate (P, PETSC_TRUE, *M));
   return LAC_SUCCESS;
 }
 
-/* A preallocated, empty matrix with the own rows of U, columns of U (lam
- * = 0, K_W) or of the multipliers (lam = 1, B). */
+/* K_W and B (k > 0), preallocated from the own cells and columns
+ * (fem/lac_assembly_dist.h); K: the root's when it gives K whole. */
 static int
-create_rows (lac_petsc *s, int lam, Mat *M)
+create_matrices (lac_petsc *s, const lac_csc *K)
 {
-  PetscInt nl = s->r1 - s->r0, cl = lam ? s->l1 - s->l0 : nl;
-  PetscInt *dnz = lac_calloc ((size_t) nl + 1, sizeof *dnz);
-  PetscInt *onz = lac_calloc ((size_t) nl + 1, sizeof *onz);
-  PetscErrorCode e = 0;
-  int status = !dnz || !onz ? LAC_ENOMEM : LAC_SUCCESS;
-  if (status)
-    lac_error_set (status, __func__, "%d rows", (int) nl);
-  status = status ? status : own_counts (s, lam, dnz, onz);
-  if (!status)
+  Mat P[2] = { NULL, NULL };
+  int status;
+  if ((status = preallocator (s, 0, &P[0]))
+      || (s->k && (status = preallocator (s, 1, &P[1])))
+      || (status = lac_dist_pattern (s->dist, K, P[0], P[1]))
+      || (status = create_from (s, P[0], 0, &s->Kw))
+      || (s->k && (status = create_from (s, P[1], 1, &s->B))))
     {
-      e = MatCreate (PETSC_COMM_WORLD, M);
-      e = e ? e : MatSetSizes (*M, nl, cl, (PetscInt) s->n,
-                               lam ? (PetscInt) s->k : (PetscInt) s->n);
-      e = e ? e : MatSetType (*M, MATAIJ);
-      e = e ? e : MatSetBlockSize (*M, lam ? 1 : s->bs);
-      e = e ? e : MatSeqAIJSetPreallocation (*M, 0, dnz);
-      e = e ? e : MatMPIAIJSetPreallocation (*M, 0, dnz, 0, onz);
+      MatDestroy (&P[0]);
+      MatDestroy (&P[1]);
+      return status;
     }
-  lac_free (dnz);
-  lac_free (onz);
-  if (e)
-    return lac_petsc_fail ((int) e, __func__, lam ? "B" : "K_W");
-  return status;
+  TRY (MatDestroy (&P[0]));
+  TRY (MatDestroy (&P[1]));
+  return LAC_SUCCESS;
 }
+
+/* The scatter sc between the root's whole vector *seq (empty elsewhere)
+ * and v: forward to v, entry j to row[j] (row NULL: j). */
+static int
+root_scatter (const lac_petsc *s, Vec v, const PetscInt *row, VecScatter *sc,
+              Vec *seq)
+{
+  PetscInt n;
+  IS ix, iy;
+  TRY (VecGetSize (v, &n));
+  n = s->root ? n : 0;
+  TRY (VecCreateSeq (PETSC_COMM_SELF, n, seq));
+  TRY (ISCreateStride (PETSC_COMM_SELF, n, 0, 1, &ix));
+  if (row)
+    TRY (ISCreateGeneral (PETSC_COMM_SELF, n, row, PETSC_COPY_VALUES, &iy));
+  else
+    TRY (ISCreateStride (PETSC_COMM_SELF, n, 0, 1, &iy));
+  TRY (VecScatterCreate (*seq, ix, v, iy, sc));
+  TRY (ISDestroy (&ix));
+  TRY (ISDestroy (&iy));
+  return LAC_SUCCESS;
+}
+
 
 /* v (distributed) = the root's x (ignored elsewhere), through the seq
  * vector of the root and the scatter sc (reversed). */
@@ -498,8 +365,8 @@ to_dist (const lac_petsc *s, VecScatter sc, Vec seq, const double *x,
       memcpy (a, x, (size_t) len * sizeof *a);
       TRY (VecRestoreArray (seq, &a));
     }
-  TRY (VecScatterBegin (sc, seq, v, INSERT_VALUES, SCATTER_REVERSE));
-  TRY (VecScatterEnd (sc, seq, v, INSERT_VALUES, SCATTER_REVERSE));
+  TRY (VecScatterBegin (sc, seq, v, INSERT_VALUES, SCATTER_FORWARD));
+  TRY (VecScatterEnd (sc, seq, v, INSERT_VALUES, SCATTER_FORWARD));
   return LAC_SUCCESS;
 }
 
@@ -507,8 +374,8 @@ to_dist (const lac_petsc *s, VecScatter sc, Vec seq, const double *x,
 static int
 to_root (const lac_petsc *s, VecScatter sc, Vec v, Vec seq, double *y)
 {
-  TRY (VecScatterBegin (sc, v, seq, INSERT_VALUES, SCATTER_FORWARD));
-  TRY (VecScatterEnd (sc, v, seq, INSERT_VALUES, SCATTER_FORWARD));
+  TRY (VecScatterBegin (sc, v, seq, INSERT_VALUES, SCATTER_REVERSE));
+  TRY (VecScatterEnd (sc, v, seq, INSERT_VALUES, SCATTER_REVERSE));
   if (s->root)
     {
       const PetscScalar *a;
@@ -733,8 +600,7 @@ create_projected (lac_petsc *s)
   TRY (VecDuplicate (s->xu, &s->tu));
   TRY (VecDuplicate (s->xu, &s->u0));
   TRY (VecDuplicate (s->xu, &s->fw));
-  TRY (VecScatterCreateToZero (s->sk, &s->gl, &s->lseq));
-  return LAC_SUCCESS;
+  return root_scatter (s, s->sk, NULL, &s->gl, &s->lseq);
 }
 
 /* fieldsplit: the nest A = [K_W B; B^T D], its vectors, the Schur
@@ -764,7 +630,8 @@ create_fieldsplit (lac_petsc *s)
   TRY (VecDuplicate (s->b, &s->r));
   TRY (VecDuplicate (s->b, &s->dx));
   TRY (MatCreateVecs (s->D, &xl, NULL));
-  TRY (VecScatterCreateToZero (xl, &s->gl, &s->lseq));
+  if ((status = root_scatter (s, xl, NULL, &s->gl, &s->lseq)))
+    return status;
   TRY (VecDestroy (&xl));
   TRY (KSPCreate (PETSC_COMM_WORLD, &s->ks));
   TRY (KSPSetOperators (s->ks, s->A, s->A));
@@ -815,10 +682,27 @@ describe (lac_petsc *s)
   return LAC_SUCCESS;
 }
 
-/* Everything that depends on the sizes and patterns (all processes; the
- * root has prepared its arrays). */
+/* The layout and C: the rows of the cells (the root gives its mesh when
+ * c->cells) or of K, C on every process (fem/lac_assembly_dist.h). */
 static int
-build (lac_petsc *s, const lac_petsc_command *c)
+build_layout (lac_petsc *s, const lac_petsc_command *c, const lac_csc *C)
+{
+  int status;
+  lac_dist_free (s->dist);
+  s->dist = NULL;
+  if ((status = lac_dist_alloc (s->root && c->cells ? s->src : NULL, s->n,
+                                (int) s->bs, &s->dist))
+      || (s->k && (status = lac_dist_set_c (s->dist, C, 1))))
+    return status;
+  lac_dist_rows (s->dist, &s->r0, &s->r1);
+  l_range (s, s->rank, &s->l0, &s->l1);
+  return lac_petsc_agree (alloc_weights (s));
+}
+
+/* Everything that depends on the sizes and patterns (all processes; sys:
+ * the root's, NULL elsewhere). */
+static int
+build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
 {
   int status;
   free_petsc (s);
@@ -827,27 +711,21 @@ build (lac_petsc *s, const lac_petsc_command *c)
   s->bs = c->bs;
   s->mode = c->mode;
   s->coords_given = c->coords;
-  u_range (s, s->rank, &s->r0, &s->r1);
-  l_range (s, s->rank, &s->l0, &s->l1);
-  if ((status = create_rows (s, 0, &s->Kw)))
+  s->cells = c->cells;
+  if ((status = build_layout (s, c, sys ? sys->C : NULL))
+      || (status = create_matrices (s, sys && !c->cells ? sys->K : NULL)))
     return status;
-  s->chunk = c->chunk;
-  if (s->size > 1
-      && (!(s->mi = lac_malloc ((3 + 3 * (size_t) s->chunk) * sizeof *s->mi))
-          || !(s->mx = lac_malloc ((size_t) s->chunk * sizeof *s->mx))))
-    LAC_ERROR (LAC_ENOMEM, "the messages of K_W's rows, %d entries",
-               s->chunk);
-  TRY (MatSetOption (s->Kw, MAT_NO_OFF_PROC_ENTRIES, PETSC_TRUE));
   TRY (MatSetOption (s->Kw, MAT_SYMMETRIC, PETSC_TRUE));
   TRY (MatSetOption (s->Kw, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
   TRY (MatCreateVecs (s->Kw, &s->xu, &s->bu));
   TRY (VecDuplicate (s->bu, &s->ru));
-  TRY (VecScatterCreateToZero (s->xu, &s->gu, &s->useq));
-  if ((status = near_null_space (s)))
+  if ((status = root_scatter (s, s->xu, lac_dist_row (s->dist), &s->gu,
+                              &s->useq))
+      || (status = near_null_space (s)))
     return status;
   if (s->k == 0)
     status = create_ku (s);
-  else if (!(status = create_rows (s, 1, &s->B)))
+  else
     status = s->mode == FIELDSPLIT ? create_fieldsplit (s)
              : create_projected (s);
   if (status)
@@ -857,22 +735,8 @@ build (lac_petsc *s, const lac_petsc_command *c)
   return describe (s);
 }
 
-/* The root: the entries per message of K_W's rows, ROWS_CHUNK or the
- * longest row (after contact_pattern). */
-static int
-chunk_size (const lac_petsc *s)
-{
-  PetscInt c = 0, longest = ROWS_CHUNK;
-  for (PetscInt j = 0; j < (PetscInt) s->n; j++)
-    {
-      const PetscInt *cols;
-      PetscInt m = row_pattern (s, j, &c, &cols);
-      longest = m > longest ? m : longest;
-    }
-  return (int) longest;
-}
-
-/* The root: its arrays for a new pattern, then the build command. */
+/* The root: the command of a new pattern; K from the cells when a mesh of
+ * these dofs was given (set_mesh). */
 static int
 root_build (lac_petsc *s, const lac_contact_system *sys)
 {
@@ -880,46 +744,14 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   size_t bs = s->dim > 0 && n % (size_t) s->dim == 0 ? (size_t) s->dim : 1;
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
-    .n = (long long) n, .k = (long long) k };
+    .n = (long long) n, .k = (long long) k,
+    .cells = s->src && s->src->mesh && (size_t) s->src->mesh->dim
+             * s->src->mesh->nnodes == n && (int) bs == s->src->mesh->dim };
   int status;
-  if (s->built && s->size > 1)
-    {
-      lac_petsc_command f = { .cmd = LAC_PETSC_CMD_FREE };
-      if ((status = lac_petsc_command_send (&f)))
-        return status;
-    }
-  free_petsc (s);
-  if ((status = alloc_arrays (s, n, k)))
+  if ((status = alloc_arrays (s, n, k))
+      || (status = lac_petsc_command_send (&c)))
     return status;
-  s->sys = sys;
-  s->n = n;
-  s->k = k;
-  if (k && !(s->Ct = lac_csc_transpose (sys->C)))
-    LAC_ERROR (LAC_ENOMEM, "C^T, k = %zu", k);
-  if ((status = contact_pattern (s)))
-    return status;
-  c.chunk = chunk_size (s);
-  if ((status = lac_petsc_command_send (&c)))
-    return status;
-  return build (s, &c);
-}
-
-/* The mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
- * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
- * against gaps: tuned as it is), so that PETSc sees the same numbers
- * whatever the units (its GAMG with the rigid motions is not
- * scale-invariant: with lengths and moduli scaled by powers of two, the
- * results changed in their last bits, which the projected CG amplifies to
- * 1e-9; chapter 11). */
-static double
-mean_diagonal (const lac_csc *K)
-{
-  double sum = 0;
-  for (size_t j = 0; j < K->ncol; j++)
-    for (int p = K->p[j]; p < K->p[j + 1]; p++)
-      if ((size_t) K->i[p] == j)
-        sum += fabs (K->x[p]);
-  return sum > 0 ? sum / (double) K->ncol : 1.0;
+  return build (s, &c, sys);
 }
 
 static int
@@ -936,184 +768,30 @@ petsc_set (void *w, const lac_contact_system *sys)
   if (sys->K->ncol != sys->K->nrow || (sys->C && sys->C->nrow != sys->K->ncol))
     LAC_ERROR (LAC_EBADLEN, "K is %zu x %zu, C %zu x %zu", sys->K->nrow,
                sys->K->ncol, sys->C ? sys->C->nrow : sys->K->nrow, k);
+  s->sys = sys;
   if (!s->built || sys->K->ncol != s->n || k != s->k || hK != s->hK
       || hC != s->hC)
     {
+      s->built = 0;
       if ((status = root_build (s, sys)))
         return status;
       s->hK = hK;
       s->hC = hC;
     }
-  s->sys = sys;
   if (k)
     lac_system_column_scales (s->sys, s->xv, s->s);
-  s->kappa = s->mode == FIELDSPLIT ? 1.0 : mean_diagonal (sys->K);
   s->new_numbers = 1;
   return LAC_SUCCESS;
 }
 
-/* ---- collective: the values for the statuses ---------------------------- */
-
-/* Values of contact row c of K_W = K + C diag(w) C^T, times sc, into
- * cx. */
 static void
-contact_values (lac_petsc *s, PetscInt c, double sc)
+petsc_set_mesh (void *w, const lac_dist_source *src)
 {
-  const lac_csc *K = s->sys->K, *C = s->sys->C, *Ct = s->Ct;
-  PetscInt j = s->crow[c];
-  for (int p = K->p[j]; p < K->p[j + 1]; p++)
-    s->acc[K->i[p]] += K->x[p];
-  for (int q = Ct->p[j]; q < Ct->p[j + 1]; q++)
-    {
-      int i = Ct->i[q];
-      double v = s->w[i] * Ct->x[q];
-      if (v != 0)
-        for (int p = C->p[i]; p < C->p[i + 1]; p++)
-          s->acc[C->i[p]] += v * C->x[p];
-    }
-  for (PetscInt t = s->cp[c]; t < s->cp[c + 1]; t++)
-    {
-      s->cx[t] = s->acc[s->ci[t]] * sc;
-      s->acc[s->ci[t]] = 0;
-    }
+  lac_petsc *s = w;
+  s->src = src;
 }
 
-/* The root: message `last` (1: the last one) of the rows packed in mi,
- * mx for process p: mi = [rows, entries, last | the rows | their lengths
- * | their columns], mx = their values. */
-static int
-send_rows (lac_petsc *s, int p, int last)
-{
-  PetscInt nr = s->mi[0], nz = s->mi[1];
-  s->mi[2] = last;
-  memmove (s->mi + 3 + nr, s->mi + 3 + s->chunk,       /* the lengths,   */
-           (size_t) nr * sizeof *s->mi);
-  memmove (s->mi + 3 + 2 * nr, s->mi + 3 + 2 * s->chunk,
-           (size_t) nz * sizeof *s->mi);               /* then columns   */
-  if (MPI_Send (s->mi, (int) (3 + 2 * nr + nz), MPI_INT, p, TAG_ROWS,
-                PETSC_COMM_WORLD)
-      || MPI_Send (s->mx, (int) nz, MPI_DOUBLE, p, TAG_VALS,
-                   PETSC_COMM_WORLD))
-    LAC_ERROR (LAC_EDEP, "MPI_Send of the rows of K_W to process %d", p);
-  s->mi[0] = s->mi[1] = 0;
-  return LAC_SUCCESS;
-}
-
-/* The root: row j (m entries) into the message for process p, the
- * message sent first if it is full.  While packing, the rows are at mi +
- * 3, the lengths at mi + 3 + chunk, the columns at mi + 3 + 2 chunk. */
-static int
-pack_row (lac_petsc *s, int p, PetscInt j, PetscInt m, const PetscInt *cols,
-          const double *x)
-{
-  int status;
-  if ((s->mi[0] == s->chunk || s->mi[1] + m > s->chunk)
-      && (status = send_rows (s, p, 0)))
-    return status;
-  PetscInt nr = s->mi[0], nz = s->mi[1];
-  s->mi[3 + nr] = j;
-  s->mi[3 + s->chunk + nr] = m;
-  memcpy (s->mi + 3 + 2 * s->chunk + nz, cols, (size_t) m * sizeof *cols);
-  memcpy (s->mx + nz, x, (size_t) m * sizeof *x);
-  s->mi[0] = nr + 1;
-  s->mi[1] = nz + m;
-  return LAC_SUCCESS;
-}
-
-/* The root: every row of K_W (new numbers) or its contact rows; its own
- * inserted, the others' sent to their processes.  After an error the
- * other processes still get their last (empty) message. */
-static int
-insert_kw (lac_petsc *s, int all)
-{
-  const lac_csc *K = s->sys->K;
-  PetscInt c = 0;
-  int status = LAC_SUCCESS;
-  for (int p = 0; p < s->size; p++)
-    {
-      PetscInt a, b;
-      u_range (s, p, &a, &b);
-      if (s->mi)
-        s->mi[0] = s->mi[1] = 0;
-      for (PetscInt j = a; !status && j < b; j++)
-        {
-          const PetscInt *cols;
-          PetscInt c0 = c, m = row_pattern (s, j, &c, &cols);
-          const double *x = c > c0 ? s->cx + s->cp[c0] : K->x + K->p[j];
-          if (c > c0)
-            contact_values (s, c0, all ? 1.0 : 1 / s->kappa);
-          else if (!all)
-            continue;
-          if (p > 0)
-            status = pack_row (s, p, j, m, cols, x);
-          else
-            {
-              PetscErrorCode e = MatSetValues (s->Kw, 1, &j, m, cols, x,
-                                               INSERT_VALUES);
-              if (e)
-                status = lac_petsc_fail ((int) e, __func__, "MatSetValues");
-            }
-        }
-      if (p > 0)
-        {
-          if (status)
-            s->mi[0] = s->mi[1] = 0;
-          int st = send_rows (s, p, 1);
-          status = status ? status : st;
-        }
-    }
-  return status;
-}
-
-/* The others: their rows of K_W from the root's messages. */
-static int
-receive_rows (lac_petsc *s)
-{
-  int last = 0, status = LAC_SUCCESS;
-  while (!last)
-    {
-      if (MPI_Recv (s->mi, 3 + 3 * s->chunk, MPI_INT, 0, TAG_ROWS,
-                    PETSC_COMM_WORLD, MPI_STATUS_IGNORE)
-          || MPI_Recv (s->mx, s->chunk, MPI_DOUBLE, 0, TAG_VALS,
-                       PETSC_COMM_WORLD, MPI_STATUS_IGNORE))
-        LAC_ERROR (LAC_EDEP, "MPI_Recv of the rows of K_W");
-      PetscInt nr = s->mi[0], off = 0;
-      const PetscInt *rows = s->mi + 3, *len = rows + nr, *cols = len + nr;
-      last = (int) s->mi[2];
-      for (PetscInt r = 0; !status && r < nr; off += len[r++])
-        {
-          PetscErrorCode e = MatSetValues (s->Kw, 1, rows + r, len[r],
-                                           cols + off, s->mx + off,
-                                           INSERT_VALUES);
-          if (e)
-            status = lac_petsc_fail ((int) e, __func__, "MatSetValues");
-        }
-    }
-  return status;
-}
-
-/* The root: B = -C_A (the inactive columns are zeros); fieldsplit: D = 1
- * and Sp = 1 on the inactive, Sp = -1/w on the active (-S_W^-1 is about
- * -W_A: the Schur complement of (*W) is -S_W). */
-static int
-insert_multipliers (lac_petsc *s)
-{
-  const lac_csc *Ct = s->Ct;
-  for (PetscInt j = 0; j < (PetscInt) s->n; j++)
-    for (int q = Ct->p[j]; q < Ct->p[j + 1]; q++)
-      TRY (MatSetValue (s->B, j, Ct->i[q], s->stat[Ct->i[q]] ? -Ct->x[q]
-                        : 0.0, INSERT_VALUES));
-  for (PetscInt i = 0; s->D && i < (PetscInt) s->k; i++)
-    {
-      int on = s->stat[i] && s->w[i] > 0;
-      TRY (MatSetValue (s->D, i, i, on ? 0.0 : 1.0, INSERT_VALUES));
-      TRY (MatSetValue (s->Sp, i, i, on ? -s->kappa / s->w[i] : 1.0,
-                        INSERT_VALUES));
-    }
-  for (size_t i = 0; i < s->k; i++)
-    s->lst[i] = s->stat[i] ? 0.0 : 1.0;
-  return LAC_SUCCESS;
-}
+/* ---- collective: the values for the statuses ---------------------------- */
 
 static int
 assemble (Mat M)
@@ -1123,8 +801,80 @@ assemble (Mat M)
   return LAC_SUCCESS;
 }
 
-/* projected: G = B^T B + D (D = 1 on the inactive multipliers, from the
- * root's lst), its solver, and the multigrid of the new K_W. */
+/* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
+ * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
+ * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
+ * against gaps: tuned as it is), so that PETSc sees the same numbers
+ * whatever the units (its GAMG with the rigid motions is not
+ * scale-invariant: with lengths and moduli scaled by powers of two, the
+ * results changed in their last bits, which the projected CG amplifies to
+ * 1e-9; chapter 11).  No contact term in it yet (wold = 0). */
+static int
+new_stiffness (lac_petsc *s, const lac_contact_system *sys)
+{
+  PetscReal sum;
+  int status;
+  if (s->k && (status = lac_dist_set_c (s->dist, sys ? sys->C : NULL, 0)))
+    return status;
+  TRY (MatZeroEntries (s->Kw));
+  if ((status = lac_dist_add_stiffness (s->dist, sys && !s->cells
+                                        ? sys->K : NULL, s->Kw, 1.0))
+      || (status = assemble (s->Kw)))
+    return status;
+  TRY (MatGetDiagonal (s->Kw, s->ru));
+  TRY (VecNorm (s->ru, NORM_1, &sum));
+  s->kappa = s->mode == FIELDSPLIT || !(sum > 0) ? 1.0
+             : sum / (double) s->n;
+  TRY (MatScale (s->Kw, 1 / s->kappa));
+  memset (s->wold, 0, (s->k ? s->k : 1) * sizeof *s->wold);
+  return LAC_SUCCESS;
+}
+
+/* K_W += C (W - W_old) C^T / kappa: the columns whose weight changed. */
+static int
+contact_terms (lac_petsc *s)
+{
+  int status;
+  for (size_t i = 0; i < s->k; i++)
+    s->dw[i] = (s->w[i] - s->wold[i]) / s->kappa;
+  status = lac_dist_add_contact (s->dist, s->Kw, s->dw);
+  memcpy (s->wold, s->w, (s->k ? s->k : 1) * sizeof *s->wold);
+  return status ? status : assemble (s->Kw);
+}
+
+/* B = -C_A (the inactive columns are zeros); fieldsplit: D = 1 and Sp =
+ * 1 on the inactive, Sp = -1/w on the active (-S_W^-1 is about -W_A: the
+ * Schur complement of (*W) is -S_W); projected: dk = 1 on the inactive
+ * (D of B^T B + D).  Each process its own columns and multipliers. */
+static int
+multipliers (lac_petsc *s)
+{
+  int status;
+  if ((status = lac_dist_set_b (s->dist, s->B, s->stat))
+      || (status = assemble (s->B)))
+    return status;
+  for (PetscInt i = s->l0; i < s->l1; i++)
+    {
+      int on = s->stat[i] && s->w[i] > 0;
+      if (s->D)
+        {
+          TRY (MatSetValue (s->D, i, i, on ? 0.0 : 1.0, INSERT_VALUES));
+          TRY (MatSetValue (s->Sp, i, i, on ? -s->kappa / s->w[i] : 1.0,
+                            INSERT_VALUES));
+        }
+      else
+        TRY (VecSetValue (s->dk, i, s->stat[i] ? 0.0 : 1.0, INSERT_VALUES));
+    }
+  if (!s->D)
+    {
+      TRY (VecAssemblyBegin (s->dk));
+      TRY (VecAssemblyEnd (s->dk));
+    }
+  return LAC_SUCCESS;
+}
+
+/* projected: G = B^T B + D, its solver, and the multigrid of the new
+ * K_W. */
 static int
 update_projected (lac_petsc *s)
 {
@@ -1135,8 +885,6 @@ update_projected (lac_petsc *s)
   else
     TRY (MatTransposeMatMult (s->B, s->B, MAT_INITIAL_MATRIX, PETSC_DEFAULT,
                               &s->G));
-  if ((status = to_dist (s, s->gl, s->lseq, s->lst, s->dk)))
-    return status;
   TRY (MatDiagonalSet (s->G, s->dk, ADD_VALUES));
   TRY (KSPSetOperators (s->kg, s->G, s->G));
   if (s->size > 1 && (status = update_local (s)))
@@ -1145,35 +893,32 @@ update_projected (lac_petsc *s)
   return LAC_SUCCESS;
 }
 
-/* The values (all processes; the root inserts, the assembly sends each
- * process its rows).  A failure of the root's insertion is reported after
- * the collective calls, so that the processes stay in step. */
+/* The values (all processes; sys: the root's): the statuses and W from
+ * the root, K_W (new numbers: from the cells), B and the solvers. */
 static int
-update_values (lac_petsc *s, const lac_petsc_command *c)
+update_values (lac_petsc *s, const lac_petsc_command *c,
+               const lac_contact_system *sys)
 {
-  int status = s->root ? insert_kw (s, c->all)
-               : s->size > 1 ? receive_rows (s) : LAC_SUCCESS, st;
-  if ((st = assemble (s->Kw)))
-    return st;
-  if (c->all)                             /* dimensionless for PETSc */
-    TRY (MatScale (s->Kw, 1 / c->scale));
-  if (s->B && !status && s->root)
-    status = insert_multipliers (s);
-  if (s->B && (st = assemble (s->B)))
-    return st;
+  int status;
+  if ((s->k && ((status = lac_petsc_bcast (s->w, s->k * sizeof *s->w))
+                || (status = lac_petsc_bcast (s->stat, s->k))))
+      || (c->all && (status = new_stiffness (s, sys)))
+      || (status = contact_terms (s))
+      || (s->B && (status = multipliers (s))))
+    return status;
   if (s->ks)
     {
-      if ((st = assemble (s->D)) || (st = assemble (s->Sp))
-          || (st = assemble (s->A)))
-        return st;
+      if ((status = assemble (s->D)) || (status = assemble (s->Sp))
+          || (status = assemble (s->A)))
+        return status;
       TRY (KSPSetOperators (s->ks, s->A, s->A));
     }
-  if (s->kp && (st = update_projected (s)))
-    return st;
+  if (s->kp && (status = update_projected (s)))
+    return status;
   if (s->ku)
     TRY (KSPSetOperators (s->ku, s->Kw, s->Kw));
   s->counts.factorizations++;
-  return status;
+  return LAC_SUCCESS;
 }
 
 /* The root: the matrices for the statuses, when they or the numbers
@@ -1182,7 +927,7 @@ static int
 update (lac_petsc *s, const char *active)
 {
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_UPDATE,
-                          .all = s->new_numbers, .scale = s->kappa };
+                          .all = s->new_numbers };
   int status;
   if (!s->new_numbers && s->have_stat
       && (s->k == 0 || memcmp (active, s->stat, s->k) == 0))
@@ -1191,8 +936,9 @@ update (lac_petsc *s, const char *active)
     s->w[i] = active[i] && s->s[i] > 0 ? s->omega / s->s[i] : 0.0;
   if (s->k)
     memcpy (s->stat, active, s->k);
+  s->have_stat = 0;
   if ((status = lac_petsc_command_send (&c))
-      || (status = update_values (s, &c)))
+      || (status = update_values (s, &c, s->sys)))
     return status;
   s->have_stat = 1;
   s->new_numbers = 0;
@@ -1454,21 +1200,29 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
 
 /* ---- the other processes ------------------------------------------------ */
 
-/* One command of the root (errors are the root's to report). */
-static void
-serve_one (lac_petsc *s, const lac_petsc_command *c)
+/* The others: the root's command, the same steps as the root's with
+ * none of its data.  A failure is agreed on within the steps (every
+ * process returns it) and reported by the root. */
+static int
+follow (lac_petsc *s, const lac_petsc_command *c)
 {
-  if (c->cmd == LAC_PETSC_CMD_BUILD)
-    build (s, c);
-  else if (c->cmd == LAC_PETSC_CMD_UPDATE)
-    update_values (s, c);
-  else if (c->cmd == LAC_PETSC_CMD_SOLVE)
-    step_solve (s, c, NULL, NULL, NULL, NULL);
-  else if (c->cmd == LAC_PETSC_CMD_FREE)
-    free_petsc (s);
-  else if (c->cmd == LAC_PETSC_CMD_MEMORY)
-    lac_petsc_memory_reply ();
-  lac_error_clear ();
+  switch (c->cmd)
+    {
+    case LAC_PETSC_CMD_BUILD:
+      return build (s, c, NULL);
+    case LAC_PETSC_CMD_UPDATE:
+      return update_values (s, c, NULL);
+    case LAC_PETSC_CMD_SOLVE:
+      return step_solve (s, c, NULL, NULL, NULL, NULL);
+    case LAC_PETSC_CMD_FREE:
+      free_petsc (s);
+      free_arrays (s);
+      return LAC_SUCCESS;
+    case LAC_PETSC_CMD_MEMORY:
+      return lac_petsc_memory_reply ();
+    default:
+      LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
+    }
 }
 
 int
@@ -1489,8 +1243,12 @@ lac_petsc_serve (void)
     }
   while (!(status = lac_petsc_command_receive (&c))
          && c.cmd != LAC_PETSC_CMD_QUIT)
-    serve_one (s, &c);
+    {
+      follow (s, &c);
+      lac_error_clear ();
+    }
   free_petsc (s);
+  free_arrays (s);
   lac_free (s);
   return status;
 }
@@ -1498,7 +1256,8 @@ lac_petsc_serve (void)
 const lac_strategy_ops lac_petsc_ops = {
   .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
   .solve = petsc_solve, .get_counts = petsc_get_counts,
-  .method = petsc_method, .set_coordinates = petsc_set_coordinates
+  .method = petsc_method, .set_coordinates = petsc_set_coordinates,
+  .set_mesh = petsc_set_mesh
 };
 
 #endif /* LAC_HAVE_PETSC */

@@ -54,17 +54,20 @@
  * with the iterations of every solve is, for the projected CG, the larger
  * of the relative residuals of the two rows of (*W), each in its unit.
  *
- * Processes.  The rows of the matrices and vectors are cut in N
- * contiguous ranges, whole nodes for U, one range per MPI process, and so
- * are the multipliers.  The assembly stays on one process: process 0 (the
- * root) runs the whole scene -- mesh, assembly, active set, output -- and
- * holds K, C and the vectors whole; it inserts every row, PETSc sends each
- * process its own, and the solution comes back to the root alone.  The
- * other processes run lac_petsc_serve: they wait for the root's commands
- * (build, new values, solve, free, memory, quit; one broadcast each) and
- * make the same collective PETSc calls with no data of their own.  One
- * petsc strategy at a time exists on the root when N > 1.  Chapter 13
- * gives the design of a distributed assembly, the next step.
+ * Processes.  The rows of the matrices and vectors are cut in N parts,
+ * whole nodes for U, one per MPI process, and the multipliers in N
+ * contiguous ranges.  Process 0 (the root) runs the scene -- mesh, active
+ * set, output -- and the others run lac_petsc_serve: they follow the
+ * root's commands (build, new values, solve, free, memory, quit; one
+ * broadcast each).  K_W is assembled where the cells are
+ * (fem/lac_assembly_dist.h): the root broadcasts the mesh once (given by
+ * set_mesh), PETSc's partitioner cuts the cells, each process adds its
+ * cells' element matrices and the contact terms of the columns it owns,
+ * PETSc adds the entries of the other processes' rows.  Without a mesh
+ * (rigid plates, large deformation) the root adds K's entries.  The
+ * solution comes back to the root alone.  An error on any process ends
+ * the command on every process with that process's message.  One petsc
+ * strategy at a time exists on the root when N > 1.
  *
  * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
  * from the string given to lac_petsc_initialize (which wins).  The
@@ -78,8 +81,9 @@
  * The operations of the type petsc of solve/lac_strategy.h: alloc starts
  * MPI and PETSc if nobody did (lac_petsc_initialize) and reads
  * -lac_contact and -lac_omega; set_coordinates (before set) gives the
- * rigid motions; set distributes K_W's pattern (kept while the patterns
- * of K and C stay; new numbers: set again); solve's rtol is the relative
+ * rigid motions; set_mesh (before set) the cells K comes from; set
+ * builds K_W's pattern (kept while the patterns of K and C stay; new
+ * numbers: set again); solve's rtol is the relative
  * unpreconditioned residual of (*W); method says what solves, e.g.
  * "projected cg + gamg on K_W, 2 processes"; the counts give the
  * processes.  A build without PETSc (no LAC_HAVE_PETSC, chapter 13)

@@ -212,6 +212,13 @@ lac_strategy_set_coordinates (lac_strategy *s, int dim, const double *x)
     s->type->ops->set_coordinates (s->w, dim, x);
 }
 
+void
+lac_strategy_set_mesh (lac_strategy *s, const struct lac_dist_source *src)
+{
+  if (s->type->ops->set_mesh)
+    s->type->ops->set_mesh (s->w, src);
+}
+
 /* The residuals and corrections for n displacements, k multipliers. */
 static int
 work_arrays (lac_strategy *s, size_t n, size_t k)

@@ -211,6 +211,11 @@ int lac_strategy_solve_rhs (lac_strategy *s, const char *active,
  * Before set. */
 void lac_strategy_set_coordinates (lac_strategy *s, int dim,
                                    const double *x);
+/* The cells, material and Dirichlet dofs K was assembled from (borrowed
+ * until free; NULL: none), for a type that assembles K itself (petsc: on
+ * the processes that own them).  Before set; the others ignore them. */
+void lac_strategy_set_mesh (lac_strategy *s,
+                            const struct lac_dist_source *src);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);

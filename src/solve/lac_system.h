@@ -39,6 +39,8 @@
 #include <stddef.h>
 #include "linalg/lac_linalg.h"
 
+struct lac_dist_source;        /* fem/lac_assembly_dist.h */
+
 typedef struct lac_contact_system
 {
   const lac_csc *K;    /* borrowed, n x n, Dirichlet applied (symmetric)  */
@@ -97,6 +99,9 @@ typedef struct lac_strategy_ops
   const char *(*method) (const void *w);
   /* Optional: nodal coordinates (dof = dim * node + comp), before set. */
   void (*set_coordinates) (void *w, int dim, const double *x);
+  /* Optional: the cells K was assembled from (fem/lac_assembly_dist.h),
+   * before set: a type that assembles K itself may use them. */
+  void (*set_mesh) (void *w, const struct lac_dist_source *src);
 } lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
