@@ -110,6 +110,14 @@ $(B)/tests/nomem_lac: tests/nomem_lac.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/nomem_lac_malloc: tests/nomem_lac.c tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -DNOMEM_MALLOC $(LDFLAGS) $< tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
+# lac with a failure on purpose on the MPI process LAC_TEST_FAIL_RANK
+# (fem/lac_assembly_dist.h; tests/cases-petsc.sh): its object of the
+# distributed assembly comes before the library's.
+$(B)/tests/lac_assembly_dist_faults.o: src/fem/lac_assembly_dist.c $(PETSC_MK) | $(B)/.deps-ok
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -DLAC_TEST_FAULTS -c $< -o $@
+$(B)/tests/lac_faults: src/cli/main.c $(B)/tests/lac_assembly_dist_faults.o $(CLILIB) $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_assembly_dist_faults.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/scene_keys: tests/scene_keys.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
@@ -139,7 +147,8 @@ REPLAY   := $(B)/tests/replay_scene $(B)/tests/replay_mesh \
             $(B)/tests/replay_numbers
 # the key tables for the book's doc tests (tests/cases-doc.sh)
 DOCTEST  := $(B)/tests/scene_keys
-test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac $(DOCTEST)
+test: all $(UNIT) $(NUMCMP) $(FIGPROG) $(REPLAY) $(B)/tests/nomem_lac $(DOCTEST) \
+      $(B)/tests/lac_faults
 	@B=$(B) sh tests/run.sh $(UNIT)
 
 # The same suite under AddressSanitizer and UBSan (library suppressions only).

@@ -10,9 +10,14 @@
 #                    lambda_max, max_u equal to 1e-8 relative, and the
 #                    Taylor lambda = 25 to 1e-8; the summary reports the
 #                    solver's iterations and true residual (<= 1e-9);
-#   mpi              mpirun -n 1 and -n 2 give the same lambda and max_u
-#                    to 1e-8 (patch test, spheres), only process 0 prints
-#                    the summary and writes the files, processes = 2;
+#   mpi              mpirun -n 1, -n 2 and -n 4 give the same U (nodes.csv)
+#                    and lambda (contact.csv) to 1e-8 of their largest
+#                    (patch tests, spheres, Hertz), only process 0 prints
+#                    the summary and writes the files, processes = N;
+#   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
+#                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
+#                    ends every process within 10 s, exit status 1, with
+#                    the line "lac: ... process 1: failure injected ...";
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
@@ -51,6 +56,28 @@ petsc_same () {
       ps_msg="$ps_msg $key: $a against $b;"
   done
   if [ -z "$ps_msg" ]; then petsc_ok "$ps_name"; else petsc_fail "$ps_name" "$ps_msg"; fi
+}
+
+# petsc_field NAME FILE1 FILE2 COLUMNS...: the columns (by their header
+# names, csv) equal to 1e-8 of their largest absolute value.
+petsc_field () {
+  pf_name=$1 pf_f1=$2 pf_f2=$3 pf_diff="$C/$(echo "$1" | tr ' ' _).diff"
+  shift 3
+  if awk -F, -v cols="$*" '
+    FNR == 1 { n = split(cols, want, " "); for (c = 1; c <= NF; c++) for (w = 1; w <= n; w++)
+                 if ($c == want[w]) use[FILENAME, c] = 1; next }
+    { for (c = 1; c <= NF; c++) if (use[FILENAME, c]) {
+        k = FILENAME == ARGV[1] ? "a" : "b"; v[k, FNR, c] = $c; rows[FNR, c] = 1
+        if ((($c < 0) ? -$c : $c) > big) big = ($c < 0) ? -$c : $c } }
+    END { if (big == 0) exit 1
+          for (rc in rows) { split(rc, q, SUBSEP); d = v["a", q[1], q[2]] - v["b", q[1], q[2]]
+            if (d < 0) d = -d; if (d > worst) worst = d }
+          printf "%.3g\n", worst / big > "/dev/stderr"; exit !(worst <= 1e-8 * big) }' \
+      "$pf_f1" "$pf_f2" 2> "$pf_diff"; then
+    petsc_ok "$pf_name"
+  else
+    petsc_fail "$pf_name" "$* differ by $(cat "$pf_diff") of the largest (want <= 1e-8): $pf_f1 $pf_f2"
+  fi
 }
 
 # petsc_run NAME ARGS...: lac run into $C/NAME.out; 0 or a FAIL line.
@@ -125,11 +152,11 @@ if [ "$have_petsc" = 1 ]; then
       MPIRUN="$MPIRUN --oversubscribe"
       [ "$(id -u)" = 0 ] && MPIRUN="$MPIRUN --allow-run-as-root"
     fi
-    # petsc_mpi NAME SCENE ARGS...: -n 1 and -n 2 agree.
+    # petsc_mpi NAME SCENE ARGS...: -n 1, -n 2 and -n 4 agree.
     petsc_mpi () {
       name=$1 scene=$2
       shift 2
-      for np in 1 2; do
+      for np in 1 2 4; do
         # shellcheck disable=SC2086
         if ! env "$PETSC_ENV" $MPIRUN -n $np "$LAC" run "$scene" "$@" --strategy petsc \
              --out "$C/$name.np$np" > "$C/$name.np$np.out" 2> "$C/$name.np$np.err"; then
@@ -138,6 +165,12 @@ if [ "$have_petsc" = 1 ]; then
         fi
       done
       petsc_same "mpi $name" "$C/$name.np2.out" "$C/$name.np1.out" lambda_min lambda_max max_u
+      u="u_x u_y"
+      head -1 "$C/$name.np1/nodes.csv" | grep -q u_z && u="$u u_z"
+      for np in 2 4; do
+        petsc_field "mpi-u $name -n $np" "$C/$name.np$np/nodes.csv" "$C/$name.np1/nodes.csv" $u
+        petsc_field "mpi-lambda $name -n $np" "$C/$name.np$np/contact.csv" "$C/$name.np1/contact.csv" lambda
+      done
       n=$(grep -c '^dofs = ' "$C/$name.np2.out")
       p=$(petsc_value "$C/$name.np2.out" processes)
       if [ "$n" = 1 ] && [ "$p" = 2 ] && [ -f "$C/$name.np2/summary.txt" ] \
@@ -150,6 +183,33 @@ if [ "$have_petsc" = 1 ]; then
     petsc_mpi taylor3d-hex8 "$D8/taylor3d.scene" --set element=hex8 --set level=1
     petsc_mpi taylor2d-quad4 "$D8/taylor2d.scene" --set element=quad4 --set level=1
     petsc_mpi spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene --set element=quad8 --set level=1
+    petsc_mpi spheres3d-hex20 chapters/09-spheres-rates/spheres3d.scene --set element=hex20
+    petsc_mpi hertz-cylinder chapters/10-large-deformation/hertz-cylinder.scene
+
+    # ---- mpi-fail: a failure on one process ends them all -------------
+    # petsc_fault NP RANK: the failure injected on process RANK of NP.
+    petsc_fault () {
+      fname="mpi-fail -n $1 on $2"
+      if [ ! -x "$B/tests/lac_faults" ]; then
+        petsc_fail "$fname" "$B/tests/lac_faults not built (make $B/tests/lac_faults)"
+        return
+      fi
+      t0=$(date +%s)
+      # shellcheck disable=SC2086
+      env "$PETSC_ENV" LAC_TEST_FAIL_RANK="$2" timeout 60 $MPIRUN -n "$1" "$B/tests/lac_faults" run \
+        "$D8/taylor3d.scene" --set element=hex8 --set level=1 --strategy petsc --quiet --no-output \
+        > "$C/fault$1.out" 2> "$C/fault$1.err"
+      rc=$? t=$(( $(date +%s) - t0 ))
+      want="^lac: .*process $2: failure injected by LAC_TEST_FAIL_RANK in the assembly"
+      if [ "$rc" != 0 ] && [ "$rc" != 124 ] && [ "$t" -le 10 ] \
+         && [ "$(grep -c '^lac: ' "$C/fault$1.err")" = 1 ] && grep -q "$want" "$C/fault$1.err"; then
+        petsc_ok "$fname"
+      else
+        petsc_fail "$fname" "want one line '$want' within 10 s, got status $rc after $t s: $(grep -m 2 . "$C/fault$1.err")"
+      fi
+    }
+    petsc_fault 2 1
+    petsc_fault 4 3
   else
     petsc_fail "mpi" "mpirun not found (Debian: openmpi-bin)"
   fi
