@@ -5,6 +5,7 @@
 
 #ifdef LAC_HAVE_PETSC
 
+#include <petscmat.h>
 #include <stdlib.h>
 #include <string.h>
 #include "base/lac_mem.h"
@@ -328,14 +329,16 @@ lac_dist_free (lac_dist *d)
   lac_free (d);
 }
 
+_Static_assert (sizeof (PetscInt) == sizeof (int), "rows are int");
+
 void
-lac_dist_rows (const lac_dist *d, PetscInt *r0, PetscInt *r1)
+lac_dist_rows (const lac_dist *d, int *r0, int *r1)
 {
   *r0 = d->rstart[d->rank];
   *r1 = d->rstart[d->rank + 1];
 }
 
-const PetscInt *
+const int *
 lac_dist_row (const lac_dist *d)
 {
   return d->row;

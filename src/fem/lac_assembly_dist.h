@@ -55,7 +55,9 @@ typedef struct lac_dist_source
 typedef struct lac_dist lac_dist;
 
 #ifdef LAC_HAVE_PETSC
-#include <petscmat.h>
+/* PETSc's matrices, without its headers (which bring <complex.h> and its
+ * macro I to every includer); rows are int (PetscInt: lac_petsc.c). */
+typedef struct _p_Mat *lac_dist_mat;
 
 /* The rows of n dofs in blocks of bs for the root's source src (the
  * other processes: NULL); *d: new, every process's. */
@@ -63,24 +65,25 @@ int lac_dist_alloc (const lac_dist_source *src, size_t n, int bs,
                     lac_dist **d);
 void lac_dist_free (lac_dist *d);
 /* The own rows [*r0, *r1) of this process. */
-void lac_dist_rows (const lac_dist *d, PetscInt *r0, PetscInt *r1);
+void lac_dist_rows (const lac_dist *d, int *r0, int *r1);
 /* row[j], the PETSc row of dof j (NULL: j itself). */
-const PetscInt *lac_dist_row (const lac_dist *d);
+const int *lac_dist_row (const lac_dist *d);
 /* The root's C (n x k; others NULL) to every process: its pattern and
  * values (pattern = 1) or its values (0: the pattern is the last one). */
 int lac_dist_set_c (lac_dist *d, const lac_csc *C, int pattern);
 /* The patterns of K_W (n x n) and B (n x k) into the preallocators Pk,
  * Pb (MATPREALLOCATOR; Pb may be NULL), assembled.  K: the root's when
  * the source had no mesh (else and elsewhere NULL). */
-int lac_dist_pattern (lac_dist *d, const lac_csc *K, Mat Pk, Mat Pb);
+int lac_dist_pattern (lac_dist *d, const lac_csc *K, lac_dist_mat Pk,
+                      lac_dist_mat Pb);
 /* K_W += K / kappa, from the own cells (or the root's K); not assembled. */
-int lac_dist_add_stiffness (lac_dist *d, const lac_csc *K, Mat Kw,
+int lac_dist_add_stiffness (lac_dist *d, const lac_csc *K, lac_dist_mat Kw,
                             double kappa);
 /* K_W += sum_i dw_i c_i c_i^T over the own columns (dw: k, the same on
  * every process); not assembled. */
-int lac_dist_add_contact (lac_dist *d, Mat Kw, const double *dw);
+int lac_dist_add_contact (lac_dist *d, lac_dist_mat Kw, const double *dw);
 /* B's own columns: -c_i if on[i], zeros otherwise; not assembled. */
-int lac_dist_set_b (lac_dist *d, Mat B, const char *on);
+int lac_dist_set_b (lac_dist *d, lac_dist_mat B, const char *on);
 #endif
 
 #endif /* LAC_ASSEMBLY_DIST_H */

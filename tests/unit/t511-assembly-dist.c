@@ -24,6 +24,8 @@
 
 #ifdef LAC_HAVE_PETSC
 
+#include <petscmat.h>
+
 /* A PETSc matrix of the root's CSC A (n x m), all on this process. */
 static Mat
 from_csc (const lac_csc *A)
@@ -61,7 +63,7 @@ matrices (lac_dist *d, const lac_csc *K, size_t n, size_t k, int bs,
           Mat *Kw, Mat *B)
 {
   Mat P[2];
-  PetscInt r0, r1;
+  int r0, r1;
   lac_dist_rows (d, &r0, &r1);
   for (int l = 0; l < 2; l++)
     {
@@ -222,7 +224,7 @@ compare (lac_elem_type type, lac_model model, const size_t *nc,
   check_status (lac_dist_alloc (&src, n, m->dim, &d), LAC_SUCCESS,
                 "%s: the rows", name);
   check_true (d && lac_dist_row (d) && lac_dist_row (d)[n - 1]
-              == (PetscInt) n - 1, "%s: one process, rows in order", name);
+              == (int) n - 1, "%s: one process, rows in order", name);
   C = some_c (n, fixed);
   check_status (lac_dist_set_c (d, C, 1), LAC_SUCCESS, "%s: C", name);
   matrices (d, NULL, n, 3, m->dim, &Kw, &B);
