@@ -801,6 +801,24 @@ assemble (Mat M)
   return LAC_SUCCESS;
 }
 
+/* sum |v_j| in the order of the rows (the same sum on every run: not
+ * the BLAS's, whose threads may cut it differently). */
+static int
+sum_abs (Vec v, double *sum)
+{
+  const PetscScalar *a;
+  PetscInt m;
+  double mine = 0;
+  TRY (VecGetLocalSize (v, &m));
+  TRY (VecGetArrayRead (v, &a));
+  for (PetscInt j = 0; j < m; j++)
+    mine += fabs (a[j]);
+  TRY (VecRestoreArrayRead (v, &a));
+  if (MPI_Allreduce (&mine, sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the diagonal's sum failed");
+  return LAC_SUCCESS;
+}
+
 /* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
  * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
  * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
@@ -812,7 +830,7 @@ assemble (Mat M)
 static int
 new_stiffness (lac_petsc *s, const lac_contact_system *sys)
 {
-  PetscReal sum;
+  double sum;
   int status;
   if (s->k && (status = lac_dist_set_c (s->dist, sys ? sys->C : NULL, 0)))
     return status;
@@ -822,7 +840,8 @@ new_stiffness (lac_petsc *s, const lac_contact_system *sys)
       || (status = assemble (s->Kw)))
     return status;
   TRY (MatGetDiagonal (s->Kw, s->ru));
-  TRY (VecNorm (s->ru, NORM_1, &sum));
+  if ((status = sum_abs (s->ru, &sum)))
+    return status;
   s->kappa = s->mode == FIELDSPLIT || !(sum > 0) ? 1.0
              : sum / (double) s->n;
   TRY (MatScale (s->Kw, 1 / s->kappa));
