@@ -48,6 +48,7 @@ typedef struct block
   int *node;
   double *H, *b;              /* (nn dim)^2 row-major, nn dim                */
   size_t hcap;
+  double off;                 /* the interference of the gaps (c->offset)    */
 } block;
 
 void
@@ -322,6 +323,7 @@ point_add (const point *pt, const derivs *d, const size_t *loc, double lam,
 {
   int dim = pt->dim, nq = (pt->ns + pt->nm) * dim;
   double e[3][NQ], f[LAC_MAX_FACE_NODES][NQ];
+  double gm = pt->g - bk->off;        /* the gap of the mean gaps: g0 - delta */
   for (int q = 0; q < nq; q++)
     {
       double dJ = 0;
@@ -330,8 +332,8 @@ point_add (const point *pt, const derivs *d, const size_t *loc, double lam,
           dJ += pt->n[r] * d->nu[r][q];
           e[r][q] = d->rho[q] * pt->cv[r] + pt->rho * d->cv[r][q];
         }
-      bk->b[loc[q]] -= pt->w * (d->rho[q] * pt->g * pt->J       /* B */
-                                + pt->rho * (d->g[q] * pt->J + pt->g * dJ));
+      bk->b[loc[q]] -= pt->w * (d->rho[q] * gm * pt->J          /* B */
+                                + pt->rho * (d->g[q] * pt->J + gm * dJ));
       for (int b = 0; b < pt->nm; b++)
         {
           f[b][q] = 0;
@@ -487,7 +489,7 @@ lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                "multipliers");
   lac_contact_tangent *t = lac_calloc (1, sizeof *t);
   lac_triplet *TB = lac_triplet_alloc (ndof, c->k ? c->k : 1, 0);
-  block bk = { 0, 0, NULL, NULL, NULL, 0 };
+  block bk = { 0, 0, NULL, NULL, NULL, 0, c->offset };
   growth gr = { 0, 0, 0, 0, 0 };
   if (!t || !TB)
     status = LAC_ERRMSG (LAC_ENOMEM, "contact tangent");

@@ -35,7 +35,9 @@
  * with the obstacle's slave_normal flag (the paper's manufactured scenes)
  * g is measured along n, x_m = x_s + g n on the graph F(x) = 0:
  *   d.g = -grad F . (d.x_s + g d.n) / (grad F . n).  Then
- *   B(:,i) = -d(d_i)/dU = -sum_p w^ (d.rho g J + rho (d.g J + g d.J)),
+ *   B(:,i) = -d(d_i)/dU = -sum_p w^ (d.rho g' J + rho (d.g J + g' d.J)),
+ *   g' = g - delta with the interference delta of the pair (c->offset,
+ *   contact/lac_contact.h: the mean gaps are int (g - delta)),
  *   H = d(C lambda)/dU:  rows of slave node a   lambda w^ phi_a d.(rho nu),
  *                        rows of master node b  -lambda w^ (psi_b d.(rho nu)
  *                                + rho nu sum_k dpsi_b/deta_k d.eta_k).

@@ -164,6 +164,7 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
       const lac_scene_contact *c = &sc->contact[0];
       p->M = setup->macro;
       p->epsilon = c->epsilon;
+      p->interference = c->interference;
       if (setup->master.n)
         p->master = &setup->master;
       else

@@ -91,7 +91,8 @@ set_pair (lac_nl *s, const lac_nl_opts *o)
   const lac_nl_problem *p = &s->prob;
   s->pair = (lac_contact_pair) { p->mesh, p->mat->model, p->M, p->master,
                                  p->obstacle, p->epsilon > 0 ? p->epsilon
-                                 : LAC_EPSILON_DEFAULT, 0, o->popts };
+                                 : LAC_EPSILON_DEFAULT, 0, o->popts,
+                                 p->interference };
   s->pair.popts.allow_empty = 1;
 }
 
@@ -144,6 +145,7 @@ lac_nl_set_load (lac_nl *s, double t)
 {
   s->t = t;
   s->fref = 0;
+  s->pair.offset = t * s->prob.interference;   /* ramped, as the loads */
 }
 
 double

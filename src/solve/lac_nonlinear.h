@@ -12,7 +12,8 @@
  * once, on the reference mesh [LAC Remark 3]; only the pairing moves.
  *
  * At load factor t the Dirichlet values are t * g (entries flagged
- * "ramp") or g (the others) and the external load is t * F.  At U
+ * "ramp") or g (the others), the external load is t * F and the
+ * interference of a shrink fit t * delta.  At U
  * (x = X + U):
  *
  *   evaluate   the internal force F_int(U) and, unless left out, the
@@ -83,6 +84,9 @@ typedef struct lac_nl_problem
   size_t nfree;
   const double *N;               /* ndof x nfree: their rigid motions      */
   const char *const *N_what;     /* nfree descriptions, or NULL            */
+  double interference;           /* delta taken from every gap (a shrink
+                                    fit, contact/lac_contact_pair.h) at
+                                    t = 1: t delta at load factor t; 0    */
 } lac_nl_problem;
 
 /* The options of a large-deformation solve: of the loop, of the load
