@@ -145,9 +145,8 @@ typedef struct lac_nl
   lac_pattern *pat;      /* owned: the kept pattern of K_T (fem/lac_pattern.h) */
   int have_K;            /* pat->K holds the tangent at the last U          */
   double *r, *Fint;      /* owned, ndof                                     */
-  lac_dirichlet inc;     /* owned arrays: the Dirichlet increments          */
-  double *kgap;          /* owned, kcap: d(U) before the increments         */
-  size_t kcap;
+  lac_dirichlet inc;     /* owned arrays (ndof): the Dirichlet increments   */
+  double *kgap;          /* owned, nmacro: d(U) before the increments       */
   lac_csc *C0;           /* owned: n x 0, the C of no contact               */
   double fref;           /* r_0 (0: not yet made for this load factor)      */
   double moved;          /* max |x - x_before| of the last pairing: how far
