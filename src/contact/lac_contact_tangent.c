@@ -544,3 +544,73 @@ lac_contact_tangent_apply (const lac_contact_tangent *t, const double *x,
         }
     }
 }
+
+/* The positions pos[0 .. dim-1] in dof[0 .. nl-1] of the components of
+ * node a; 0 if one is missing. */
+static int
+node_positions (const size_t *dof, size_t nl, int dim, size_t a, size_t *pos)
+{
+  int found = 0;
+  for (size_t q = 0; q < nl; q++)
+    if (dof[q] / (size_t) dim == a)
+      pos[dof[q] % (size_t) dim] = q, found++;
+  return found == dim;
+}
+
+/* H <- R~^T H R~ on the rows and columns pos of a block of nl dofs (R the
+ * node's frame, row-major 3 x 3). */
+static void
+rotate_block (double *H, size_t nl, int dim, const size_t *pos,
+              const double *R)
+{
+  double h[3];
+  for (size_t j = 0; j < nl; j++)                         /* rows: R^T H */
+    {
+      for (int i = 0; i < dim; i++)
+        {
+          h[i] = 0;
+          for (int k = 0; k < dim; k++)
+            h[i] += R[3 * k + i] * H[pos[k] * nl + j];
+        }
+      for (int i = 0; i < dim; i++)
+        H[pos[i] * nl + j] = h[i];
+    }
+  for (size_t r = 0; r < nl; r++)                       /* columns: H R */
+    {
+      for (int i = 0; i < dim; i++)
+        {
+          h[i] = 0;
+          for (int k = 0; k < dim; k++)
+            h[i] += H[r * nl + pos[k]] * R[3 * k + i];
+        }
+      for (int i = 0; i < dim; i++)
+        H[r * nl + pos[i]] = h[i];
+    }
+}
+
+int
+lac_contact_tangent_rotate (lac_contact_tangent *t, const lac_frames *f)
+{
+  if (!f)
+    return LAC_SUCCESS;
+  int status = lac_frames_rotate_rows (f, &t->B), dim = f->dim;
+  for (size_t b = 0; !status && b < t->nblock; b++)
+    {
+      const size_t *dof = t->dof + t->bptr[b];
+      size_t nl = t->bptr[b + 1] - t->bptr[b], pos[3];
+      for (size_t q = 0; q < nl && !status; q++)
+        {
+          size_t a = dof[q] / (size_t) dim;
+          const double *R = lac_frames_of (f, a);
+          if (!R || dof[q] % (size_t) dim != 0)     /* once per node */
+            continue;
+          if (!node_positions (dof, nl, dim, a, pos))
+            status = LAC_ERRMSG (LAC_ESANITY, "contact tangent: node %zu "
+                                 "has a frame but not all its components "
+                                 "in block %zu", a + 1, b);
+          else
+            rotate_block (t->val + t->vptr[b], nl, dim, pos, R);
+        }
+    }
+  return status;
+}

@@ -60,6 +60,7 @@
 #include "contact/lac_macromesh.h"
 #include "contact/lac_obstacle.h"
 #include "contact/lac_pairing.h"
+#include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "linalg/lac_linalg.h"
 
@@ -94,5 +95,10 @@ void lac_contact_tangent_free (lac_contact_tangent *t);    /* NULL allowed */
 /* y += H x (ndof vectors). */
 void lac_contact_tangent_apply (const lac_contact_tangent *t, const double *x,
                                 double *y);
+
+/* To the nodal frames f of rollers (fem/lac_frames.h; NULL: nothing to
+ * do): B <- T^T B, H <- T^T H T, block by block (every block holds all
+ * the components of its nodes).  LAC_ENOMEM, LAC_ESANITY. */
+int lac_contact_tangent_rotate (lac_contact_tangent *t, const lac_frames *f);
 
 #endif /* LAC_CONTACT_TANGENT_H */

@@ -66,8 +66,8 @@
  *     exact                yes: every component from the [exact] solution
  *     normal               g: u.n = g along the outward unit normal n of
  *                          a facet group at each node (a roller for g =
- *                          0, on any face, plane or curved; linear scenes
- *                          only: run/lac_run_roller.h)
+ *                          0, on any face, plane or curved:
+ *                          run/lac_run_roller.h)
  *     ramp                 yes | no: with [steps], the values grow with
  *                          the load factor t (yes) or are imposed whole
  *                          from the first step (no)   yes

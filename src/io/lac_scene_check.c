@@ -262,9 +262,7 @@ dirichlet_components (lac_scene *sc, lac_scene_dirichlet *d, int *ncomp)
 }
 
 /* normal = g: u.n = g along the outward normal of a facet group (a
- * roller for g = 0), in a linear scene: the large-deformation loop keeps
- * its dofs along the axes (the normal of a support would have to follow
- * the deformed face; run/lac_run_roller.h). */
+ * roller for g = 0; run/lac_run_roller.h). */
 static int
 dirichlet_normal (lac_scene *sc, lac_scene_dirichlet *d)
 {
@@ -273,12 +271,6 @@ dirichlet_normal (lac_scene *sc, lac_scene_dirichlet *d)
   if (d->kind != LAC_BC_COMPONENTS)
     return lac_scene_error (sc, &d->sec, "normal", LAC_EINVAL, "give only "
                             "one of clamp, symmetry, exact, normal");
-  if (sc->scene.large_deformation)
-    return lac_scene_error (sc, &d->sec, "normal", LAC_EINVAL, "a condition "
-                            "along the normal of a face needs a linear scene "
-                            "(large_deformation = no): the large-deformation "
-                            "loop fixes components along x, y, z only; on a "
-                            "face normal to an axis use symmetry = AXIS");
   d->kind = LAC_BC_NORMAL;
   return LAC_SUCCESS;
 }

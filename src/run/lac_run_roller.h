@@ -20,8 +20,9 @@
  * there: the fixed dofs of such a node are the first axes of its frame,
  * with the values that satisfy every condition; dir->frames holds the
  * frames.  A node of a rigid plate ([load] plate = yes) may not have a
- * frame (an error naming both sections).  The large-deformation run
- * refuses `normal` (io/lac_scene_check.c), so this is the linear run's.
+ * frame (an error naming both sections).  The linear run (stage 4) and
+ * the large-deformation run (run/lac_run_nonlinear.c, which keeps a
+ * ramp flag per entry) call it alike.
  *
  * Ownership: lac_run_conditions owns its arrays (lac_run_conditions_clear).
  */

@@ -43,6 +43,12 @@
  *              method of [LAC §4.5];
  *   uncovered, widen  the pair at U (contact/lac_contact_pair.h).
  *
+ * Rollers.  With nodal frames in the Dirichlet data (dir->frames,
+ * fem/lac_frames.h) U is the loop's U~ in the frames: each evaluation
+ * works in the axes at T U~ and turns what it made, T^T F_int, T^T K_T T,
+ * T^T C, T^T B, T^T H T (and the load T^T F once); the fixed dofs and
+ * their values are the frames' axes.
+ *
  * Convergence.  Quadratic once the statuses have settled, whatever the
  * pressure (t435 checks the derivatives against finite differences).  The
  * frozen geometry leaves out H and B - C (the stretch and rotation of
@@ -153,6 +159,9 @@ typedef struct lac_nl
                             a node went since the pairing before it       */
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
+  const double *F;       /* the load in the nodal frames: prob.F or Floc    */
+  double *ug, *Floc;     /* owned, ndof, with frames only (else NULL): U in
+                            the axes, T^T F                               */
 } lac_nl;
 
 lac_nl *lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts);

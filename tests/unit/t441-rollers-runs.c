@@ -25,6 +25,9 @@
  *      symmetry plane and a roller): every lambda tends to -p of Lame's
  *      formula, the largest error shrinking by more than 6 per level
  *      (levels 0, 1, 2) and below 4e-4 p at level 2.
+ *   5. Large deformation: the turned patch test gives the upright one's
+ *      lambda_min, max_u (to 1e-10) and Newton iterations (quad4, quad8;
+ *      dense, split), and its bottom reaction is the load to 1e-10.
  */
 #include <math.h>
 #include <stdio.h>
@@ -234,6 +237,63 @@ sphere_error (int level)
   return e;
 }
 
+/* ---- 5. large deformation, turned and upright ------------------------ */
+
+static const char *upright =
+  "[scene]\nmodel = plane_strain\nlarge_deformation = yes\n"
+  "[mesh]\nfile = taylor2d.geo\n"
+  "[material all]\nE = 2000\nnu = 0.3\n"
+  "[dirichlet lower_left]\ngroup = lower_left\nsymmetry = x\n"
+  "[dirichlet upper_left]\ngroup = upper_left\nsymmetry = x\n"
+  "[dirichlet bottom]\ngroup = lower_bottom\nsymmetry = y\n"
+  "[load top]\ngroup = upper_top\npressure = 25\n"
+  "[contact interface]\nslave = upper_bottom\nmaster = lower_top\n";
+
+static void
+large_turned (const char *element, const char *strategy)
+{
+  char s1[64], s2[80];
+  const char *set[4] = { s1, s2, "scene.large_deformation=yes",
+                         "output.reactions=yes" };
+  const char *key[2] = { "lambda_min", "max_u" };
+  lac_scene *sc[2] = { NULL, NULL };
+  lac_run *r[2];
+  int st[2];
+  snprintf (s1, sizeof s1, "element=%s", element);
+  snprintf (s2, sizeof s2, "contact.interface.strategy=%s", strategy);
+  r[0] = run (NULL, upright, "chapters/08-experiments/t441.scene", 2, set,
+              &st[0], &sc[0]);
+  r[1] = run ("chapters/08-experiments/taylor2d-rotated.scene", NULL, NULL,
+              4, set, &st[1], &sc[1]);
+  check_status (st[0], LAC_SUCCESS, "large upright %s %s", element, strategy);
+  check_status (st[1], LAC_SUCCESS, "large turned %s %s", element, strategy);
+  if (!st[0] && !st[1])
+    {
+      double v[2], R[2] = { 0, 0 }, W = 25.0 * 50, c = cos (PI / 6);
+      for (int k = 0; k < 2; k++)
+        {
+          for (int i = 0; i < 2; i++)
+            v[i] = atof (lac_run_summary_get (r[i], key[k]));
+          check_rel (v[1], v[0], 1e-10, "large %s %s: %s as upright",
+                     element, strategy, key[k]);
+        }
+      check_int (atol (lac_run_summary_get (r[1], "newton_iterations")),
+                 atol (lac_run_summary_get (r[0], "newton_iterations")),
+                 "large %s %s: the Newton iterations as upright", element,
+                 strategy);
+      check_true (summary_vec (r[1], "reaction.bottom", 2, R), "reaction");
+      check_abs (R[0], -W / 2, 1e-10 * W, "large %s: bottom reaction x",
+                 element);
+      check_abs (R[1], W * c, 1e-10 * W, "large %s: bottom reaction y",
+                 element);
+    }
+  for (int i = 0; i < 2; i++)
+    {
+      lac_run_free (r[i]);
+      lac_scene_free (sc[i]);
+    }
+}
+
 /* ---- 4. the shrink fit ------------------------------------------------ */
 
 static double
@@ -269,6 +329,9 @@ main (void)
       turned_patch (el[e], st[s], &w);
   printf ("turned patch: max |lambda + p| / p = %.1e, max reaction error / "
           "load = %.1e\n", w.lambda, w.reaction);
+  for (int e = 2; e < 4; e++)
+    for (int s = 0; s < 3; s += 2)
+      large_turned (el[e], st[s]);
   patch3d ("hex8");
   patch3d ("tet10");
   double e1 = sphere_error (1), e2 = sphere_error (2);
