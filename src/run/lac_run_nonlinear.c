@@ -230,7 +230,6 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
       const lac_scene_contact *c = &sc->contact[0];
       p->M = setup->macro;
       p->epsilon = c->epsilon;
-      p->interference = c->interference;
       if (setup->master.n)
         p->master = &setup->master;
       else
@@ -250,6 +249,8 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
   if (!(nl->model = lac_nl_alloc (p, &o))
       || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
     return LAC_ENOMEM;
+  if (sc->ncontact)                            /* a shrink fit: t delta */
+    lac_nl_set_interference (nl->model, sc->contact[0].interference);
   return LAC_SUCCESS;
 }
 

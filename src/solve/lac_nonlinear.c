@@ -124,8 +124,7 @@ set_pair (lac_nl *s, const lac_nl_opts *o)
   const lac_nl_problem *p = &s->prob;
   s->pair = (lac_contact_pair) { p->mesh, p->mat->model, p->M, p->master,
                                  p->obstacle, p->epsilon > 0 ? p->epsilon
-                                 : LAC_EPSILON_DEFAULT, 0, o->popts,
-                                 p->interference };
+                                 : LAC_EPSILON_DEFAULT, 0, o->popts, 0 };
   s->pair.popts.allow_empty = 1;
 }
 
@@ -180,7 +179,14 @@ lac_nl_set_load (lac_nl *s, double t)
 {
   s->t = t;
   s->fref = 0;
-  s->pair.offset = t * s->prob.interference;   /* ramped, as the loads */
+  s->pair.offset = t * s->interference;        /* ramped, as the loads */
+}
+
+void
+lac_nl_set_interference (lac_nl *s, double delta)
+{
+  s->interference = delta;
+  s->pair.offset = s->t * delta;
 }
 
 double

@@ -90,9 +90,6 @@ typedef struct lac_nl_problem
   size_t nfree;
   const double *N;               /* ndof x nfree: their rigid motions      */
   const char *const *N_what;     /* nfree descriptions, or NULL            */
-  double interference;           /* delta taken from every gap (a shrink
-                                    fit, contact/lac_contact_pair.h) at
-                                    t = 1: t delta at load factor t; 0    */
 } lac_nl_problem;
 
 /* The options of a large-deformation solve: of the loop, of the load
@@ -159,6 +156,7 @@ typedef struct lac_nl
                             a node went since the pairing before it       */
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
+  double interference;   /* delta at t = 1 (lac_nl_set_interference), 0    */
   const double *F;       /* the load in the nodal frames: prob.F or Floc    */
   double *ug, *Floc;     /* owned, ndof, with frames only (else NULL): U in
                             the axes, T^T F                               */
@@ -171,6 +169,9 @@ void lac_nl_free (lac_nl *s);                  /* NULL allowed */
 void lac_nl_model (lac_nl *s, lac_contact_model *m);
 /* The load factor of the next evaluations. */
 void lac_nl_set_load (lac_nl *s, double t);
+/* A shrink fit: delta taken from every gap at t = 1, t delta at load
+ * factor t (contact/lac_contact_pair.h); 0 by default. */
+void lac_nl_set_interference (lac_nl *s, double delta);
 
 /* Contact force on the slave side per macro-element is lambda[m] times
  * |T^m cap Gamma_C|; this is the sum over the columns of the last
