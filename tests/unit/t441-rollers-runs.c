@@ -28,6 +28,8 @@
  *   5. Large deformation: the turned patch test gives the upright one's
  *      lambda_min, max_u (to 1e-10) and Newton iterations (quad4, quad8;
  *      dense, split), and its bottom reaction is the load to 1e-10.
+ *   6. Two values along one direction of a roller's node: an error naming
+ *      both sections, the node and the direction.
  */
 #include <math.h>
 #include <stdio.h>
@@ -294,6 +296,29 @@ large_turned (const char *element, const char *strategy)
     }
 }
 
+/* ---- 6. contradictory conditions ------------------------------------- */
+
+static void
+contradiction (void)
+{
+  static const char *text =
+    "[scene]\nmodel = plane_strain\n"
+    "[mesh]\nfile = taylor2d.geo\n"
+    "[material all]\nE = 2000\nnu = 0.3\n"
+    "[dirichlet bottom]\ngroup = lower_bottom\nnormal = 0\n"
+    "[dirichlet lift]\ngroup = lower_bottom\nuy = 0.5\n";
+  lac_scene *sc = NULL;
+  int st;
+  lac_run *r = run (NULL, text, "chapters/08-experiments/t441.scene", 0,
+                    NULL, &st, &sc);
+  check_status (st, LAC_EINVAL, "a roller and uy = 0.5 on one face");
+  check_message ("[dirichlet lift]", "... names the later section");
+  check_message ("[dirichlet bottom], line", "... and the earlier one");
+  check_message ("u.(0, 1) = 0.5", "... and the direction");
+  lac_run_free (r);
+  lac_scene_free (sc);
+}
+
 /* ---- 4. the shrink fit ------------------------------------------------ */
 
 static double
@@ -332,6 +357,7 @@ main (void)
   for (int e = 2; e < 4; e++)
     for (int s = 0; s < 3; s += 2)
       large_turned (el[e], st[s]);
+  contradiction ();
   patch3d ("hex8");
   patch3d ("tet10");
   double e1 = sphere_error (1), e2 = sphere_error (2);
