@@ -37,9 +37,11 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
   if (k > 0)
     lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
   const lac_contact *c = lm->contact ? *lm->contact : NULL;
-  *p = (lac_model_point) { k, sys->C, lm->d, lm->area, lm->size, lm->slot,
-                           c ? c->lost : NULL, lm->r, NULL,
-                           fmax (sqrt (nf), sqrt (nku)) };
+  *p = (lac_model_point) { .k = k, .C = sys->C, .d = lm->d,
+                           .area = lm->area, .size = lm->size,
+                           .slot = lm->slot, .lost = c ? c->lost : NULL,
+                           .rho = sys->rho, .r = lm->r,
+                           .fscale = fmax (sqrt (nf), sqrt (nku)) };
   return LAC_SUCCESS;
 }
 

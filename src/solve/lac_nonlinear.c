@@ -19,7 +19,7 @@ void
 lac_nl_opts_init (lac_nl_opts *o)
 {
   memset (o, 0, sizeof *o);
-  o->kind = LAC_STRATEGY_SADDLE;
+  o->kind = lac_strategy_choose_factor (LAC_FACTOR_LU, 0);    /* saddle */
   o->maxit = 25;
   o->tol = 1e-8;
   o->rho = 0;
@@ -278,10 +278,12 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
   if (status)
     return status;
   const lac_contact *c = s->contact;
-  *p = (lac_model_point) { c ? c->k : 0, c ? c->C : s->C0, c ? c->G : NULL,
-                           c ? c->area : NULL, c ? c->size : NULL,
-                           c ? c->macro : NULL, c ? c->lost : NULL, s->r,
-                           s->fixed, out_of_balance (s) };
+  *p = (lac_model_point) { .k = c ? c->k : 0, .C = c ? c->C : s->C0,
+                           .d = c ? c->G : NULL, .area = c ? c->area : NULL,
+                           .size = c ? c->size : NULL,
+                           .slot = c ? c->macro : NULL,
+                           .lost = c ? c->lost : NULL, .r = s->r,
+                           .fixed = s->fixed, .fscale = out_of_balance (s) };
   return LAC_SUCCESS;
 }
 

@@ -97,7 +97,8 @@ typedef struct lac_nl_problem
 typedef struct lac_nl_opts
 {
   lac_strategy_kind kind; /* how the saddle system is solved
-                            (solve/lac_strategy.h; saddle by default): a
+                            (solve/lac_strategy.h; by default the LU of the
+                            whole system, which takes any tangent): a
                             Cholesky strategy falls back to saddle for the
                             rest of a step where K_T is not positive
                             definite                                       */
