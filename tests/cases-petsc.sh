@@ -3,7 +3,8 @@
 # [LAC (17), Alg. 1; chapter 13]  lac run with --strategy petsc (Krylov
 # methods and algebraic multigrid, solve/lac_petsc.h) against the direct
 # path on the same scenes, small sizes:
-#   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4),
+#   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4;
+#                    the 2D one turned by 30 degrees on rollers, quad8),
 #                    the spheres (axisymmetric quad8, 3D hex20) and the
 #                    plain elasticity of a cube and of a sphere (no
 #                    contact, --solver petsc against cholmod): lambda_min,
@@ -104,11 +105,12 @@ if [ "$have_petsc" = 1 ]; then
   petsc_vs taylor2d-quad4 "$D8/taylor2d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad4 --set level=1
   petsc_vs taylor3d-hex8 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex8 --set level=1
   petsc_vs taylor3d-tet4 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=tet4
+  petsc_vs taylor2d-rotated-quad8 "$D8/taylor2d-rotated.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8
   petsc_vs spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8 --set level=1
   petsc_vs spheres3d-hex20 chapters/09-spheres-rates/spheres3d.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex20
   petsc_vs cube-hex8 bench/cube.scene "--solver cholmod" "max_u load_work" -- --set mesh.numbers=n=6
   petsc_vs sphere-axi chapters/01-problem/sphere-axi.scene "--solver cholmod" "max_u load_work" -- --set level=1
-  for e in taylor2d-quad4 taylor3d-hex8 taylor3d-tet4; do
+  for e in taylor2d-quad4 taylor3d-hex8 taylor3d-tet4 taylor2d-rotated-quad8; do
     f="$C/$e.petsc.out"
     [ -f "$f" ] || continue
     lmin=$(petsc_value "$f" lambda_min) lmax=$(petsc_value "$f" lambda_max)
