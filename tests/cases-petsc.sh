@@ -3,7 +3,8 @@
 # [LAC (17), Alg. 1; chapter 13]  lac run with --strategy petsc (Krylov
 # methods and algebraic multigrid, solve/lac_petsc.h) against the direct
 # path on the same scenes, small sizes:
-#   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4),
+#   petsc-vs-direct  the Taylor patch tests (2D quad4, 3D hex8 and tet4;
+#                    the 2D one turned by 30 degrees on rollers, quad8),
 #                    the spheres (axisymmetric quad8, 3D hex20) and the
 #                    plain elasticity of a cube and of a sphere (no
 #                    contact, --solver petsc against cholmod): lambda_min,
@@ -18,7 +19,8 @@
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
 #                    the line "lac: ... process 1: failure injected ...";
-#   options          --petsc-options and PETSC_OPTIONS reach PETSc
+#   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
+#                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
 #                    "lac: ..." and exit status 1;
@@ -130,11 +132,12 @@ if [ "$have_petsc" = 1 ]; then
   petsc_vs taylor2d-quad4 "$D8/taylor2d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad4 --set level=1
   petsc_vs taylor3d-hex8 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex8 --set level=1
   petsc_vs taylor3d-tet4 "$D8/taylor3d.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=tet4
+  petsc_vs taylor2d-rotated-quad8 "$D8/taylor2d-rotated.scene" "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8
   petsc_vs spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=quad8 --set level=1
   petsc_vs spheres3d-hex20 chapters/09-spheres-rates/spheres3d.scene "--strategy saddle" "$CONTACT_KEYS" -- --set element=hex20
   petsc_vs cube-hex8 bench/cube.scene "--solver cholmod" "max_u load_work" -- --set mesh.numbers=n=6
   petsc_vs sphere-axi chapters/01-problem/sphere-axi.scene "--solver cholmod" "max_u load_work" -- --set level=1
-  for e in taylor2d-quad4 taylor3d-hex8 taylor3d-tet4; do
+  for e in taylor2d-quad4 taylor3d-hex8 taylor3d-tet4 taylor2d-rotated-quad8; do
     f="$C/$e.petsc.out"
     [ -f "$f" ] || continue
     lmin=$(petsc_value "$f" lambda_min) lmax=$(petsc_value "$f" lambda_max)
@@ -234,6 +237,21 @@ if [ "$have_petsc" = 1 ]; then
     petsc_ok "options bad"
   else
     petsc_fail "options bad" "want exit 1 and one line 'lac: ... nonsense', got $rc: $(cat "$C/opt-bad.err")"
+  fi
+
+  # an option nothing read is named (a run without PETSc's solver; a typo)
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor2d.scene" --petsc-options "-ksp_type bogus" \
+    --quiet --no-output > "$C/opt-unused.out" 2> "$C/opt-unused.err"
+  rc=$?
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "-elast_pc_type jacobi -kps_monitor" \
+    --quiet --no-output > "$C/opt-typo.out" 2> "$C/opt-typo.err"
+  rc2=$?
+  if [ "$rc" = 0 ] && [ "$rc2" = 0 ] && [ "$(wc -l < "$C/opt-unused.err")" -eq 1 ] \
+     && grep -q "^lac: warning: 1 PETSc option was never read: -ksp_type " "$C/opt-unused.err" \
+     && grep -q "never read: -kps_monitor " "$C/opt-typo.err" && ! grep -q elast_pc "$C/opt-typo.err"; then
+    petsc_ok "options unused"
+  else
+    petsc_fail "options unused" "want exit 0 and the warnings, got $rc $rc2: $(cat "$C/opt-unused.err" "$C/opt-typo.err")"
   fi
 
   # ---- large deformation: refused, not solved by CHOLMOD ---------------

@@ -1,7 +1,7 @@
 /* lac_contact.c -- the contact data of one slave/master pair
  *                                       [LAC Def. 1, (16)-(18)]
  * Allocation, the two stages (lac_admissibility.c, lac_assembly_lac.c) and
- * the Dirichlet correction of C and G.
+ * the Dirichlet correction of C and G, the interference of G.
  */
 #include "contact/lac_contact.h"
 
@@ -121,6 +121,18 @@ lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
         }
   lac_free (fixed);
   lac_free (g);
+  return LAC_SUCCESS;
+}
+
+int
+lac_contact_set_offset (lac_contact *c, double delta)
+{
+  if (!isfinite (delta))
+    LAC_ERROR (LAC_EINVAL, "interference %g: expected a finite length",
+               delta);
+  for (size_t i = 0; i < c->k; i++)
+    c->G[i] -= (delta - c->offset) * c->area[i];  /* int (g0 - delta) */
+  c->offset = delta;
   return LAC_SUCCESS;
 }
 

@@ -82,6 +82,17 @@ int lac_contact_build_nts (const lac_mesh *mesh, lac_model model,
 int lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
                                  const double *val);
 
+/* An interference fit drawn with matching surfaces (a shrink fit): the
+ * gap of every point is g0 - delta (delta > 0 an overlap, < 0 a
+ * clearance added), so that the mean gaps become
+ *   G_i = int_{T^m cap Gamma_C} (g0 - delta) = G_i - delta area_i
+ * (area_i 2 pi r weighted, as G_i); c->offset = delta, which the
+ * derivatives of large deformations read (lac_contact_tangent.h).  Setting
+ * it again replaces the former delta.  Call it before
+ * lac_contact_apply_dirichlet or after, as the Dirichlet part of G does
+ * not depend on it.  LAC_EINVAL if delta is not finite. */
+int lac_contact_set_offset (lac_contact *c, double delta);
+
 /* The multiplier of the macro-element owning slave sub-facet j (-1: none). */
 long lac_contact_mult_of_subfacet (const lac_contact *c, const lac_macro *M,
                                    size_t j);

@@ -60,6 +60,8 @@ lac_contact_pair_build (const lac_contact_pair *p, const double *x,
       lac_error_clear ();                 /* nothing in reach: k = 0 */
       return LAC_SUCCESS;
     }
+  if (!status && p->offset != 0)
+    status = lac_contact_set_offset (*c, p->offset);   /* g0 - delta */
   return status;
 }
 
@@ -152,7 +154,7 @@ lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
       double xc[3], h = lac_contact_pair_h (p, m);
       while (j1 < S.n && of[j1] == m)
         j1++;
-      double depth = -mean_gap (&cur, &S, P, j, j1, xc);
+      double depth = p->offset - mean_gap (&cur, &S, P, j, j1, xc);
       if (depth > tol * h)
         u->count++;
       if (depth > 0 && (u->depth <= 0 || depth / h > u->depth / u->h))

@@ -21,6 +21,11 @@
  * The caller decides (solve/lac_newton.h): pair again with a longer reach
  * (popts.dist_abs), or stop with an error naming the macro-element.
  *
+ * An interference fit (offset = delta, a shrink fit drawn with matching
+ * surfaces) takes delta from every gap, in the contact data
+ * (lac_contact_set_offset) and in the depth of the uncovered
+ * macro-elements alike.
+ *
  * Ownership: everything in lac_contact_pair is borrowed.
  */
 #ifndef LAC_CONTACT_PAIR_H
@@ -40,6 +45,8 @@ typedef struct lac_contact_pair
   double epsilon;                   /* [LAC Def. 1]                        */
   int nts;                          /* 1: node-to-segment (lac_contact.h)  */
   lac_pairing_opts popts;           /* of lac_pairing_build                */
+  double offset;                    /* the interference delta: the gaps are
+                                       g0 - delta (lac_contact_set_offset) */
 } lac_contact_pair;
 
 /* The deepest penetration of a macro-element without a multiplier. */
@@ -55,7 +62,7 @@ typedef struct lac_contact_uncovered
 } lac_contact_uncovered;
 
 /* Pairing and contact data with the nodes at x (mesh->nnodes * dim; NULL:
- * the mesh's).  No admissible macro-element is not an error: *c = NULL
+ * the mesh's), the gaps less p->offset.  No admissible macro-element is not an error: *c = NULL
  * (no constraint).  *P and *c are the caller's to free. */
 int lac_contact_pair_build (const lac_contact_pair *p, const double *x,
                             lac_pairing **P, lac_contact **c);

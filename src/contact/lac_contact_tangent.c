@@ -48,6 +48,7 @@ typedef struct block
   int *node;
   double *H, *b;              /* (nn dim)^2 row-major, nn dim                */
   size_t hcap;
+  double off;                 /* the interference of the gaps (c->offset)    */
 } block;
 
 void
@@ -322,6 +323,7 @@ point_add (const point *pt, const derivs *d, const size_t *loc, double lam,
 {
   int dim = pt->dim, nq = (pt->ns + pt->nm) * dim;
   double e[3][NQ], f[LAC_MAX_FACE_NODES][NQ];
+  double gm = pt->g - bk->off;        /* the gap of the mean gaps: g0 - delta */
   for (int q = 0; q < nq; q++)
     {
       double dJ = 0;
@@ -330,8 +332,8 @@ point_add (const point *pt, const derivs *d, const size_t *loc, double lam,
           dJ += pt->n[r] * d->nu[r][q];
           e[r][q] = d->rho[q] * pt->cv[r] + pt->rho * d->cv[r][q];
         }
-      bk->b[loc[q]] -= pt->w * (d->rho[q] * pt->g * pt->J       /* B */
-                                + pt->rho * (d->g[q] * pt->J + pt->g * dJ));
+      bk->b[loc[q]] -= pt->w * (d->rho[q] * gm * pt->J          /* B */
+                                + pt->rho * (d->g[q] * pt->J + gm * dJ));
       for (int b = 0; b < pt->nm; b++)
         {
           f[b][q] = 0;
@@ -487,7 +489,7 @@ lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                "multipliers");
   lac_contact_tangent *t = lac_calloc (1, sizeof *t);
   lac_triplet *TB = lac_triplet_alloc (ndof, c->k ? c->k : 1, 0);
-  block bk = { 0, 0, NULL, NULL, NULL, 0 };
+  block bk = { 0, 0, NULL, NULL, NULL, 0, c->offset };
   growth gr = { 0, 0, 0, 0, 0 };
   if (!t || !TB)
     status = LAC_ERRMSG (LAC_ENOMEM, "contact tangent");
@@ -541,4 +543,74 @@ lac_contact_tangent_apply (const lac_contact_tangent *t, const double *x,
           y[dof[r]] += s;                            /* y += H x */
         }
     }
+}
+
+/* The positions pos[0 .. dim-1] in dof[0 .. nl-1] of the components of
+ * node a; 0 if one is missing. */
+static int
+node_positions (const size_t *dof, size_t nl, int dim, size_t a, size_t *pos)
+{
+  int found = 0;
+  for (size_t q = 0; q < nl; q++)
+    if (dof[q] / (size_t) dim == a)
+      pos[dof[q] % (size_t) dim] = q, found++;
+  return found == dim;
+}
+
+/* H <- R~^T H R~ on the rows and columns pos of a block of nl dofs (R the
+ * node's frame, row-major 3 x 3). */
+static void
+rotate_block (double *H, size_t nl, int dim, const size_t *pos,
+              const double *R)
+{
+  double h[3];
+  for (size_t j = 0; j < nl; j++)                         /* rows: R^T H */
+    {
+      for (int i = 0; i < dim; i++)
+        {
+          h[i] = 0;
+          for (int k = 0; k < dim; k++)
+            h[i] += R[3 * k + i] * H[pos[k] * nl + j];
+        }
+      for (int i = 0; i < dim; i++)
+        H[pos[i] * nl + j] = h[i];
+    }
+  for (size_t r = 0; r < nl; r++)                       /* columns: H R */
+    {
+      for (int i = 0; i < dim; i++)
+        {
+          h[i] = 0;
+          for (int k = 0; k < dim; k++)
+            h[i] += H[r * nl + pos[k]] * R[3 * k + i];
+        }
+      for (int i = 0; i < dim; i++)
+        H[r * nl + pos[i]] = h[i];
+    }
+}
+
+int
+lac_contact_tangent_rotate (lac_contact_tangent *t, const lac_frames *f)
+{
+  if (!f)
+    return LAC_SUCCESS;
+  int status = lac_frames_rotate_rows (f, &t->B), dim = f->dim;
+  for (size_t b = 0; !status && b < t->nblock; b++)
+    {
+      const size_t *dof = t->dof + t->bptr[b];
+      size_t nl = t->bptr[b + 1] - t->bptr[b], pos[3];
+      for (size_t q = 0; q < nl && !status; q++)
+        {
+          size_t a = dof[q] / (size_t) dim;
+          const double *R = lac_frames_of (f, a);
+          if (!R || dof[q] % (size_t) dim != 0)     /* once per node */
+            continue;
+          if (!node_positions (dof, nl, dim, a, pos))
+            status = LAC_ERRMSG (LAC_ESANITY, "contact tangent: node %zu "
+                                 "has a frame but not all its components "
+                                 "in block %zu", a + 1, b);
+          else
+            rotate_block (t->val + t->vptr[b], nl, dim, pos, R);
+        }
+    }
+  return status;
 }

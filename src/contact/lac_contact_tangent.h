@@ -35,7 +35,9 @@
  * with the obstacle's slave_normal flag (the paper's manufactured scenes)
  * g is measured along n, x_m = x_s + g n on the graph F(x) = 0:
  *   d.g = -grad F . (d.x_s + g d.n) / (grad F . n).  Then
- *   B(:,i) = -d(d_i)/dU = -sum_p w^ (d.rho g J + rho (d.g J + g d.J)),
+ *   B(:,i) = -d(d_i)/dU = -sum_p w^ (d.rho g' J + rho (d.g J + g' d.J)),
+ *   g' = g - delta with the interference delta of the pair (c->offset,
+ *   contact/lac_contact.h: the mean gaps are int (g - delta)),
  *   H = d(C lambda)/dU:  rows of slave node a   lambda w^ phi_a d.(rho nu),
  *                        rows of master node b  -lambda w^ (psi_b d.(rho nu)
  *                                + rho nu sum_k dpsi_b/deta_k d.eta_k).
@@ -58,6 +60,7 @@
 #include "contact/lac_macromesh.h"
 #include "contact/lac_obstacle.h"
 #include "contact/lac_pairing.h"
+#include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "linalg/lac_linalg.h"
 
@@ -92,5 +95,10 @@ void lac_contact_tangent_free (lac_contact_tangent *t);    /* NULL allowed */
 /* y += H x (ndof vectors). */
 void lac_contact_tangent_apply (const lac_contact_tangent *t, const double *x,
                                 double *y);
+
+/* To the nodal frames f of rollers (fem/lac_frames.h; NULL: nothing to
+ * do): B <- T^T B, H <- T^T H T, block by block (every block holds all
+ * the components of its nodes).  LAC_ENOMEM, LAC_ESANITY. */
+int lac_contact_tangent_rotate (lac_contact_tangent *t, const lac_frames *f);
 
 #endif /* LAC_CONTACT_TANGENT_H */

@@ -44,6 +44,8 @@ typedef struct lac_contact
                          that failed (lac_pairing.h): C, G and area miss it */
   double *xpt, *npt;  /* owned, 3k, node-to-segment only (else NULL): the
                          collocation point and unit normal of multiplier i */
+  double offset;      /* the interference delta taken from every gap: G_i =
+                         int (g0 - delta) (lac_contact_set_offset); 0: none */
 } lac_contact;
 
 #endif /* LAC_CONTACT_TYPES_H */

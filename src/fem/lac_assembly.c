@@ -522,6 +522,7 @@ lac_dirichlet_free (lac_dirichlet *d)
     return;
   lac_free (d->dof);
   lac_free (d->val);
+  lac_frames_free (d->frames);
   lac_free (d);
 }
 
@@ -537,6 +538,12 @@ dirichlet_push (lac_dirichlet *d, size_t dof, double val)
   d->val[d->n] = val;
   d->n++;
   return LAC_SUCCESS;
+}
+
+int
+lac_dirichlet_add (lac_dirichlet *d, size_t dof, double val)
+{
+  return dirichlet_push (d, dof, val);
 }
 
 /* lac_dirichlet_add_group: u_comp = value at every node of g  [LAC (4)].

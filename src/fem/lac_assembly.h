@@ -16,6 +16,7 @@
 
 #include <stddef.h>
 #include "linalg/lac_linalg.h"
+#include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
 
@@ -66,16 +67,24 @@ int lac_assembly_traction_n (const lac_mesh *m, lac_model model,
 int lac_assembly_pressure (const lac_mesh *m, lac_model model,
                            const lac_group *g, double p, double *F);
 
-/* Dirichlet data: list of (dof, value); later entries for a dof win. */
+/* Dirichlet data: list of (dof, value); later entries for a dof win.
+ * With frames (rollers on inclined or curved faces, fem/lac_frames.h),
+ * the dofs of a node with a frame are its components along the frame's
+ * axes: K, F and C must be rotated to the frames (lac_frames_rotate_*,
+ * lac_frames_to_local) before the entries are eliminated, and the
+ * solution rotated back (lac_frames_to_global). */
 typedef struct lac_dirichlet
 {
   size_t n, cap;
   size_t *dof;    /* owned */
   double *val;    /* owned */
+  lac_frames *frames;  /* owned, or NULL: every dof along the axes */
 } lac_dirichlet;
 
 lac_dirichlet *lac_dirichlet_alloc (void);
-void lac_dirichlet_free (lac_dirichlet *d);
+void lac_dirichlet_free (lac_dirichlet *d);     /* and its frames */
+/* One more entry: dof fixed to val. */
+int lac_dirichlet_add (lac_dirichlet *d, size_t dof, double val);
 /* Fix component comp (0..dim-1) of every node of group g to `value`. */
 int lac_dirichlet_add_group (lac_dirichlet *d, const lac_mesh *m,
                              const lac_group *g, int comp, double value);

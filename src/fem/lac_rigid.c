@@ -182,11 +182,32 @@ body_frames (const lac_mesh *m, const size_t *comp, size_t nb, double *ctr)
       ctr[4 * b + 3] = 1;
 }
 
+/* The rigid modes at the fixed dof q of a node at x: along its axis e
+ * (a coordinate axis, or an axis of the node's frame), v = sum_i e_i
+ * (modes at component i). */
+static void
+modes_along (lac_model model, int dim, const lac_frames *fr, size_t q,
+             const double *x, double *v)
+{
+  double e[3], vi[6];
+  int nm = 0;
+  lac_frames_axis (fr, dim, q, e);
+  for (int k = 0; k < 6; k++)
+    v[k] = 0;
+  for (int i = 0; i < dim; i++)
+    {
+      nm = rigid_modes (model, i, x, vi);
+      for (int k = 0; k < nm && e[i] != 0; k++)
+        v[k] += e[i] * vi[k];
+    }
+}
+
 /* G_b += v v^T over the fixed dofs q of body b, v = the rigid modes at q
  * (36 entries per body, nm x nm used). */
 static void
 mode_gram (const lac_mesh *m, lac_model model, const char *fixed,
-           const size_t *comp, const double *ctr, int nm, double *G)
+           const lac_frames *fr, const size_t *comp, const double *ctr,
+           int nm, double *G)
 {
   int dim = m->dim;
   size_t ndof = (size_t) dim * m->nnodes;
@@ -199,7 +220,7 @@ mode_gram (const lac_mesh *m, lac_model model, const char *fixed,
       for (int i = 0; i < dim; i++)
         x[i] = (m->x[a * (size_t) dim + (size_t) i] - ctr[4 * b + (size_t) i])
                / ctr[4 * b + 3];
-      rigid_modes (model, (int) (q % (size_t) dim), x, v);
+      modes_along (model, dim, fr, q, x, v);
       for (int i = 0; i < nm; i++)
         for (int j = 0; j < nm; j++)
           G[36 * b + (size_t) (i * nm + j)] += v[i] * v[j];
@@ -244,7 +265,7 @@ describe_bodies (lac_bodies *B, const lac_mesh *m, const size_t *cell0,
 
 int
 lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
-                 lac_bodies **out)
+                 const lac_frames *fr, lac_bodies **out)
 {
   size_t n = m->nnodes, *p = lac_malloc ((n ? n : 1) * sizeof *p);
   size_t *cell0 = lac_malloc ((n ? n : 1) * sizeof *cell0);
@@ -271,7 +292,7 @@ lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
       goto done;
     }
   body_frames (m, B->node_body, B->n, ctr);
-  mode_gram (m, model, fixed, B->node_body, ctr, B->nm, G);
+  mode_gram (m, model, fixed, fr, B->node_body, ctr, B->nm, G);
   status = describe_bodies (B, m, cell0, G, ctr);
 done:
   lac_free (G);

@@ -28,6 +28,7 @@
 #define LAC_RIGID_H
 
 #include <stddef.h>
+#include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
 
@@ -55,9 +56,11 @@ typedef struct lac_bodies
 } lac_bodies;
 
 /* Bodies of m and the rigid motions that the fixed dofs (ndof flags, 1 =
- * fixed) leave free to each.  LAC_ENOMEM, LAC_EDEP (GSL failed). */
+ * fixed) leave free to each; a fixed dof of a node with a frame (fr, or
+ * NULL: none; fem/lac_frames.h) fixes the component along its axis.
+ * LAC_ENOMEM, LAC_EDEP (GSL failed). */
 int lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
-                     lac_bodies **out);
+                     const lac_frames *fr, lac_bodies **out);
 void lac_bodies_free (lac_bodies *b);            /* NULL allowed */
 /* The name of body b: its physical group, or NULL. */
 const char *lac_bodies_name (const lac_bodies *b, const lac_mesh *m,

@@ -3,7 +3,8 @@
  * The conversion of gmsh nodes and cells into a lac_mesh, for lac_mesh_read
  * (lac_mesh_gmsh.c).  This is where gmsh tags (1-based, not necessarily
  * contiguous) become 0-based indices: all nodes are sorted by tag, those
- * that belong to no cell are dropped, the others are numbered in tag order;
+ * that belong to no cell are dropped (counted, except the nodes of
+ * construction points of a .geo), the others are numbered in tag order;
  * node_tag and cell_tag keep the tags for messages.
  *
  *   - cells are the elements of the top dimension, entity by entity (the
@@ -182,6 +183,43 @@ count_cells (lac_gmsh_reader *R, const lac_gmsh_elements *E, size_t *ncells,
   return LAC_SUCCESS;
 }
 
+/* The nodes of construction points: points of the geometry that no curve
+ * starts or ends at and no physical group names (the centre of a
+ * Circle), in a .geo (a node of a .msh file in no cell is suspect).
+ * gmsh meshes them as nodes of their own, in no cell; they are
+ * left out with the other nodes in no cell, but not counted as dropped
+ * (ndropped warns of nodes that a cell was meant to use). */
+static size_t
+construction_nodes (void)
+{
+  int *dt = NULL, ierr = 0;
+  size_t ndt = 0, count = 0;
+  gmshModelGetEntities (&dt, &ndt, 0, &ierr);
+  for (size_t k = 0; !ierr && k + 1 < ndt; k += 2)
+    {
+      int *up = NULL, *down = NULL, *phys = NULL, e1 = 0, e2 = 0, e3 = 0;
+      size_t nup = 0, ndown = 0, nphys = 0, *tags = NULL, ntags = 0;
+      double *coord = NULL, *par = NULL;
+      size_t ncoord = 0, npar = 0;
+      gmshModelGetAdjacencies (0, dt[k + 1], &up, &nup, &down, &ndown, &e1);
+      gmshModelGetPhysicalGroupsForEntity (0, dt[k + 1], &phys, &nphys, &e2);
+      if (!e1 && !e2 && nup == 0 && nphys == 0)
+        {
+          gmshModelMeshGetNodes (&tags, &ntags, &coord, &ncoord, &par, &npar,
+                                 0, dt[k + 1], 0, 0, &e3);
+          count += e3 ? 0 : ntags;
+        }
+      gmshFree (up);
+      gmshFree (down);
+      gmshFree (phys);
+      gmshFree (tags);
+      gmshFree (coord);
+      gmshFree (par);
+    }
+  gmshFree (dt);
+  return count;
+}
+
 /* Copy nodes (those in cells, numbered in tag order) and cells. */
 static int
 fill_mesh (lac_gmsh_reader *R, const lac_gmsh_elements *E, size_t ncells,
@@ -201,6 +239,10 @@ fill_mesh (lac_gmsh_reader *R, const lac_gmsh_elements *E, size_t ncells,
   if (!m)
     return lac_gmsh_with_path (R, LAC_ENOMEM);
   m->ndropped = R->nall - nnodes;
+  {
+    size_t built = R->geometry ? construction_nodes () : 0;
+    m->ndropped -= built < m->ndropped ? built : m->ndropped;
+  }
   for (size_t i = 0; i < R->nall; i++)
     if (R->index[i] != SIZE_MAX)
       {

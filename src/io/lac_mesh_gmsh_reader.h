@@ -39,6 +39,8 @@ typedef struct lac_gmsh_reader
   const char *path;            /* borrowed                                 */
   const lac_mesh_opts *opts;   /* borrowed                                 */
   int tdim;                    /* dimension of the cells                   */
+  int geometry;                /* 1: meshed from a .geo (it may have
+                                  construction points)                    */
   /* all gmsh nodes, sorted by tag: tag[k] is node index[k] of the mesh   */
   size_t nall;
   size_t *tag;                 /* owned, nall                              */

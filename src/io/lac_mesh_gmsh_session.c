@@ -160,7 +160,8 @@ read_model (lac_gmsh_reader *R, int kind, lac_mesh **out)
     status = set_option (R, "General.Verbosity", 1);   /* errors, logged */
   if (!status)
     status = open_file (R, kind);
-  if (!status && kind == LAC_GMSH_GEO)
+  R->geometry = kind == LAC_GMSH_GEO;
+  if (!status && R->geometry)
     status = mesh_geo (R);
   if (!status)
     status = lac_gmsh_read_nodes (R);

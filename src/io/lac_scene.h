@@ -64,6 +64,10 @@
  *     clamp                yes: every component zero
  *     symmetry             x | y | z | r: the normal component zero
  *     exact                yes: every component from the [exact] solution
+ *     normal               g: u.n = g along the outward unit normal n of
+ *                          a facet group at each node (a roller for g =
+ *                          0, on any face, plane or curved:
+ *                          run/lac_run_roller.h)
  *     ramp                 yes | no: with [steps], the values grow with
  *                          the load factor t (yes) or are imposed whole
  *                          from the first step (no)   yes
@@ -114,6 +118,9 @@
  *     max_iterations       active-set iterations at most          50
  *     gap_bound            length added to the pairing distance (one
  *                          facet size) for curved bodies           0
+ *     interference         delta >= 0: a shrink fit drawn with matching
+ *                          surfaces, every gap is g0 - delta
+ *                          (contact/lac_contact.h)               0
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b
@@ -144,6 +151,9 @@
  *                          the Dirichlet conditions)  no
  *     vtu_format           binary | ascii: VTU arrays as appended raw
  *                          bytes or as text (io/lac_vtu.h)   binary
+ *     reactions            yes | no: reaction.NAME = Rx Ry [Rz] in the
+ *                          summary, the force of the supports of every
+ *                          [dirichlet] section (run/lac_run_reaction.h)  no
  *
  * Overrides (`lac run --set KEY=VALUE`) are applied after the file is read
  * and checked like file entries; messages about them say "--set".  KEY is

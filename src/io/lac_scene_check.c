@@ -261,7 +261,21 @@ dirichlet_components (lac_scene *sc, lac_scene_dirichlet *d, int *ncomp)
   return LAC_SUCCESS;
 }
 
-/* d->kind from clamp, symmetry (with its component) and exact. */
+/* normal = g: u.n = g along the outward normal of a facet group (a
+ * roller for g = 0; run/lac_run_roller.h). */
+static int
+dirichlet_normal (lac_scene *sc, lac_scene_dirichlet *d)
+{
+  if (!given (&d->sec, "normal"))
+    return LAC_SUCCESS;
+  if (d->kind != LAC_BC_COMPONENTS)
+    return lac_scene_error (sc, &d->sec, "normal", LAC_EINVAL, "give only "
+                            "one of clamp, symmetry, exact, normal");
+  d->kind = LAC_BC_NORMAL;
+  return LAC_SUCCESS;
+}
+
+/* d->kind from clamp, symmetry (with its component), exact and normal. */
 static int
 dirichlet_kind (lac_scene *sc, lac_scene_dirichlet *d)
 {
@@ -283,7 +297,8 @@ dirichlet_kind (lac_scene *sc, lac_scene_dirichlet *d)
                                 : "x or y");
       if (d->kind != LAC_BC_COMPONENTS)
         return lac_scene_error (sc, &d->sec, "symmetry", LAC_EINVAL,
-                                "give only one of clamp, symmetry, exact");
+                                "give only one of clamp, symmetry, exact, "
+                                "normal");
       d->kind = LAC_BC_SYMMETRY;
       d->fixed[c] = 1;
       d->value[c] = 0;
@@ -292,13 +307,14 @@ dirichlet_kind (lac_scene *sc, lac_scene_dirichlet *d)
     {
       if (d->kind != LAC_BC_COMPONENTS)
         return lac_scene_error (sc, &d->sec, "exact", LAC_EINVAL,
-                                "give only one of clamp, symmetry, exact");
+                                "give only one of clamp, symmetry, exact, "
+                                "normal");
       if (sc->exact.sec.line == 0)
         return lac_scene_error (sc, &d->sec, "exact", LAC_EINVAL,
                                 "needs an [exact] section");
       d->kind = LAC_BC_EXACT;
     }
-  return LAC_SUCCESS;
+  return dirichlet_normal (sc, d);
 }
 
 static int
@@ -309,12 +325,17 @@ finish_dirichlet (lac_scene *sc, lac_scene_dirichlet *d)
       || (status = dirichlet_components (sc, d, &ncomp))
       || (status = dirichlet_kind (sc, d)))
     return status;
-  if (d->kind != LAC_BC_COMPONENTS && d->kind != LAC_BC_SYMMETRY && ncomp)
+  if (d->kind != LAC_BC_COMPONENTS && d->kind != LAC_BC_SYMMETRY
+      && d->kind != LAC_BC_NORMAL && ncomp)
     return lac_scene_error (sc, &d->sec, NULL, LAC_EINVAL, "give either "
                             "components (ux, ...) or clamp/exact, not both");
   if (d->kind == LAC_BC_SYMMETRY && ncomp)
     return lac_scene_error (sc, &d->sec, "symmetry", LAC_EINVAL,
                             "give either components (ux, ...) or symmetry, "
+                            "not both");
+  if (d->kind == LAC_BC_NORMAL && ncomp)
+    return lac_scene_error (sc, &d->sec, "normal", LAC_EINVAL,
+                            "give either components (ux, ...) or normal, "
                             "not both");
   if (d->kind == LAC_BC_CLAMP)
     for (int c = 0; c < 3; c++)
@@ -322,7 +343,8 @@ finish_dirichlet (lac_scene *sc, lac_scene_dirichlet *d)
   if (d->kind == LAC_BC_COMPONENTS && ncomp == 0)
     return lac_scene_error (sc, &d->sec, NULL, LAC_EINVAL, "nothing to "
                             "impose: give ux/uy/uz (ur/uz), clamp = yes, "
-                            "symmetry = AXIS or exact = yes");
+                            "symmetry = AXIS, exact = yes or normal = "
+                            "VALUE");
   return LAC_SUCCESS;
 }
 

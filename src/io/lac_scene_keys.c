@@ -86,6 +86,7 @@ static const key_spec dirichlet_keys[] = {
   BOOL (lac_scene_dirichlet, clamp),
   ENUM (lac_scene_dirichlet, symmetry, symmetry_names),
   BOOL (lac_scene_dirichlet, exact),
+  NUM (lac_scene_dirichlet, normal, -HUGE_VAL, HUGE_VAL, 0, "a number"),
   BOOL (lac_scene_dirichlet, ramp),
 };
 static const char *const load_exact_names[] =
@@ -128,6 +129,7 @@ static const key_spec contact_keys[] = {
   INT (lac_scene_contact, max_iterations, 1, 100000,
        "an integer in 1..100000"),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
+  NUM (lac_scene_contact, interference, 0, HUGE_VAL, 0, "a length >= 0"),
 };
 static const char *const tangent_names[] =            /* lac_nonlinear.h */
   { "consistent", "frozen", NULL };
@@ -147,6 +149,7 @@ static const key_spec output_keys[] = {
   BOOL (lac_scene_output, csv),
   BOOL (lac_scene_output, matrix),
   ENUM (lac_scene_output, vtu_format, vtu_format_names),
+  BOOL (lac_scene_output, reactions),
 };
 
 #define NK(a) ((int) (sizeof a / sizeof a[0]))

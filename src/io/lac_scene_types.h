@@ -93,7 +93,9 @@ typedef enum
   LAC_BC_COMPONENTS,    /* ux / uy / uz (ur) values */
   LAC_BC_CLAMP,
   LAC_BC_SYMMETRY,
-  LAC_BC_EXACT
+  LAC_BC_EXACT,
+  LAC_BC_NORMAL         /* u.n = value along the face's outward normal n
+                           (a roller: fem/lac_frames.h)                  */
 } lac_bc_kind;
 
 typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
@@ -104,6 +106,7 @@ typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
   int fixed[3];         /* components fixed (model components)          */
   double value[3];      /* their values                                 */
   double ux, uy, uz, ur;            /* raw key values (table storage)  */
+  double normal;                    /* LAC_BC_NORMAL: the value of u.n   */
   int clamp, exact, symmetry;       /* raw key values (table storage)  */
   int ramp;             /* 1: values times the load factor ([steps])   */
 } lac_scene_dirichlet;
@@ -161,6 +164,8 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   int strategy;         /* lac_strategy_kind, LAC_STRATEGY_AUTO default   */
   int max_iterations;   /* active-set iterations at most (default 50)     */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
+  double interference;  /* delta >= 0 taken from every gap: a shrink fit
+                           drawn with matching surfaces (length, 0)       */
 } lac_scene_contact;
 
 typedef struct lac_scene_steps           /* [steps] */
@@ -181,6 +186,8 @@ typedef struct lac_scene_output          /* [output] */
   lac_scene_section sec;
   int vtu, csv, matrix;
   int vtu_format;       /* 0 binary (appended raw), 1 ascii               */
+  int reactions;        /* 1: reaction.NAME lines in the summary
+                           (run/lac_run_reaction.h)                      */
 } lac_scene_output;
 
 typedef struct lac_scene

@@ -110,7 +110,10 @@ stage_solve (lac_run *r)
                                   &r->sys, &r->sol, r->progress,
                                   sizeof r->progress);
       if (!status)
-        lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
+        {
+          lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
+          lac_frames_to_global (r->sys.dir->frames, r->sol.u);  /* u = T u~ */
+        }
       return status;
     }
   if (!r->sol.u && !(r->sol.u = lac_malloc (r->sys.ndof * sizeof *r->sol.u)))

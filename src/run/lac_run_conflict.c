@@ -187,12 +187,14 @@ surface_load (const lac_scene_load *l)
                       || l->kind == LAC_LOAD_EXACT_TANGENTIAL);
 }
 
-/* The facets of the group of load l are each a face of one cell only. */
+/* The facets of group `name` (of the load or roller of section sec) are
+ * each a face of one cell only. */
 static int
-load_on_boundary (const lac_scene *sc, const lac_scene_load *l,
-                  const lac_mesh *m, const face_key *faces, size_t nf)
+on_boundary (const lac_scene *sc, const lac_scene_section *sec,
+             const char *name, const char *what, const lac_mesh *m,
+             const face_key *faces, size_t nf)
 {
-  const lac_group *g = lac_mesh_group (m, l->group);
+  const lac_group *g = lac_mesh_group (m, name);
   for (size_t e = 0; g && e < g->n; e++)
     {
       face_key k;
@@ -204,29 +206,36 @@ load_on_boundary (const lac_scene *sc, const lac_scene_load *l,
       while (hit && hit > faces && !key_order (hit - 1, &k))
         hit--;
       if (hit && hit + 1 < faces + nf && !key_order (hit + 1, &k))
-        return lac_scene_error (sc, &l->sec, "group", LAC_EINVAL, "facet %zu "
+        return lac_scene_error (sc, sec, "group", LAC_EINVAL, "facet %zu "
                                 "of the group lies between cells %zu and %zu:"
-                                " it is inside the body; a surface load acts "
-                                "on the boundary (as a contact surface does)", e + 1,
+                                " it is inside the body; a %s acts on the "
+                                "boundary (as a contact surface does)", e + 1,
                                 m->cell_tag[hit->cell],
-                                m->cell_tag[hit[1].cell]);
+                                m->cell_tag[hit[1].cell], what);
     }
   return LAC_SUCCESS;
 }
 
+/* Surface loads and rollers (their outward normals) on the boundary. */
 static int
 loads_on_boundary (const lac_scene *sc, const lac_mesh *m)
 {
   face_key *faces = NULL;
   size_t nf = 0;
   int status = LAC_SUCCESS;
-  for (size_t k = 0; k < sc->nload && !status; k++)
-    if (surface_load (&sc->load[k]))
-      {
-        if (!faces && !(faces = all_faces (m, &nf)))
-          return LAC_ENOMEM;
-        status = load_on_boundary (sc, &sc->load[k], m, faces, nf);
-      }
+  for (size_t k = 0; k < sc->nload + sc->ndirichlet && !status; k++)
+    {
+      const lac_scene_load *l = k < sc->nload ? &sc->load[k] : NULL;
+      const lac_scene_dirichlet *d = l ? NULL : &sc->dirichlet[k - sc->nload];
+      if (l ? !surface_load (l) : d->kind != LAC_BC_NORMAL)
+        continue;
+      if (!faces && !(faces = all_faces (m, &nf)))
+        return LAC_ENOMEM;
+      status = l ? on_boundary (sc, &l->sec, l->group, "surface load", m,
+                                faces, nf)
+                 : on_boundary (sc, &d->sec, d->group, "condition along the "
+                                "outward normal", m, faces, nf);
+    }
   lac_free (faces);
   return status;
 }

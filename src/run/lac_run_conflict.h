@@ -12,7 +12,12 @@
  *   - a surface load (pressure, traction, total_force, exact traction)
  *     on a facet that two cells share: a load inside a body, which the
  *     assembly would apply as if on the boundary (a contact surface there
- *     is refused already, contact/lac_macromesh.c).
+ *     is refused already, contact/lac_macromesh.c); the same for a
+ *     condition along the outward normal (normal = VALUE), which has no
+ *     outward normal there.
+ * A condition along the normal contradicts the others at a node only
+ * through its direction, known once the mesh is refined: stage 4 checks
+ * it (run/lac_run_roller.h).
  */
 #ifndef LAC_RUN_CONFLICT_H
 #define LAC_RUN_CONFLICT_H

@@ -25,9 +25,14 @@ check_groups (const lac_scene *sc, const lac_mesh *m)
                         "a material"))
       return LAC_EINVAL;
   for (size_t k = 0; k < sc->ndirichlet; k++)
-    if (!lac_run_group (sc, m, &sc->dirichlet[k].sec, sc->dirichlet[k].group, -1,
-                     NULL))
-      return LAC_EINVAL;
+    {
+      int roller = sc->dirichlet[k].kind == LAC_BC_NORMAL;
+      if (!lac_run_group (sc, m, &sc->dirichlet[k].sec,
+                          sc->dirichlet[k].group, roller ? d - 1 : -1,
+                          "normal (the facets of a face, whose normals it "
+                          "follows)"))
+        return LAC_EINVAL;
+    }
   for (size_t k = 0; k < sc->nload; k++)
     {
       const lac_scene_load *l = &sc->load[k];

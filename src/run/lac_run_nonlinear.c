@@ -18,6 +18,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "contact/lac_contact.h"
+#include "run/lac_run_roller.h"
 
 void
 lac_run_nl_clear (lac_run_nl *nl)
@@ -36,10 +37,72 @@ lac_run_nl_clear (lac_run_nl *nl)
 
 /* ---- set-up ------------------------------------------------------------- */
 
+/* The ramp flag of the entries of a node with a frame: that of its
+ * conditions with a non-zero value (they must agree), else 1. */
+static int
+frame_ramp (const lac_scene *sc, const lac_run_conditions *cs, size_t a,
+            char *flag)
+{
+  long first = -1;
+  *flag = 1;
+  for (size_t j = cs->ptr[a]; j < cs->ptr[a + 1]; j++)
+    {
+      const lac_scene_dirichlet *d = &sc->dirichlet[cs->c[j].sec];
+      if (cs->c[j].v == 0)
+        continue;
+      if (first >= 0 && (*flag != 0) != (d->ramp != 0))
+        return lac_scene_error (sc, &d->sec, "ramp", LAC_EINVAL, "node %zu "
+                                "has non-zero values from [dirichlet %s] and "
+                                "from this section, one ramped and one not: "
+                                "a node with a frame (normal = ...) takes "
+                                "one ramp", a + 1,
+                                sc->dirichlet[first].sec.name);
+      if (first < 0)
+        first = (long) cs->c[j].sec, *flag = d->ramp != 0;
+    }
+  return LAC_SUCCESS;
+}
+
+/* With `normal` sections: the frames of their nodes (run/lac_run_roller.h)
+ * rewrite the entries there, and the ramp flags follow: the last entry's
+ * of a dof (later entries win), or frame_ramp at a node with a frame. */
+static int
+nl_rollers (const lac_scene *sc, lac_model model, const lac_mesh *m,
+            lac_run_nl *nl)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes;
+  lac_run_conditions cs = { 0, NULL, NULL };
+  char *of = lac_calloc (ndof + 1, 1), *p = NULL;
+  int status = of ? LAC_SUCCESS : LAC_ERRMSG (LAC_ENOMEM, "ramp flags");
+  for (size_t i = 0; !status && i < nl->dir->n; i++)
+    of[nl->dir->dof[i]] = nl->ramp[i];
+  if (!status && !(status = lac_run_rollers (sc, model, m, nl->dir))
+      && nl->dir->frames)
+    {
+      if (!(p = lac_realloc (nl->ramp, nl->dir->n ? nl->dir->n : 1)))
+        status = LAC_ERRMSG (LAC_ENOMEM, "ramp flags");
+      else
+        nl->ramp = p;
+      if (!status)
+        status = lac_run_conditions_build (sc, model, m, NULL, &cs);
+      for (size_t i = 0; !status && i < nl->dir->n; i++)
+        {
+          size_t q = nl->dir->dof[i], a = q / (size_t) m->dim;
+          nl->ramp[i] = of[q];
+          if (lac_frames_of (nl->dir->frames, a))
+            status = frame_ramp (sc, &cs, a, nl->ramp + i);
+        }
+    }
+  lac_run_conditions_clear (&cs);
+  lac_free (of);
+  return status;
+}
+
 /* Dirichlet data at t = 1 with the ramp flag of each entry; the reference
  * imposed value (the first non-zero ramped one). */
 static int
-nl_dirichlet (const lac_scene *sc, const lac_mesh *m, lac_run_nl *nl)
+nl_dirichlet (const lac_scene *sc, lac_model model, const lac_mesh *m,
+              lac_run_nl *nl)
 {
   int status = LAC_SUCCESS;
   if (!(nl->dir = lac_dirichlet_alloc ()))
@@ -61,8 +124,11 @@ nl_dirichlet (const lac_scene *sc, const lac_mesh *m, lac_run_nl *nl)
         return LAC_ERRMSG (LAC_ENOMEM, "ramp flags");
       nl->ramp = p;
       memset (nl->ramp + n0, bc->ramp ? 1 : 0, nl->dir->n - n0);
+      if (bc->kind == LAC_BC_NORMAL && bc->ramp && bc->normal != 0
+          && nl->imposed_ref == 0)
+        nl->imposed_ref = bc->normal;
     }
-  return status;
+  return status ? status : nl_rollers (sc, model, m, nl);
 }
 
 /* The load factors: `start` (if > 0), then n equal steps to 1. */
@@ -149,7 +215,7 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
 {
   int status;
   size_t ndof = (size_t) m->dim * m->nnodes;
-  if ((status = nl_dirichlet (sc, m, nl)) || (status = nl_factors (&sc->steps,
+  if ((status = nl_dirichlet (sc, mat->hyper.model, m, nl)) || (status = nl_factors (&sc->steps,
                                                                    nl))
       || (status = nl_monitor (sc, m, nl))
       || (status = nl_kept_alloc (sc->steps.vtu_every, ndof, nl)))
@@ -183,6 +249,8 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
   if (!(nl->model = lac_nl_alloc (p, &o))
       || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
     return LAC_ENOMEM;
+  if (sc->ncontact)                            /* a shrink fit: t delta */
+    lac_nl_set_interference (nl->model, sc->contact[0].interference);
   return LAC_SUCCESS;
 }
 
@@ -249,8 +317,15 @@ record_step (lac_run_nl *nl, size_t j, int dim)
   lac_run_nl_step *q = &nl->step[j];
   q->solver = nl->ls->steps[nl->ls->nsteps - 1];
   q->imposed = q->solver.t * nl->imposed_ref;
+  const double *R = nl->monitor != SIZE_MAX
+                    ? lac_frames_of (nl->dir->frames, nl->monitor) : NULL;
   for (int k = 0; k < dim && nl->monitor != SIZE_MAX; k++)
-    q->um[k] = s->U[nl->monitor * (size_t) dim + (size_t) k];
+    {
+      const double *U = s->U + nl->monitor * (size_t) dim;
+      q->um[k] = R ? 0 : U[k];
+      for (int i = 0; R && i < dim; i++)       /* in the axes: R U~ */
+        q->um[k] += R[3 * k + i] * U[i];
+    }
   q->force = lac_nl_contact_force (nl->model, s->lambda);
   q->lambda_min = 0;
   for (size_t m = 0; m < s->nslot; m++)
@@ -313,8 +388,9 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
       && lac_run_nl_step_file (j, nl->nfactor, sc->steps.vtu_every))
     {
       nl->kept[nl->nkept] = j;                  /* room: nl_kept_alloc */
-      memcpy (nl->ukept + nl->nkept++ * ndof, nl->ls->loop->U,
+      memcpy (nl->ukept + nl->nkept * ndof, nl->ls->loop->U,
               ndof * sizeof *nl->ukept);
+      lac_frames_to_global (nl->dir->frames, nl->ukept + nl->nkept++ * ndof);
     }
   report_step (sc, nl, j, m->dim, progress, size);
   return LAC_SUCCESS;
@@ -360,5 +436,6 @@ lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
   if (++nl->next < nl->nfactor)
     return LAC_CONTINUE;
   memcpy (u, nl->ls->loop->U, ndof * sizeof *u);
+  lac_frames_to_global (nl->dir->frames, u);    /* u = T u~ (rollers) */
   return LAC_SUCCESS;
 }

@@ -9,6 +9,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "fem/lac_post.h"
+#include "run/lac_run_reaction.h"
 #include "run/lac_run_scene.h"
 
 void
@@ -242,6 +243,30 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   return lac_summary_add (sum, "contact_force", "%.10e", q->force);
 }
 
+/* ---- the reactions of the Dirichlet sections ------------------------- */
+
+/* With [output] reactions = yes, "reaction.NAME" lines
+ * (run/lac_run_reaction.h): the pair and the
+ * multipliers of the last solve (large deformation: the model's pair, on
+ * the final coordinates). */
+static int
+reactions (const lac_run_post_in *in, lac_summary *sum)
+{
+  const lac_newton *nw = in->nl ? in->nl->ls->loop
+                         : in->sol ? in->sol->newton : NULL;
+  lac_run_reaction_in r = { in->sc, in->model, in->mesh, in->mat,
+                            in->nl != NULL, in->sys->F, in->u, NULL, NULL,
+                            in->setup->on_contact };
+  if (!in->sc->output.reactions)
+    return LAC_SUCCESS;
+  if (in->setup->macro && nw)
+    {
+      r.pair = in->nl ? &in->nl->model->pair : &in->setup->pair;
+      r.lambda = nw->lambda;
+    }
+  return lac_run_reactions (&r, sum);
+}
+
 /* ---- the stage -------------------------------------------------------- */
 
 /* The exact displacement at the nodes and the errors in L2 and H1. */
@@ -293,7 +318,8 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
                                          in->sys->contact, in->sol->newton,
                                          &res->contact, &res->summary)))
     return status;
-  if ((status = lac_run_solve_summary (in->sol, &res->summary)))
+  if ((status = lac_run_solve_summary (in->sol, &res->summary))
+      || (status = reactions (in, &res->summary)))
     return status;
   if (res->u_exact)
     snprintf (progress, size, "stresses, errors vs %s: L2 %.3e, H1 %.3e",
@@ -311,7 +337,8 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
   int status;
   if ((status = lac_hyper_cauchy_nodal (in->mesh, &in->mat->hyper, in->u,
                                         NULL, res->sigma, res->vm))
-      || (status = nl_summary (in, res)))
+      || (status = nl_summary (in, res))
+      || (status = reactions (in, &res->summary)))
     return status;
   snprintf (progress, size, "Cauchy stresses, von Mises; %zu Newton "
             "iterations in %zu load steps", in->nl->ls->loop->nhist,

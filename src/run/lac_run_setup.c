@@ -124,7 +124,7 @@ lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
                                  s->macro, s->master.n ? &s->master : NULL,
                                  &s->obstacle, c->epsilon > 0 ? c->epsilon
                                  : LAC_EPSILON_DEFAULT, c->method == 2,
-                                 { 0 } };
+                                 { 0 }, c->interference };
   lac_pairing_opts_init (&s->pair.popts);
   s->pair.popts.dist_abs = c->gap_bound;
   if ((status = mark_contact_nodes (*mesh, gs, gm, s))

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "run/lac_run_roller.h"
 #include "run/lac_run_scene.h"
 
 void
@@ -134,7 +135,8 @@ add_dirichlet (const lac_scene *sc, lac_model model, const lac_mesh *m,
         if (bc->fixed[c])
           status = lac_dirichlet_add_group (d, m, g, c, bc->value[c]);
     }
-  return status;
+  /* normal = g: the nodes of those groups in frames (run/lac_run_roller.h) */
+  return status ? status : lac_run_rollers (sc, model, m, d);
 }
 
 /* ---- bodies: fixed, or held by contact ------------------------------- */
@@ -187,6 +189,8 @@ check_bodies (const lac_scene *sc, const lac_mesh *m,
   if (!status)
     status = lac_bodies_free_motions (B, m, held_by_contact, &sys->nfree,
                                       &sys->N, &sys->N_what);
+  for (size_t j = 0; !status && j < sys->nfree; j++)     /* N~ = T^T N */
+    lac_frames_to_local (sys->dir->frames, sys->N + j * sys->ndof);
   lac_free (held_by_contact);
   return status;
 }
@@ -201,7 +205,8 @@ find_bodies (const lac_scene *sc, lac_model model, const lac_mesh *m,
     LAC_ERROR (LAC_ENOMEM, "rigid-motion check");
   for (size_t k = 0; k < sys->dir->n; k++)
     fixed[sys->dir->dof[k]] = 1;
-  status = lac_bodies_find (m, model, fixed, &sys->bodies);
+  status = lac_bodies_find (m, model, fixed, sys->dir->frames,
+                            &sys->bodies);
   lac_free (fixed);
   return status ? status : check_bodies (sc, m, setup, sys);
 }
@@ -226,6 +231,11 @@ contact_matrices (const lac_scene *sc, lac_model model, const lac_mesh *m,
     return lac_scene_error (sc, &c->sec, status == LAC_EADMISS
                             ? "epsilon" : NULL, status, "%s",
                             lac_error_message ());
+  if ((c->interference != 0                  /* a shrink fit: g0 - delta */
+       && (status = lac_contact_set_offset (sys->contact, c->interference)))
+      || (status = lac_frames_rotate_rows (sys->dir->frames,  /* T^T C */
+                                           &sys->contact->C)))
+    return status;
   return lac_contact_apply_dirichlet (sys->contact, sys->dir->n,
                                       sys->dir->dof, sys->dir->val);
 }
@@ -245,14 +255,19 @@ count_fixed (lac_run_system *sys)
   return LAC_SUCCESS;
 }
 
-/* K after the Dirichlet elimination, and b. */
+/* K after the Dirichlet elimination, and b; with rollers, in the nodal
+ * frames first (T^T K T, T^T F: fem/lac_frames.h). */
 static int
 eliminate (const lac_scene *sc, lac_run_system *sys)
 {
+  int status;
   sys->nnz = (size_t) sys->K->p[sys->ndof];
   if (sc->output.matrix && !(sys->K0 = lac_csc_copy (sys->K)))
     LAC_ERROR (LAC_ENOMEM, "copy of K");
   memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
+  if ((status = lac_frames_rotate_matrix (sys->dir->frames, sys->K)))
+    return status;
+  lac_frames_to_local (sys->dir->frames, sys->b);
   return lac_dirichlet_apply (sys->dir, sys->K, sys->b);
 }
 
@@ -319,7 +334,8 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
   T = NULL;
   if ((status = eliminate (sc, sys)))
     goto done;
-  if (!plates)                      /* K is the cells' (and Dirichlet's) */
+  if (!plates && !sys->dir->frames)  /* K is the cells' (and Dirichlet's):
+                                        not turned to rollers' frames */
     sys->cells = (lac_dist_source) { m, &mat->elastic, sys->fixed };
   if (sys->ties.n)
     snprintf (progress, size, "%zu dofs (%zu fixed, %zu tied to %zu rigid "

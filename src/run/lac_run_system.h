@@ -45,7 +45,8 @@ typedef struct lac_run_system
                               multigrid; NULL for the axisymmetric model
                               (its one rigid motion: along the axis)    */
   lac_dist_source cells;   /* what K was assembled from (mesh NULL: rigid
-                              plates, large deformation), for the petsc
+                              plates, rollers' frames, large deformation),
+                              for the petsc
                               strategy's assembly on its processes      */
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
 } lac_run_system;

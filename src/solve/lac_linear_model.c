@@ -65,11 +65,14 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
   if (!lm->pair)
     return LAC_SUCCESS;
   const lac_mesh *m = lm->pair->mesh;
+  size_t n = (size_t) m->dim * m->nnodes;
   double umax = 0;
-  for (size_t j = 0; j < (size_t) m->dim * m->nnodes; j++)
+  memcpy (lm->x, U, n * sizeof *lm->x);
+  lac_frames_to_global (lm->dir ? lm->dir->frames : NULL, lm->x);  /* T U */
+  for (size_t j = 0; j < n; j++)
     {
-      lm->x[j] = m->x[j] + U[j];                    /* x = X + U */
-      umax = fmax (umax, fabs (U[j]));
+      umax = fmax (umax, fabs (lm->x[j]));
+      lm->x[j] += m->x[j];                          /* x = X + U */
     }
   return lac_contact_pair_uncovered (lm->pair, lm->x, *lm->contact,
                                      2 * umax, tol, u);
@@ -102,6 +105,7 @@ widen (void *self, const double *U, double reach, size_t *more)
   size_t k0 = (*lm->contact)->k;
   lm->pair->popts.dist_abs += reach;
   if ((status = lac_contact_pair_build (lm->pair, NULL, &P, &c))
+      || (c && (status = lac_frames_rotate_rows (lm->dir->frames, &c->C)))
       || (c && (status = lac_contact_apply_dirichlet (c, lm->dir->n,
                                                       lm->dir->dof,
                                                       lm->dir->val))))

@@ -48,6 +48,8 @@ lac_nl_free (lac_nl *s)
   lac_free (s->inc.dof);
   lac_free (s->inc.val);
   lac_free (s->kgap);
+  lac_free (s->ug);
+  lac_free (s->Floc);
   lac_free (s);
 }
 
@@ -84,6 +86,37 @@ set_fixed (lac_nl *s)
   return LAC_SUCCESS;
 }
 
+/* With the nodal frames of rollers (fem/lac_frames.h, the Dirichlet
+ * data's): the room for U in the axes, and the load in the frames. */
+static int
+set_frames (lac_nl *s)
+{
+  const lac_frames *f = s->prob.dir->frames;
+  s->F = s->prob.F;
+  if (!f)
+    return LAC_SUCCESS;
+  size_t n = s->ndof ? s->ndof : 1;
+  if (!(s->ug = lac_calloc (n, sizeof *s->ug))
+      || !(s->Floc = lac_calloc (n, sizeof *s->Floc)))
+    LAC_ERROR (LAC_ENOMEM, "nodal frames of %zu dofs", s->ndof);
+  if (s->prob.F)
+    memcpy (s->Floc, s->prob.F, s->ndof * sizeof *s->Floc);
+  lac_frames_to_local (f, s->Floc);                        /* T^T F */
+  s->F = s->prob.F ? s->Floc : NULL;
+  return LAC_SUCCESS;
+}
+
+/* U in the axes: U itself, or T U with frames (in s->ug). */
+static const double *
+in_axes (lac_nl *s, const double *U)
+{
+  if (!s->ug)
+    return U;
+  memcpy (s->ug, U, s->ndof * sizeof *s->ug);
+  lac_frames_to_global (s->prob.dir->frames, s->ug);
+  return s->ug;
+}
+
 /* The pair of the problem (contact/lac_contact_pair.h). */
 static void
 set_pair (lac_nl *s, const lac_nl_opts *o)
@@ -91,7 +124,7 @@ set_pair (lac_nl *s, const lac_nl_opts *o)
   const lac_nl_problem *p = &s->prob;
   s->pair = (lac_contact_pair) { p->mesh, p->mat->model, p->M, p->master,
                                  p->obstacle, p->epsilon > 0 ? p->epsilon
-                                 : LAC_EPSILON_DEFAULT, 0, o->popts };
+                                 : LAC_EPSILON_DEFAULT, 0, o->popts, 0 };
   s->pair.popts.allow_empty = 1;
 }
 
@@ -133,7 +166,7 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->cur = *m;                       /* shallow: only x differs */
   s->cur.x = s->x;
   memcpy (s->x, m->x, s->ndof * sizeof *s->x);
-  if (set_fixed (s) || !(s->pat = pattern (m, p->mat)))
+  if (set_fixed (s) || set_frames (s) || !(s->pat = pattern (m, p->mat)))
     {
       lac_nl_free (s);
       return NULL;
@@ -146,6 +179,14 @@ lac_nl_set_load (lac_nl *s, double t)
 {
   s->t = t;
   s->fref = 0;
+  s->pair.offset = t * s->interference;        /* ramped, as the loads */
+}
+
+void
+lac_nl_set_interference (lac_nl *s, double delta)
+{
+  s->interference = delta;
+  s->pair.offset = s->t * delta;
 }
 
 double
@@ -170,6 +211,7 @@ contact_update (lac_nl *s, const double *U)
   s->pairing = NULL;
   s->contact = NULL;
   s->moved = 0;
+  U = in_axes (s, U);
   for (size_t j = 0; j < s->ndof; j++)
     {
       double xj = s->prob.mesh->x[j] + U[j];         /* x = X + U */
@@ -179,6 +221,8 @@ contact_update (lac_nl *s, const double *U)
   double t0 = lac_seconds ();
   int status = lac_contact_pair_build (&s->pair, s->x, &s->pairing,
                                        &s->contact);
+  if (!status && s->contact)                                   /* T^T C */
+    status = lac_frames_rotate_rows (s->prob.dir->frames, &s->contact->C);
   s->npairings++;
   s->time_pairing += lac_seconds () - t0;
   return status;
@@ -190,7 +234,9 @@ static int
 assemble (lac_nl *s, const double *U, double *Fint, int want_K)
 {
   double t0 = lac_seconds ();
+  const lac_frames *f = s->prob.dir->frames;
   int status;
+  U = in_axes (s, U);
   if (Fint)
     memset (Fint, 0, s->ndof * sizeof *Fint);
   if (want_K)
@@ -198,6 +244,10 @@ assemble (lac_nl *s, const double *U, double *Fint, int want_K)
                                          s->pat);
   else
     status = lac_hyper_assemble (s->prob.mesh, s->prob.mat, U, Fint, NULL);
+  if (!status && Fint)                       /* in the frames: T^T F_int, */
+    lac_frames_to_local (f, Fint);
+  if (!status && want_K)                                   /* T^T K_T T */
+    status = lac_frames_rotate_matrix (f, s->pat->K);
   s->have_K = want_K && !status;
   s->time_assemble += lac_seconds () - t0;
   return status;
@@ -210,7 +260,7 @@ out_of_balance (lac_nl *s)
   double nfi = 0, nf = 0;
   for (size_t j = 0; j < s->ndof; j++)
     {
-      double f = s->prob.F ? s->t * s->prob.F[j] : 0.0;
+      double f = s->F ? s->t * s->F[j] : 0.0;
       s->r[j] = f - s->Fint[j];
       nfi += s->Fint[j] * s->Fint[j];
       nf += f * f;
@@ -318,6 +368,8 @@ consistent (void *self, lac_strategy *st, const char *active,
                                           s->pairing, p->master ? &Mf : NULL,
                                           p->obstacle, c, lam_lin, active,
                                           &s->tangent);
+  if (!status)                                       /* T^T B, T^T H T */
+    status = lac_contact_tangent_rotate (s->tangent, p->dir->frames);
   s->time_tangent += lac_seconds () - t0;
   if (status)
     return status;

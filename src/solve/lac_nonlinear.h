@@ -12,7 +12,8 @@
  * once, on the reference mesh [LAC Remark 3]; only the pairing moves.
  *
  * At load factor t the Dirichlet values are t * g (entries flagged
- * "ramp") or g (the others) and the external load is t * F.  At U
+ * "ramp") or g (the others), the external load is t * F and the
+ * interference of a shrink fit t * delta.  At U
  * (x = X + U):
  *
  *   evaluate   the internal force F_int(U) and, unless left out, the
@@ -41,6 +42,12 @@
  *              it out: the "frozen geometry" of the generalized Newton
  *              method of [LAC §4.5];
  *   uncovered, widen  the pair at U (contact/lac_contact_pair.h).
+ *
+ * Rollers.  With nodal frames in the Dirichlet data (dir->frames,
+ * fem/lac_frames.h) U is the loop's U~ in the frames: each evaluation
+ * works in the axes at T U~ and turns what it made, T^T F_int, T^T K_T T,
+ * T^T C, T^T B, T^T H T (and the load T^T F once); the fixed dofs and
+ * their values are the frames' axes.
  *
  * Convergence.  Quadratic once the statuses have settled, whatever the
  * pressure (t435 checks the derivatives against finite differences).  The
@@ -150,6 +157,10 @@ typedef struct lac_nl
                             a node went since the pairing before it       */
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
+  double interference;   /* delta at t = 1 (lac_nl_set_interference), 0    */
+  const double *F;       /* the load in the nodal frames: prob.F or Floc    */
+  double *ug, *Floc;     /* owned, ndof, with frames only (else NULL): U in
+                            the axes, T^T F                               */
 } lac_nl;
 
 lac_nl *lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts);
@@ -159,6 +170,9 @@ void lac_nl_free (lac_nl *s);                  /* NULL allowed */
 void lac_nl_model (lac_nl *s, lac_contact_model *m);
 /* The load factor of the next evaluations. */
 void lac_nl_set_load (lac_nl *s, double t);
+/* A shrink fit: delta taken from every gap at t = 1, t delta at load
+ * factor t (contact/lac_contact_pair.h); 0 by default. */
+void lac_nl_set_interference (lac_nl *s, double delta);
 
 /* Contact force on the slave side per macro-element is lambda[m] times
  * |T^m cap Gamma_C|; this is the sum over the columns of the last

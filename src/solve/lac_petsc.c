@@ -826,7 +826,7 @@ sum_abs (Vec v, double *sum)
  * whatever the units (its GAMG with the rigid motions is not
  * scale-invariant: with lengths and moduli scaled by powers of two, the
  * results changed in their last bits, which the projected CG amplifies to
- * 1e-9; chapter 11).  No contact term in it yet (wold = 0). */
+ * 1e-9; chapter 13).  No contact term in it yet (wold = 0). */
 static int
 new_stiffness (lac_petsc *s, const lac_contact_system *sys)
 {
