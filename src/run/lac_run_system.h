@@ -44,10 +44,10 @@ typedef struct lac_run_system
                               the rigid motions of the petsc strategy's
                               multigrid; NULL for the axisymmetric model
                               (its one rigid motion: along the axis)    */
-  lac_dist_source cells;   /* what K was assembled from (mesh NULL: rigid
-                              plates, rollers' frames, large deformation),
-                              for the petsc
-                              strategy's assembly on its processes      */
+  lac_dist_source cells;   /* what K was assembled from, for the petsc
+                              strategy's assembly on its processes (mesh
+                              NULL: rigid plates, rollers' frames, large
+                              deformation)                              */
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
 } lac_run_system;
 
