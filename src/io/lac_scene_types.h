@@ -161,6 +161,9 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   int strategy;         /* lac_strategy_kind, LAC_STRATEGY_AUTO default   */
   int max_iterations;   /* active-set iterations at most (default 50)     */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
+  int hex_cut;          /* the cut of a hexahedron under a slave face:
+                           0 auto (hex8 pyramids, hex20 six), 1 pyramids,
+                           2 six (LAC_MACRO_HEX_*, contact/lac_refine.h)  */
 } lac_scene_contact;
 
 typedef struct lac_scene_steps           /* [steps] */
@@ -199,7 +202,10 @@ typedef struct lac_scene
   lac_scene_material *material;     /* owned, nmaterial  */
   lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */
   lac_scene_load *load;             /* owned, nload      */
-  lac_scene_contact *contact;       /* owned, ncontact (0 or 1) */
+  lac_scene_contact *contact;       /* owned, ncontact: the contact pairs */
+  size_t contact_loop;          /* the [contact] section that gives the
+                                   keys of the one loop of all pairs
+                                   (strategy, max_iterations), 0 if none */
 } lac_scene;
 
 #endif /* LAC_SCENE_TYPES_H */

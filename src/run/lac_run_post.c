@@ -184,6 +184,36 @@ make_summary (const lac_run_post_in *in, lac_run_results *r,
 
 /* ---- the summary of a large-deformation run -------------------------- */
 
+/* Several pairs: per pair NAME its normal force sum lambda_i |T^m_i cap
+ * Gamma_C| (deformed surface) and its active macro-elements, at the end
+ * of the last step. */
+static int
+nl_pairs (const lac_run_post_in *in, const lac_newton *s, lac_summary *sum)
+{
+  const lac_contact_set_data *d = &in->nl->model->data;
+  const lac_contact *c = d->all;
+  int status = LAC_SUCCESS;
+  for (size_t p = 0; p < in->setup->npairs && !status; p++)
+    {
+      const char *name = in->sc->contact[p].sec.name;
+      char key[300];
+      double f = 0;
+      size_t nact = 0;
+      for (size_t i = d->col[p]; c && i < d->col[p + 1]; i++)
+        {
+          f += s->lambda[c->macro[i]] * c->area[i];
+          nact += s->active[c->macro[i]] != 0;
+        }
+      snprintf (key, sizeof key, "contact_normal_force.%s", name);
+      if (!(status = lac_summary_add (sum, key, "%.10e", f)))
+        {
+          snprintf (key, sizeof key, "active_macro_elements.%s", name);
+          status = lac_summary_add (sum, key, "%zu", nact);
+        }
+    }
+  return status;
+}
+
 static int
 nl_summary (const lac_run_post_in *in, lac_run_results *r)
 {
@@ -227,19 +257,22 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       if (status)
         return status;
     }
-  if (!in->setup->macro)
+  if (!in->setup->npairs)
     return LAC_SUCCESS;
   const lac_run_nl_step *q = &nl->step[nl->nfactor - 1];
-  if ((status = lac_run_pairs_dropped (nl->model->pairing, s, sum)))
+  if ((status = lac_run_pairs_dropped (&nl->model->data, s, sum)))
     return status;
-  if ((status = lac_summary_add (sum, "macro_elements", "%zu", in->setup->macro->n))
+  if ((status = lac_summary_add (sum, "macro_elements", "%zu",
+                                 lac_contact_set_nslot (&in->setup->set)))
       || (status = lac_summary_add (sum, "multipliers", "%zu", q->solver.k))
       || (status = lac_summary_add (sum, "active", "%zu",
                                     q->solver.nactive))
       || (status = lac_summary_add (sum, "lambda_min", "%.10e",
                                         q->lambda_min)))
     return status;
-  return lac_summary_add (sum, "contact_force", "%.10e", q->force);
+  if ((status = lac_summary_add (sum, "contact_force", "%.10e", q->force)))
+    return status;
+  return in->setup->npairs > 1 ? nl_pairs (in, s, sum) : LAC_SUCCESS;
 }
 
 /* ---- the stage -------------------------------------------------------- */
@@ -278,20 +311,18 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
     return status;
   if ((status = make_summary (in, res, &e)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_pairs_dropped (in->setup->pairing,
-                                          in->sol->newton, &res->summary)))
+  const lac_contact *c = in->setup->data.all;
+  if (c && (status = lac_run_pairs_dropped (&in->setup->data,
+                                            in->sol->newton, &res->summary)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_multipliers_post (in->model, in->mesh, in->setup,
-                                             in->sys->contact,
-                                             in->sol->newton, &e, res->sigma,
-                                             &res->mult, &res->summary)))
+  if (c && (status = lac_run_multipliers_post (in->model, in->mesh,
+                                               in->setup, c, in->sol->newton,
+                                               &e, res->sigma, &res->mult,
+                                               &res->summary)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_contact_post (in->model, in->mesh, in->setup,
-                                         in->sys->contact, in->sol->newton,
-                                         &res->contact, &res->summary)))
+  if (c && (status = lac_run_contact_post (sc, in->model, in->mesh,
+                                           in->setup, c, in->sol->newton,
+                                           &res->contact, &res->summary)))
     return status;
   if ((status = lac_run_solve_summary (in->sol, &res->summary)))
     return status;

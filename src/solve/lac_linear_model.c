@@ -50,7 +50,7 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
     }
   if (k > 0)
     lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
-  const lac_contact *c = lm->contact ? *lm->contact : NULL;
+  const lac_contact *c = lm->data ? lm->data->all : NULL;
   *p = (lac_model_point) { k, sys->C, lm->d, lm->area, lm->size, lm->slot,
                            c ? c->lost : NULL, lm->r, NULL,
                            fmax (sqrt (nf), sqrt (nku)) };
@@ -74,24 +74,24 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
 {
   lac_linear_model *lm = self;
   memset (u, 0, sizeof *u);
-  if (!lm->pair)
+  if (!lm->set)
     return LAC_SUCCESS;
-  const lac_mesh *m = lm->pair->mesh;
+  const lac_mesh *m = lm->set->pair[0].mesh;
   double umax = 0;
   for (size_t j = 0; j < (size_t) m->dim * m->nnodes; j++)
     {
       lm->x[j] = m->x[j] + U[j];                    /* x = X + U */
       umax = fmax (umax, fabs (U[j]));
     }
-  return lac_contact_pair_uncovered (lm->pair, lm->x, *lm->contact,
-                                     2 * umax, tol, u);
+  return lac_contact_set_uncovered (lm->set, lm->x, lm->data, 2 * umax,
+                                    tol, u);
 }
 
 /* The system's C and G, and the maps, from the contact data. */
 static int
 take_contact (lac_linear_model *lm)
 {
-  const lac_contact *c = *lm->contact;
+  const lac_contact *c = lm->data->all;
   lm->sys.C = c->C;
   lm->sys.G = c->G;
   lm->slot = c->macro;
@@ -100,40 +100,37 @@ take_contact (lac_linear_model *lm)
   return room (lm, c->k);
 }
 
-/* The pair made again on the reference shape with `reach` more. */
+/* The pairs made again on the reference shape with `reach` more. */
 static int
 widen (void *self, const double *U, double reach, size_t *more)
 {
   lac_linear_model *lm = self;
-  lac_pairing *P = NULL;
-  lac_contact *c = NULL;
+  lac_contact_set_data nd = { 0 };
   int status;
   (void) U;
   *more = 0;
-  if (!lm->pair)
+  if (!lm->set)
     return LAC_SUCCESS;
-  size_t k0 = (*lm->contact)->k;
-  lm->pair->popts.dist_abs += reach;
-  if ((status = lac_contact_pair_build (lm->pair, NULL, &P, &c))
-      || (c && (status = lac_contact_apply_dirichlet (c, lm->dir->n,
-                                                      lm->dir->dof,
-                                                      lm->dir->val))))
+  size_t k0 = lm->data->all->k;
+  for (size_t p = 0; p < lm->set->n; p++)
+    lm->set->pair[p].popts.dist_abs += reach;
+  if ((status = lac_contact_set_build (lm->set, NULL, &nd))
+      || (nd.all && (status = lac_contact_apply_dirichlet (nd.all,
+                                                           lm->dir->n,
+                                                           lm->dir->dof,
+                                                           lm->dir->val))))
     {
-      lac_pairing_free (P);
-      lac_contact_free (c);
+      lac_contact_set_data_clear (&nd);
       return status;
     }
-  if (!c || c->k <= k0)
+  if (!nd.all || nd.all->k <= k0)
     {
-      lac_pairing_free (P);                         /* nothing gained */
-      lac_contact_free (c);
+      lac_contact_set_data_clear (&nd);             /* nothing gained */
       return LAC_SUCCESS;
     }
-  *more = c->k - k0;
-  lac_pairing_free (*lm->pairing);
-  lac_contact_free (*lm->contact);
-  *lm->pairing = P;
-  *lm->contact = c;
+  *more = nd.all->k - k0;
+  lac_contact_set_data_clear (lm->data);
+  *lm->data = nd;
   lm->news = LAC_MODEL_NEW_C;
   return take_contact (lm);
 }
@@ -161,21 +158,20 @@ lac_linear_model_init (lac_linear_model *lm, const lac_contact_system *sys,
 }
 
 int
-lac_linear_model_init_pair (lac_linear_model *lm,
-                            const lac_contact_system *sys,
-                            lac_contact_pair *pair, lac_pairing **pairing,
-                            lac_contact **contact, const lac_dirichlet *dir,
-                            double E, lac_contact_model *m)
+lac_linear_model_init_set (lac_linear_model *lm,
+                           const lac_contact_system *sys,
+                           lac_contact_set *set, lac_contact_set_data *data,
+                           const lac_dirichlet *dir, double E,
+                           lac_contact_model *m)
 {
   int status = lac_linear_model_init (lm, sys, E, m);
   if (status)
     return status;
-  lm->pair = pair->nts ? NULL : pair;  /* node-to-segment: not checked */
-  lm->pairing = pairing;
-  lm->contact = contact;
+  lm->set = set->pair[0].nts ? NULL : set;  /* node-to-segment: not checked */
+  lm->data = data;
   lm->dir = dir;
-  m->nslot = (*contact)->nmacro;       /* the slave nodes for nts */
-  m->dim = pair->mesh->dim;
+  m->nslot = data->all->nmacro;        /* the slave nodes for nts */
+  m->dim = set->pair[0].mesh->dim;
   if ((status = take_contact (lm)))
     lac_linear_model_clear (lm);
   return status;

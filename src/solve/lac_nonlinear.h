@@ -57,7 +57,7 @@
 #define LAC_NONLINEAR_H
 
 #include <stddef.h>
-#include "contact/lac_contact_pair.h"
+#include "contact/lac_contact_set.h"
 #include "contact/lac_contact_tangent.h"
 #include "fem/lac_assembly.h"
 #include "fem/lac_hyper.h"
@@ -74,7 +74,7 @@ typedef struct lac_nl_problem
   const lac_dirichlet *dir;      /* fixed dofs and their values at t = 1   */
   const char *ramp;              /* dir->n flags: 1 value * t, 0 value; NULL:
                                     every value is ramped                  */
-  /* contact (M == NULL: none) */
+  /* contact, one pair (M == NULL and set == NULL: none) */
   const lac_macro *M;            /* macro-mesh of the slave surface        */
   const lac_pairing_facets *master; /* master facets of `mesh`, or NULL    */
   const lac_obstacle *obstacle;  /* rigid master when master == NULL       */
@@ -83,6 +83,10 @@ typedef struct lac_nl_problem
   size_t nfree;
   const double *N;               /* ndof x nfree: their rigid motions      */
   const char *const *N_what;     /* nfree descriptions, or NULL            */
+  /* or several pairs: their set (contact/lac_contact_set.h; the four
+   * fields of one pair above are then not read); the model pairs copies
+   * of them, with the pairing options of lac_nl_opts */
+  const lac_contact_set *set;
 } lac_nl_problem;
 
 /* The options of a large-deformation solve: of the loop, of the load
@@ -122,13 +126,17 @@ void lac_nl_opts_init (lac_nl_opts *o);   /* the defaults above */
 typedef struct lac_nl
 {
   lac_nl_problem prob;   /* copy of the problem (pointers borrowed)         */
-  lac_contact_pair pair; /* the slave, the master, epsilon, pairing options */
+  size_t npair;
+  lac_contact_pair *pair; /* owned, npair: the slaves, the masters, epsilon,
+                            the pairing options                           */
+  lac_contact_set set;   /* over pair: the slots of the multipliers         */
   int frozen;            /* opts.frozen: no consistent op                  */
   size_t ndof, nmacro;
   double t;              /* the load factor of the evaluations              */
-  lac_pairing *pairing;  /* owned: the last pairing (current coordinates)   */
-  lac_contact *contact;  /* owned: the last C, mean gaps, on the current
-                            coordinates (NULL: nothing in reach)           */
+  lac_contact_set_data data; /* the last pairings and contact data, on the
+                            current coordinates                           */
+  const lac_contact *contact; /* data.all: every column (NULL: nothing in
+                            reach)                                        */
   lac_mesh cur;          /* shallow copy of the mesh with x = X + U         */
   double time_assemble;  /* seconds, cumulated: F_int and K_T,            */
   double time_pairing;   /*   pairing, admissibility, C and mean gaps,    */
