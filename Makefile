@@ -127,7 +127,7 @@ $(B)/bench/%: bench/%.c $(LIB)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 # The objects that depend on PETSc's presence follow its changes.
-$(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_env.o: $(PETSC_MK)
+$(B)/src/solve/lac_petsc.o $(B)/src/linalg/lac_petsc_env.o: $(PETSC_MK)
 
 -include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d)
 

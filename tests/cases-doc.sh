@@ -214,9 +214,8 @@ else doc_fail doc-names "$msg"; fi
 # a plain fenced block with 3 rows of 2 numbers or more) is checked (an
 # output marker, above), or a snapshot whose lines still have the checksum
 # of its marker (tests/doc-snapshot.sh renews it), or quoted from outside
-# lac.  Chapters 07 and 13 are exempt while they are being rewritten.
-DOC_TAB_MD=$(printf '%s\n' $DOC_MD | grep -v -e '^chapters/07-newton/' -e '^chapters/13-solvers-mpi/')
-awk -f tests/doc-tables.awk $DOC_TAB_MD > "$DOC_TMP/tables"
+# lac.
+awk -f tests/doc-tables.awk $DOC_MD > "$DOC_TMP/tables"
 msg=$(awk -F'\t' -v tmp="$DOC_TMP/snap" '
   /^@@end$/ { if (kind == "snapshot") { close (tmp); cmd = "sha256sum < " tmp; cmd | getline s; close (cmd)
                 s = substr (s, 1, 12); if (s != want) printf "%s: snapshot changed by hand (sha %s, the marker says %s): rerun its command and tests/doc-snapshot.sh\n", at, s, want }

@@ -208,9 +208,11 @@ parse_run_args (int argc, char **argv, cmdline *c)
         c->set[c->nset++] = v;
       else if ((v = lac_cli_option_value (argc, argv, &k, "--solver", &missing)))
         {
-          if (strcmp (v, "petsc") == 0)
-            c->strategy = LAC_STRATEGY_PETSC;
-          else if (lac_solver_kind_from_name (v) < 0)
+          const lac_strategy_type *t =
+            lac_strategy_type_of (lac_strategy_from_name (v));
+          if (t && t->factor == LAC_FACTOR_NONE)  /* a type that factorizes */
+            c->strategy = lac_strategy_from_name (v);   /* nothing: its own */
+          else if (lac_solver_kind_from_name (v) < 0)      /* solver (petsc) */
             return lac_cli_usage_error (NULL, "--solver: expected dense, "
                                         "umfpack, cholmod or petsc, got", v);
           else

@@ -17,7 +17,7 @@
 #include "io/lac_scene_query.h"
 #include "run/lac_run_mesh.h"
 #include "run/lac_run_output.h"
-#include "solve/lac_petsc_env.h"
+#include "linalg/lac_petsc_env.h"
 #include "solve/lac_strategy.h"
 
 static const char *const stage_names[LAC_NSTAGES] =

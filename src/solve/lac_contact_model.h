@@ -68,6 +68,8 @@ typedef struct lac_model_point
   const size_t *slot;    /* k: the macro-element of column i (NULL: i)     */
   const double *lost;    /* k: measure of T^m cap Gamma_C (no weight) lost
                             to failed projections (NULL: none)            */
+  const double *rho;     /* k: rho of the status test, given (NULL: E / (h
+                            |T^m cap Gamma_C|), below)                    */
   /* equilibrium: the loop tests |r + C lambda| on the free dofs */
   const double *r;       /* n: F - F_int(U)                                */
   const char *fixed;     /* n: Dirichlet dofs (NULL: none)                 */

@@ -8,20 +8,6 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-/* Room for the mean gaps of k columns. */
-static int
-room (lac_linear_model *lm, size_t k)
-{
-  if (k <= lm->cap && lm->d)
-    return LAC_SUCCESS;
-  double *d = lac_realloc (lm->d, (k ? k : 1) * sizeof *d);
-  if (!d)
-    LAC_ERROR (LAC_ENOMEM, "mean gaps of %zu multipliers", k);
-  lm->d = d;
-  lm->cap = k;
-  return LAC_SUCCESS;
-}
-
 /* r = F - K U, d = G - C^T U; the force scale: |F| and |K| |U|
  * (the size of the terms that K U adds up, whatever cancels). */
 static int
@@ -51,9 +37,11 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
   if (k > 0)
     lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
   const lac_contact *c = lm->data ? lm->data->all : NULL;
-  *p = (lac_model_point) { k, sys->C, lm->d, lm->area, lm->size, lm->slot,
-                           c ? c->lost : NULL, lm->r, NULL,
-                           fmax (sqrt (nf), sqrt (nku)) };
+  *p = (lac_model_point) { .k = k, .C = sys->C, .d = lm->d,
+                           .area = lm->area, .size = lm->size,
+                           .slot = lm->slot, .lost = c ? c->lost : NULL,
+                           .rho = sys->rho, .r = lm->r,
+                           .fscale = fmax (sqrt (nf), sqrt (nku)) };
   return LAC_SUCCESS;
 }
 
@@ -88,7 +76,7 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
 }
 
 /* The system's C and G, and the maps, from the contact data. */
-static int
+static void
 take_contact (lac_linear_model *lm)
 {
   const lac_contact *c = lm->data->all;
@@ -97,7 +85,6 @@ take_contact (lac_linear_model *lm)
   lm->slot = c->macro;
   lm->area = c->area;
   lm->size = c->size;
-  return room (lm, c->k);
 }
 
 /* The pairs made again on the reference shape with `reach` more. */
@@ -132,29 +119,41 @@ widen (void *self, const double *U, double reach, size_t *more)
   lac_contact_set_data_clear (lm->data);
   *lm->data = nd;
   lm->news = LAC_MODEL_NEW_C;
-  return take_contact (lm);
+  take_contact (lm);
+  return LAC_SUCCESS;
 }
 
 static const lac_contact_model_type linear_type =
   { "linear", 0, evaluate, linearize, NULL, uncovered, widen };
 
-int
-lac_linear_model_init (lac_linear_model *lm, const lac_contact_system *sys,
-                       double E, lac_contact_model *m)
+/* The model of sys with room for nslot columns (one per macro-element at
+ * most). */
+static int
+init (lac_linear_model *lm, const lac_contact_system *sys, double E,
+      size_t nslot, lac_contact_model *m)
 {
-  size_t n = sys->K->ncol, k = sys->C ? sys->C->ncol : 0;
+  size_t n = sys->K->ncol;
   memset (lm, 0, sizeof *lm);
   lm->sys = *sys;
   lm->news = LAC_MODEL_NEW_K;
+  lm->d = lac_malloc ((nslot ? nslot : 1) * sizeof *lm->d);
   lm->r = lac_malloc ((n ? n : 1) * sizeof *lm->r);
   lm->x = lac_malloc ((n ? n : 1) * sizeof *lm->x);
-  if (!lm->r || !lm->x || room (lm, k))
+  if (!lm->d || !lm->r || !lm->x)
     {
       lac_linear_model_clear (lm);
       LAC_ERROR (LAC_ENOMEM, "linear model of %zu dofs", n);
     }
-  *m = (lac_contact_model) { &linear_type, lm, n, k, E > 0 ? E : 1.0, 2 };
+  *m = (lac_contact_model) { &linear_type, lm, n, nslot, E > 0 ? E : 1.0,
+                             2 };
   return LAC_SUCCESS;
+}
+
+int
+lac_linear_model_init (lac_linear_model *lm, const lac_contact_system *sys,
+                       double E, lac_contact_model *m)
+{
+  return init (lm, sys, E, sys->C ? sys->C->ncol : 0, m);
 }
 
 int
@@ -164,17 +163,15 @@ lac_linear_model_init_set (lac_linear_model *lm,
                            const lac_dirichlet *dir, double E,
                            lac_contact_model *m)
 {
-  int status = lac_linear_model_init (lm, sys, E, m);
+  int status = init (lm, sys, E, data->all->nmacro, m);   /* nts: nodes */
   if (status)
     return status;
   lm->set = set->pair[0].nts ? NULL : set;  /* node-to-segment: not checked */
   lm->data = data;
   lm->dir = dir;
-  m->nslot = data->all->nmacro;        /* the slave nodes for nts */
   m->dim = set->pair[0].mesh->dim;
-  if ((status = take_contact (lm)))
-    lac_linear_model_clear (lm);
-  return status;
+  take_contact (lm);
+  return LAC_SUCCESS;
 }
 
 void

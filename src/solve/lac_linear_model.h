@@ -43,8 +43,7 @@ typedef struct lac_linear_model
                                  G (the Dirichlet values moved in)        */
   const lac_dirichlet *dir;   /* moved into a new contact                  */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
-  double *d, *r, *x;          /* owned: k, n, n (coordinates X + U)        */
-  size_t cap;                 /* room of d                                 */
+  double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
 } lac_linear_model;
 
 /* A model over sys (C, G: one multiplier per column; E: the reference

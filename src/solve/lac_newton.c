@@ -62,7 +62,7 @@ void
 lac_newton_opts_init (lac_newton_opts *o)
 {
   memset (o, 0, sizeof *o);
-  o->kind = LAC_STRATEGY_SADDLE;
+  o->kind = LAC_STRATEGY_AUTO;
   o->maxit = 50;
   o->tol = 1e-10;
   o->pen_tol = 1e-2;
@@ -204,13 +204,16 @@ area_of (const lac_newton *s, size_t i)
   return s->pt.area ? s->pt.area[i] : 1.0;
 }
 
-/* rho_i = E / (h_i |T^m cap Gamma_C|) (lac_contact_model.h). */
+/* rho_i = E / (h_i |T^m cap Gamma_C|) (lac_contact_model.h), unless the
+ * options or the model give it. */
 static double
 rho_of (const lac_newton *s, size_t i)
 {
   double a = area_of (s, i) * h_of (s, i);
   if (s->opts.rho > 0)
     return s->opts.rho;
+  if (s->pt.rho)
+    return s->pt.rho[i];
   return a > 0 ? s->model.E / a : 1.0;
 }
 
@@ -593,6 +596,11 @@ prepare (lac_newton *s, const lac_contact_system *sys, int news,
   lac_newton_work *w = s->w;
   int kept = 0, status;
   *lagged = 0;
+  if (s->opts.kind == LAC_STRATEGY_AUTO)    /* chosen from the problem */
+    s->opts.kind = lac_strategy_choose (s->opts.kind, s->n, s->nslot,
+                                        sys->nfree);
+  if (s->opts.kind == LAC_NSTRATEGIES)
+    return LAC_EINVAL;
   if (!s->strategy && !(s->strategy = lac_strategy_alloc (s->opts.kind)))
     return LAC_EDEP;                 /* the message says which and why */
   if (s->model.type->nonlinear)      /* a tangent may not be positive */

@@ -112,7 +112,8 @@
 
 typedef struct lac_newton_opts
 {
-  lac_strategy_kind kind;  /* how (*) is solved: a concrete strategy     */
+  lac_strategy_kind kind;  /* how (*) is solved (auto: chosen from the
+                              problem at the first solve)                */
   int maxit;               /* solves per loop (0: 50)                    */
   double tol;              /* of the test of step 3 (0: 1e-10)           */
   double rho;              /* > 0: rho_m = rho for all m; 0: E / (h |T|) */

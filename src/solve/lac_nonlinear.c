@@ -19,7 +19,7 @@ void
 lac_nl_opts_init (lac_nl_opts *o)
 {
   memset (o, 0, sizeof *o);
-  o->kind = LAC_STRATEGY_SADDLE;
+  o->kind = lac_strategy_choose_factor (LAC_FACTOR_LU, 0);    /* saddle */
   o->maxit = 25;
   o->tol = 1e-8;
   o->rho = 0;
@@ -143,8 +143,10 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   s->ndof = (size_t) m->dim * m->nnodes;
   s->nmacro = lac_contact_set_nslot (&s->set);
   size_t n = s->ndof ? s->ndof : 1;
-  double **dof[] = { &s->x, &s->g1, &s->g0, &s->r, &s->Fint };
-  int ok = (s->fixed = lac_calloc (n, 1)) != NULL;
+  double **dof[] = { &s->x, &s->g1, &s->g0, &s->r, &s->Fint, &s->inc.val };
+  int ok = (s->fixed = lac_calloc (n, 1)) != NULL
+           && (s->inc.dof = lac_calloc (n, sizeof *s->inc.dof)) != NULL
+           && (s->kgap = lac_calloc (s->nmacro + 1, sizeof *s->kgap));
   for (size_t k = 0; k < sizeof dof / sizeof *dof; k++)
     ok = ok && (*dof[k] = lac_calloc (n, sizeof **dof[k])) != NULL;
   if (!ok || !(s->C0 = lac_csc_alloc (s->ndof, 0, 0)))
@@ -205,19 +207,20 @@ contact_update (lac_nl *s, const double *U)
   return status;
 }
 
-/* F_int and, if want_K, K_T at U (s->have_K says which). */
+/* F_int (Fint != NULL) and, if want_K, K_T at U (s->have_K says
+ * whether K_T is the tangent at U). */
 static int
-assemble (lac_nl *s, const double *U, int want_K)
+assemble (lac_nl *s, const double *U, double *Fint, int want_K)
 {
   double t0 = lac_seconds ();
   int status;
-  memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
+  if (Fint)
+    memset (Fint, 0, s->ndof * sizeof *Fint);
   if (want_K)
-    status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, U,
-                                         s->Fint, s->pat);
+    status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, U, Fint,
+                                         s->pat);
   else
-    status = lac_hyper_assemble (s->prob.mesh, s->prob.mat, U, s->Fint,
-                                 NULL);
+    status = lac_hyper_assemble (s->prob.mesh, s->prob.mat, U, Fint, NULL);
   s->have_K = want_K && !status;
   s->time_assemble += lac_seconds () - t0;
   return status;
@@ -242,23 +245,25 @@ static int
 evaluate (void *self, const double *U, int tangent, lac_model_point *p)
 {
   lac_nl *s = self;
-  int status = assemble (s, U, tangent);
+  int status = assemble (s, U, s->Fint, tangent);
   if (!status && s->npair)
     status = contact_update (s, U);
   if (status)
     return status;
   const lac_contact *c = s->contact;
-  *p = (lac_model_point) { c ? c->k : 0, c ? c->C : s->C0, c ? c->G : NULL,
-                           c ? c->area : NULL, c ? c->size : NULL,
-                           c ? c->macro : NULL, c ? c->lost : NULL, s->r,
-                           s->fixed, out_of_balance (s) };
+  *p = (lac_model_point) { .k = c ? c->k : 0, .C = c ? c->C : s->C0,
+                           .d = c ? c->G : NULL, .area = c ? c->area : NULL,
+                           .size = c ? c->size : NULL,
+                           .slot = c ? c->macro : NULL,
+                           .lost = c ? c->lost : NULL, .r = s->r,
+                           .fixed = s->fixed, .fscale = out_of_balance (s) };
   return LAC_SUCCESS;
 }
 
 /* ---- linearize: the Newton step's system -------------------------------- */
 
 /* The Dirichlet increments of the step from U: dof, value. */
-static int
+static void
 increments (lac_nl *s, const double *U)
 {
   lac_dirichlet *inc = &s->inc;
@@ -266,50 +271,9 @@ increments (lac_nl *s, const double *U)
   for (size_t j = 0; j < s->ndof; j++)
     if (s->fixed[j])
       {
-        size_t cap = inc->cap;           /* dof and val share it */
-        if (lac_grow (&inc->dof, inc->n + 1, &cap, sizeof *inc->dof, 64)
-            || lac_grow (&inc->val, inc->n + 1, &inc->cap, sizeof *inc->val,
-                         64))
-          LAC_ERROR (LAC_ENOMEM, "Dirichlet increments");
         inc->dof[inc->n] = j;
         inc->val[inc->n++] = s->t * s->g1[j] + s->g0[j] - U[j];
       }
-  return LAC_SUCCESS;
-}
-
-/* K_T at U if the evaluation left it out. */
-static int
-assemble_K (lac_nl *s, const double *U)
-{
-  if (s->have_K)
-    return LAC_SUCCESS;
-  double t0 = lac_seconds ();
-  int status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, U,
-                                           NULL, s->pat);
-  s->have_K = !status;
-  s->time_assemble += lac_seconds () - t0;
-  return status;
-}
-
-/* The mean gaps before the increments, for the consistent step. */
-static int
-keep_gaps (lac_nl *s)
-{
-  const lac_contact *c = s->contact;
-  if (!c)
-    return LAC_SUCCESS;
-  if (c->k > s->kcap)
-    {
-      lac_free (s->kgap);
-      if (!(s->kgap = lac_malloc (c->k * sizeof *s->kgap)))
-        {
-          s->kcap = 0;
-          LAC_ERROR (LAC_ENOMEM, "%zu mean gaps", c->k);
-        }
-      s->kcap = c->k;
-    }
-  memcpy (s->kgap, c->G, c->k * sizeof *s->kgap);
-  return LAC_SUCCESS;
 }
 
 static int
@@ -318,9 +282,13 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
 {
   lac_nl *s = self;
   int status;
-  if ((status = assemble_K (s, U)) || (status = increments (s, U))
-      || (status = keep_gaps (s))
-      || (status = lac_dirichlet_apply (&s->inc, s->pat->K, s->r)))
+  if (!s->have_K && (status = assemble (s, U, NULL, 1)))  /* left out by */
+    return status;                                       /* evaluate    */
+  increments (s, U);
+  if (s->contact)                 /* d(U) before the increments, for the */
+    memcpy (s->kgap, s->contact->G,       /* consistent step (** of */
+            s->contact->k * sizeof *s->kgap);      /* lac_consistent.h) */
+  if ((status = lac_dirichlet_apply (&s->inc, s->pat->K, s->r)))
     return status;
   if (s->fref == 0)
     {

@@ -94,7 +94,8 @@ typedef struct lac_nl_problem
 typedef struct lac_nl_opts
 {
   lac_strategy_kind kind; /* how the saddle system is solved
-                            (solve/lac_strategy.h; saddle by default): a
+                            (solve/lac_strategy.h; by default the LU of the
+                            whole system, which takes any tangent): a
                             Cholesky strategy falls back to saddle for the
                             rest of a step where K_T is not positive
                             definite                                       */
@@ -149,9 +150,8 @@ typedef struct lac_nl
   lac_pattern *pat;      /* owned: the kept pattern of K_T (fem/lac_pattern.h) */
   int have_K;            /* pat->K holds the tangent at the last U          */
   double *r, *Fint;      /* owned, ndof                                     */
-  lac_dirichlet inc;     /* owned arrays: the Dirichlet increments          */
-  double *kgap;          /* owned, kcap: d(U) before the increments         */
-  size_t kcap;
+  lac_dirichlet inc;     /* owned arrays (ndof): the Dirichlet increments   */
+  double *kgap;          /* owned, nmacro: d(U) before the increments       */
   lac_csc *C0;           /* owned: n x 0, the C of no contact               */
   double fref;           /* r_0 (0: not yet made for this load factor)      */
   double moved;          /* max |x - x_before| of the last pairing: how far

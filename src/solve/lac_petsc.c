@@ -3,7 +3,7 @@
  *
  * The root (process 0) holds the whole system; every step that involves
  * PETSc is a collective one, which the root starts by a command
- * (solve/lac_petsc_env.h) and the other processes make in
+ * (linalg/lac_petsc_env.h) and the other processes make in
  * lac_petsc_serve:
  *
  *   build   the layout (nodes and multipliers cut in N ranges), the

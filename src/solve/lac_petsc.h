@@ -89,7 +89,7 @@
 #ifndef LAC_PETSC_H
 #define LAC_PETSC_H
 
-#include "solve/lac_petsc_env.h"
+#include "linalg/lac_petsc_env.h"
 #include "solve/lac_system.h"
 
 #define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */

@@ -46,7 +46,8 @@ typedef struct lac_contact_system
   const lac_csc *C;    /* borrowed, n x k, rows of fixed dofs are zero     */
   const double *G;     /* borrowed, k, mean gaps (fixed dofs moved in);
                           values that are zero up to roundoff must be 0   */
-  const double *rho;   /* borrowed, k, scaling of the status test; NULL: 1 */
+  const double *rho;   /* borrowed, k, scaling of the status test; NULL:
+                          E / (h_i |T^i cap Gamma_C|) (solve/lac_newton.h) */
   size_t nfree;        /* free rigid motions (0: every body held)         */
   const double *N;     /* borrowed, n x nfree, column after column        */
   const char *const *N_what;  /* borrowed, nfree: "body 'upper':

@@ -75,8 +75,9 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
       nf += c->F[j] * c->F[j];
     }
   lac_system_gaps (&c->sys, U, c->d);               /* d = G - C^T U */
-  *p = (lac_model_point) { c->k, c->C, c->d, c->area, c->area, c->slot,
-                           NULL, c->r, NULL, sqrt (nf) };
+  *p = (lac_model_point) { .k = c->k, .C = c->C, .d = c->d, .area = c->area,
+                           .size = c->area, .slot = c->slot, .r = c->r,
+                           .fscale = sqrt (nf) };
   return LAC_SUCCESS;
 }
 

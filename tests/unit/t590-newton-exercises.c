@@ -225,7 +225,7 @@ exercise2 (void)
         {
           check_int ((long) s->nhist, 2, "ex2 %s: two iterations", kn);
           check_int ((long) s->hist[0].nactive, (long) pb.c->k, "ex2 %s: starts all active", kn);
-          check_int ((long) s->hist[0].nchanged, (long) pb.c->k, "ex2 %s: all released at once", kn);
+          check_int ((long) s->hist[1].nchanged, (long) pb.c->k, "ex2 %s: all released at once", kn);
           check_int ((long) lac_newton_nactive (s), 0, "ex2 %s: none active", kn);
           for (size_t i = 0; i < pb.c->k; i++)
             {

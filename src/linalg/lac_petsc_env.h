@@ -1,5 +1,5 @@
-/* lac_petsc_env.h -- the processes of the petsc strategy: MPI and PETSc
- *                    started and stopped, the root's commands, memory
+/* lac_petsc_env.h -- the MPI processes of PETSc: MPI and PETSc started
+ *                    and stopped, the root's commands, memory
  *                                                          [chapter 13]
  *
  * lac on N MPI processes (mpirun -n N lac run ...): process 0, the root,
@@ -42,7 +42,7 @@ void lac_petsc_rank (int *rank, int *size);
  * lac_petsc_serve).  One process: its own. */
 double lac_petsc_peak_rss_total_mb (int *nproc);
 
-/* ---- the root's commands (for solve/lac_petsc.c) ------------------------ */
+/* ---- the root's commands (for the petsc strategy, solve/lac_petsc.c) ---- */
 
 typedef enum
 {

@@ -1,7 +1,7 @@
 /* lac_petsc_env.c -- the processes of the petsc strategy
  *                    (see lac_petsc_env.h)                    [chapter 13]
  */
-#include "solve/lac_petsc_env.h"
+#include "linalg/lac_petsc_env.h"
 
 #include <stdio.h>
 #include <string.h>
