@@ -124,8 +124,9 @@ classify (const lac_mesh *m, const lac_group *G, size_t e,
       if (hex_cut == LAC_MACRO_HEX_PYRAMIDS)
         LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': a %s cannot "
                          "be cut into pyramids (its quad8 face would need "
-                         "pyramid13 cells, which lac does not have); use "
-                         "LAC_MACRO_HEX_SIX", e, G->name, re->name);
+                         "pyramid13 cells, which lac does not have); cut it "
+                         "into six hexahedra (LAC_MACRO_HEX_SIX, a scene's "
+                         "hex_cut = six)", e, G->name, re->name);
       *kind = LAC_MACRO_CUT;
       return LAC_SUCCESS;
     default:

@@ -199,15 +199,13 @@ abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
 
 /* ---- forces ------------------------------------------------------------ */
 
-/* n_i = int_{T^m_i cap Gamma_C} n^S (model weight) of column i, T^m_i
- * macro-element m of pair p; against a rigid obstacle the direction of
- * the constraint nu = -n^O (P->normal). */
+/* n += int_{T^m cap Gamma_C} n^S (model weight), T^m macro-element mm
+ * of M paired by P on the nodes of m; against a rigid obstacle the
+ * direction of the constraint nu = -n^O (P->normal). */
 static int
-column_normal (lac_model model, const lac_mesh *m, const lac_run_setup *st,
-               size_t p, size_t mm, double *n)
+column_normal (lac_model model, const lac_mesh *m, const lac_macro *M,
+               const lac_pairing *P, size_t mm, double *n)
 {
-  const lac_macro *M = st->macro[p];
-  const lac_pairing *P = st->data.P[p];
   int dim = m->dim, nodes[LAC_MAX_FACE_NODES];
   lac_map mp;
   for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
@@ -226,6 +224,25 @@ column_normal (lac_model model, const lac_mesh *m, const lac_run_setup *st,
   return LAC_SUCCESS;
 }
 
+int
+lac_run_pair_force (lac_model model, const lac_mesh *m, const lac_macro *M,
+                    const lac_pairing *P, const lac_contact *c, size_t col0,
+                    size_t col1, size_t off, const double *lambda,
+                    double f[3])
+{
+  f[0] = f[1] = f[2] = 0;
+  for (size_t i = col0; i < col1; i++)
+    {
+      double n[3] = { 0, 0, 0 };
+      int status = column_normal (model, m, M, P, c->macro[i] - off, n);
+      if (status)
+        return status;
+      for (int k = 0; k < 3; k++)
+        f[k] += lambda[c->macro[i]] * n[k];
+    }
+  return LAC_SUCCESS;
+}
+
 /* f_i = lambda_i n_i, the resultant and the resultant of each pair. */
 static int
 forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
@@ -240,7 +257,8 @@ forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
       if (c->xpt)                                  /* collocation */
         for (int k = 0; k < 3; k++)
           n[k] = c->area[i] * c->npt[3 * i + k];
-      else if ((status = column_normal (model, m, st, p,
+      else if ((status = column_normal (model, m, st->macro[p],
+                                        st->data.P[p],
                                         slot - st->set.offset[p], n)))
         return status;
       for (int k = 0; k < 3; k++)

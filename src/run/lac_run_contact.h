@@ -73,6 +73,15 @@ int lac_run_contact_post (const lac_scene *sc, lac_model model,
                           lac_summary *sum);
 void lac_run_contact_clear (lac_run_contact *rc);
 
+/* The force f = sum_i lambda_i int_{T^m_i cap Gamma_C} n^S of the columns
+ * col0 .. col1 - 1 of c, one pair's (macro-elements M paired by P on the
+ * nodes of m, slots from off on): the force its master exerts on its
+ * slave body.  Also on the deformed surface of a large-deformation run. */
+int lac_run_pair_force (lac_model model, const lac_mesh *m,
+                        const lac_macro *M, const lac_pairing *P,
+                        const lac_contact *c, size_t col0, size_t col1,
+                        size_t off, const double *lambda, double f[3]);
+
 /* What the pairing left out: pairing_widened, the times the loop paired
  * again with a longer reach (solve/lac_newton.h: no silent penetration);
  * pairs_dropped and area_dropped, the pairs of the pairings of d whose

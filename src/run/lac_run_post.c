@@ -184,33 +184,60 @@ make_summary (const lac_run_post_in *in, lac_run_results *r,
 
 /* ---- the summary of a large-deformation run -------------------------- */
 
-/* Several pairs: per pair NAME its normal force sum lambda_i |T^m_i cap
- * Gamma_C| (deformed surface) and its active macro-elements, at the end
- * of the last step. */
+/* "what.name = value" into the summary. */
+static int
+pair_key (lac_summary *sum, const char *what, const char *name,
+          const char *value)
+{
+  char key[300];
+  snprintf (key, sizeof key, "%s.%s", what, name);
+  return lac_summary_add (sum, key, "%s", value);
+}
+
+/* Pair p at the end of the last step, on the deformed surface: its force
+ * as a vector, its normal force sum lambda_i |T^m_i cap Gamma_C| and its
+ * active macro-elements. */
+static int
+nl_pair (const lac_run_post_in *in, const lac_newton *s, size_t p,
+         lac_summary *sum)
+{
+  const lac_nl *model = in->nl->model;
+  const lac_contact_set_data *d = &model->data;
+  const lac_contact *c = d->all;
+  const char *name = in->sc->contact[p].sec.name;
+  double fn = 0, f[3] = { 0, 0, 0 };
+  size_t nact = 0;
+  char v[120];
+  int dim = in->mesh->dim, status = LAC_SUCCESS;
+  for (size_t i = d->col[p]; c && i < d->col[p + 1]; i++)
+    {
+      fn += s->lambda[c->macro[i]] * c->area[i];
+      nact += s->active[c->macro[i]] != 0;
+    }
+  if (c && (status = lac_run_pair_force (in->model, &model->cur,
+                                         in->setup->macro[p], d->P[p], c,
+                                         d->col[p], d->col[p + 1],
+                                         in->setup->set.offset[p],
+                                         s->lambda, f)))
+    return status;
+  snprintf (v, sizeof v, dim == 3 ? "%.16e %.16e %.16e" : "%.16e %.16e",
+            f[0], f[1], f[2]);
+  if ((status = pair_key (sum, "contact_force", name, v)))
+    return status;
+  snprintf (v, sizeof v, "%.10e", fn);
+  if ((status = pair_key (sum, "contact_normal_force", name, v)))
+    return status;
+  snprintf (v, sizeof v, "%zu", nact);
+  return pair_key (sum, "active_macro_elements", name, v);
+}
+
+/* Several pairs: the lines of each. */
 static int
 nl_pairs (const lac_run_post_in *in, const lac_newton *s, lac_summary *sum)
 {
-  const lac_contact_set_data *d = &in->nl->model->data;
-  const lac_contact *c = d->all;
   int status = LAC_SUCCESS;
   for (size_t p = 0; p < in->setup->npairs && !status; p++)
-    {
-      const char *name = in->sc->contact[p].sec.name;
-      char key[300];
-      double f = 0;
-      size_t nact = 0;
-      for (size_t i = d->col[p]; c && i < d->col[p + 1]; i++)
-        {
-          f += s->lambda[c->macro[i]] * c->area[i];
-          nact += s->active[c->macro[i]] != 0;
-        }
-      snprintf (key, sizeof key, "contact_normal_force.%s", name);
-      if (!(status = lac_summary_add (sum, key, "%.10e", f)))
-        {
-          snprintf (key, sizeof key, "active_macro_elements.%s", name);
-          status = lac_summary_add (sum, key, "%zu", nact);
-        }
-    }
+    status = nl_pair (in, s, p, sum);
   return status;
 }
 

@@ -1,0 +1,215 @@
+# tests/cases-pairs.sh -- several contact pairs (sourced by tests/run.sh)
+#
+# The scenes of chapter 06, section 5, through `lac run`:
+#   stacked   three stacked blocks, two non-matching interfaces (two
+#             [contact] sections, the middle block slave of one and master
+#             of the other, held by contact alone), the ten element types,
+#             also with a middle block 5 mm thin (one cell across, thinner
+#             than a facet of its neighbours): the relative errors of
+#             lambda (-p on every macro-element of both interfaces) and of
+#             the stresses <= 1e-12, every multiplier active, <= 3
+#             active-set iterations;
+#   corner    a block pressed into the inner corner of an L-shaped body
+#             (one slave surface turning 90 degrees; quad4, hex8 with
+#             both cuts): lambda = -p on both faces to 1e-12, and no
+#             macro-element spans the corner (the centroid of each lies on
+#             one of the two faces);
+#   blocks    five bodies, six pairs, a crosspoint (quad4, quad8): every
+#             block held by contact alone is in equilibrium to 1e-10 (the
+#             forces of its pairs, contact_force.NAME on the slave and
+#             minus it on the master, and its loads), the active set
+#             settles;
+#   outputs   the per-pair keys of the summary, the pair column of
+#             contact.csv, the pair field of contact.vtu;
+#   bad       the roles of the pairs checked, messages naming the section.
+# Same conventions as tests/cases.sh ($B, pass, fail).
+
+B=${B:-build}
+PC="$B/cases-pairs"
+LAC="$B/lac"
+rm -rf "$PC"
+mkdir -p "$PC"
+PD=chapters/06-assembly
+
+pairs_ok () { pass=$((pass+1)); [ -n "$LAC_TEST_VERBOSE" ] && echo "ok   case $1"; return 0; }
+pairs_fail () { fail=$((fail+1)); echo "FAIL case $1"; echo "     $2"; }
+pairs_val () { sed -n "s/^$2 = //p" "$1"; }
+
+# patch NAME SCENE ARGS...: lambda and sigma exact to 1e-12, all active
+patch () {
+  name=$1 scene=$2
+  shift 2
+  if ! "$LAC" run "$PD/$scene.scene" "$@" --quiet --no-output > "$PC/$name.out" 2> "$PC/$name.err"; then
+    pairs_fail "$name" "lac run failed: $(tail -1 "$PC/$name.err")"
+    return
+  fi
+  el=$(pairs_val "$PC/$name.out" max_rel_err_lambda)
+  es=$(pairs_val "$PC/$name.out" max_rel_err_sigma)
+  it=$(pairs_val "$PC/$name.out" newton_iterations)
+  na=$(pairs_val "$PC/$name.out" active)
+  nm=$(pairs_val "$PC/$name.out" multipliers)
+  if awk -v a="$el" -v b="$es" -v n="$it" -v na="$na" -v nm="$nm" 'BEGIN {
+       exit !(a != "" && a <= 1e-12 && b != "" && b <= 1e-12 && n >= 1 && n <= 3 && na == nm && nm > 0) }'; then
+    pairs_ok "$name"
+  else
+    pairs_fail "$name" "max_rel_err_lambda = $el, max_rel_err_sigma = $es (want <= 1e-12), newton_iterations = $it (want <= 3), active = $na of $nm"
+  fi
+}
+
+for t in 50 5; do
+  for e in tri3 tri6 quad4 quad8 quad9; do
+    patch "stacked2d-$e-t$t" stacked2d --set element="$e" --set mesh.numbers=t="$t"
+  done
+  for e in tet4 tet10 hex8 hex20 hex27; do
+    patch "stacked3d-$e-t$t" stacked3d --set element="$e" --set mesh.numbers=t="$t"
+  done
+done
+# the strategies that take bodies held by contact alone
+for s in dense saddle augmented split; do
+  patch "stacked2d-quad8-t5-$s" stacked2d --set element=quad8 --set mesh.numbers=t=5 --strategy "$s"
+done
+
+# ---- the inner corner -----------------------------------------------------
+# corner NAME SCENE ARGS...: the patch test, then no macro-element whose
+# centroid is off both faces x = 50 and y = 50
+corner () {
+  name=$1 scene=$2
+  shift 2
+  patch "$name" "$scene" "$@"
+  rm -rf "$PC/$name.d"
+  if "$LAC" run "$PD/$scene.scene" "$@" --out "$PC/$name.d" --quiet > /dev/null 2>&1; then
+    bad=$(awk -F, 'NR > 1 { dx = $2 - 50; dy = $3 - 50; if (dx * dx > 1e-18 && dy * dy > 1e-18) b++ }
+                   END { print b + 0 }' "$PC/$name.d/contact.csv")
+    nx=$(awk -F, 'NR > 1 && ($2 - 50)^2 <= 1e-18 { n++ } END { print n + 0 }' "$PC/$name.d/contact.csv")
+    ny=$(awk -F, 'NR > 1 && ($3 - 50)^2 <= 1e-18 { n++ } END { print n + 0 }' "$PC/$name.d/contact.csv")
+  else
+    bad=run-failed nx=0 ny=0
+  fi
+  if [ "$bad" = 0 ] && [ "$nx" -gt 0 ] && [ "$ny" -gt 0 ]; then
+    pairs_ok "$name-no-straddle"
+  else
+    pairs_fail "$name-no-straddle" "$bad macro-elements span the corner ($nx on x = 50, $ny on y = 50)"
+  fi
+}
+corner corner2d-quad4 corner2d
+corner corner2d-quad4-level1 corner2d --set level=1
+corner corner3d-hex8 corner3d
+corner corner3d-hex8-six corner3d --set contact.corner.hex_cut=six
+
+# ---- five bodies, six pairs: the equilibrium of each held block -----------
+# blocks NAME ARGS...: B, C, D balance their loads with their pairs
+blocks () {
+  name=$1
+  shift
+  if ! "$LAC" run "$PD/blocks.scene" "$@" --quiet --no-output > "$PC/$name.out" 2> "$PC/$name.err"; then
+    pairs_fail "$name" "lac run failed: $(tail -1 "$PC/$name.err")"
+    return
+  fi
+  res=$(awk '
+    / = / { v[$1] = $3; w[$1] = $4 }
+    END {
+      # the loads (N/mm): C pushed left by 25 MPa x 40 and down by 10 x 50,
+      # D left by 20 x 30 and down by 25 x 50
+      bx = v["contact_force.B_on_A"] + v["contact_force.B_on_W"] - v["contact_force.C_on_B"] - v["contact_force.D_on_B"]
+      by = w["contact_force.B_on_A"] + w["contact_force.B_on_W"] - w["contact_force.C_on_B"] - w["contact_force.D_on_B"]
+      cx = v["contact_force.C_on_B"] + v["contact_force.C_on_A"] - 1000
+      cy = w["contact_force.C_on_B"] + w["contact_force.C_on_A"] - 500
+      dx = v["contact_force.D_on_B"] + v["contact_force.D_on_W"] - 600
+      dy = w["contact_force.D_on_B"] + w["contact_force.D_on_W"] - 1250
+      m = 0
+      split(bx " " by " " cx " " cy " " dx " " dy, r, " ")
+      for (i = 1; i <= 6; i++) { a = r[i] < 0 ? -r[i] : r[i]; if (a > m) m = a }
+      printf "%.3e", m / 1250
+    }' "$PC/$name.out")
+  it=$(pairs_val "$PC/$name.out" newton_iterations)
+  np=$(grep -c '^contact_force\.' "$PC/$name.out")
+  if awk -v r="$res" -v n="$it" -v np="$np" 'BEGIN { exit !(r != "" && r <= 1e-10 && n >= 1 && n <= 10 && np == 6) }'; then
+    pairs_ok "$name"
+  else
+    pairs_fail "$name" "largest imbalance of B, C, D / 1250 N = $res (want <= 1e-10), newton_iterations = $it, $np contact_force.NAME lines (want 6)"
+  fi
+}
+blocks blocks-quad4
+blocks blocks-quad8 --set element=quad8
+blocks blocks-quad4-level1 --set level=1
+
+# ---- outputs: summary keys, contact.csv pair column, contact.vtu pair -----
+rm -rf "$PC/out"
+if "$LAC" run "$PD/stacked2d.scene" --set element=quad8 --set output.vtu_format=ascii \
+     --out "$PC/out" --quiet > "$PC/out.sum" 2> "$PC/out.err"; then
+  nl=$(awk -F, 'NR > 1 && $18 == "lower"' "$PC/out/contact.csv" | wc -l)
+  nu=$(awk -F, 'NR > 1 && $18 == "upper"' "$PC/out/contact.csv" | wc -l)
+  al=$(pairs_val "$PC/out.sum" active_macro_elements.lower)
+  au=$(pairs_val "$PC/out.sum" active_macro_elements.upper)
+  fl=$(pairs_val "$PC/out.sum" contact_normal_force.lower)
+  fv=$(pairs_val "$PC/out.sum" contact_force.upper)
+  rv=$(pairs_val "$PC/out.sum" contact_resultant)
+  # each interface carries the whole load, 25 MPa x 50 mm
+  if [ "$nl" -gt 0 ] && [ "$nl" = "$al" ] && [ "$nu" = "$au" ] \
+     && awk -v f="$fl" -v v="$fv" -v r="$rv" 'BEGIN { split(v, a, " "); split(r, b, " ")
+          exit !((f + 1250)^2 < 1e-16 && (a[2] - 1250)^2 < 1e-16 && a[1]^2 < 1e-16 && (b[2] - 2500)^2 < 1e-16) }'; then
+    pairs_ok pairs-summary-csv
+  else
+    pairs_fail pairs-summary-csv "contact.csv rows lower $nl upper $nu, active_macro_elements.lower $al .upper $au, contact_normal_force.lower = $fl, contact_force.upper = $fv, contact_resultant = $rv"
+  fi
+  if grep -q 'Name="pair"' "$PC/out/contact.vtu" \
+     && awk '/Name="pair"/ { on = 1; next } on && /<\/DataArray>/ { exit } on { for (i = 1; i <= NF; i++) seen[$i] = 1 }
+             END { exit !(seen[0] && seen[1]) }' "$PC/out/contact.vtu"; then
+    pairs_ok pairs-vtu
+  else
+    pairs_fail pairs-vtu "contact.vtu has no pair field with the values 0 and 1"
+  fi
+else
+  pairs_fail pairs-outputs "lac run failed: $(tail -1 "$PC/out.err")"
+fi
+
+# the large-deformation loop over two pairs: Newton converges, each
+# interface carries the load (its normal force and its force vector)
+sed '/^\[exact\]/,$d' "$PD/stacked2d.scene" > "$PC/ld.scene"
+cp "$PD/stacked2d.geo" "$PC/"
+if "$LAC" run "$PC/ld.scene" --set scene.large_deformation=yes --set material.all.E=200 \
+     --quiet --no-output > "$PC/ld.out" 2> "$PC/ld.err" \
+   && awk -v a="$(pairs_val "$PC/ld.out" contact_normal_force.lower)" \
+          -v b="$(pairs_val "$PC/ld.out" contact_normal_force.upper)" \
+          -v f="$(pairs_val "$PC/ld.out" contact_force.upper)" \
+          -v n="$(pairs_val "$PC/ld.out" newton_iterations)" \
+          'BEGIN { split(f, v, " ")
+                   exit !((a + 1250)^2 < 1e-12 && (b + 1250)^2 < 1e-12 && (v[2] - 1250)^2 < 1e-12 && v[1]^2 < 1e-12 && n <= 6) }'; then
+  pairs_ok pairs-large-deformation
+else
+  pairs_fail pairs-large-deformation "$(tail -1 "$PC/ld.err"); $(grep -E 'contact_normal_force|newton_iterations' "$PC/ld.out" | tr '\n' ' ')"
+fi
+
+# ---- bad input: one line naming the section -------------------------------
+# pairs_bad NAME "WORD|WORD..." ARGS...
+pairs_bad () {
+  name=$1 words=$2
+  shift 2
+  "$LAC" run "$@" --quiet --no-output > "$PC/$name.out" 2> "$PC/$name.err"
+  rc=$?
+  msg=$(cat "$PC/$name.err")
+  ok=1
+  [ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] || ok=0
+  [ "$(wc -l < "$PC/$name.err")" -eq 1 ] || ok=0
+  old_ifs=$IFS; IFS='|'
+  for w in $words; do
+    case "$msg" in *"$w"*) ;; *) ok=0 ;; esac
+  done
+  IFS=$old_ifs
+  if [ $ok = 1 ]; then pairs_ok "bad-$name"; else pairs_fail "bad-$name" "exit $rc, stderr: $msg (want: $words)"; fi
+}
+S2="$PD/stacked2d.scene"
+pairs_bad slave-and-master "[contact upper] master = 'middle_bottom'|slave facet of [contact lower]|constrained twice" \
+  "$S2" --set contact.upper.master=middle_bottom
+pairs_bad slave-twice "[contact upper] slave = 'middle_bottom'|already the slave group of [contact lower]" \
+  "$S2" --set contact.upper.slave=middle_bottom
+pairs_bad nts-pairs "[contact upper] method = 'nts'|one [contact] section" \
+  "$S2" --set contact.upper.method=nts
+pairs_bad loop-keys "[contact upper] strategy = 'saddle'|one loop|differs from [contact lower]" \
+  "$S2" --set contact.lower.strategy=dense --set contact.upper.strategy=saddle
+pairs_bad second-pair "[contact upper]|no slave facet overlaps" \
+  "$S2" --set contact.upper.master=lower_bottom
+pairs_bad pulled-off "(translation along y)|held by contact alone|active-set iteration" \
+  "$S2" --set load.top.pressure=-25
+pairs_bad hex20-pyramids "[contact corner] slave = 'block_inner'|pyramids|hex_cut = six" \
+  "$PD/corner3d.scene" --set element=hex20 --set contact.corner.hex_cut=pyramids
