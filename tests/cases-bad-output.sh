@@ -63,6 +63,17 @@ ro_case full "cannot write the summary to stdout (No space left on device)|nothi
 rc=$(cat "$RO/pipe.rc")
 ro_case pipe "cannot write the summary to stdout (Broken pipe)|nothing was published"
 
+# The same pipe after lac infsup and lac render --list (what they print is
+# the whole result): an error, not a death.
+( sleep 0.5; env --default-signal=PIPE "$RO_LAC" infsup chapters/08-experiments/taylor2d.scene --quiet 2> "$RO/pipe-infsup.err"
+  echo $? > "$RO/pipe-infsup.rc" ) | true
+rc=$(cat "$RO/pipe-infsup.rc")
+ro_case pipe-infsup "cannot write to stdout: Broken pipe"
+( sleep 0.5; env --default-signal=PIPE "$RO_LAC" render "$RO/keep" --list 2> "$RO/pipe-render.err"
+  echo $? > "$RO/pipe-render.rc" ) | true
+rc=$(cat "$RO/pipe-render.rc")
+ro_case pipe-render "cannot write to stdout: Broken pipe"
+
 "$RO_LAC" run $RO_SCENE $RO_NEW --quiet >&- 2> "$RO/closed.err"
 rc=$?
 ro_case closed "stdout is closed"

@@ -13,7 +13,8 @@
 #   mpi              mpirun -n 1 and -n 2 give the same lambda and max_u
 #                    to 1e-8 (patch test, spheres), only process 0 prints
 #                    the summary and writes the files, processes = 2;
-#   options          --petsc-options and PETSC_OPTIONS reach PETSc
+#   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
+#                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
 #                    "lac: ..." and exit status 1;
@@ -174,6 +175,21 @@ if [ "$have_petsc" = 1 ]; then
     petsc_ok "options bad"
   else
     petsc_fail "options bad" "want exit 1 and one line 'lac: ... nonsense', got $rc: $(cat "$C/opt-bad.err")"
+  fi
+
+  # an option nothing read is named (a run without PETSc's solver; a typo)
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor2d.scene" --petsc-options "-ksp_type bogus" \
+    --quiet --no-output > "$C/opt-unused.out" 2> "$C/opt-unused.err"
+  rc=$?
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "-elast_pc_type jacobi -kps_monitor" \
+    --quiet --no-output > "$C/opt-typo.out" 2> "$C/opt-typo.err"
+  rc2=$?
+  if [ "$rc" = 0 ] && [ "$rc2" = 0 ] && [ "$(wc -l < "$C/opt-unused.err")" -eq 1 ] \
+     && grep -q "^lac: warning: 1 PETSc option was never read: -ksp_type " "$C/opt-unused.err" \
+     && grep -q "never read: -kps_monitor " "$C/opt-typo.err" && ! grep -q elast_pc "$C/opt-typo.err"; then
+    petsc_ok "options unused"
+  else
+    petsc_fail "options unused" "want exit 0 and the warnings, got $rc $rc2: $(cat "$C/opt-unused.err" "$C/opt-typo.err")"
   fi
 
   # ---- large deformation: refused, not solved by CHOLMOD ---------------

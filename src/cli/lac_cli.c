@@ -1,6 +1,7 @@
 /* lac_cli.c -- helpers of the command line (see lac_cli.h). */
 #include "cli/lac_cli.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +15,17 @@ lac_cli_print_error (const char *msg)
   for (const char *p = msg; *p; p++)
     fputc (*p == '\n' || *p == '\r' ? ' ' : *p, stderr);
   fputc ('\n', stderr);
+}
+
+int
+lac_cli_flush_stdout (void)
+{
+  errno = 0;
+  if (fflush (stdout) == 0 && !ferror (stdout))
+    return 0;
+  fprintf (stderr, "lac: cannot write to stdout: %s\n",
+           strerror (errno ? errno : EIO));
+  return LAC_CLI_FAILURE;
 }
 
 void

@@ -14,6 +14,12 @@ enum { LAC_CLI_FAILURE = 1, LAC_CLI_USAGE = 2 };
 /* "lac: MESSAGE" on stderr, as one line (newlines become blanks). */
 void lac_cli_print_error (const char *msg);
 
+/* Flush stdout at the end of a subcommand: 0, or LAC_CLI_FAILURE after
+ * "lac: cannot write to stdout: REASON" (a pipe whose reader is gone:
+ * SIGPIPE is ignored by main, so the write fails with EPIPE; a full
+ * disk). */
+int lac_cli_flush_stdout (void);
+
 /* The failure of a library call: "lac: PLACE: MESSAGE" when the stored
  * message names no place of its own (base/lac_status.h), else "lac:
  * MESSAGE"; what status means when the library left no message.  place

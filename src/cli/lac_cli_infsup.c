@@ -249,7 +249,7 @@ lac_cli_infsup (int argc, char **argv)
            || (status = estimate (r, &a)))
     lac_cli_print_failure (sc->path, status);
   else
-    ret = fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
+    ret = lac_cli_flush_stdout ();
   lac_run_free (r);
   lac_scene_free (sc);
   lac_free (a.set);

@@ -494,7 +494,7 @@ lac_cli_render (int argc, char **argv)
       lac_render_result_list (res, list, sizeof list);
       printf ("%s\n", list);
       lac_render_result_free (res);
-      return 0;
+      return lac_cli_flush_stdout ();
     }
   ret = render_result (&a, res, out);
   lac_render_result_free (res);
@@ -504,5 +504,5 @@ lac_cli_render (int argc, char **argv)
       return LAC_CLI_FAILURE;
     }
   printf ("%s\n", out);
-  return fflush (stdout) == 0 ? 0 : LAC_CLI_FAILURE;
+  return lac_cli_flush_stdout ();
 }

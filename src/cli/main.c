@@ -119,14 +119,15 @@ static const char *help_text =
   "                    methods and algebraic multigrid, no factorization,\n"
   "                    on N MPI processes; also without contact; not with\n"
   "                    large deformation); overrides the scene's [contact]\n"
-  "                    strategy (chapters 07, 11)\n"
+  "                    strategy (chapters 07, 13)\n"
   "  --petsc-options \"...\"  PETSc options for the petsc strategy; they win\n"
   "                    over the environment variable PETSC_OPTIONS.  The\n"
   "                    solve of K alone (no [contact]) takes the prefix\n"
   "                    elast_ (-elast_ksp_monitor -elast_pc_type hypre),\n"
   "                    the projected CG of a contact scene none\n"
-  "                    (-ksp_monitor); chapter 11 lists them.  PETSc does\n"
-  "                    not say when an option goes unused\n"
+  "                    (-ksp_monitor); chapter 13 lists them.  An option\n"
+  "                    that nothing read is named in a warning after the\n"
+  "                    run\n"
   "  --out DIR         output directory (created if needed).  Default: the\n"
   "                    scene's [scene] out, else out/<scene name without\n"
   "                    .scene>, relative to the current directory\n"
@@ -491,6 +492,20 @@ prepare_streams (void)
   return EXIT_SUCCESS;
 }
 
+/* After a run: the PETSc options that nothing read (a wrong prefix, or a
+ * run that solved nothing with PETSc) are named on stderr. */
+static void
+warn_unused_options (void)
+{
+  char names[512];
+  int n = lac_petsc_options_unused (names, sizeof names);
+  if (n > 0)
+    fprintf (stderr, "lac: warning: %d PETSc option%s never read: %s "
+             "(they are read by the petsc strategy only; lac --help, "
+             "--petsc-options, says which prefix)\n",
+             n, n > 1 ? "s were" : " was", names);
+}
+
 /* The number of processes an MPI launcher started (Open MPI, MPICH),
  * 1 without one. */
 static int
@@ -559,6 +574,7 @@ main (int argc, char **argv)
   /* The other subcommands parse their own arguments (and --help). */
   if (strcmp (argv[1], "infsup") == 0 || strcmp (argv[1], "render") == 0)
     {
+      signal (SIGPIPE, SIG_IGN);   /* a reader gone: EPIPE, a message */
       lac_init ();
       ret = argv[1][0] == 'i' ? lac_cli_infsup (argc - 1, argv + 1)
                               : lac_cli_render (argc - 1, argv + 1);
@@ -593,6 +609,8 @@ main (int argc, char **argv)
       lac_init ();
       if ((ret = start_processes (&c, &rank)) == EXIT_SUCCESS)
         ret = rank == 0 ? cmd_run (&c) : serve ();
+      if (ret == EXIT_SUCCESS && rank == 0)
+        warn_unused_options ();
       lac_petsc_finalize ();
       lac_finalize ();
     }

@@ -48,6 +48,14 @@ lac_petsc_finalize (void)
 {
 }
 
+int
+lac_petsc_options_unused (char *names, size_t n)
+{
+  if (n)
+    names[0] = 0;
+  return 0;
+}
+
 void
 lac_petsc_rank (int *rank, int *size)
 {
@@ -153,6 +161,30 @@ lac_petsc_initialize (const char *options)
   if (options && *options && (e = PetscOptionsInsertString (NULL, options)))
     return lac_petsc_fail (e, __func__, options);
   return LAC_SUCCESS;
+}
+
+int
+lac_petsc_options_unused (char *names, size_t n)
+{
+  PetscInt count = 0;
+  char **name = NULL, **value = NULL;
+  size_t used = 0;
+  if (n)
+    names[0] = 0;
+  if (!lac_petsc_initialized ()
+      || PetscOptionsLeftGet (NULL, &count, &name, &value))
+    return 0;
+  for (PetscInt i = 0; i < count; i++)
+    {
+      int w = snprintf (names + used, n - used, "%s-%s", i ? " " : "",
+                        name[i]);
+      if (w < 0 || (size_t) w >= n - used)
+        break;
+      used += (size_t) w;
+    }
+  int unused = (int) count;               /* Restore sets count to 0 */
+  PetscOptionsLeftRestore (NULL, &count, &name, &value);
+  return unused;
 }
 
 void

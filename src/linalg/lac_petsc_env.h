@@ -18,6 +18,8 @@
 #ifndef LAC_PETSC_ENV_H
 #define LAC_PETSC_ENV_H
 
+#include <stddef.h>
+
 #define LAC_PETSC_INSTALL "apt-get install -y --no-install-recommends " \
   "libpetsc-real-dev openmpi-bin, then make clean && make"
 
@@ -34,6 +36,12 @@ int lac_petsc_initialized (void);
  * MPI if lac_petsc_initialize started them.  Last call of main() on
  * every process; nothing without PETSc or before initialize. */
 void lac_petsc_finalize (void);
+/* The options given to PETSc (command line, PETSC_OPTIONS) that nothing
+ * read: their names joined by spaces into names[n] (cut if longer); the
+ * count.  0 without PETSc or before initialize.  Called by the root after
+ * the run, so that an option with a wrong prefix, or one given to a run
+ * that solved nothing with PETSc, is not ignored silently. */
+int lac_petsc_options_unused (char *names, size_t n);
 /* This process and the number of processes: 0 and 1 without MPI or
  * before lac_petsc_initialize. */
 void lac_petsc_rank (int *rank, int *size);

@@ -910,7 +910,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
  * whatever the units (its GAMG with the rigid motions is not
  * scale-invariant: with lengths and moduli scaled by powers of two, the
  * results changed in their last bits, which the projected CG amplifies to
- * 1e-9; chapter 11). */
+ * 1e-9; chapter 13). */
 static double
 mean_diagonal (const lac_csc *K)
 {

@@ -4,7 +4,7 @@
  *
  * Strategy (e) of solve/lac_strategy.h, for the 3D meshes whose Cholesky
  * factor does not fit in memory (a 1,029,000-dof hex8 cube needs 20.5 GB,
- * chapter 12).  It solves the augmented form of (*) of
+ * chapter 13).  It solves the augmented form of (*) of
  * solve/lac_system.h (solve/lac_augmented.h: adding C_A W_A times the
  * constraint changes neither U nor lambda),
  *
@@ -49,7 +49,7 @@
  * ||b||: of K U = f when k = 0; of the forces of (*W) for the projected
  * CG, whose constraint rows hold to rounding, so that no tolerance adds
  * forces to gaps and nothing depends on the units (the same scene in mm
- * and MPa or in m and Pa: chapter 11); fieldsplit's GMRES takes the norm
+ * and MPa or in m and Pa: chapter 13); fieldsplit's GMRES takes the norm
  * of the whole of (*W), forces and gaps together.  The residual reported
  * with the iterations of every solve is, for the projected CG, the larger
  * of the relative residuals of the two rows of (*W), each in its unit.
