@@ -5,7 +5,8 @@
 #             [contact] sections, the middle block slave of one and master
 #             of the other, held by contact alone), the ten element types,
 #             also with a middle block 5 mm thin (one cell across, thinner
-#             than a facet of its neighbours): the relative errors of
+#             than a facet of its neighbours), and axisymmetric (three
+#             stacked cylinders): the relative errors of
 #             lambda (-p on every macro-element of both interfaces) and of
 #             the stresses <= 1e-12, every multiplier active, <= 3
 #             active-set iterations;
@@ -63,6 +64,12 @@ for t in 50 5; do
   for e in tet4 tet10 hex8 hex20 hex27; do
     patch "stacked3d-$e-t$t" stacked3d --set element="$e" --set mesh.numbers=t="$t"
   done
+done
+# axisymmetric: three stacked cylinders, the same uniform pressure
+for e in quad4 tri6; do
+  patch "stacked-axi-$e" stacked2d --set element="$e" --set scene.model=axisymmetric \
+    --set dirichlet.lower_left.symmetry=r --set dirichlet.middle_left.symmetry=r \
+    --set dirichlet.upper_left.symmetry=r --set dirichlet.bottom.symmetry=z
 done
 # the strategies that take bodies held by contact alone
 for s in dense saddle augmented split; do
