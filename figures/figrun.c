@@ -92,27 +92,49 @@ precise_time (const lac_run *r, const char *key)
   return -1;
 }
 
-/* One value per slave sub-facet of the macro-mesh. */
-static double *
-facet_values (const lac_run *r, const char *kind)
+/* The slave sub-facets of every contact pair (cell, face) and one value
+ * per sub-facet: lambda or the mean gap of its macro-element (slot). */
+typedef struct facets
 {
-  const lac_macro *M = r->setup.macro;
+  size_t n;
+  size_t *cell;
+  int *face;
+  double *v;
+} facets;
+
+static int
+facet_values (const lac_run *r, const char *kind, facets *f)
+{
+  const lac_run_setup *st = &r->setup;
   const lac_contact *c = r->sys.contact;
-  double *v = malloc ((M->ptr[M->n] ? M->ptr[M->n] : 1) * sizeof *v);
-  if (!v)
-    return NULL;
-  for (size_t m = 0; m < M->n; m++)
-    {
-      long i = c->mult[m];
-      double val = NAN;
-      if (i >= 0 && strcmp (kind, "lambda") == 0)
-        val = r->sol.newton->lambda[i];
-      else if (i >= 0 && c->area[i] > 0)
-        val = r->sol.newton->d[i] / c->area[i];
-      for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)
-        v[j] = val;
-    }
-  return v;
+  size_t j = 0;
+  f->n = 0;
+  for (size_t p = 0; p < st->npairs; p++)
+    f->n += st->macro[p]->ptr[st->macro[p]->n];
+  f->cell = malloc ((f->n + 1) * sizeof *f->cell);
+  f->face = malloc ((f->n + 1) * sizeof *f->face);
+  f->v = malloc ((f->n + 1) * sizeof *f->v);
+  if (!f->cell || !f->face || !f->v)
+    return 1;
+  for (size_t p = 0; p < st->npairs; p++)
+    for (size_t m = 0; m < st->macro[p]->n; m++)
+      {
+        const lac_macro *M = st->macro[p];
+        size_t slot = st->set.offset[p] + m;
+        long i = c->mult[slot];
+        double val = NAN;
+        if (i >= 0 && strcmp (kind, "lambda") == 0)
+          val = r->sol.newton->lambda[slot];
+        else if (i >= 0 && c->area[i] > 0)
+          val = r->sol.newton->d[slot] / c->area[i];
+        for (size_t q = M->ptr[m]; q < M->ptr[m + 1]; q++, j++)
+          {
+            f->cell[j] = M->cell[q];
+            f->face[j] = M->face[q];
+            f->v[j] = val;
+          }
+      }
+  return 0;
 }
 
 /* A nodal field of the mesh: u_R or |u|. */
@@ -148,19 +170,17 @@ do_draw (const lac_run *r, const draw *dw)
   const double *u = dw->o.scale != 0 ? r->sol.u : NULL;
   if (strcmp (dw->kind, "lambda") == 0 || strcmp (dw->kind, "gap") == 0)
     {
-      if (!r->setup.macro || !r->sys.contact || !r->sol.newton)
+      if (!r->setup.npairs || !r->sys.contact || !r->sol.newton)
         {
           fprintf (stderr, "figrun: --draw %s: the scene has no contact\n",
                    dw->kind);
           return 1;
         }
-      double *v = facet_values (r, dw->kind);
-      if (!v)
-        return 1;
-      const lac_macro *M = r->setup.macro;
-      status = lac_render_facets (m, u, M->ptr[M->n], M->cell, M->face, v,
-                                  &dw->o, dw->file);
-      free (v);
+      facets f = { 0, NULL, NULL, NULL };
+      status = facet_values (r, dw->kind, &f)
+               ? 1 : lac_render_facets (m, u, f.n, f.cell, f.face, f.v,
+                                        &dw->o, dw->file);
+      free (f.cell), free (f.face), free (f.v);
     }
   else if (strcmp (dw->kind, "u_R") == 0 || strcmp (dw->kind, "u") == 0)
     {

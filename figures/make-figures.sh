@@ -1,7 +1,8 @@
 #!/bin/sh
 # make-figures.sh -- regenerate figures/: the counterparts of the paper's
 # Figure 2 (the refinement of the first layer, chapter 03) and Figures
-# 3-11 [LAC §5], and the accuracy-cost study (chapter 12).
+# 3-11 [LAC §5], several contact pairs (Figure 13, chapter 06) and the
+# accuracy-cost study (chapter 12).
 #
 #   sh figures/make-figures.sh [BUILD_DIR] [--quick] [--out DIR] [--no-bench]
 #
@@ -142,9 +143,9 @@ fi
 
 # ---- levels: the paper-like meshes, or coarse ones with --quick ---------
 if [ $QUICK = 1 ]; then
-  LS1=0 LT2=0 LT3=0 LSA=0 LS3=0 LM2=1 LM3=0
+  LS1=0 LT2=0 LT3=0 LSA=0 LS3=0 LM2=1 LM3=0 LB=0
 else
-  LS1=1 LT2=4 LT3=1 LSA=2 LS3=1 LM2=3 LM3=2
+  LS1=1 LT2=4 LT3=1 LSA=2 LS3=1 LM2=3 LM3=2 LB=1
 fi
 
 # ---- Figure 1 (chapter 01): one thick sphere, no contact -----------------
@@ -588,6 +589,21 @@ else
   fi
 fi
 say "fig10-11 ($(since "$t") s)"
+fi
+
+# ---- Figure 13 (chapter 06): five bodies, six contact pairs -------------
+if want 13; then
+t=$(date +%s)
+B6=chapters/06-assembly/blocks.scene
+if frun blocks $B6 --set level=$LB --edges \
+     --title "five blocks, six pairs: lambda on the slave sub-facets" \
+     --label lambda --units MPa --draw lambda "$OUT/fig13-blocks-quad4-lambda.png" \
+   && run blocks-run $B6 --set level=$LB; then
+  render blocks-run fig13-blocks-quad4-von-mises.png --field von_mises --edges \
+    --units MPa --scale 5 \
+    --title "five blocks, six contact pairs (quad4): von Mises, deformed x5"
+fi
+say "fig13 ($(since "$t") s)"
 fi
 
 # ---- the accuracy-cost study (chapter 12) ----------------------------------

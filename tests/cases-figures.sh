@@ -57,7 +57,8 @@ else
            fig06-spheres3d-tet10-u-r fig06-spheres3d-tet10-von-mises \
            fig06-spheres3d-tet10-sigma-rr fig06-spheres3d-tet10-lambda \
            fig07-manufactured2d-quad8-u fig08-manufactured3d-hex20-u \
-           fig08-manufactured3d-hex20-lambda; do
+           fig08-manufactured3d-hex20-lambda fig13-blocks-quad4-von-mises \
+           fig13-blocks-quad4-lambda; do
     png_check "png-$f" "$C/png/$f.png" 800 600 0.10 100
   done
   # a gnuplot chart: 900 x 620, curves and text

@@ -140,7 +140,7 @@ run_to_assemble (lac_run *r, int quiet)
 static int
 estimate (lac_run *r, const args *a)
 {
-  const lac_contact *c = r->sys.contact;
+  const lac_contact *c = r->setup.data.all;
   char *fixed = lac_calloc (r->sys.ndof, 1);
   double *h = lac_malloc ((c->k ? c->k : 1) * sizeof *h);
   lac_csc *G = NULL, *M = NULL;
@@ -156,7 +156,8 @@ estimate (lac_run *r, const args *a)
   nfixed = lac_infsup_fixed_dofs (r->sys.K, fixed);        /* Dirichlet dofs */
   if ((!energy && (status = lac_infsup_gram_h1 (r->mesh, r->model, fixed,
                                                 0.0, &G)))      /* A */
-      || (status = lac_infsup_norm_lac (r->mesh, r->setup.macro, c, h, &M)))
+      || (status = lac_infsup_norm_lac (r->mesh, r->setup.macro[0], c, h,
+                                        &M)))
     goto done;
   lac_infsup_opts_init (&o);
   o.path = a->path;
@@ -237,6 +238,10 @@ lac_cli_infsup (int argc, char **argv)
              "[LAC (10)] is a property of the contact multipliers; add a "
              "[contact NAME] section with slave and master groups\n",
              sc->path);
+  else if (sc->ncontact > 1)
+    fprintf (stderr, "lac: %s: %zu [contact] sections: lac infsup "
+             "estimates the constant of one pair; run it on a scene with "
+             "one of them\n", sc->path, sc->ncontact);
   else if (!(r = lac_run_alloc (sc, &ro)))
     lac_cli_print_failure (sc->path, LAC_ENOMEM);
   /* 2.-4. The stages up to assemble, then the estimate. */

@@ -34,26 +34,34 @@ pair_facets (const lac_contact_pair *p, const lac_mesh *cur,
 }
 
 int
-lac_contact_pair_build (const lac_contact_pair *p, const double *x,
-                        lac_pairing **P, lac_contact **c)
+lac_contact_pair_pairing (const lac_contact_pair *p, const double *x,
+                          lac_pairing **P)
 {
   lac_mesh cur = moved (p->mesh, x);
   const lac_macro *M = p->M;
-  lac_pairing_facets S = { &cur, M->ptr[M->n], M->cell, M->face }, Mf;
+  lac_pairing_facets S = { &cur, M->ptr[M->n], M->cell, M->face };
+  *P = NULL;
+  return pair_facets (p, &cur, &S, &p->popts, P);
+}
+
+int
+lac_contact_pair_contact (const lac_contact_pair *p, const double *x,
+                          const lac_pairing *P, lac_contact **c)
+{
+  lac_mesh cur = moved (p->mesh, x);
+  const lac_macro *M = p->M;
+  lac_pairing_facets Mf;
   double eps = p->epsilon > 0 ? p->epsilon : LAC_EPSILON_DEFAULT;
   int status;
-  *P = NULL;
   *c = NULL;
-  if ((status = pair_facets (p, &cur, &S, &p->popts, P)))
-    return status;
   if (p->master)
     {
       Mf = *p->master;
       Mf.mesh = &cur;
     }
-  status = p->nts ? lac_contact_build_nts (&cur, p->model, M, *P,
+  status = p->nts ? lac_contact_build_nts (&cur, p->model, M, P,
                                            p->master ? &Mf : NULL, c)
-                  : lac_contact_build (&cur, p->model, M, *P,
+                  : lac_contact_build (&cur, p->model, M, P,
                                        p->master ? &Mf : NULL, eps, c);
   if (status == LAC_EADMISS && p->popts.allow_empty)
     {
@@ -63,6 +71,17 @@ lac_contact_pair_build (const lac_contact_pair *p, const double *x,
   if (!status && p->offset != 0)
     status = lac_contact_set_offset (*c, p->offset);   /* g0 - delta */
   return status;
+}
+
+int
+lac_contact_pair_build (const lac_contact_pair *p, const double *x,
+                        lac_pairing **P, lac_contact **c)
+{
+  int status;
+  *c = NULL;
+  if ((status = lac_contact_pair_pairing (p, x, P)))
+    return status;
+  return lac_contact_pair_contact (p, x, *P, c);
 }
 
 double

@@ -66,6 +66,12 @@ typedef struct lac_contact_uncovered
  * (no constraint).  *P and *c are the caller's to free. */
 int lac_contact_pair_build (const lac_contact_pair *p, const double *x,
                             lac_pairing **P, lac_contact **c);
+/* The two halves of lac_contact_pair_build: the pairing alone, then the
+ * contact data of a pairing made at the same x. */
+int lac_contact_pair_pairing (const lac_contact_pair *p, const double *x,
+                              lac_pairing **P);
+int lac_contact_pair_contact (const lac_contact_pair *p, const double *x,
+                              const lac_pairing *P, lac_contact **c);
 
 /* The macro-elements of p->M that have no column in c (all if c is NULL),
  * paired again with the nodes at x and `reach` added to the pairing

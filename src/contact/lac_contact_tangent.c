@@ -614,3 +614,72 @@ lac_contact_tangent_rotate (lac_contact_tangent *t, const lac_frames *f)
     }
   return status;
 }
+
+/* The sizes of the n tangents side by side. */
+static void
+cat_sizes (lac_contact_tangent *const *t, size_t n, size_t *k, size_t *nnz,
+           size_t *nb, size_t *nd, size_t *nv)
+{
+  *k = *nnz = *nb = *nd = *nv = 0;
+  for (size_t p = 0; p < n; p++)
+    {
+      *k += t[p]->k;
+      *nnz += (size_t) t[p]->B->p[t[p]->k];
+      *nb += t[p]->nblock;
+      *nd += t[p]->bptr[t[p]->nblock];
+      *nv += t[p]->vptr[t[p]->nblock];
+    }
+}
+
+/* Tangent p appended to out (its sizes so far: out->k columns, out->nblock
+ * blocks). */
+static void
+cat_one (const lac_contact_tangent *t, lac_contact_tangent *out)
+{
+  size_t k0 = out->k, b0 = out->nblock;
+  size_t z0 = (size_t) out->B->p[k0], d0 = out->bptr[b0], v0 = out->vptr[b0];
+  for (size_t i = 0; i < t->k; i++)
+    out->B->p[k0 + i + 1] = (int) z0 + t->B->p[i + 1];
+  memcpy (out->B->i + z0, t->B->i, (size_t) t->B->p[t->k] * sizeof (int));
+  memcpy (out->B->x + z0, t->B->x, (size_t) t->B->p[t->k] * sizeof (double));
+  for (size_t b = 0; b < t->nblock; b++)
+    {
+      out->bptr[b0 + b + 1] = d0 + t->bptr[b + 1];
+      out->vptr[b0 + b + 1] = v0 + t->vptr[b + 1];
+    }
+  memcpy (out->dof + d0, t->dof, t->bptr[t->nblock] * sizeof *t->dof);
+  memcpy (out->val + v0, t->val, t->vptr[t->nblock] * sizeof *t->val);
+  out->k += t->k;
+  out->nblock += t->nblock;
+}
+
+int
+lac_contact_tangent_cat (lac_contact_tangent *const *t, size_t n,
+                         lac_contact_tangent **out)
+{
+  size_t k, nnz, nb, nd, nv;
+  *out = NULL;
+  if (n == 0)
+    LAC_ERROR (LAC_EINVAL, "no tangent to put side by side");
+  cat_sizes (t, n, &k, &nnz, &nb, &nd, &nv);
+  lac_contact_tangent *c = lac_calloc (1, sizeof *c);
+  if (c)
+    {
+      c->B = lac_csc_alloc (t[0]->ndof, k, nnz ? nnz : 1);
+      c->bptr = lac_calloc (nb + 1, sizeof *c->bptr);
+      c->vptr = lac_calloc (nb + 1, sizeof *c->vptr);
+      c->dof = lac_malloc ((nd + 1) * sizeof *c->dof);
+      c->val = lac_malloc ((nv + 1) * sizeof *c->val);
+    }
+  if (!c || !c->B || !c->bptr || !c->vptr || !c->dof || !c->val)
+    {
+      lac_contact_tangent_free (c);
+      LAC_ERROR (LAC_ENOMEM, "derivatives of %zu contact columns", k);
+    }
+  c->ndof = t[0]->ndof;
+  c->B->p[0] = 0;
+  for (size_t p = 0; p < n; p++)
+    cat_one (t[p], c);
+  *out = c;
+  return LAC_SUCCESS;
+}

@@ -92,6 +92,12 @@ int lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                                const char *want, lac_contact_tangent **out);
 void lac_contact_tangent_free (lac_contact_tangent *t);    /* NULL allowed */
 
+/* The tangents of several contact pairs as one (contact/lac_contact_set.h:
+ * their columns side by side, B = [B_0 B_1 ...], the blocks of H one
+ * after the other); t[p] are left as they are. */
+int lac_contact_tangent_cat (lac_contact_tangent *const *t, size_t n,
+                             lac_contact_tangent **out);
+
 /* y += H x (ndof vectors). */
 void lac_contact_tangent_apply (const lac_contact_tangent *t, const double *x,
                                 double *y);

@@ -9,9 +9,11 @@
  *
  *   1. check the slave group: it exists, is a non-empty facet group, lists
  *      no facet twice, and every facet is on the boundary (a cut would
- *      otherwise break conformity with the cell on the other side);
+ *      otherwise break conformity with the cell on the other side); with
+ *      several groups (several contact pairs), no facet is in two;
  *   2. start the macro-elements: one per facet, except for 2D linear
- *      segments, which are gathered two by two along their chains
+ *      segments, which are gathered two by two along their chains, the
+ *      chains broken at the corners of the slave curve
  *      [LAC §4.4, item 1]:
  *
  *          chain of 5 segments:  o-----o-----o-----o-----o-----o
@@ -31,6 +33,14 @@
  *      sub-facets that are on no boundary edge of T^m and on no other
  *      macro-element), and the designated one x_{m*+1}: the largest
  *      int_{T^m} phi_i [LAC Remark 1, Def. 1].
+ *
+ * Several slave groups go through the steps together, as one list of
+ * macro-elements (group after group): every round remaps all of them, so
+ * that the macro-elements of the first group stay valid while the cells
+ * of the second are cut (a cell owning facets of two groups is cut in two
+ * rounds), and no node of one group's macro-element is taken as interior
+ * to another's.  The list is split into one lac_macro per group at the
+ * end.
  *
  * lac_macromesh_trace builds the raw trace mesh instead (one element per
  * slave facet, for comparisons only).
@@ -102,7 +112,7 @@ classify (const lac_mesh *m, const lac_group *G, size_t e,
   switch (rf->type)
     {
     case LAC_SEG2:                           /* tri3, quad4 */
-      *kind = opts && opts->cut_2d ? LAC_MACRO_CUT : LAC_MACRO_GATHER;
+      *kind = opts && opts->cut_2d == 1 ? LAC_MACRO_CUT : LAC_MACRO_GATHER;
       return LAC_SUCCESS;
     case LAC_SEG3: case LAC_QUAD9:           /* mid / centre node exists */
       *kind = LAC_MACRO_KEEP;
@@ -114,8 +124,9 @@ classify (const lac_mesh *m, const lac_group *G, size_t e,
       if (hex_cut == LAC_MACRO_HEX_PYRAMIDS)
         LAC_MACRO_ERROR (LAC_EINVAL, "facet %zu of group '%s': a %s cannot "
                          "be cut into pyramids (its quad8 face would need "
-                         "pyramid13 cells, which lac does not have); use "
-                         "LAC_MACRO_HEX_SIX", e, G->name, re->name);
+                         "pyramid13 cells, which lac does not have); cut it "
+                         "into six hexahedra (LAC_MACRO_HEX_SIX, a scene's "
+                         "hex_cut = six)", e, G->name, re->name);
       *kind = LAC_MACRO_CUT;
       return LAC_SUCCESS;
     default:
@@ -182,13 +193,64 @@ check_boundary (const lac_mesh *m, const lac_group *G)
   return status;
 }
 
+/* Several slave groups: no facet in two of them (a facet can carry the
+ * multipliers of one pair only), found by sorting the keys of all (key
+ * k of group grp[k], entry k - first[grp[k]]). */
+static int
+check_disjoint (const lac_mesh *m, size_t n, const lac_group *const *G)
+{
+  size_t nf = 0, k = 0;
+  for (size_t p = 0; p < n; p++)
+    nf += G[p]->n;
+  fkey *key = lac_malloc ((nf + 1) * sizeof *key);
+  size_t *grp = lac_malloc ((nf + 1) * sizeof *grp);
+  int status = LAC_SUCCESS;
+  if (!key || !grp)
+    {
+      lac_free (key);
+      lac_free (grp);
+      LAC_MACRO_ERROR (LAC_ENOMEM, "keys of %zu slave facets", nf);
+    }
+  for (size_t p = 0; p < n; p++)
+    for (size_t e = 0; e < G[p]->n; e++, k++)
+      {
+        make_key (m, G[p]->cell[e], G[p]->face[e], &key[k]);
+        key[k].e = k;
+        grp[k] = p;
+      }
+  qsort (key, nf, sizeof *key, cmp_fkey);
+  for (size_t j = 1; j < nf && !status; j++)
+    if (cmp_fkey (&key[j - 1], &key[j]) == 0
+        && grp[key[j - 1].e] != grp[key[j].e])
+      {
+        size_t a = grp[key[j - 1].e], b = grp[key[j].e], e = key[j - 1].e;
+        for (size_t p = 0; p < a; p++)
+          e -= G[p]->n;                     /* entry of the facet in a */
+        status = LAC_MACRO_ERRMSG (LAC_EINVAL, "slave groups '%s' and '%s' "
+                                   "share a facet (cell %zu, face %d, nodes "
+                                   "%zu, %zu, ...): a facet carries the "
+                                   "multipliers of one pair only",
+                                   G[a]->name, G[b]->name,
+                                   m->cell_tag[G[a]->cell[e]], G[a]->face[e],
+                                   m->node_tag[key[j].v[0]],
+                                   m->node_tag[key[j].v[1]]);
+      }
+  lac_free (key);
+  lac_free (grp);
+  return status;
+}
+
 /* ---- step 3: refinement rounds ----------------------------------------- */
 
-/* Cut the pending facets, at most one per cell and round  [LAC §4.4]. *cur
- * is replaced by each new mesh; meshes other than `orig` are freed. */
+/* Cut the pending facets, at most one per cell and round  [LAC §4.4];
+ * macro-element k of L takes the template options opt[grp[k]], and a
+ * round cuts the facets of one choice of options (the first pending
+ * one's).  *cur is replaced by each new mesh; meshes other than `orig`
+ * are freed.  ncut[g]: the cells cut for group g. */
 static int
 refine_rounds (lac_mesh **cur, const lac_mesh *orig, lac_macro_list *L,
-               const lac_macro_opts *opts, lac_macro *M)
+               const size_t *grp, const lac_macro_opts *opt, size_t *ncut,
+               int *nrounds, size_t *nnew)
 {
   int status = LAC_SUCCESS;
 
@@ -197,28 +259,32 @@ refine_rounds (lac_mesh **cur, const lac_mesh *orig, lac_macro_list *L,
       lac_mesh *m = *cur, *next = NULL;
       lac_refine_map *map = NULL;
       int *cut;
-      size_t ncut = 0;
+      size_t first = L->n;
 
-      for (size_t k = 0; k < L->n; k++)
-        ncut += L->pending[k];
-      if (!ncut)
+      for (size_t k = 0; k < L->n && first == L->n; k++)
+        if (L->pending[k])
+          first = k;
+      if (first == L->n)
         break;
+      const lac_macro_opts *o = &opt[grp[first]];
       cut = lac_malloc (m->ncells * sizeof *cut);
       if (!cut)
-        LAC_MACRO_ERROR (LAC_ENOMEM, "refinement round %d", M->nrounds + 1);
+        LAC_MACRO_ERROR (LAC_ENOMEM, "refinement round %d", *nrounds + 1);
       for (size_t c = 0; c < m->ncells; c++)
         cut[c] = -1;
-      for (size_t k = 0; k < L->n; k++)
+      for (size_t k = first; k < L->n; k++)
         {
           size_t c = L->cell[L->ptr[k]];
-          if (L->pending[k] && cut[c] < 0)
+          const lac_macro_opts *ok = &opt[grp[k]];
+          if (L->pending[k] && cut[c] < 0 && ok->hex_cut == o->hex_cut
+              && ok->cut_2d == o->cut_2d)
             {
               cut[c] = L->face[L->ptr[k]];
               L->pending[k] = 0;
-              M->ncut++;
+              ncut[grp[k]]++;
             }
         }
-      status = lac_refine_cut (m, cut, opts, &next, &map);
+      status = lac_refine_cut (m, cut, o, &next, &map);
       lac_free (cut);
       if (!status)
         status = lac_macro_list_remap (L, map);
@@ -228,8 +294,8 @@ refine_rounds (lac_mesh **cur, const lac_mesh *orig, lac_macro_list *L,
           lac_mesh_free (next);
           return status;
         }
-      M->nnew += next->nnodes - m->nnodes;
-      M->nrounds++;
+      *nnew += next->nnodes - m->nnodes;
+      (*nrounds)++;
       if (m != orig)
         lac_mesh_free (m);
       *cur = next;
@@ -273,95 +339,198 @@ slave_group (const lac_mesh *m, const char *slave, const lac_group **G)
   return LAC_SUCCESS;
 }
 
-/* Step 4 of lac_macromesh_build: measures and interior nodes of the
- * macro-elements L on mesh m; the facet lists are then moved into M. */
-static int
-fill_macro (const lac_mesh *m, lac_macro_list *L, lac_macro *M)
+/* Macro-elements k0 .. k1-1 of L, with their interior nodes, measures
+ * and integrals (step 4, inode, meas, phi of all of L), as a lac_macro. */
+static lac_macro *
+split_macro (const lac_macro_list *L, size_t k0, size_t k1,
+             const size_t *inode, const double *meas, const double *phi)
 {
-  int status;
-  M->n = L->n;
-  M->inode = lac_malloc (L->n * sizeof *M->inode);
-  M->meas = lac_malloc (L->n * sizeof *M->meas);
-  M->phi = lac_malloc (L->n * sizeof *M->phi);
-  if (!M->inode || !M->meas || !M->phi)
-    LAC_MACRO_ERROR (LAC_ENOMEM, "macro-mesh of %zu elements", L->n);
-  status = lac_macromesh_finish (m, L, M->inode, M->meas, M->phi);
-  if (status)
-    return status;
-  M->ptr = L->ptr;
-  M->cell = L->cell;
-  M->face = L->face;
-  L->ptr = L->cell = NULL;
-  L->face = NULL;
+  size_t n = k1 - k0, j0 = L->ptr[k0], nf = L->ptr[k1] - j0;
+  lac_macro *M = lac_calloc (1, sizeof *M);
+  if (M)
+    {
+      M->n = n;
+      M->ptr = lac_malloc ((n + 1) * sizeof *M->ptr);
+      M->cell = lac_malloc ((nf + 1) * sizeof *M->cell);
+      M->face = lac_malloc ((nf + 1) * sizeof *M->face);
+      M->inode = lac_malloc ((n + 1) * sizeof *M->inode);
+      M->meas = lac_malloc ((n + 1) * sizeof *M->meas);
+      M->phi = lac_malloc ((n + 1) * sizeof *M->phi);
+    }
+  if (!M || !M->ptr || !M->cell || !M->face || !M->inode || !M->meas
+      || !M->phi)
+    {
+      lac_macromesh_free (M);
+      LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu elements", n);
+      return NULL;
+    }
+  for (size_t k = 0; k <= n; k++)
+    M->ptr[k] = L->ptr[k0 + k] - j0;
+  memcpy (M->cell, L->cell + j0, nf * sizeof *M->cell);
+  memcpy (M->face, L->face + j0, nf * sizeof *M->face);
+  memcpy (M->inode, inode + k0, n * sizeof *M->inode);
+  memcpy (M->meas, meas + k0, n * sizeof *M->meas);
+  memcpy (M->phi, phi + k0, n * sizeof *M->phi);
+  return M;
+}
+
+/* Step 4: measures and interior nodes of the macro-elements L on mesh m
+ * (the nodes of another macro-element, of any group, are not interior),
+ * then one lac_macro per group (kofs[g] .. kofs[g+1]-1 of L). */
+static int
+fill_macros (const lac_mesh *m, const lac_macro_list *L, size_t n,
+             const size_t *kofs, lac_macro **out)
+{
+  size_t *inode = lac_malloc ((L->n + 1) * sizeof *inode);
+  double *meas = lac_malloc ((L->n + 1) * sizeof *meas);
+  double *phi = lac_malloc ((L->n + 1) * sizeof *phi);
+  int status = inode && meas && phi ? LAC_SUCCESS
+               : LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu elements",
+                                   L->n);
+  if (!status)
+    status = lac_macromesh_finish (m, L, inode, meas, phi);
+  for (size_t g = 0; g < n && !status; g++)
+    if (!(out[g] = split_macro (L, kofs[g], kofs[g + 1], inode, meas, phi)))
+      status = LAC_ENOMEM;
+  lac_free (inode);
+  lac_free (meas);
+  lac_free (phi);
+  return status;
+}
+
+/* Steps 1 and 2 for group g: its facets classified and checked, its
+ * first macro-elements appended to L (grp: their group). */
+static int
+start_group (const lac_mesh *m, const lac_group *G, const lac_macro_opts *o,
+             size_t g, lac_macro_list *L, size_t *grp)
+{
+  unsigned char *kind;
+  size_t k0 = L->n;
+  int status = LAC_SUCCESS;
+  if (!(kind = lac_malloc (G->n * sizeof *kind)))
+    LAC_MACRO_ERROR (LAC_ENOMEM, "macro-mesh of %zu facets", G->n);
+  for (size_t e = 0; e < G->n && !status; e++)
+    status = classify (m, G, e, o, &kind[e]);
+  if (!status)
+    status = check_boundary (m, G);
+  if (!status)
+    status = lac_macromesh_start (m, G, kind, o->cut_2d != 2, L);
+  for (size_t k = k0; !status && k < L->n; k++)
+    grp[k] = g;
+  lac_free (kind);
+  return status;
+}
+
+/* The options of group g: opts[g], or the defaults. */
+static int
+options (size_t n, const lac_macro_opts *opts, lac_macro_opts **opt)
+{
+  if (!(*opt = lac_calloc (n, sizeof **opt)))
+    LAC_MACRO_ERROR (LAC_ENOMEM, "options of %zu groups", n);
+  for (size_t g = 0; g < n; g++)
+    {
+      const lac_macro_opts *o = opts ? &opts[g] : NULL;
+      if (o && (o->hex_cut < LAC_MACRO_HEX_DEFAULT
+                || o->hex_cut > LAC_MACRO_HEX_SIX
+                || o->cut_2d < 0 || o->cut_2d > 2))
+        LAC_MACRO_ERROR (LAC_EINVAL, "options hex_cut = %d, cut_2d = %d out "
+                         "of range", o->hex_cut, o->cut_2d);
+      if (o)
+        (*opt)[g] = *o;
+    }
   return LAC_SUCCESS;
 }
 
-/* lac_macromesh_build: T^M on the facet group `slave`  [LAC Hyp. 1, §4.4].
+/* Steps 1-3 for the n groups on *cur: L, grp, kofs (the first
+ * macro-element of each group) and the counts of M[0]. */
+static int
+build_list (lac_mesh **cur, const lac_mesh *orig, size_t n,
+            const char *const *slave, const lac_macro_opts *opt,
+            lac_macro_list *L, size_t **grp, size_t *kofs, size_t *ncut,
+            int *nrounds, size_t *nnew)
+{
+  const lac_group **G = lac_calloc (n, sizeof *G);
+  size_t nf = 0;
+  int status = G ? LAC_SUCCESS
+               : LAC_MACRO_ERRMSG (LAC_ENOMEM, "%zu slave groups", n);
+  for (size_t g = 0; g < n && !status; g++)
+    status = slave_group (*cur, slave[g], &G[g]);
+  for (size_t g = 0; g < n && !status; g++)
+    nf += G[g]->n;
+  if (!status)
+    status = lac_macro_list_init (L, nf);
+  if (!status && !(*grp = lac_malloc ((nf + 1) * sizeof **grp)))
+    status = LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu facets", nf);
+  for (size_t g = 0; g < n && !status; g++)
+    {
+      kofs[g] = L->n;
+      status = start_group (*cur, G[g], &opt[g], g, L, *grp);
+    }
+  kofs[n] = L->n;
+  if (!status && n > 1)
+    status = check_disjoint (*cur, n, G);
+  lac_free (G);
+  if (!status)
+    status = refine_rounds (cur, orig, L, *grp, opt, ncut, nrounds, nnew);
+  return status;
+}
+
+/* lac_macromesh_build_set: T^M of each of n slave groups, in one pass
+ * [LAC Hyp. 1, §4.4].
  *
  *   [in,out] mesh   *mesh is replaced by the refined mesh on success (the
  *                   old one is freed); unchanged on failure
- *   [in]     slave  name of the slave facet group
- *   [in]     opts   NULL or the template choice (lac_macromesh.h)
- *   [out]    out    the macro-mesh (free with lac_macromesh_free)
+ *   [in]     slave  n names of slave facet groups (n >= 1)
+ *   [in]     opts   NULL or n template choices (lac_macromesh.h)
+ *   [out]    out    n macro-meshes (free each with lac_macromesh_free)
  *   returns LAC_SUCCESS, LAC_EINVAL (message names the group, facet, cell
  *   or element type), LAC_ENOMEM, LAC_ESANITY */
 int
-lac_macromesh_build (lac_mesh **mesh, const char *slave,
-                     const lac_macro_opts *opts, lac_macro **out)
+lac_macromesh_build_set (lac_mesh **mesh, size_t n, const char *const *slave,
+                         const lac_macro_opts *opts, lac_macro **out)
 {
   lac_mesh *cur = NULL;
-  const lac_group *G;
-  unsigned char *kind = NULL;
   lac_macro_list L = { 0 };
-  lac_macro *M = NULL;
-  int status = LAC_SUCCESS;
+  lac_macro_opts *opt = NULL;
+  size_t *grp = NULL, *kofs = NULL, *ncut = NULL, nnew = 0;
+  int status, nrounds = 0;
 
-  if (!out)
-    LAC_MACRO_ERROR (LAC_EINVAL, "no output pointer");
-  *out = NULL;
+  if (!out || n == 0)
+    LAC_MACRO_ERROR (LAC_EINVAL, "no output pointer or no slave group");
+  for (size_t g = 0; g < n; g++)
+    out[g] = NULL;
   if (!mesh || !*mesh || !slave)
     LAC_MACRO_ERROR (LAC_EINVAL, "no mesh or no slave group name");
-  if (opts && (opts->hex_cut < LAC_MACRO_HEX_DEFAULT
-               || opts->hex_cut > LAC_MACRO_HEX_SIX
-               || (opts->cut_2d != 0 && opts->cut_2d != 1)))
-    LAC_MACRO_ERROR (LAC_EINVAL, "options hex_cut = %d, cut_2d = %d out of "
-                     "range", opts->hex_cut, opts->cut_2d);
+  for (size_t g = 0; g < n; g++)
+    if (!slave[g])
+      LAC_MACRO_ERROR (LAC_EINVAL, "no name for slave group %zu", g);
   cur = *mesh;
-
-  /* Step 1: the slave group. */
-  status = slave_group (cur, slave, &G);
-  if (status)
-    return status;
-  kind = lac_malloc (G->n * sizeof *kind);
-  M = lac_calloc (1, sizeof *M);
-  if (!kind || !M)
+  kofs = lac_malloc ((n + 1) * sizeof *kofs);
+  ncut = lac_calloc (n, sizeof *ncut);
+  status = !kofs || !ncut ? LAC_MACRO_ERRMSG (LAC_ENOMEM, "%zu groups", n)
+           : options (n, opts, &opt);
+  if (!status)
+    status = build_list (&cur, *mesh, n, slave, opt, &L, &grp, kofs, ncut,
+                         &nrounds, &nnew);
+  if (!status)
+    status = fill_macros (cur, &L, n, kofs, out);
+  for (size_t g = 0; g < n && !status; g++)
     {
-      status = LAC_MACRO_ERRMSG (LAC_ENOMEM, "macro-mesh of %zu facets", G->n);
-      goto done;
+      out[g]->ncut = ncut[g];
+      out[g]->nnew = nnew;
+      out[g]->nrounds = nrounds;
     }
-  for (size_t e = 0; e < G->n && !status; e++)
-    status = classify (cur, G, e, opts, &kind[e]);
-  if (!status)
-    status = check_boundary (cur, G);
-
-  /* Step 2: first macro-elements; step 3: cut what has to be cut. */
-  if (!status)
-    status = lac_macromesh_start (cur, G, kind, &L);
-  if (!status)
-    status = refine_rounds (&cur, *mesh, &L, opts, M);
-
-  /* Step 4: measures and interior nodes, moved into M. */
-  if (!status)
-    status = fill_macro (cur, &L, M);
-
-done:
-  lac_free (kind);
   lac_macro_list_free (&L);
+  lac_free (opt), lac_free (grp), lac_free (kofs), lac_free (ncut);
   if (status)
     {
+      for (size_t g = 0; g < n; g++)
+        {
+          lac_macromesh_free (out[g]);
+          out[g] = NULL;
+        }
       if (cur != *mesh)
         lac_mesh_free (cur);
-      lac_macromesh_free (M);
       return status;
     }
   if (cur != *mesh)
@@ -369,8 +538,18 @@ done:
       lac_mesh_free (*mesh);
       *mesh = cur;
     }
-  *out = M;
   return LAC_SUCCESS;
+}
+
+/* lac_macromesh_build: T^M on one facet group (lac_macromesh_build_set
+ * with n = 1). */
+int
+lac_macromesh_build (lac_mesh **mesh, const char *slave,
+                     const lac_macro_opts *opts, lac_macro **out)
+{
+  if (!out)
+    LAC_MACRO_ERROR (LAC_EINVAL, "no output pointer");
+  return lac_macromesh_build_set (mesh, 1, &slave, opts, out);
 }
 
 /* lac_macromesh_trace: the raw trace mesh as "macro-mesh": one element per

@@ -12,7 +12,8 @@
  *   slave cell (facet)   what is done                   T^m; interior node
  *   tri3, quad4 (seg2)   gather 2 neighbouring segments 2 (or 3) segments;
  *                        (an odd chain ends with one    the shared node(s)
- *                        macro of 3; a lone segment:
+ *                        macro of 3; chains break at
+ *                        corners; a lone segment:
  *                        its cell is cut: 2 / 3 tri3)
  *   tri6, quad8, quad9   nothing                        the segment; mid node
  *     (seg3)
@@ -61,6 +62,18 @@
  * symmetry plane sharing an edge with it, ...) to the pieces of their faces,
  * node groups are kept.  The slave group of the new mesh lists the
  * sub-facets.
+ *
+ * Corners.  A macro-element never straddles an edge or a corner of the
+ * slave surface, where its normal jumps: in 3D a macro-element is one
+ * facet of the slave group, cut; in 2D the chains of segments break where
+ * the curve turns by more than LAC_MACRO_CORNER_DEG
+ * (lac_macromesh_gather.h), and a piece of one segment has its cell cut.
+ *
+ * Several groups.  lac_macromesh_build_set builds the macro-meshes of n
+ * slave groups (the slave surfaces of n contact pairs) in one pass over
+ * the mesh: every index it returns is valid for the one mesh it returns
+ * (building them one after the other would cut cells under the facet
+ * lists of the earlier ones).  A facet in two groups is an error.
  *
  * Ownership: lac_macromesh_build replaces *mesh by the refined mesh (and
  * frees the old one) only on success; the lac_macro it returns owns all its
@@ -113,6 +126,13 @@ typedef struct lac_macro
  * interior facet, type that cannot be refined), LAC_ENOMEM. */
 int lac_macromesh_build (lac_mesh **mesh, const char *slave,
                          const lac_macro_opts *opts, lac_macro **out);
+/* The same for n slave groups at once: out[g] on slave[g] with the
+ * options opts[g] (opts NULL: the defaults); a facet in two groups is
+ * LAC_EINVAL.  On failure every out[g] is NULL.  ncut of out[g] counts
+ * the cells cut for its group, nnew and nrounds those of the pass. */
+int lac_macromesh_build_set (lac_mesh **mesh, size_t n,
+                             const char *const *slave,
+                             const lac_macro_opts *opts, lac_macro **out);
 void lac_macromesh_free (lac_macro *M);          /* NULL allowed */
 
 /* The raw trace as "macro-mesh": one element per facet of `slave`, no

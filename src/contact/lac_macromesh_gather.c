@@ -11,10 +11,15 @@
  * a chain of odd length ends with one macro of three segments; a closed
  * loop is cut anywhere; an isolated segment (no neighbour) is left pending,
  * to have its cell cut at the segment's midpoint (step 3).  Chains break
- * at junctions: a node where other than two segments meet.
+ * at junctions, a node where other than two segments meet, and at
+ * corners, a node where the slave curve turns by more than
+ * LAC_MACRO_CORNER_DEG: a macro-element never straddles a corner, whose
+ * node would be its interior node and mix two normals in one averaged
+ * condition (a quad4 cell with two slave edges at a right angle).
  */
 #include "contact/lac_macromesh_gather.h"
 
+#include <math.h>
 #include <stdint.h>
 
 #include "base/lac_mem.h"
@@ -53,6 +58,35 @@ push_chain (lac_macro_list *L, const lac_group *G, const size_t *chain,
     lac_macro_list_push (L, G, chain + i, 2, 0);
   if (i < k)
     lac_macro_list_push (L, G, chain + i, 3, 0);
+}
+
+/* 1 if the two segments e1, e2 meeting at node v turn by more than deg
+ * degrees (the angle between their directions away from v is then below
+ * 180 - deg). */
+static int
+is_corner (const lac_mesh *m, const size_t *end, size_t e1, size_t e2,
+           size_t v, double deg)
+{
+  const double *x = m->x + 2 * v;
+  const double *a = m->x + 2 * other_end (end, e1, v);
+  const double *b = m->x + 2 * other_end (end, e2, v);
+  double d1[2] = { a[0] - x[0], a[1] - x[1] };
+  double d2[2] = { b[0] - x[0], b[1] - x[1] };
+  double n1 = hypot (d1[0], d1[1]), n2 = hypot (d2[0], d2[1]);
+  double c = (d1[0] * d2[0] + d1[1] * d2[1]) / (n1 * n2);
+  return n1 > 0 && n2 > 0 && c > -cos (deg * 3.14159265358979323846 / 180);
+}
+
+/* Corners break chains as junctions do: deg[v] = 0 at a node of two
+ * segments that turn there (next_seg then stops). */
+static void
+mark_corners (const lac_mesh *m, const size_t *end, size_t *deg,
+              const size_t *inc)
+{
+  for (size_t v = 0; v < m->nnodes; v++)
+    if (deg[v] == 2 && is_corner (m, end, inc[2 * v], inc[2 * v + 1], v,
+                                  LAC_MACRO_CORNER_DEG))
+      deg[v] = 0;
 }
 
 /* Incidence of the segments to be gathered (end nodes only): end[2e],
@@ -111,17 +145,16 @@ walk_chain (size_t e, const size_t *end, const size_t *deg,
 
 /* lac_macromesh_start: the macro-elements before refinement, in the order
  * of the group's facets (a chain of segments is emitted where its first
- * facet appears)  [LAC §4.4, item 1]. */
+ * facet appears), appended to L  [LAC §4.4, item 1]. */
 int
 lac_macromesh_start (const lac_mesh *m, const lac_group *G,
-                     const unsigned char *kind, lac_macro_list *L)
+                     const unsigned char *kind, int corners,
+                     lac_macro_list *L)
 {
   size_t n = G->n, *end = NULL, *deg = NULL, *inc = NULL, *chain = NULL;
   unsigned char *seen = NULL;
-  int status = lac_macro_list_init (L, n);
+  int status = LAC_SUCCESS;
 
-  if (status)
-    return status;
   end = lac_malloc (2 * n * sizeof *end);
   deg = lac_calloc (m->nnodes, sizeof *deg);
   inc = lac_malloc (2 * m->nnodes * sizeof *inc);
@@ -134,6 +167,8 @@ lac_macromesh_start (const lac_mesh *m, const lac_group *G,
       goto done;
     }
   segment_incidence (m, G, kind, end, deg, inc);
+  if (corners)
+    mark_corners (m, end, deg, inc);
   for (size_t e = 0; e < n; e++)
     {
       if (kind[e] != LAC_MACRO_GATHER)

@@ -34,8 +34,10 @@ enum
 typedef struct lac_macro_opts
 {
   int hex_cut;   /* LAC_MACRO_HEX_*                                        */
-  int cut_2d;    /* 2D linear: 0 gather segments (default), 1 cut the cell
-                    of every seg2 facet (tri3 -> 2 tri3, quad4 -> 3 tri3)  */
+  int cut_2d;    /* 2D linear: 0 gather segments (default), the chains
+                    broken at corners (lac_macromesh_gather.h); 1 cut the
+                    cell of every seg2 facet (tri3 -> 2 tri3, quad4 -> 3
+                    tri3); 2 gather across corners too                    */
 } lac_macro_opts;
 
 /* The sub-cells and face pieces of one refinement round.  Old cell c became

@@ -18,6 +18,11 @@
  *                   sigma_zz = -nu p; u_i = c_i x_i vanishes on the
  *                   symmetry planes x_i = 0.  The contact pressure is
  *                   lambda = -p on every horizontal interface.
+ *   biaxial         a uniform stress sigma_xx = sigma_yy = -p, every other
+ *                   component zero but the plane-strain sigma_zz =
+ *                   -2 nu p (plane strain, 3D); u_i = c_i x_i as above.
+ *                   The contact pressure is lambda = -p on every interface
+ *                   normal to x or y: a body pressed into an inner corner.
  *   manufactured2d  the paper's 2D manufactured solution [LAC §5.3]:
  *                     u_x = -0.2 y^3 (x - 1/2),
  *                     u_y = -0.05 (x - 1/2)^2 (1 + y) - 0.01 y,
@@ -125,6 +130,20 @@ taylor_setup (lac_exact *e)
     }
 }
 
+/* Strains of sigma = -p (e_x e_x^T + e_y e_y^T), Hooke's law. */
+static void
+biaxial_setup (lac_exact *e)
+{
+  double p = e->par.p, E = e->par.E, nu = e->par.nu;
+  if (e->model == LAC_PLANE_STRAIN)           /* eps_zz = 0 */
+    e->c[0] = e->c[1] = -(1 + nu) * (1 - 2 * nu) * p / E;
+  else                                        /* 3D: sigma_zz = 0 */
+    {
+      e->c[0] = e->c[1] = -(1 - nu) * p / E;
+      e->c[2] = 2 * nu * p / E;
+    }
+}
+
 /* ---- manufactured solutions [LAC §5.3] -------------------------------- */
 
 static void
@@ -224,6 +243,8 @@ const lac_exact_solution lac_exact_table[] = {    /* lac_exact_kind order */
     mfd2_hess },
   { "manufactured3d", M_3D, "E nu", no_setup, mfd3_u, mfd3_grad,
     mfd3_hess },
+  { "biaxial", M_PS | M_3D, "p E nu", biaxial_setup, linear_u, linear_grad,
+    NULL },
   { NULL, 0, NULL, NULL, NULL, NULL, NULL }
 };
 

@@ -91,7 +91,8 @@
  *                          contact side) or the body force -div sigma(u)
  *                          of the [exact] solution (manufactured solutions)
  *   [contact NAME]         frictionless unilateral contact by the LAC
- *                          method (at most one section in this version)
+ *                          method: one section per contact pair
+ *                          (contact/lac_contact_set.h)
  *     slave                facet group carrying the multipliers (its cells
  *                          are refined where Hypothesis 1 needs it)
  *                                                     (required)
@@ -119,8 +120,10 @@
  *     gap_bound            length added to the pairing distance (one
  *                          facet size) for curved bodies           0
  *     interference         delta >= 0: a shrink fit drawn with matching
- *                          surfaces, every gap is g0 - delta
+ *                          surfaces, every gap of the pair is g0 - delta
  *                          (contact/lac_contact.h)               0
+ *     hex_cut              auto | pyramids | six: the cut of a hexahedron
+ *                          under a slave face (contact/lac_refine.h)  auto
  *   [exact]                analytic solution for errors and `exact` data
  *                          (the table of lac_exact.c)
  *     solution             thick_sphere (axisymmetric, 3d: sphere a < R < b

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include "fem/lac_exact.h"
 #include "io/lac_mesh_opts.h"
@@ -511,10 +512,15 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
                             "%d number%s for model = %s", dim - 1,
                             dim == 3 ? "s" : "",
                             lac_scene_model_names[sc->scene.model]);
-  if (c != sc->contact)
-    return lac_scene_error (sc, &c->sec, NULL, LAC_EINVAL, "only one "
-                            "[contact] section is supported (the first is "
-                            "[contact %s])", sc->contact[0].sec.name);
+  if (c->method == 2 && sc->ncontact > 1)
+    return lac_scene_error (sc, &c->sec, "method", LAC_EINVAL, "nts (for "
+                            "comparison) takes a scene of one [contact] "
+                            "section; this one has %zu", sc->ncontact);
+  for (const lac_scene_contact *b = sc->contact; b < c; b++)
+    if (strcmp (b->slave, c->slave) == 0)
+      return lac_scene_error (sc, &c->sec, "slave", LAC_EINVAL, "already the "
+                              "slave group of [contact %s]: a facet carries "
+                              "the multipliers of one pair", b->sec.name);
   if (c->normal == 1 && c->master)
     return lac_scene_error (sc, &c->sec, "normal", LAC_EINVAL, "applies to "
                             "an obstacle only (two bodies meet along the "
@@ -525,6 +531,48 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   if (c->master && strcmp (c->slave, c->master) == 0)
     return lac_scene_error (sc, &c->sec, "master", LAC_EINVAL, "the master "
                             "group must differ from the slave group");
+  return LAC_SUCCESS;
+}
+
+/* The value of loop key q (0 strategy, 1 max_iterations) of c. */
+static int
+loop_value (const lac_scene_contact *c, int q)
+{
+  return q == 0 ? c->strategy : c->max_iterations;
+}
+
+/* The keys of the one loop of all pairs (strategy, max_iterations): in
+ * one [contact] section, or the same in several.  Every section gets the
+ * value given; sc->contact_loop is the first section that gives
+ * strategy, else max_iterations (0 if none does). */
+static int
+finish_contact_loop (lac_scene *sc)
+{
+  static const char *const keys[] = { "strategy", "max_iterations" };
+  size_t from[2] = { SIZE_MAX, SIZE_MAX };
+  for (int q = 0; q < 2; q++)
+    {
+      for (size_t k = 0; k < sc->ncontact; k++)
+        {
+          const lac_scene_contact *c = &sc->contact[k];
+          if (!given (&c->sec, keys[q]))
+            continue;
+          if (from[q] == SIZE_MAX)
+            from[q] = k;
+          else if (loop_value (c, q) != loop_value (&sc->contact[from[q]], q))
+            return lac_scene_error (sc, &c->sec, keys[q], LAC_EINVAL, "the "
+                                    "pairs are solved by one loop: %s "
+                                    "differs from [contact %s]", keys[q],
+                                    sc->contact[from[q]].sec.name);
+        }
+      for (size_t k = 0; from[q] != SIZE_MAX && k < sc->ncontact; k++)
+        if (q == 0)
+          sc->contact[k].strategy = sc->contact[from[0]].strategy;
+        else
+          sc->contact[k].max_iterations = sc->contact[from[1]].max_iterations;
+    }
+  sc->contact_loop = from[0] != SIZE_MAX ? from[0]
+                     : from[1] != SIZE_MAX ? from[1] : 0;
   return LAC_SUCCESS;
 }
 
@@ -574,10 +622,11 @@ finish_nonlinear (lac_scene *sc)
     return lac_scene_error (sc, &sc->exact.sec, NULL, LAC_EINVAL, "the "
                             "exact solutions are small-strain solutions; "
                             "not with large_deformation = yes");
-  if (sc->ncontact && sc->contact[0].method != 0)
-    return lac_scene_error (sc, &sc->contact[0].sec, "method", LAC_EINVAL,
-                            "large_deformation = yes runs the LAC method "
-                            "only (method = lac)");
+  for (size_t k = 0; k < sc->ncontact; k++)
+    if (sc->contact[k].method != 0)
+      return lac_scene_error (sc, &sc->contact[k].sec, "method", LAC_EINVAL,
+                              "large_deformation = yes runs the LAC method "
+                              "only (method = lac)");
   return LAC_SUCCESS;
 }
 
@@ -597,5 +646,7 @@ lac_scene_finish (lac_scene *sc)
   for (size_t k = 0; k < sc->ncontact; k++)
     if ((status = finish_contact (sc, &sc->contact[k])))
       return status;
+  if (sc->ncontact && (status = finish_contact_loop (sc)))
+    return status;
   return finish_nonlinear (sc);
 }

@@ -113,6 +113,8 @@ static const key_spec exact_keys[] = {
 static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const char *const normal_names[] = { "obstacle", "slave", NULL };
 static const char *const method_names[] = { "lac", "p0", "nts", NULL };
+static const char *const hex_cut_names[] =      /* LAC_MACRO_HEX_* */
+  { "auto", "pyramids", "six", NULL };
 static const key_spec contact_keys[] = {
   STR (lac_scene_contact, slave),
   STR (lac_scene_contact, master),
@@ -130,6 +132,7 @@ static const key_spec contact_keys[] = {
        "an integer in 1..100000"),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
   NUM (lac_scene_contact, interference, 0, HUGE_VAL, 0, "a length >= 0"),
+  ENUM (lac_scene_contact, hex_cut, hex_cut_names),
 };
 static const char *const tangent_names[] =            /* lac_nonlinear.h */
   { "consistent", "frozen", NULL };

@@ -166,6 +166,9 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
   double interference;  /* delta >= 0 taken from every gap: a shrink fit
                            drawn with matching surfaces (length, 0)       */
+  int hex_cut;          /* the cut of a hexahedron under a slave face:
+                           0 auto (hex8 pyramids, hex20 six), 1 pyramids,
+                           2 six (LAC_MACRO_HEX_*, contact/lac_refine.h)  */
 } lac_scene_contact;
 
 typedef struct lac_scene_steps           /* [steps] */
@@ -206,7 +209,10 @@ typedef struct lac_scene
   lac_scene_material *material;     /* owned, nmaterial  */
   lac_scene_dirichlet *dirichlet;   /* owned, ndirichlet */
   lac_scene_load *load;             /* owned, nload      */
-  lac_scene_contact *contact;       /* owned, ncontact (0 or 1) */
+  lac_scene_contact *contact;       /* owned, ncontact: the contact pairs */
+  size_t contact_loop;          /* the [contact] section that gives the
+                                   keys of the one loop of all pairs
+                                   (strategy, max_iterations), 0 if none */
 } lac_scene;
 
 #endif /* LAC_SCENE_TYPES_H */

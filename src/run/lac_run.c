@@ -51,7 +51,8 @@ static int
 check_large_strategy (const lac_run *r)
 {
   const lac_scene *sc = r->scene;
-  int scene = sc->ncontact ? sc->contact[0].strategy : LAC_STRATEGY_AUTO;
+  int scene = sc->ncontact ? sc->contact[sc->contact_loop].strategy
+              : LAC_STRATEGY_AUTO;
   const lac_strategy_type *t = lac_strategy_type_of (r->opts.strategy
                                                      ? r->opts.strategy
                                                      : scene);
@@ -63,9 +64,9 @@ check_large_strategy (const lac_run *r)
   if (r->opts.strategy)
     LAC_ERROR (LAC_EINVAL, "--strategy %s: %s; %s is for small strain",
                t->name, why, t->name);
-  return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
-                          "%s: %s; %s is for small strain", t->name, why,
-                          t->name);
+  return lac_scene_error (sc, &sc->contact[sc->contact_loop].sec,
+                          "strategy", LAC_EINVAL, "%s: %s; %s is for small "
+                          "strain", t->name, why, t->name);
 }
 
 static int

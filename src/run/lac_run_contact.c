@@ -4,6 +4,8 @@
 #include "run/lac_run_contact.h"
 
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -16,6 +18,7 @@ lac_run_contact_clear (lac_run_contact *rc)
   lac_free (rc->x);
   lac_free (rc->s);
   lac_free (rc->force);
+  lac_free (rc->pair_force);
   memset (rc, 0, sizeof *rc);
 }
 
@@ -72,8 +75,10 @@ positions (const lac_mesh *m, const lac_run_setup *st, const lac_contact *c,
         memcpy (rc->x + 3 * c->macro[i], c->xpt + 3 * i, 3 * sizeof (double));
       return LAC_SUCCESS;
     }
-  for (size_t mm = 0; mm < rc->n && !status; mm++)
-    status = macro_centroid (m, st->macro, mm, &qc, rc->x + 3 * mm);
+  for (size_t p = 0; p < st->npairs && !status; p++)
+    for (size_t mm = 0; mm < st->macro[p]->n && !status; mm++)
+      status = macro_centroid (m, st->macro[p], mm, &qc,
+                               rc->x + 3 * (st->set.offset[p] + mm));
   lac_quad_cache_free (&qc);
   return status;
 }
@@ -157,9 +162,11 @@ chain_fill (chain *ch, const lac_mesh *m, const lac_macro *M,
   return LAC_SUCCESS;
 }
 
+/* The abscissae of the macro-elements M of one pair, into rc->s from
+ * slot off on (s = 0 at the start of each pair's curve). */
 static int
 abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
-           lac_run_contact *rc)
+           size_t off, lac_run_contact *rc)
 {
   chain ch = { M->ptr[M->n], 0, 0, 0, 0, 0, 0, 0 };
   double s = 0;
@@ -183,7 +190,7 @@ abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
       double num = 0, den = 0;
       for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
         num += ch.mid[j] * ch.len[j], den += ch.len[j];
-      rc->s[mm] = den > 0 ? num / den : NAN;
+      rc->s[off + mm] = den > 0 ? num / den : NAN;
     }
   lac_free (ch.a), lac_free (ch.b), lac_free (ch.f1), lac_free (ch.f2);
   lac_free (ch.len), lac_free (ch.mid), lac_free (ch.seen);
@@ -192,40 +199,73 @@ abscissae (const lac_mesh *m, const lac_macro *M, const lac_pairing *P,
 
 /* ---- forces ------------------------------------------------------------ */
 
-/* f_i = lambda_i int_{T^m_i cap Gamma_C} n^S (model weight); against a
- * rigid obstacle the direction of the constraint nu = -n^O (P->normal). */
+/* n += int_{T^m cap Gamma_C} n^S (model weight), T^m macro-element mm
+ * of M paired by P on the nodes of m; against a rigid obstacle the
+ * direction of the constraint nu = -n^O (P->normal). */
+static int
+column_normal (lac_model model, const lac_mesh *m, const lac_macro *M,
+               const lac_pairing *P, size_t mm, double *n)
+{
+  int dim = m->dim, nodes[LAC_MAX_FACE_NODES];
+  lac_map mp;
+  for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
+    for (size_t q = P->ptr[j]; q < P->ptr[j + 1]; q++)
+      {
+        int nn = lac_contact_facet_eval (m, M->cell[j], M->face[j],
+                                         P->xs + q * (dim - 1), nodes, &mp);
+        if (nn < 0)
+          return -nn;
+        double w = P->w[q] * lac_model_weight (model, mp.x);
+        const double *nu = P->normal ? P->normal + q * (size_t) dim
+                                     : mp.normal;
+        for (int k = 0; k < dim; k++)
+          n[k] += w * nu[k];
+      }
+  return LAC_SUCCESS;
+}
+
+int
+lac_run_pair_force (lac_model model, const lac_mesh *m, const lac_macro *M,
+                    const lac_pairing *P, const lac_contact *c, size_t col0,
+                    size_t col1, size_t off, const double *lambda,
+                    double f[3])
+{
+  f[0] = f[1] = f[2] = 0;
+  for (size_t i = col0; i < col1; i++)
+    {
+      double n[3] = { 0, 0, 0 };
+      int status = column_normal (model, m, M, P, c->macro[i] - off, n);
+      if (status)
+        return status;
+      for (int k = 0; k < 3; k++)
+        f[k] += lambda[c->macro[i]] * n[k];
+    }
+  return LAC_SUCCESS;
+}
+
+/* f_i = lambda_i n_i, the resultant and the resultant of each pair. */
 static int
 forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
         const lac_contact *c, const double *lambda, lac_run_contact *rc)
 {
-  const lac_macro *M = st->macro;
-  const lac_pairing *P = st->pairing;
-  int dim = m->dim, nodes[LAC_MAX_FACE_NODES];
-  lac_map mp;
   for (size_t i = 0; i < c->k; i++)
     {
       double *f = rc->force + 3 * i, n[3] = { 0, 0, 0 };
+      size_t slot = c->macro[i], p = c->xpt ? 0
+                                   : lac_contact_set_pair_of (&st->set, slot);
+      int status;
       if (c->xpt)                                  /* collocation */
         for (int k = 0; k < 3; k++)
           n[k] = c->area[i] * c->npt[3 * i + k];
-      for (size_t j = M->ptr[c->macro[i]];
-           !c->xpt && j < M->ptr[c->macro[i] + 1]; j++)
-        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
-          {
-            int nn = lac_contact_facet_eval (m, M->cell[j], M->face[j],
-                                             P->xs + p * (dim - 1), nodes, &mp);
-            if (nn < 0)
-              return -nn;
-            double w = P->w[p] * lac_model_weight (model, mp.x);
-            const double *nu = P->normal ? P->normal + p * (size_t) dim
-                                         : mp.normal;
-            for (int k = 0; k < dim; k++)
-              n[k] += w * nu[k];
-          }
+      else if ((status = column_normal (model, m, st->macro[p],
+                                        st->data.P[p],
+                                        slot - st->set.offset[p], n)))
+        return status;
       for (int k = 0; k < 3; k++)
         {
-          f[k] = lambda[c->macro[i]] * n[k] + 0.0;   /* no -0 if lambda = 0 */
+          f[k] = lambda[slot] * n[k] + 0.0;   /* no -0 if lambda = 0 */
           rc->resultant[k] += f[k];
+          rc->pair_force[3 * p + (size_t) k] += f[k];
         }
     }
   return LAC_SUCCESS;
@@ -255,7 +295,10 @@ contact_axis (lac_model model, const lac_run_setup *st, const lac_contact *c,
   if (model == LAC_AXISYMMETRIC)
     *axis = 1;
   *sign = n[*axis] < 0 ? -1 : 1;
-  if (st->master.n == 0)                    /* rigid obstacle below */
+  int obstacles = 1;
+  for (size_t p = 0; p < st->npairs; p++)
+    obstacles &= st->master[p].n == 0;
+  if (obstacles)                            /* rigid obstacles below */
     *axis = dim - 1, *sign = -1;
 }
 
@@ -287,8 +330,83 @@ summary (lac_model model, const lac_run_setup *st, const lac_contact *c,
   return lac_summary_add (sum, "active_macro_elements", "%zu", nact);
 }
 
+/* "x y" or "x y z": a vector of the summary, with every digit (17
+ * significant: the equilibrium of a body is checked on their sums). */
+static void
+vector_text (const double *v, int dim, char *buf, size_t size)
+{
+  if (dim == 3)
+    snprintf (buf, size, "%.16e %.16e %.16e", v[0], v[1], v[2]);
+  else
+    snprintf (buf, size, "%.16e %.16e", v[0], v[1]);
+}
+
+/* "what.name = value". */
+static int
+pair_line (lac_summary *sum, const char *what, const char *name,
+           const char *fmt, ...)
+{
+  char key[300], val[200];
+  va_list ap;
+  va_start (ap, fmt);
+  vsnprintf (val, sizeof val, fmt, ap);
+  va_end (ap);
+  snprintf (key, sizeof key, "%s.%s", what, name);
+  return lac_summary_add (sum, key, "%s", val);
+}
+
+/* The lines of pair p (columns col[p] .. col[p+1]-1 of c): its force as
+ * a vector, its normal force sum lambda_i |T^m_i cap Gamma_C|, area,
+ * largest pressure and active macro-elements. */
+static int
+summary_pair (const lac_scene *sc, lac_model model, const lac_run_setup *st,
+              const lac_contact *c, const lac_newton *nw,
+              const lac_run_contact *rc, size_t p, lac_summary *sum)
+{
+  const char *name = sc->contact[p].sec.name;
+  size_t nact = 0;
+  double area = 0, fn = 0, pmax = 0;
+  char v[120];
+  int status;
+  for (size_t i = st->data.col[p]; i < st->data.col[p + 1]; i++)
+    {
+      double lam = nw->lambda[c->macro[i]];
+      fn += lam * c->area[i];
+      if (!nw->active[c->macro[i]])
+        continue;
+      nact++;
+      area += c->area[i];
+      pmax = fmax (pmax, -lam);
+    }
+  vector_text (rc->pair_force + 3 * p, lac_model_dim (model), v, sizeof v);
+  if ((status = pair_line (sum, "contact_force", name, "%s", v))
+      || (status = pair_line (sum, "contact_normal_force", name, "%.10e",
+                              fn))
+      || (status = pair_line (sum, "contact_area", name, "%.10e", area))
+      || (status = pair_line (sum, "max_contact_pressure", name, "%.10e",
+                              pmax)))
+    return status;
+  return pair_line (sum, "active_macro_elements", name, "%zu", nact);
+}
+
+/* Several pairs: the resultant of all as a vector, then each pair's. */
+static int
+summary_pairs (const lac_scene *sc, lac_model model, const lac_run_setup *st,
+               const lac_contact *c, const lac_newton *nw,
+               const lac_run_contact *rc, lac_summary *sum)
+{
+  char v[120];
+  int status;
+  vector_text (rc->resultant, lac_model_dim (model), v, sizeof v);
+  if ((status = lac_summary_add (sum, "contact_resultant", "%s", v)))
+    return status;
+  for (size_t p = 0; p < st->npairs && !status; p++)
+    status = summary_pair (sc, model, st, c, nw, rc, p, sum);
+  return status;
+}
+
 int
-lac_run_contact_post (lac_model model, const lac_mesh *m,
+lac_run_contact_post (const lac_scene *sc, lac_model model, const lac_mesh *m,
                       const lac_run_setup *setup, const lac_contact *c,
                       const lac_newton *nw, lac_run_contact *rc,
                       lac_summary *sum)
@@ -300,32 +418,36 @@ lac_run_contact_post (lac_model model, const lac_mesh *m,
   rc->x = lac_malloc ((3 * rc->n + 1) * sizeof *rc->x);
   rc->s = lac_malloc ((rc->n + 1) * sizeof *rc->s);
   rc->force = lac_calloc (3 * rc->k + 1, sizeof *rc->force);
-  if (!rc->x || !rc->s || !rc->force)
+  rc->pair_force = lac_calloc (3 * setup->npairs, sizeof *rc->pair_force);
+  if (!rc->x || !rc->s || !rc->force || !rc->pair_force)
     LAC_ERROR (LAC_ENOMEM, "contact results of %zu macro-elements", rc->n);
   for (size_t i = 0; i < rc->n; i++)
     rc->s[i] = NAN;
-  if ((status = positions (m, setup, c, rc))
-      || (m->dim == 2 && !c->xpt
-          && (status = abscissae (m, setup->macro, setup->pairing, rc)))
-      || (status = forces (model, m, setup, c, nw->lambda, rc)))
+  status = positions (m, setup, c, rc);
+  for (size_t p = 0; !status && m->dim == 2 && !c->xpt && p < setup->npairs;
+       p++)
+    status = abscissae (m, setup->macro[p], setup->data.P[p],
+                        setup->set.offset[p], rc);
+  if (status || (status = forces (model, m, setup, c, nw->lambda, rc))
+      || (status = summary (model, setup, c, nw, rc, sum)))
     return status;
-  return summary (model, setup, c, nw, rc, sum);
+  return setup->npairs > 1 ? summary_pairs (sc, model, setup, c, nw, rc, sum)
+                           : LAC_SUCCESS;
 }
 
 int
-lac_run_pairs_dropped (const lac_pairing *P, const lac_newton *nw,
+lac_run_pairs_dropped (const lac_contact_set_data *d, const lac_newton *nw,
                        lac_summary *sum)
 {
   double lost = 0;
+  size_t nfail = lac_contact_set_dropped (d, &lost);
   int status;
   if (nw->widened && (status = lac_summary_add (sum, "pairing_widened",
                                                 "%zu", nw->widened)))
     return status;
-  if (!P || !P->nfail)
+  if (!nfail)
     return LAC_SUCCESS;
-  for (size_t j = 0; j < P->nslave; j++)
-    lost += P->lost[j];
-  if ((status = lac_summary_add (sum, "pairs_dropped", "%zu", P->nfail)))
+  if ((status = lac_summary_add (sum, "pairs_dropped", "%zu", nfail)))
     return status;
   return lac_summary_add (sum, "area_dropped", "%.10e", lost);
 }

@@ -20,6 +20,10 @@
  *              resultant, which balances the loads of a body held by
  *              contact alone exactly (the columns of C integrate the same
  *              n^S against shape functions that sum to one);
+ *   pairs      (several [contact] sections) the slots of pair p are the
+ *              set's offset[p] .., its columns data.col[p] ..; positions
+ *              and abscissae per pair (s = 0 at the start of each pair's
+ *              curve), f_i of each column with its pair's pairing;
  *   summary    contact_force = R . e, e the coordinate axis (with its sign)
  *              nearest to the mean outward slave normal of the active
  *              macro-elements (axisymmetric: the z axis; a rigid obstacle:
@@ -28,7 +32,17 @@
  *              |T^m cap Gamma_C| over the active macro-elements (2 pi r
  *              dGamma axisymmetric); max_contact_pressure = max over the
  *              active ones of -lambda_i (0 if none);
- *              active_macro_elements.
+ *              active_macro_elements; all over every pair.  With several
+ *              pairs, then: contact_resultant = R as a vector ("x y" or
+ *              "x y z", every digit), and for each pair NAME (its
+ *              [contact NAME]):
+ *              contact_force.NAME (the sum of its f_i, a vector: the
+ *              force its master exerts on its slave body),
+ *              contact_normal_force.NAME = sum lambda_i |T^m_i cap
+ *              Gamma_C| (its normal component, negative in compression),
+ *              contact_area.NAME, max_contact_pressure.NAME and
+ *              active_macro_elements.NAME, as above.  (One pair: the keys
+ *              above only, as they always were.)
  *
  * Values that do not exist are NAN (written as empty fields).
  */
@@ -48,20 +62,32 @@ typedef struct lac_run_contact
   size_t k;             /* multipliers                                     */
   double *force;        /* owned, 3k: f_i (zero third component in 2D)     */
   double resultant[3];  /* sum of f_i                                      */
+  double *pair_force;   /* owned, 3 npairs: the sum of f_i of each pair    */
 } lac_run_contact;
 
 /* Positions, abscissae, forces; then the summary lines. */
-int lac_run_contact_post (lac_model model, const lac_mesh *m,
+int lac_run_contact_post (const lac_scene *sc, lac_model model,
+                          const lac_mesh *m,
                           const lac_run_setup *setup, const lac_contact *c,
                           const lac_newton *nw, lac_run_contact *out,
                           lac_summary *sum);
 void lac_run_contact_clear (lac_run_contact *rc);
 
+/* The force f = sum_i lambda_i int_{T^m_i cap Gamma_C} n^S of the columns
+ * col0 .. col1 - 1 of c, one pair's (macro-elements M paired by P on the
+ * nodes of m, slots from off on): the force its master exerts on its
+ * slave body.  Also on the deformed surface of a large-deformation run. */
+int lac_run_pair_force (lac_model model, const lac_mesh *m,
+                        const lac_macro *M, const lac_pairing *P,
+                        const lac_contact *c, size_t col0, size_t col1,
+                        size_t off, const double *lambda, double f[3]);
+
 /* What the pairing left out: pairing_widened, the times the loop paired
  * again with a longer reach (solve/lac_newton.h: no silent penetration);
- * pairs_dropped and area_dropped, the pairs of P whose projection failed
- * and the slave measure they covered.  Nothing when there is none. */
-int lac_run_pairs_dropped (const lac_pairing *P, const lac_newton *nw,
-                           lac_summary *sum);
+ * pairs_dropped and area_dropped, the pairs of the pairings of d whose
+ * projection failed and the slave measure they covered.  Nothing when
+ * there is none. */
+int lac_run_pairs_dropped (const lac_contact_set_data *d,
+                           const lac_newton *nw, lac_summary *sum);
 
 #endif /* LAC_RUN_CONTACT_H */

@@ -22,6 +22,14 @@ field (FILE *f, double v)
     fprintf (f, ",%.10e", v);
 }
 
+/* The pair of row m (node-to-segment: its one pair). */
+static size_t
+pair_of (const lac_run_contact_data *d, size_t m)
+{
+  const lac_contact_set *set = &d->setup->set;
+  return d->contact->xpt ? 0 : lac_contact_set_pair_of (set, m);
+}
+
 /* The multiplier columns of row m (empty without a multiplier). */
 static void
 multiplier_fields (FILE *f, const lac_run_contact_data *d, size_t m)
@@ -52,7 +60,7 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
     return status;
   fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
            "multiplier,lambda,lambda_exact,mean_gap,active,s,force_x,"
-           "force_y,force_z\n");
+           "force_y,force_z,pair\n");
   for (size_t m = 0; m < c->nmacro; m++)
     {
       long i = c->mult[m];
@@ -66,7 +74,7 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
       for (int k = 0; k < 3; k++)
         field (f, i >= 0 && k < dim ? w->force[3 * (size_t) i + (size_t) k]
                                     : NAN);
-      fputc ('\n', f);
+      fprintf (f, ",%s\n", d->sc->contact[pair_of (d, m)].sec.name);
     }
   return lac_file_close (f, path);
 }
@@ -89,14 +97,17 @@ surface_free (surface *s)
   lac_free (s->type), lac_free (s->node);
 }
 
-/* The slave sub-facets as VTK cells on their own points. */
+/* The slave sub-facets of every pair, pair after pair, as VTK cells on
+ * their own points. */
 static int
-surface_build (const lac_mesh *m, const lac_macro *M, surface *s)
+surface_build (const lac_mesh *m, const lac_run_setup *st, surface *s)
 {
   int nodes[LAC_MAX_FACE_NODES];
   lac_elem_type ft;
-  size_t nc = 0;
-  s->nf = M->ptr[M->n];
+  size_t nc = 0, j = 0;
+  s->nf = 0;
+  for (size_t p = 0; p < st->npairs; p++)
+    s->nf += st->macro[p]->ptr[st->macro[p]->n];
   s->local = lac_malloc ((m->nnodes + 1) * sizeof *s->local);
   s->conn = lac_malloc ((s->nf * LAC_MAX_FACE_NODES + 1) * sizeof *s->conn);
   s->off = lac_malloc ((s->nf + 1) * sizeof *s->off);
@@ -106,25 +117,27 @@ surface_build (const lac_mesh *m, const lac_macro *M, surface *s)
     LAC_ERROR (LAC_ENOMEM, "contact surface of %zu facets", s->nf);
   for (size_t a = 0; a < m->nnodes; a++)
     s->local[a] = -1;
-  for (size_t j = 0; j < s->nf; j++)
-    {
-      int n = lac_mesh_facet_nodes (m, M->cell[j], M->face[j], nodes, &ft);
-      const lac_refelem *re = lac_refelem_get (ft);
-      if (n <= 0 || !re)
-        LAC_ERROR (LAC_ESANITY, "slave facet %zu has no nodes", j);
-      for (int k = 0; k < n; k++)              /* VTK node k = gmsh node */
-        {
-          int a = nodes[re->vtk_perm[k]];
-          if (s->local[a] < 0)
-            {
-              s->node[s->np] = a;
-              s->local[a] = (long) s->np++;
-            }
-          s->conn[nc++] = s->local[a];
-        }
-      s->off[j] = (long) nc;
-      s->type[j] = (unsigned char) re->vtk_type;
-    }
+  for (size_t p = 0; p < st->npairs; p++)
+    for (size_t q = 0; q < st->macro[p]->ptr[st->macro[p]->n]; q++, j++)
+      {
+        const lac_macro *M = st->macro[p];
+        int n = lac_mesh_facet_nodes (m, M->cell[q], M->face[q], nodes, &ft);
+        const lac_refelem *re = lac_refelem_get (ft);
+        if (n <= 0 || !re)
+          LAC_ERROR (LAC_ESANITY, "slave facet %zu has no nodes", q);
+        for (int k = 0; k < n; k++)            /* VTK node k = gmsh node */
+          {
+            int a = nodes[re->vtk_perm[k]];
+            if (s->local[a] < 0)
+              {
+                s->node[s->np] = a;
+                s->local[a] = (long) s->np++;
+              }
+            s->conn[nc++] = s->local[a];
+          }
+        s->off[j] = (long) nc;
+        s->type[j] = (unsigned char) re->vtk_type;
+      }
   return LAC_SUCCESS;
 }
 
@@ -140,10 +153,24 @@ status_of (const lac_run_contact_data *d, size_t m, double *lam, double *gap,
   *st = i >= 0 ? d->newton->active[m] : -1;
 }
 
+/* The macro-element (slot) and the pair of every facet of the surface. */
+static void
+facet_slots (const lac_run_setup *st, int *mac, int *pair)
+{
+  size_t j = 0;
+  for (size_t p = 0; p < st->npairs; p++)
+    for (size_t m = 0; m < st->macro[p]->n; m++)
+      for (size_t q = st->macro[p]->ptr[m]; q < st->macro[p]->ptr[m + 1];
+           q++, j++)
+        {
+          mac[j] = (int) (st->set.offset[p] + m);
+          pair[j] = (int) p;
+        }
+}
+
 static int
 surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
 {
-  const lac_macro *M = d->setup->macro;
   const lac_contact *c = d->contact;
   int nts = c->xpt != NULL, dim = d->mesh->dim, status;
   size_t n = nts ? s->np : s->nf;
@@ -152,18 +179,21 @@ surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
   double *gap = lac_malloc ((n + 1) * sizeof *gap);
   int *st = lac_malloc ((n + 1) * sizeof *st), *mac = lac_malloc ((n + 1)
                                                                  * sizeof *mac);
+  int *pair = lac_malloc ((s->nf + 1) * sizeof *pair);
+  int *fmac = lac_malloc ((s->nf + 1) * sizeof *fmac);
   lac_vtu_section sec = nts ? LAC_VTU_POINT_DATA : LAC_VTU_CELL_DATA;
-  status = u && lam && gap && st && mac ? LAC_SUCCESS
+  status = u && lam && gap && st && mac && pair && fmac ? LAC_SUCCESS
            : LAC_ERRMSG (LAC_ENOMEM, "contact.vtu fields");
+  if (!status)
+    facet_slots (d->setup, fmac, pair);
   for (size_t p = 0; !status && p < s->np; p++)
     for (int k = 0; k < dim; k++)
       u[3 * p + (size_t) k] = d->u[(size_t) s->node[p] * (size_t) dim
                                    + (size_t) k];
   for (size_t j = 0; !status && j < n; j++)
     mac[j] = -1;
-  for (size_t m = 0; !status && !nts && m < M->n; m++)
-    for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)    /* its facets */
-      mac[j] = (int) m;
+  for (size_t j = 0; !status && !nts && j < n; j++)    /* its facets */
+    mac[j] = fmac[j];
   for (size_t m = 0; !status && nts && m < c->nmacro; m++)
     if (c->admissible[m] && s->local[c->inode[m]] >= 0)   /* its node */
       mac[s->local[c->inode[m]]] = (int) m;
@@ -180,7 +210,10 @@ surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
     status = lac_vtu_f64 (v, sec, "mean_gap", 1, gap, 1, 0);
   if (!status)
     status = lac_vtu_i32 (v, sec, "status", st);
+  if (!status)
+    status = lac_vtu_i32 (v, LAC_VTU_CELL_DATA, "pair", pair);
   lac_free (u), lac_free (lam), lac_free (gap), lac_free (st), lac_free (mac);
+  lac_free (pair), lac_free (fmac);
   return status;
 }
 
@@ -193,7 +226,7 @@ lac_run_contact_vtu (const lac_run_contact_data *d, int ascii,
   double *x = NULL;
   int status, dim = d->mesh->dim;
   memset (&s, 0, sizeof s);
-  status = surface_build (d->mesh, d->setup->macro, &s);
+  status = surface_build (d->mesh, d->setup, &s);
   if (!status && (!(v = lac_vtu_alloc (s.np, s.nf, ascii))
                   || !(x = lac_malloc ((3 * s.np + 1) * sizeof *x))))
     status = LAC_ERRMSG (LAC_ENOMEM, "contact.vtu of %zu points", s.np);

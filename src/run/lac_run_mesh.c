@@ -158,10 +158,10 @@ solve_kind (const lac_scene *sc, int strategy)
   static const lac_mesh_solve by_factor[] = {   /* lac_strategy_factor */
     LAC_MESH_SOLVE_ITERATIVE, LAC_MESH_SOLVE_DENSE, LAC_MESH_SOLVE_LU,
     LAC_MESH_SOLVE_CHOLESKY };
+  int scene = sc->ncontact ? sc->contact[sc->contact_loop].strategy
+              : LAC_STRATEGY_AUTO;
   const lac_strategy_type *t = lac_strategy_type_of (strategy ? strategy
-                                                     : sc->ncontact
-                                                     ? sc->contact[0].strategy
-                                                     : LAC_STRATEGY_AUTO);
+                                                     : scene);
   int large = sc->scene.large_deformation, solver = sc->scene.solver;
   if (t && t->factor == LAC_FACTOR_NONE && !large)
     return LAC_MESH_SOLVE_ITERATIVE;

@@ -39,11 +39,14 @@ normal_stress (int dim, const double *s, const double *n)
  * sum = int 1, int x (3), int n.sigma.n (with an exact solution, else 0);
  * l2 (if not NULL) += int (n.sigma.n - lh)^2. */
 static int
-macro_quadrature (const ctx *r, const lac_exact *e, size_t m, double lh,
+macro_quadrature (const ctx *r, const lac_exact *e, size_t slot, double lh,
                   double sum[5], double *l2)
 {
-  const lac_macro *M = r->setup->macro;
-  const lac_pairing *P = r->setup->pairing;
+  const lac_run_setup *st = r->setup;
+  size_t pr = lac_contact_set_pair_of (&st->set, slot);
+  size_t m = slot - st->set.offset[pr];
+  const lac_macro *M = st->macro[pr];
+  const lac_pairing *P = st->data.P[pr];
   int dim = r->dim, nodes[LAC_MAX_FACE_NODES];
   double s[6];
   lac_map mp;
@@ -95,8 +98,7 @@ multiplier_geometry (ctx *r, const lac_exact *e, double *l2)
       *l2 = sqrt (*l2);
       return LAC_SUCCESS;
     }
-  for (size_t m = 0; e->kind != LAC_EXACT_NONE && m < r->setup->macro->n;
-       m++)
+  for (size_t m = 0; e->kind != LAC_EXACT_NONE && m < c->nmacro; m++)
     {
       long i = c->mult[m];
       double sum[5];
@@ -184,7 +186,6 @@ static int
 summary (const ctx *r, const lac_newton *s, const lac_exact *e, double l2lam,
          lac_summary *sum)
 {
-  const lac_macro *M = r->setup->macro;
   size_t k = r->contact->k;
   double lmin = HUGE_VAL, lmax = -HUGE_VAL, elam = 0, lref = 0;
   int status;
@@ -195,7 +196,8 @@ summary (const ctx *r, const lac_newton *s, const lac_exact *e, double l2lam,
       elam = fmax (elam, fabs (r->lambda[i] - r->mu->exact[i]));
       lref = fmax (lref, fabs (r->mu->exact[i]));
     }
-  if ((status = lac_summary_add (sum, "macro_elements", "%zu", M->n))
+  if ((status = lac_summary_add (sum, "macro_elements", "%zu",
+                                 lac_contact_set_nslot (&r->setup->set)))
       || (status = lac_summary_add (sum, "multipliers", "%zu", k))
       || (status = lac_summary_add (sum, "active", "%zu",
                                     lac_newton_nactive (s)))
@@ -222,12 +224,12 @@ summary_radial (const ctx *r, const lac_exact *e, lac_summary *sum)
   int status;
   if (e->kind == LAC_EXACT_NONE || e->nr == 0)
     return LAC_SUCCESS;
-  int bs = r->mesh->body[st->macro->cell[0]];          /* slave body  */
+  int bs = r->mesh->body[st->macro[0]->cell[0]];       /* slave body  */
   if ((status = lac_summary_add (sum, "max_rel_err_sigma_rr_slave", "%.3e",
                                  sigma_rr_error (r, e, bs)))
-      || st->master.n == 0)                             /* rigid master */
+      || st->master[0].n == 0)                          /* rigid master */
     return status;
-  int bm = r->mesh->body[st->master.cell[0]];          /* master body */
+  int bm = r->mesh->body[st->master[0].cell[0]];       /* master body */
   return lac_summary_add (sum, "max_rel_err_sigma_rr_master", "%.3e",
                           sigma_rr_error (r, e, bm));
 }

@@ -201,7 +201,8 @@ nl_strategy (const lac_scene *sc, int strategy, size_t nfree)
     { [LAC_SOLVER_DENSE] = LAC_FACTOR_DENSE,
       [LAC_SOLVER_UMFPACK] = LAC_FACTOR_LU,
       [LAC_SOLVER_CHOLMOD] = LAC_FACTOR_CHOLESKY };
-  int want = strategy ? strategy : sc->ncontact ? sc->contact[0].strategy
+  int want = strategy ? strategy
+             : sc->ncontact ? sc->contact[sc->contact_loop].strategy
              : LAC_STRATEGY_AUTO;
   if (want != LAC_STRATEGY_AUTO)
     return (lac_strategy_kind) want;
@@ -226,31 +227,24 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
                           .nfree = sys->nfree, .N = sys->N,
                           .N_what = (const char *const *) sys->N_what };
   if (sc->ncontact)
-    {
-      const lac_scene_contact *c = &sc->contact[0];
-      p->M = setup->macro;
-      p->epsilon = c->epsilon;
-      if (setup->master.n)
-        p->master = &setup->master;
-      else
-        p->obstacle = &setup->obstacle;
-    }
+    p->set = &setup->set;                      /* every pair */
   lac_nl_opts o;
   lac_nl_opts_init (&o);
   o.kind = lac_strategy_choose ((lac_strategy_kind) nl_strategy
                                  (sc, strategy, sys->nfree), sys->ndof,
-                                 p->M ? p->M->n : 0, sys->nfree);
+                                 lac_contact_set_nslot (&setup->set),
+                                 sys->nfree);
   if (o.kind == LAC_NSTRATEGIES)
-    return lac_scene_error (sc, &sc->contact[0].sec, "strategy", LAC_EINVAL,
-                            "%s", lac_error_message ());
+    return lac_scene_error (sc, &sc->contact[sc->contact_loop].sec,
+                            "strategy", LAC_EINVAL, "%s",
+                            lac_error_message ());
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
   o.frozen = sc->steps.tangent == 1;
   if (!(nl->model = lac_nl_alloc (p, &o))
       || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
-    return LAC_ENOMEM;
-  if (sc->ncontact)                            /* a shrink fit: t delta */
-    lac_nl_set_interference (nl->model, sc->contact[0].interference);
+    return LAC_ENOMEM;       /* each pair's shrink fit: t delta, from its
+                                offset (lac_run_setup.c, make_pair) */
   return LAC_SUCCESS;
 }
 
@@ -271,18 +265,20 @@ push_mult (lac_run_nl *nl, lac_run_nl_mult **q)
  * mean gap, status and the centroid of T^m cap Gamma_C (current
  * coordinates). */
 static int
-record_mults (lac_run_nl *nl, const lac_macro *M, int step)
+record_mults (lac_run_nl *nl, const lac_run_setup *st, int step)
 {
   const lac_nl *s = nl->model;
   const lac_newton *loop = nl->ls->loop;
   const lac_contact *c = s->contact;
-  const lac_pairing *P = s->pairing;
   int dim = s->cur.dim, nodes[LAC_MAX_FACE_NODES], status;
   lac_map mp;
   for (size_t i = 0; c && i < c->k; i++)
     {
       lac_run_nl_mult *q = NULL;
-      size_t m = c->macro[i];
+      size_t m = c->macro[i], pr = lac_contact_set_pair_of (&st->set, m);
+      const lac_macro *M = st->macro[pr];
+      const lac_pairing *P = s->data.P[pr];
+      size_t ml = m - st->set.offset[pr];        /* in its pair */
       double wsum = 0;
       if ((status = push_mult (nl, &q)))
         return status;
@@ -292,7 +288,7 @@ record_mults (lac_run_nl *nl, const lac_macro *M, int step)
       q->gap = c->area[i] > 0 ? loop->d[m] / c->area[i] : 0.0;
       q->covered = c->area[i];
       q->active = loop->active[m];
-      for (size_t j = M->ptr[m]; j < M->ptr[m + 1]; j++)   /* centroid */
+      for (size_t j = M->ptr[ml]; j < M->ptr[ml + 1]; j++)  /* centroid */
         for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
           {
             int nn = lac_contact_facet_eval (&s->cur, M->cell[j], M->face[j],
@@ -382,7 +378,7 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
   size_t ndof = (size_t) m->dim * m->nnodes;
   int status;
   record_step (nl, j, m->dim);
-  if ((status = record_mults (nl, setup->macro, (int) j + 1)))
+  if ((status = record_mults (nl, setup, (int) j + 1)))
     return status;
   if (j + 1 < nl->nfactor
       && lac_run_nl_step_file (j, nl->nfactor, sc->steps.vtu_every))

@@ -20,9 +20,10 @@ contact_files (const lac_run_output_in *in, lac_output_batch *b)
 {
   const lac_scene_output *o = &in->post.sc->output;
   lac_run_contact_data d = { in->post.model, in->post.mesh, in->post.setup,
-                             in->post.sys->contact, in->post.sol->newton,
+                             in->post.setup->data.all, in->post.sol->newton,
                              &in->res->mult, &in->res->contact,
-                             in->post.sc->exact.sec.line != 0, in->post.u };
+                             in->post.sc->exact.sec.line != 0, in->post.sc,
+                             in->post.u };
   const char *path;
   int status = LAC_SUCCESS;
   if (o->csv)
@@ -100,7 +101,7 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
   int status = lac_file_create (path, "w", &f);
   if (status)
     return status;
-  fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active,covered\n",
+  fprintf (f, "%smacro,x,y,z,lambda,mean_gap,active,covered,pair\n",
            last_only ? "" : "step,");
   for (size_t q = 0; q < nl->nmult; q++)
     {
@@ -109,9 +110,10 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
         continue;
       if (!last_only)
         fprintf (f, "%d,", u->step);
-      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%.10e\n", u->macro,
-               u->x[0], u->x[1], u->x[2], u->lambda, u->gap, u->active,
-               u->covered);
+      size_t p = lac_contact_set_pair_of (&in->post.setup->set, u->macro);
+      fprintf (f, "%zu,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%.10e,%s\n",
+               u->macro, u->x[0], u->x[1], u->x[2], u->lambda, u->gap,
+               u->active, u->covered, in->post.sc->contact[p].sec.name);
     }
   return lac_file_close (f, path);
 }
@@ -193,7 +195,7 @@ output_linear (const lac_run_output_in *in, lac_output_batch *b,
 {
   const lac_scene_output *o = &in->post.sc->output;
   const char *path = "";
-  int contact = in->post.sys->contact != NULL;
+  int contact = in->post.setup->data.all != NULL;
   int status = write_fields (in, b);
   if (!status && contact)
     status = contact_files (in, b);
@@ -218,7 +220,7 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
   const lac_scene_output *o = &sc->output;
   const char *curve = sc->steps.curve ? sc->steps.curve : "curve.csv";
   const char *path = "";
-  int macro = in->post.setup->macro != NULL;
+  int macro = in->post.setup->npairs > 0;
   char nsteps[64];
   int status = write_fields (in, b);
   if (!status && (!(path = lac_output_batch_add (b, curve))

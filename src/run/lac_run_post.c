@@ -185,6 +185,63 @@ make_summary (const lac_run_post_in *in, lac_run_results *r,
 
 /* ---- the summary of a large-deformation run -------------------------- */
 
+/* "what.name = value" into the summary. */
+static int
+pair_key (lac_summary *sum, const char *what, const char *name,
+          const char *value)
+{
+  char key[300];
+  snprintf (key, sizeof key, "%s.%s", what, name);
+  return lac_summary_add (sum, key, "%s", value);
+}
+
+/* Pair p at the end of the last step, on the deformed surface: its force
+ * as a vector, its normal force sum lambda_i |T^m_i cap Gamma_C| and its
+ * active macro-elements. */
+static int
+nl_pair (const lac_run_post_in *in, const lac_newton *s, size_t p,
+         lac_summary *sum)
+{
+  const lac_nl *model = in->nl->model;
+  const lac_contact_set_data *d = &model->data;
+  const lac_contact *c = d->all;
+  const char *name = in->sc->contact[p].sec.name;
+  double fn = 0, f[3] = { 0, 0, 0 };
+  size_t nact = 0;
+  char v[120];
+  int dim = in->mesh->dim, status = LAC_SUCCESS;
+  for (size_t i = d->col[p]; c && i < d->col[p + 1]; i++)
+    {
+      fn += s->lambda[c->macro[i]] * c->area[i];
+      nact += s->active[c->macro[i]] != 0;
+    }
+  if (c && (status = lac_run_pair_force (in->model, &model->cur,
+                                         in->setup->macro[p], d->P[p], c,
+                                         d->col[p], d->col[p + 1],
+                                         in->setup->set.offset[p],
+                                         s->lambda, f)))
+    return status;
+  snprintf (v, sizeof v, dim == 3 ? "%.16e %.16e %.16e" : "%.16e %.16e",
+            f[0], f[1], f[2]);
+  if ((status = pair_key (sum, "contact_force", name, v)))
+    return status;
+  snprintf (v, sizeof v, "%.10e", fn);
+  if ((status = pair_key (sum, "contact_normal_force", name, v)))
+    return status;
+  snprintf (v, sizeof v, "%zu", nact);
+  return pair_key (sum, "active_macro_elements", name, v);
+}
+
+/* Several pairs: the lines of each. */
+static int
+nl_pairs (const lac_run_post_in *in, const lac_newton *s, lac_summary *sum)
+{
+  int status = LAC_SUCCESS;
+  for (size_t p = 0; p < in->setup->npairs && !status; p++)
+    status = nl_pair (in, s, p, sum);
+  return status;
+}
+
 static int
 nl_summary (const lac_run_post_in *in, lac_run_results *r)
 {
@@ -228,26 +285,29 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       if (status)
         return status;
     }
-  if (!in->setup->macro)
+  if (!in->setup->npairs)
     return LAC_SUCCESS;
   const lac_run_nl_step *q = &nl->step[nl->nfactor - 1];
-  if ((status = lac_run_pairs_dropped (nl->model->pairing, s, sum)))
+  if ((status = lac_run_pairs_dropped (&nl->model->data, s, sum)))
     return status;
-  if ((status = lac_summary_add (sum, "macro_elements", "%zu", in->setup->macro->n))
+  if ((status = lac_summary_add (sum, "macro_elements", "%zu",
+                                 lac_contact_set_nslot (&in->setup->set)))
       || (status = lac_summary_add (sum, "multipliers", "%zu", q->solver.k))
       || (status = lac_summary_add (sum, "active", "%zu",
                                     q->solver.nactive))
       || (status = lac_summary_add (sum, "lambda_min", "%.10e",
                                         q->lambda_min)))
     return status;
-  return lac_summary_add (sum, "contact_force", "%.10e", q->force);
+  if ((status = lac_summary_add (sum, "contact_force", "%.10e", q->force)))
+    return status;
+  return in->setup->npairs > 1 ? nl_pairs (in, s, sum) : LAC_SUCCESS;
 }
 
 /* ---- the reactions of the Dirichlet sections ------------------------- */
 
 /* With [output] reactions = yes, "reaction.NAME" lines
- * (run/lac_run_reaction.h): the pair and the
- * multipliers of the last solve (large deformation: the model's pair, on
+ * (run/lac_run_reaction.h): the pairs and the
+ * multipliers of the last solve (large deformation: the model's pairs, on
  * the final coordinates). */
 static int
 reactions (const lac_run_post_in *in, lac_summary *sum)
@@ -259,9 +319,9 @@ reactions (const lac_run_post_in *in, lac_summary *sum)
                             in->setup->on_contact };
   if (!in->sc->output.reactions)
     return LAC_SUCCESS;
-  if (in->setup->macro && nw)
+  if (in->setup->npairs && nw)
     {
-      r.pair = in->nl ? &in->nl->model->pair : &in->setup->pair;
+      r.set = in->nl ? &in->nl->model->set : &in->setup->set;
       r.lambda = nw->lambda;
     }
   return lac_run_reactions (&r, sum);
@@ -303,20 +363,18 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
     return status;
   if ((status = make_summary (in, res, &e)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_pairs_dropped (in->setup->pairing,
-                                          in->sol->newton, &res->summary)))
+  const lac_contact *c = in->setup->data.all;
+  if (c && (status = lac_run_pairs_dropped (&in->setup->data,
+                                            in->sol->newton, &res->summary)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_multipliers_post (in->model, in->mesh, in->setup,
-                                             in->sys->contact,
-                                             in->sol->newton, &e, res->sigma,
-                                             &res->mult, &res->summary)))
+  if (c && (status = lac_run_multipliers_post (in->model, in->mesh,
+                                               in->setup, c, in->sol->newton,
+                                               &e, res->sigma, &res->mult,
+                                               &res->summary)))
     return status;
-  if (in->sys->contact
-      && (status = lac_run_contact_post (in->model, in->mesh, in->setup,
-                                         in->sys->contact, in->sol->newton,
-                                         &res->contact, &res->summary)))
+  if (c && (status = lac_run_contact_post (sc, in->model, in->mesh,
+                                           in->setup, c, in->sol->newton,
+                                           &res->contact, &res->summary)))
     return status;
   if ((status = lac_run_solve_summary (in->sol, &res->summary))
       || (status = reactions (in, &res->summary)))

@@ -56,26 +56,26 @@ internal_force (const lac_run_reaction_in *in, const char *fixed, double *r)
   return status;
 }
 
-/* r -= C lambda, C of the pair at x = X + u (large) or X. */
+/* r -= C lambda, C of every pair at x = X + u (large) or X, side by
+ * side (contact/lac_contact_set.h), in the axes. */
 static int
 contact_force (const lac_run_reaction_in *in, double *r)
 {
   const lac_mesh *m = in->mesh;
   size_t n = (size_t) m->dim * m->nnodes;
   double *x = in->large ? lac_malloc (n * sizeof *x) : NULL;
-  lac_pairing *P = NULL;
-  lac_contact *c = NULL;
+  lac_contact_set_data d = { 0 };
   int status = !in->large || x ? LAC_SUCCESS
                : LAC_ERRMSG (LAC_ENOMEM, "reactions");
   for (size_t k = 0; x && k < n; k++)
     x[k] = m->x[k] + in->u[k];
   if (!status)
-    status = lac_contact_pair_build (in->pair, x, &P, &c);
+    status = lac_contact_set_build (in->set, x, &d);
+  const lac_contact *c = d.all;
   for (size_t i = 0; !status && c && i < c->k; i++)
     for (int q = c->C->p[i]; q < c->C->p[i + 1]; q++)
       r[c->C->i[q]] -= c->C->x[q] * in->lambda[c->macro[i]];
-  lac_pairing_free (P);
-  lac_contact_free (c);
+  lac_contact_set_data_clear (&d);
   lac_free (x);
   return status;
 }
@@ -201,7 +201,7 @@ lac_run_reactions (const lac_run_reaction_in *in, lac_summary *sum)
     }
   if (!status)
     status = internal_force (in, fixed, r);
-  if (!status && contact && in->pair && in->lambda)
+  if (!status && contact && in->set && in->lambda)
     status = contact_force (in, r);
   if (!status)
     status = split_all (m, &cs, r, R);

@@ -10,9 +10,10 @@
  *
  * with K and C before any Dirichlet elimination and in the axes (the
  * stiffness of the cells around the fixed nodes is assembled again for
- * it, and C from the pair: only when a fixed node lies on a contact
- * surface).  r_a lies in the span of the directions fixed at the node
- * (the free components balance, to the solver's precision); it is split
+ * it, and C from the pairs, all of them side by side: only when a fixed
+ * node lies on a contact surface).  r_a lies in the span of the
+ * directions fixed at the node (the free components balance, to the
+ * solver's precision); it is split
  * among the conditions there (run/lac_run_roller.h lists them: a
  * direction d_j and a section each), r_a = sum_j mu_j d_j over the
  * directions that fix something new in the order of the sections
@@ -31,7 +32,7 @@
 #ifndef LAC_RUN_REACTION_H
 #define LAC_RUN_REACTION_H
 
-#include "contact/lac_contact_pair.h"
+#include "contact/lac_contact_set.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
 #include "run/lac_summary.h"
@@ -45,9 +46,9 @@ typedef struct lac_run_reaction_in
   int large;                       /* 1: F_int(u) of fem/lac_hyper.h      */
   const double *F;                 /* ndof: the load (at t = 1)           */
   const double *u;                 /* ndof: the displacement, in the axes */
-  const lac_contact_pair *pair;    /* the contact pair (its options of the
-                                      last pairing), or NULL              */
-  const double *lambda;            /* per slot of the pair, or NULL       */
+  const lac_contact_set *set;      /* the contact pairs (their options of
+                                      the last pairing), or NULL          */
+  const double *lambda;            /* per slot of the set, or NULL        */
   const char *on_contact;          /* nnodes flags, or NULL               */
 } lac_run_reaction_in;
 

@@ -70,19 +70,19 @@ lac_run_group (const lac_scene *sc, const lac_mesh *m,
 
 const lac_group *
 lac_run_contact_group (const lac_scene *sc, const lac_mesh *m,
-                       const char *key, const char *name)
+                       const lac_scene_section *s, const char *key,
+                       const char *name)
 {
-  const lac_scene_contact *c = &sc->contact[0];
   const lac_group *g = lac_mesh_group (m, name);
   if (!g)
     {
-      lac_scene_error (sc, &c->sec, key, LAC_EINVAL, "no physical "
+      lac_scene_error (sc, s, key, LAC_EINVAL, "no physical "
                        "group of that name in mesh '%s'", sc->mesh.file);
       return NULL;
     }
   if (g->dim != m->dim - 1 || g->n == 0)
     {
-      lac_scene_error (sc, &c->sec, key, LAC_EINVAL, "%s",
+      lac_scene_error (sc, s, key, LAC_EINVAL, "%s",
                        g->n == 0 ? "the group has no facets"
                        : "not a group of boundary facets (dimension "
                          "must be the mesh's minus one)");

@@ -22,11 +22,12 @@ void lac_run_exact (const lac_scene *sc, lac_model model, lac_exact *e);
 const lac_group *lac_run_group (const lac_scene *sc, const lac_mesh *m,
                                 const lac_scene_section *s, const char *name,
                                 int dim_want, const char *what);
-/* The non-empty facet group `name` of key `key` of the [contact] section,
- * or NULL with a message naming the scene line. */
+/* The non-empty facet group `name` of key `key` of the [contact] section
+ * s, or NULL with a message naming the scene line. */
 const lac_group *lac_run_contact_group (const lac_scene *sc,
-                                        const lac_mesh *m, const char *key,
-                                        const char *name);
+                                        const lac_mesh *m,
+                                        const lac_scene_section *s,
+                                        const char *key, const char *name);
 /* The current error message, fitted to buf (base/lac_text.h). */
 void lac_run_inner_message (char *buf, size_t size);
 /* Distinct cell types of the mesh, "tri6" or "tri6+quad8". */

@@ -3,7 +3,9 @@
  */
 #include "run/lac_run_setup.h"
 
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
@@ -13,55 +15,204 @@
 void
 lac_run_setup_clear (lac_run_setup *s)
 {
-  lac_pairing_free (s->pairing);
-  lac_macromesh_free (s->macro);
+  lac_contact_set_data_clear (&s->data);
+  lac_contact_set_clear (&s->set);
+  for (size_t p = 0; s->macro && p < s->npairs; p++)
+    lac_macromesh_free (s->macro[p]);
+  lac_free (s->macro);
+  lac_free (s->master);
+  lac_free (s->obstacle);
+  lac_free (s->pair);
   lac_free (s->on_contact);
   memset (s, 0, sizeof *s);
 }
 
-/* Mark the nodes of the slave and master groups. */
+int
+lac_run_setup_error (const lac_scene *sc, const lac_run_setup *s,
+                     const char *key, int status)
+{
+  size_t p = s->data.failed < sc->ncontact ? s->data.failed : 0;
+  return lac_scene_error (sc, &sc->contact[p].sec, key, status, "%s",
+                          lac_error_message ());
+}
+
+/* Mark the nodes of every slave and master group. */
 static int
-mark_contact_nodes (const lac_mesh *m, const lac_group *gs,
-                    const lac_group *gm, lac_run_setup *s)
+mark_contact_nodes (const lac_scene *sc, const lac_mesh *m, lac_run_setup *s)
 {
   if (!(s->on_contact = lac_calloc (m->nnodes, 1)))
     LAC_ERROR (LAC_ENOMEM, "contact node marks");
-  for (size_t k = 0; k < gs->nnodes; k++)
-    s->on_contact[gs->node[k]] = 1;
-  for (size_t k = 0; gm && k < gm->nnodes; k++)
-    s->on_contact[gm->node[k]] = 1;
+  for (size_t p = 0; p < sc->ncontact; p++)
+    {
+      const lac_scene_contact *c = &sc->contact[p];
+      const lac_group *gs = lac_mesh_group (m, c->slave);
+      const lac_group *gm = c->master ? lac_mesh_group (m, c->master) : NULL;
+      for (size_t k = 0; k < gs->nnodes; k++)
+        s->on_contact[gs->node[k]] = 1;
+      for (size_t k = 0; gm && k < gm->nnodes; k++)
+        s->on_contact[gm->node[k]] = 1;
+    }
   return LAC_SUCCESS;
 }
 
-/* The pairing of the slave sub-facets with the master facets or the
+/* ---- the roles of the facets ------------------------------------------- */
+
+/* A slave facet: cell * LAC_MAX_FACES + face, and its pair. */
+typedef struct role
+{
+  size_t key, pair;
+} role;
+
+static int
+cmp_role (const void *a, const void *b)
+{
+  const role *p = a, *q = b;
+  return p->key < q->key ? -1 : p->key > q->key;
+}
+
+/* No facet is the slave of one pair and the master of another (or of its
+ * own): the same interface would be constrained twice. */
+static int
+check_roles (const lac_scene *sc, const lac_mesh *m)
+{
+  size_t n = 0, k = 0;
+  for (size_t p = 0; p < sc->ncontact; p++)
+    n += lac_mesh_group (m, sc->contact[p].slave)->n;
+  role *r = lac_malloc ((n + 1) * sizeof *r);
+  if (!r)
+    LAC_ERROR (LAC_ENOMEM, "roles of %zu slave facets", n);
+  for (size_t p = 0; p < sc->ncontact; p++)
+    {
+      const lac_group *g = lac_mesh_group (m, sc->contact[p].slave);
+      for (size_t e = 0; e < g->n; e++, k++)
+        r[k] = (role) { g->cell[e] * LAC_MAX_FACES + (size_t) g->face[e], p };
+    }
+  qsort (r, n, sizeof *r, cmp_role);
+  int status = LAC_SUCCESS;
+  for (size_t q = 0; q < sc->ncontact && !status; q++)
+    {
+      const lac_scene_contact *c = &sc->contact[q];
+      const lac_group *g = c->master ? lac_mesh_group (m, c->master) : NULL;
+      for (size_t e = 0; g && e < g->n && !status; e++)
+        {
+          role key = { g->cell[e] * LAC_MAX_FACES + (size_t) g->face[e], 0 };
+          const role *hit = bsearch (&key, r, n, sizeof *r, cmp_role);
+          if (hit)
+            status = lac_scene_error (sc, &c->sec, "master", LAC_EINVAL,
+                                      "its facet of cell %zu (face %d) is "
+                                      "a slave facet of [contact %s]: one "
+                                      "interface would be constrained "
+                                      "twice", m->cell_tag[g->cell[e]],
+                                      g->face[e],
+                                      sc->contact[hit->pair].sec.name);
+        }
+    }
+  lac_free (r);
+  return status;
+}
+
+/* ---- the macro-meshes ---------------------------------------------------- */
+
+/* The pair whose slave group a message about macro-meshes names (the
+ * last one named: the second of two groups that share a facet), else
+ * the first pair. */
+static size_t
+named_pair (const lac_scene *sc, const char *msg)
+{
+  for (size_t p = sc->ncontact; p-- > 0;)
+    {
+      char q[300];
+      snprintf (q, sizeof q, "'%s'", sc->contact[p].slave);
+      if (strstr (msg, q))
+        return p;
+    }
+  return 0;
+}
+
+/* The macro-meshes of every slave group: the LAC ones in one pass
+ * (lac_macromesh_build_set, the mesh refined), then the raw traces of
+ * the comparison methods (p0, nts) on the mesh refined. */
+static int
+build_macros (const lac_scene *sc, int large, lac_mesh **mesh,
+              lac_run_setup *s)
+{
+  size_t n = 0, np = sc->ncontact, *which = lac_malloc (np * sizeof *which);
+  const char **name = lac_malloc (np * sizeof *name);
+  lac_macro_opts *opt = lac_calloc (np, sizeof *opt);
+  lac_macro **M = lac_calloc (np, sizeof *M);
+  int status = which && name && opt && M ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "macro-meshes of %zu pairs", np);
+  for (size_t p = 0; !status && p < np; p++)
+    if (sc->contact[p].method == 0 || large)      /* lac: Hypothesis 1 */
+      {
+        which[n] = p;
+        name[n] = sc->contact[p].slave;
+        opt[n++].hex_cut = sc->contact[p].hex_cut;
+      }
+  if (!status && n > 0
+      && (status = lac_macromesh_build_set (mesh, n, name, opt, M)))
+    status = lac_scene_error (sc, &sc->contact[named_pair
+                                               (sc, lac_error_message ())].sec,
+                              "slave", status, "%s", lac_error_message ());
+  for (size_t j = 0; !status && j < n; j++)
+    s->macro[which[j]] = M[j];
+  for (size_t p = 0; !status && p < np; p++)
+    if (!s->macro[p]
+        && (status = lac_macromesh_trace (*mesh, sc->contact[p].slave,
+                                          &s->macro[p])))
+      status = lac_scene_error (sc, &sc->contact[p].sec, "slave", status,
+                                "%s", lac_error_message ());
+  lac_free (which), lac_free (name), lac_free (opt), lac_free (M);
+  return status;
+}
+
+/* ---- the pairs ----------------------------------------------------------- */
+
+/* Pair p of the set: its master facets (on the refined mesh) or its
+ * obstacle, epsilon, method and pairing options. */
+static void
+make_pair (const lac_scene *sc, const lac_mesh *m, size_t p,
+           lac_run_setup *s)
+{
+  const lac_scene_contact *c = &sc->contact[p];
+  if (c->master)
+    s->master[p] = lac_pairing_facets_of (m, lac_mesh_group (m, c->master));
+  s->obstacle[p] = (lac_obstacle) { m->dim, c->height,
+                                    { c->curvature[0], c->curvature[1] },
+                                    { c->center[0], c->center[1] },
+                                    c->normal == 1 };
+  s->pair[p] = (lac_contact_pair) { m, (lac_model) sc->scene.model,
+                                    s->macro[p], s->master[p].n
+                                    ? &s->master[p] : NULL, &s->obstacle[p],
+                                    c->epsilon > 0 ? c->epsilon
+                                    : LAC_EPSILON_DEFAULT, c->method == 2,
+                                    { 0 }, c->interference };  /* g0 - delta */
+  lac_pairing_opts_init (&s->pair[p].popts);
+  s->pair[p].popts.dist_abs = c->gap_bound;
+}
+
+/* The pairing of every pair's slave sub-facets with its master facets or
  * obstacle [LAC §4.6]. */
 static int
-pair (const lac_scene *sc, const lac_mesh *m, lac_run_setup *s)
+pair (const lac_scene *sc, lac_run_setup *s)
 {
-  const lac_scene_contact *c = &sc->contact[0];
-  lac_pairing_facets S = { m, s->macro->ptr[s->macro->n], s->macro->cell,
-                           s->macro->face };
   double t0 = lac_seconds ();
-  int status;
-  status = s->master.n ? lac_pairing_build (&S, &s->master, &s->pair.popts,
-                                            &s->pairing)
-                       : lac_obstacle_pairing (&S, &s->obstacle, 0,
-                                               &s->pairing);
+  int status = lac_contact_set_pairing (&s->set, NULL, &s->data);
   s->time_pairing = lac_seconds () - t0;
-  if (status)
-    return lac_scene_error (sc, &c->sec, NULL, status, "%s",
-                            lac_error_message ());
-  return LAC_SUCCESS;
+  return status ? lac_run_setup_error (sc, s, NULL, status) : LAC_SUCCESS;
 }
 
+/* The progress line of one pair (as it always was). */
 static void
-report (const lac_scene *sc, const lac_run_setup *s, int large,
-        char *progress, size_t size)
+report_one (const lac_scene *sc, const lac_run_setup *s, int large,
+            char *progress, size_t size)
 {
   const lac_scene_contact *c = &sc->contact[0];
+  const lac_macro *M = s->macro[0];
+  const lac_pairing *P = s->data.P ? s->data.P[0] : NULL;
   int n = snprintf (progress, size, "%zu macro-elements on '%s' (%zu cells "
-                    "cut, %zu nodes added), ", s->macro->n, c->slave,
-                    s->macro->ncut, s->macro->nnew);
+                    "cut, %zu nodes added), ", M->n, c->slave, M->ncut,
+                    M->nnew);
   char with[200];
   snprintf (with, sizeof with, "%s%s%s", c->master ? "'" : "the rigid "
             "obstacle", c->master ? c->master : "", c->master ? "'" : "");
@@ -72,23 +223,66 @@ report (const lac_scene *sc, const lac_run_setup *s, int large,
               "Newton iteration", with);
   else if (!c->master)                  /* no pairs: every facet covered */
     snprintf (progress + n, size - (size_t) n, "%zu slave facets on the "
-              "rigid obstacle (%zu integration points)",
-              s->pairing->nslave, s->pairing->npoints);
-  else if (s->pairing->nfail)
+              "rigid obstacle (%zu integration points)", P->nslave,
+              P->npoints);
+  else if (P->nfail)
     snprintf (progress + n, size - (size_t) n, "%zu pairs with %s; %zu "
-              "pairs dropped (projection failed)", s->pairing->npairs, with,
-              s->pairing->nfail);
+              "pairs dropped (projection failed)", P->npairs, with, P->nfail);
   else
     snprintf (progress + n, size - (size_t) n, "%zu pairs with %s",
-              s->pairing->npairs, with);
+              P->npairs, with);
+}
+
+/* The progress line of several pairs. */
+static void
+report (const lac_scene *sc, const lac_run_setup *s, int large,
+        char *progress, size_t size)
+{
+  size_t nm = 0, ncut = 0, npairs = 0, nfail = 0;
+  if (s->npairs == 1)
+    {
+      report_one (sc, s, large, progress, size);
+      return;
+    }
+  for (size_t p = 0; p < s->npairs; p++)
+    {
+      const lac_pairing *P = s->data.P ? s->data.P[p] : NULL;
+      nm += s->macro[p]->n;
+      ncut += s->macro[p]->ncut;
+      npairs += P ? (P->npairs ? P->npairs : P->nslave) : 0;
+      nfail += P ? P->nfail : 0;
+    }
+  int n = snprintf (progress, size, "%zu contact pairs, %zu macro-elements "
+                    "(%zu cells cut, %zu nodes added), ", s->npairs, nm,
+                    ncut, s->macro[0]->nnew);
+  if (n < 0 || (size_t) n >= size)
+    return;
+  if (large)
+    snprintf (progress + n, size - (size_t) n, "pairing at every Newton "
+              "iteration");
+  else
+    snprintf (progress + n, size - (size_t) n, "%zu facet pairs%s", npairs,
+              nfail ? " (some dropped: projection failed)" : "");
+}
+
+/* The arrays of n pairs. */
+static int
+setup_alloc (size_t n, lac_run_setup *s)
+{
+  s->npairs = n;
+  s->macro = lac_calloc (n, sizeof *s->macro);
+  s->master = lac_calloc (n, sizeof *s->master);
+  s->obstacle = lac_calloc (n, sizeof *s->obstacle);
+  s->pair = lac_calloc (n, sizeof *s->pair);
+  if (!s->macro || !s->master || !s->obstacle || !s->pair)
+    LAC_ERROR (LAC_ENOMEM, "contact set-up of %zu pairs", n);
+  return LAC_SUCCESS;
 }
 
 int
 lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
                      lac_run_setup *s, char *progress, size_t size)
 {
-  const lac_scene_contact *c;
-  const lac_group *gs, *gm = NULL;
   double t0;
   int status;
   memset (s, 0, sizeof *s);
@@ -97,38 +291,28 @@ lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
       snprintf (progress, size, "no [contact]: skipped");
       return LAC_SUCCESS;
     }
-  c = &sc->contact[0];
-  if (!lac_run_contact_group (sc, *mesh, "slave", c->slave)
-      || (c->master && !lac_run_contact_group (sc, *mesh, "master",
-                                               c->master)))
-    return LAC_EINVAL;
-  t0 = lac_seconds ();
-  status = c->method == 0 || large            /* lac: Hypothesis 1 */
-           ? lac_macromesh_build (mesh, c->slave, NULL, &s->macro)
-           : lac_macromesh_trace (*mesh, c->slave, &s->macro);
-  if (status)
-    return lac_scene_error (sc, &c->sec, "slave", status, "%s",
-                            lac_error_message ());
-  s->time_refine = lac_seconds () - t0;
-  gs = lac_mesh_group (*mesh, c->slave);
-  if (c->master)
+  for (size_t p = 0; p < sc->ncontact; p++)
     {
-      gm = lac_mesh_group (*mesh, c->master);
-      s->master = lac_pairing_facets_of (*mesh, gm);
+      const lac_scene_contact *c = &sc->contact[p];
+      if (!lac_run_contact_group (sc, *mesh, &c->sec, "slave", c->slave)
+          || (c->master && !lac_run_contact_group (sc, *mesh, &c->sec,
+                                                   "master", c->master)))
+        return LAC_EINVAL;
     }
-  s->obstacle = (lac_obstacle) { (*mesh)->dim, c->height,
-                                 { c->curvature[0], c->curvature[1] },
-                                 { c->center[0], c->center[1] },
-                                 c->normal == 1 };
-  s->pair = (lac_contact_pair) { *mesh, (lac_model) sc->scene.model,
-                                 s->macro, s->master.n ? &s->master : NULL,
-                                 &s->obstacle, c->epsilon > 0 ? c->epsilon
-                                 : LAC_EPSILON_DEFAULT, c->method == 2,
-                                 { 0 }, c->interference };
-  lac_pairing_opts_init (&s->pair.popts);
-  s->pair.popts.dist_abs = c->gap_bound;
-  if ((status = mark_contact_nodes (*mesh, gs, gm, s))
-      || (!large && (status = pair (sc, *mesh, s))))
+  if ((status = check_roles (sc, *mesh))
+      || (status = setup_alloc (sc->ncontact, s)))
+    return status;
+  t0 = lac_seconds ();
+  if ((status = build_macros (sc, large, mesh, s)))
+    return status;
+  s->time_refine = lac_seconds () - t0;
+  for (size_t p = 0; p < s->npairs; p++)
+    make_pair (sc, *mesh, p, s);
+  if ((status = lac_contact_set_init (&s->set, s->pair, s->npairs)))
+    return lac_scene_error (sc, &sc->contact[0].sec, "method", status, "%s",
+                            lac_error_message ());
+  if ((status = mark_contact_nodes (sc, *mesh, s))
+      || (!large && (status = pair (sc, s))))
     return status;
   report (sc, s, large, progress, size);
   return LAC_SUCCESS;

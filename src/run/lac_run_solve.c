@@ -142,7 +142,7 @@ static int
 contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
                lac_run_system *sys, lac_run_solution *sol)
 {
-  const lac_scene_contact *c = &sc->contact[0];
+  const lac_scene_contact *c = &sc->contact[sc->contact_loop];
   lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
                                                 : c->strategy);
   lac_contact_model model;
@@ -151,15 +151,14 @@ contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
   sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
                                    sys->nfree, sys->N,
                                    (const char *const *) sys->N_what };
-  sol->strategy = lac_strategy_choose (want, sys->ndof, sys->contact->k,
-                                       sys->nfree);
+  sol->strategy = lac_strategy_choose (want, sys->ndof,
+                                       setup->data.all->k, sys->nfree);
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
-  if ((status = lac_linear_model_init_pair (&sol->lin, &sol->cs,
-                                            &setup->pair, &setup->pairing,
-                                            &sys->contact, sys->dir,
-                                            young_min (sc), &model)))
+  if ((status = lac_linear_model_init_set (&sol->lin, &sol->cs, &setup->set,
+                                           &setup->data, sys->dir,
+                                           young_min (sc), &model)))
     return status;
   lac_newton_opts_init (&o);
   o.kind = sol->strategy;
@@ -202,8 +201,9 @@ lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum)
 
 /* One iteration of [LAC Alg. 1]; LAC_CONTINUE until it settles. */
 static int
-contact_iterate (const lac_scene *sc, const lac_run_system *sys,
-                 lac_run_solution *sol, char *progress, size_t size)
+contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
+                 const lac_run_system *sys, lac_run_solution *sol,
+                 char *progress, size_t size)
 {
   lac_newton *nw = sol->newton;
   const lac_newton_record *h;
@@ -224,7 +224,8 @@ contact_iterate (const lac_scene *sc, const lac_run_system *sys,
                 "%zu multipliers active%s",
                 lac_strategy_method (nw->strategy), nw->nhist,
                 nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
-                sys->contact->k, sol->krylov && h ? "; last solve: " : "");
+                setup->data.all->k, sol->krylov && h ? "; last solve: "
+                : "");
       if (sol->krylov && h)
         krylov_text (h, progress + strlen (progress),
                      size - strlen (progress));
@@ -252,12 +253,14 @@ lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
   int status;
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
-  if (!sys->contact)
+  if (!setup->data.all)
     return strategy != LAC_STRATEGY_AUTO
            ? solve_plain_strategy (strategy, sys, sol, progress, size)
            : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
       && (status = contact_start (sc, strategy, setup, sys, sol)))
     return status;
-  return contact_iterate (sc, sys, sol, progress, size);
+  status = contact_iterate (sc, setup, sys, sol, progress, size);
+  sys->contact = setup->data.all;       /* the loop may have paired again */
+  return status;
 }

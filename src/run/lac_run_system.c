@@ -19,7 +19,6 @@ lac_run_system_clear (lac_run_system *sys)
   lac_free (sys->F);
   lac_free (sys->b);
   lac_dirichlet_free (sys->dir);
-  lac_contact_free (sys->contact);
   lac_bodies_free (sys->bodies);
   lac_run_plate_clear (&sys->ties);
   lac_free (sys->N);
@@ -213,31 +212,25 @@ find_bodies (const lac_scene *sc, lac_model model, const lac_mesh *m,
 
 /* ---- contact: admissibility, C, G ------------------------------------- */
 
+/* The contact data of every pair (admissibility, C, G; each pair's
+ * interference in its gaps) into the set-up's; C of all pairs side by
+ * side turned to the nodal frames of rollers (T^T C), the Dirichlet
+ * values moved into G. */
 static int
-contact_matrices (const lac_scene *sc, lac_model model, const lac_mesh *m,
-                  const lac_run_setup *setup, lac_run_system *sys)
+contact_matrices (const lac_scene *sc, lac_run_setup *setup,
+                  lac_run_system *sys)
 {
-  const lac_scene_contact *c = &sc->contact[0];
-  int status;
-  if (c->method == 2)                            /* node-to-segment */
-    status = lac_contact_build_nts (m, model, setup->macro, setup->pairing,
-                                    &setup->master, &sys->contact);
-  else
-    status = lac_contact_build (m, model, setup->macro, setup->pairing,
-                                setup->master.n ? &setup->master : NULL,
-                                c->epsilon > 0 ? c->epsilon
-                                : LAC_EPSILON_DEFAULT, &sys->contact);
+  int status = lac_contact_set_assemble (&setup->set, NULL, &setup->data);
   if (status)
-    return lac_scene_error (sc, &c->sec, status == LAC_EADMISS
-                            ? "epsilon" : NULL, status, "%s",
-                            lac_error_message ());
-  if ((c->interference != 0                  /* a shrink fit: g0 - delta */
-       && (status = lac_contact_set_offset (sys->contact, c->interference)))
-      || (status = lac_frames_rotate_rows (sys->dir->frames,  /* T^T C */
-                                           &sys->contact->C)))
+    return lac_run_setup_error (sc, setup, status == LAC_EADMISS
+                                ? "epsilon" : NULL, status);
+  lac_contact *all = setup->data.all;    /* each pair's gaps g0 - delta */
+  sys->contact = all;
+  if (all && (status = lac_frames_rotate_rows (sys->dir->frames,
+                                               &all->C)))  /* T^T C */
     return status;
-  return lac_contact_apply_dirichlet (sys->contact, sys->dir->n,
-                                      sys->dir->dof, sys->dir->val);
+  return lac_contact_apply_dirichlet (all, sys->dir->n, sys->dir->dof,
+                                      sys->dir->val);
 }
 
 /* ---- the stage -------------------------------------------------------- */
@@ -288,7 +281,7 @@ alloc_triplets (const lac_mesh *m, size_t ndof)
 int
 lac_run_system_build (const lac_scene *sc, lac_model model,
                       const lac_mesh *m, const lac_run_material *mat,
-                      const lac_run_setup *setup, lac_run_system *sys,
+                      lac_run_setup *setup, lac_run_system *sys,
                       char *progress, size_t size)
 {
   lac_triplet *T = NULL;
@@ -318,7 +311,7 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
       || (status = find_bodies (sc, model, m, setup, sys))
       || (status = count_fixed (sys))
       || (sc->ncontact && !large                           /* C, G (else: */
-          && (status = contact_matrices (sc, model, m, setup, sys))))
+          && (status = contact_matrices (sc, setup, sys))))
     goto done;                                       /* per Newton it.) */
   if (large)                              /* the Newton loop's affair */
     {

@@ -4,8 +4,12 @@
  *      mesh, the material, the contact set-up.
  * Out: K and F [LAC (8)], the Dirichlet data and their elimination (b);
  *      for a linear scene with contact, admissibility [LAC Def. 1], C and
- *      the mean gaps G [LAC (16)-(18)] with the Dirichlet values moved into
- *      G; the bodies and the rigid motions their Dirichlet conditions
+ *      the mean gaps G [LAC (16)-(18)] of every pair (less the pair's
+ *      interference), C turned to the nodal frames of rollers (T^T C),
+ *      the Dirichlet values moved into G: into the set-up's contact data
+ *      (setup->data, its `all` the columns of every pair,
+ *      contact/lac_contact_set.h), which the loop replaces when it pairs
+ *      again; the bodies and the rigid motions their Dirichlet conditions
  *      leave free (fem/lac_rigid.h).  A body that touches no contact
  *      surface and is not fixed is an error naming it and its free motion;
  *      the free motions of bodies held by contact alone are N, for the
@@ -33,7 +37,10 @@ typedef struct lac_run_system
   double *F;               /* owned, ndof: the load vector               */
   double *b;               /* owned, ndof: right-hand side after it      */
   lac_dirichlet *dir;      /* owned: the fixed dofs and their values     */
-  lac_contact *contact;    /* owned: admissibility, C, G (linear contact) */
+  const lac_contact *contact; /* borrowed: the set-up's contact data, the
+                              columns of every pair (setup->data.all;
+                              the solve stage points it at the new data
+                              when the loop pairs again); NULL without */
   lac_bodies *bodies;      /* owned                                      */
   size_t nfree;            /* free motions of bodies held by contact     */
   double *N;               /* owned, ndof x nfree                        */
@@ -53,7 +60,7 @@ typedef struct lac_run_system
 
 int lac_run_system_build (const lac_scene *sc, lac_model model,
                           const lac_mesh *m, const lac_run_material *mat,
-                          const lac_run_setup *setup, lac_run_system *sys,
+                          lac_run_setup *setup, lac_run_system *sys,
                           char *progress, size_t size);
 void lac_run_system_clear (lac_run_system *sys);
 

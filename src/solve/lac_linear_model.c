@@ -36,7 +36,7 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
     }
   if (k > 0)
     lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
-  const lac_contact *c = lm->contact ? *lm->contact : NULL;
+  const lac_contact *c = lm->data ? lm->data->all : NULL;
   *p = (lac_model_point) { .k = k, .C = sys->C, .d = lm->d,
                            .area = lm->area, .size = lm->size,
                            .slot = lm->slot, .lost = c ? c->lost : NULL,
@@ -62,9 +62,9 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
 {
   lac_linear_model *lm = self;
   memset (u, 0, sizeof *u);
-  if (!lm->pair)
+  if (!lm->set)
     return LAC_SUCCESS;
-  const lac_mesh *m = lm->pair->mesh;
+  const lac_mesh *m = lm->set->pair[0].mesh;
   size_t n = (size_t) m->dim * m->nnodes;
   double umax = 0;
   memcpy (lm->x, U, n * sizeof *lm->x);
@@ -74,15 +74,15 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
       umax = fmax (umax, fabs (lm->x[j]));
       lm->x[j] += m->x[j];                          /* x = X + U */
     }
-  return lac_contact_pair_uncovered (lm->pair, lm->x, *lm->contact,
-                                     2 * umax, tol, u);
+  return lac_contact_set_uncovered (lm->set, lm->x, lm->data, 2 * umax,
+                                    tol, u);
 }
 
 /* The system's C and G, and the maps, from the contact data. */
 static void
 take_contact (lac_linear_model *lm)
 {
-  const lac_contact *c = *lm->contact;
+  const lac_contact *c = lm->data->all;
   lm->sys.C = c->C;
   lm->sys.G = c->G;
   lm->slot = c->macro;
@@ -90,41 +90,46 @@ take_contact (lac_linear_model *lm)
   lm->size = c->size;
 }
 
-/* The pair made again on the reference shape with `reach` more. */
+/* A new concatenation of the contact data of every pair, as the caller's
+ * was made: C turned to the nodal frames of rollers (T^T C, fem/lac_frames.h),
+ * then the Dirichlet values moved into G. */
+static int
+new_contact (const lac_linear_model *lm, lac_contact *all)
+{
+  int status = lac_frames_rotate_rows (lm->dir->frames, &all->C);
+  return status ? status : lac_contact_apply_dirichlet (all, lm->dir->n,
+                                                        lm->dir->dof,
+                                                        lm->dir->val);
+}
+
+/* The pairs made again on the reference shape with `reach` more. */
 static int
 widen (void *self, const double *U, double reach, size_t *more)
 {
   lac_linear_model *lm = self;
-  lac_pairing *P = NULL;
-  lac_contact *c = NULL;
+  lac_contact_set_data nd = { 0 };
   int status;
   (void) U;
   *more = 0;
-  if (!lm->pair)
+  if (!lm->set)
     return LAC_SUCCESS;
-  size_t k0 = (*lm->contact)->k;
-  lm->pair->popts.dist_abs += reach;
-  if ((status = lac_contact_pair_build (lm->pair, NULL, &P, &c))
-      || (c && (status = lac_frames_rotate_rows (lm->dir->frames, &c->C)))
-      || (c && (status = lac_contact_apply_dirichlet (c, lm->dir->n,
-                                                      lm->dir->dof,
-                                                      lm->dir->val))))
+  size_t k0 = lm->data->all->k;
+  for (size_t p = 0; p < lm->set->n; p++)
+    lm->set->pair[p].popts.dist_abs += reach;
+  if ((status = lac_contact_set_build (lm->set, NULL, &nd))
+      || (nd.all && (status = new_contact (lm, nd.all))))
     {
-      lac_pairing_free (P);
-      lac_contact_free (c);
+      lac_contact_set_data_clear (&nd);
       return status;
     }
-  if (!c || c->k <= k0)
+  if (!nd.all || nd.all->k <= k0)
     {
-      lac_pairing_free (P);                         /* nothing gained */
-      lac_contact_free (c);
+      lac_contact_set_data_clear (&nd);             /* nothing gained */
       return LAC_SUCCESS;
     }
-  *more = c->k - k0;
-  lac_pairing_free (*lm->pairing);
-  lac_contact_free (*lm->contact);
-  *lm->pairing = P;
-  *lm->contact = c;
+  *more = nd.all->k - k0;
+  lac_contact_set_data_clear (lm->data);
+  *lm->data = nd;
   lm->news = LAC_MODEL_NEW_C;
   take_contact (lm);
   return LAC_SUCCESS;
@@ -164,20 +169,19 @@ lac_linear_model_init (lac_linear_model *lm, const lac_contact_system *sys,
 }
 
 int
-lac_linear_model_init_pair (lac_linear_model *lm,
-                            const lac_contact_system *sys,
-                            lac_contact_pair *pair, lac_pairing **pairing,
-                            lac_contact **contact, const lac_dirichlet *dir,
-                            double E, lac_contact_model *m)
+lac_linear_model_init_set (lac_linear_model *lm,
+                           const lac_contact_system *sys,
+                           lac_contact_set *set, lac_contact_set_data *data,
+                           const lac_dirichlet *dir, double E,
+                           lac_contact_model *m)
 {
-  int status = init (lm, sys, E, (*contact)->nmacro, m);  /* nts: nodes */
+  int status = init (lm, sys, E, data->all->nmacro, m);   /* nts: nodes */
   if (status)
     return status;
-  lm->pair = pair->nts ? NULL : pair;  /* node-to-segment: not checked */
-  lm->pairing = pairing;
-  lm->contact = contact;
+  lm->set = set->pair[0].nts ? NULL : set;  /* node-to-segment: not checked */
+  lm->data = data;
   lm->dir = dir;
-  m->dim = pair->mesh->dim;
+  m->dim = set->pair[0].mesh->dim;
   take_contact (lm);
   return LAC_SUCCESS;
 }

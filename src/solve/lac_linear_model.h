@@ -13,22 +13,23 @@
  *
  * Built from a lac_contact_system alone (C and G given, one multiplier per
  * column: the unit tests and the book's small examples), or from the
- * contact data of a pair (contact/lac_contact_pair.h): then its slots
- * are the macro-elements of the slave surface, and the loop can ask which
- * macro-elements without a multiplier the solution pushed into the
- * master (uncovered) and have the pair made again with a longer reach
- * (widen: the caller's pairing and contact data are replaced).  The
- * node-to-segment method of comparison (its slots are the slave nodes)
- * is not checked.
+ * contact data of a set of pairs (contact/lac_contact_set.h: one pair or
+ * several): then its slots are the macro-elements of the slave surfaces
+ * (pair p's from the set's offset[p]), its columns those of all pairs side
+ * by side, and the loop can ask which macro-elements without a multiplier
+ * the solution pushed into the master (uncovered) and have the pairs made
+ * again with a longer reach (widen: the caller's contact data are
+ * replaced).  The node-to-segment method of comparison (its slots are the
+ * slave nodes) is not checked.
  *
- * Ownership: the system, the pair and the Dirichlet data are borrowed;
- * with a pair, *pairing and *contact are the caller's, replaced (the old
- * ones freed) by widen.
+ * Ownership: the system, the set and the Dirichlet data are borrowed;
+ * with a set, *data is the caller's, replaced (the old one cleared) by
+ * widen.
  */
 #ifndef LAC_LINEAR_MODEL_H
 #define LAC_LINEAR_MODEL_H
 
-#include "contact/lac_contact_pair.h"
+#include "contact/lac_contact_set.h"
 #include "fem/lac_assembly.h"
 #include "solve/lac_contact_model.h"
 
@@ -37,10 +38,11 @@ typedef struct lac_linear_model
   lac_contact_system sys;     /* K, F (Dirichlet applied), C, G, N         */
   const size_t *slot;         /* k: macro-element of column i, or NULL     */
   const double *area, *size;  /* k, or NULL                                */
-  lac_contact_pair *pair;     /* borrowed, or NULL                         */
-  lac_pairing **pairing;      /* the caller's, with a pair                 */
-  lac_contact **contact;      /* the caller's, with a pair                 */
-  const lac_dirichlet *dir;   /* moved into a new contact                  */
+  lac_contact_set *set;       /* borrowed, or NULL                         */
+  lac_contact_set_data *data; /* the caller's, with a set: its `all` is C,
+                                 G (the Dirichlet values moved in)        */
+  const lac_dirichlet *dir;   /* its frames turn a new contact's C, its
+                                 values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
 } lac_linear_model;
@@ -50,15 +52,16 @@ typedef struct lac_linear_model
 int lac_linear_model_init (lac_linear_model *lm,
                            const lac_contact_system *sys, double E,
                            lac_contact_model *m);
-/* The same over the contact data of a pair (*contact, already built on
- * the reference shape, the Dirichlet values moved in): sys's C and G are
- * taken from it; the slots are the macro-elements. */
-int lac_linear_model_init_pair (lac_linear_model *lm,
-                                const lac_contact_system *sys,
-                                lac_contact_pair *pair,
-                                lac_pairing **pairing, lac_contact **contact,
-                                const lac_dirichlet *dir, double E,
-                                lac_contact_model *m);
+/* The same over the contact data of a set (*data, already built on the
+ * reference shape, data->all->C turned to dir's nodal frames if any and
+ * the Dirichlet values moved into data->all): sys's C
+ * and G are taken from it; the slots are the macro-elements. */
+int lac_linear_model_init_set (lac_linear_model *lm,
+                               const lac_contact_system *sys,
+                               lac_contact_set *set,
+                               lac_contact_set_data *data,
+                               const lac_dirichlet *dir, double E,
+                               lac_contact_model *m);
 void lac_linear_model_clear (lac_linear_model *lm);
 
 #endif /* LAC_LINEAR_MODEL_H */

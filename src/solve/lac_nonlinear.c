@@ -34,8 +34,10 @@ lac_nl_free (lac_nl *s)
 {
   if (!s)
     return;
-  lac_pairing_free (s->pairing);
-  lac_contact_free (s->contact);
+  lac_contact_set_data_clear (&s->data);
+  lac_contact_set_clear (&s->set);
+  lac_free (s->pair);
+  lac_free (s->delta);
   lac_contact_tangent_free (s->tangent);
   lac_pattern_free (s->pat);
   lac_csc_free (s->C0);
@@ -117,15 +119,38 @@ in_axes (lac_nl *s, const double *U)
   return s->ug;
 }
 
-/* The pair of the problem (contact/lac_contact_pair.h). */
-static void
-set_pair (lac_nl *s, const lac_nl_opts *o)
+/* The pairs of the problem (contact/lac_contact_pair.h): copies of the
+ * set's, or the one pair of M, master, obstacle, epsilon; the pairing
+ * options are the model's (allow_empty forced: nothing in reach is no
+ * constraint); the offset of a set's pair is its interference at t = 1,
+ * ramped by lac_nl_set_load. */
+static int
+set_pairs (lac_nl *s, const lac_nl_opts *o)
 {
   const lac_nl_problem *p = &s->prob;
-  s->pair = (lac_contact_pair) { p->mesh, p->mat->model, p->M, p->master,
-                                 p->obstacle, p->epsilon > 0 ? p->epsilon
-                                 : LAC_EPSILON_DEFAULT, 0, o->popts, 0 };
-  s->pair.popts.allow_empty = 1;
+  s->npair = p->set ? p->set->n : p->M ? 1 : 0;
+  if (s->npair == 0)
+    return LAC_SUCCESS;
+  if (!(s->pair = lac_calloc (s->npair, sizeof *s->pair))
+      || !(s->delta = lac_calloc (s->npair, sizeof *s->delta)))
+    LAC_ERROR (LAC_ENOMEM, "%zu contact pairs", s->npair);
+  for (size_t q = 0; q < s->npair; q++)
+    {
+      if (p->set)
+        s->pair[q] = p->set->pair[q];
+      else
+        s->pair[q] = (lac_contact_pair) { p->mesh, p->mat->model, p->M,
+                                          p->master, p->obstacle,
+                                          p->epsilon, 0, { 0 }, 0 };
+      s->pair[q].model = p->mat->model;
+      if (!(s->pair[q].epsilon > 0))
+        s->pair[q].epsilon = LAC_EPSILON_DEFAULT;
+      s->pair[q].popts = o->popts;
+      s->pair[q].popts.allow_empty = 1;
+      s->delta[q] = s->pair[q].offset;          /* at t = 1; 0 at t = 0 */
+      s->pair[q].offset = 0;
+    }
+  return lac_contact_set_init (&s->set, s->pair, s->npair);
 }
 
 lac_nl *
@@ -135,7 +160,7 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   if (!p || !p->mesh || !p->mat || !p->dir)
     LAC_ERROR_NULL (LAC_EINVAL, "incomplete nonlinear problem (mesh, "
                     "material and Dirichlet data are needed)");
-  if (p->M && !p->master && !p->obstacle)
+  if (!p->set && p->M && !p->master && !p->obstacle)
     LAC_ERROR_NULL (LAC_EINVAL, "contact without a master surface or an "
                     "obstacle");
   lac_nl *s = lac_calloc (1, sizeof *s);
@@ -147,10 +172,14 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
     lac_nl_opts_init (&o);
   s->prob = *p;
   s->frozen = o.frozen;
-  set_pair (s, &o);
+  if (set_pairs (s, &o))
+    {
+      lac_nl_free (s);
+      return NULL;
+    }
   const lac_mesh *m = p->mesh;
   s->ndof = (size_t) m->dim * m->nnodes;
-  s->nmacro = p->M ? p->M->n : 0;
+  s->nmacro = lac_contact_set_nslot (&s->set);
   size_t n = s->ndof ? s->ndof : 1;
   double **dof[] = { &s->x, &s->g1, &s->g0, &s->r, &s->Fint, &s->inc.val };
   int ok = (s->fixed = lac_calloc (n, 1)) != NULL
@@ -179,14 +208,22 @@ lac_nl_set_load (lac_nl *s, double t)
 {
   s->t = t;
   s->fref = 0;
-  s->pair.offset = t * s->interference;        /* ramped, as the loads */
+  for (size_t q = 0; q < s->npair; q++)
+    s->pair[q].offset = t * s->delta[q];       /* ramped, as the loads */
 }
 
-void
-lac_nl_set_interference (lac_nl *s, double delta)
+int
+lac_nl_set_interference (lac_nl *s, size_t q, double delta)
 {
-  s->interference = delta;
-  s->pair.offset = s->t * delta;
+  if (q >= s->npair)
+    LAC_ERROR (LAC_EINVAL, "interference of contact pair %zu: the model "
+               "has %zu pairs", q, s->npair);
+  if (!isfinite (delta))
+    LAC_ERROR (LAC_EINVAL, "interference %g of contact pair %zu: expected "
+               "a finite length", delta, q);
+  s->delta[q] = delta;
+  s->pair[q].offset = s->t * delta;
+  return LAC_SUCCESS;
 }
 
 double
@@ -201,14 +238,13 @@ lac_nl_contact_force (const lac_nl *s, const double *lambda)
 
 /* ---- evaluate: F_int, K_T, contact data on the current coordinates ----- */
 
-/* [LAC Alg. 1, line 25]: the pair on x = X + U.  No pair or no admissible
- * macro-element is not an error: no constraint (contact = NULL). */
+/* [LAC Alg. 1, line 25]: the pairs on x = X + U.  No pair or no
+ * admissible macro-element is not an error: no constraint (contact =
+ * NULL). */
 static int
 contact_update (lac_nl *s, const double *U)
 {
-  lac_pairing_free (s->pairing);
-  lac_contact_free (s->contact);
-  s->pairing = NULL;
+  lac_contact_set_data_clear (&s->data);
   s->contact = NULL;
   s->moved = 0;
   U = in_axes (s, U);
@@ -219,10 +255,10 @@ contact_update (lac_nl *s, const double *U)
       s->x[j] = xj;
     }
   double t0 = lac_seconds ();
-  int status = lac_contact_pair_build (&s->pair, s->x, &s->pairing,
-                                       &s->contact);
-  if (!status && s->contact)                                   /* T^T C */
-    status = lac_frames_rotate_rows (s->prob.dir->frames, &s->contact->C);
+  int status = lac_contact_set_build (&s->set, s->x, &s->data);
+  s->contact = s->data.all;
+  if (!status && s->data.all)                     /* T^T C, every pair */
+    status = lac_frames_rotate_rows (s->prob.dir->frames, &s->data.all->C);
   s->npairings++;
   s->time_pairing += lac_seconds () - t0;
   return status;
@@ -273,7 +309,7 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
 {
   lac_nl *s = self;
   int status = assemble (s, U, s->Fint, tangent);
-  if (!status && s->prob.M)
+  if (!status && s->npair)
     status = contact_update (s, U);
   if (status)
     return status;
@@ -328,7 +364,7 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
       s->fref = sqrt (nr);
     }
   const lac_contact *c = s->contact;
-  if (c && (status = lac_contact_apply_dirichlet (s->contact, s->inc.n,
+  if (c && (status = lac_contact_apply_dirichlet (s->data.all, s->inc.n,
                                                   s->inc.dof, s->inc.val)))
     return status;
   s->sys = (lac_contact_system) { s->pat->K, s->r, c ? c->C : s->C0,
@@ -342,34 +378,65 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
 
 /* ---- the consistent step ------------------------------------------------ */
 
+/* H and B of pair q at the current coordinates, for its columns
+ * (lam_lin, active from its first column on). */
+static int
+pair_tangent (lac_nl *s, size_t q, const char *active, const double *lam_lin,
+              lac_contact_tangent **t)
+{
+  const lac_contact_pair *p = &s->pair[q];
+  const lac_contact *c = s->data.c[q];
+  size_t i0 = s->data.col[q];
+  lac_pairing_facets Mf;
+  static const lac_contact none = { 0 };
+  if (p->master)
+    {
+      Mf = *p->master;
+      Mf.mesh = &s->cur;
+    }
+  return lac_contact_tangent_build (&s->cur, p->model, p->M, s->data.P[q],
+                                    p->master ? &Mf : NULL, p->obstacle,
+                                    c ? c : &none, lam_lin + i0, active + i0,
+                                    t);
+}
+
+/* s->tangent: H and B of every pair, side by side. */
+static int
+tangent (lac_nl *s, const char *active, const double *lam_lin)
+{
+  lac_contact_tangent **t = lac_calloc (s->npair, sizeof *t);
+  int status = t ? LAC_SUCCESS : LAC_ERRMSG (LAC_ENOMEM, "%zu tangents",
+                                             s->npair);
+  lac_contact_tangent_free (s->tangent);
+  s->tangent = NULL;
+  for (size_t q = 0; q < s->npair && !status; q++)
+    status = pair_tangent (s, q, active, lam_lin, &t[q]);
+  if (!status && s->npair == 1)
+    s->tangent = t[0], t[0] = NULL;              /* one pair: itself */
+  else if (!status)
+    status = lac_contact_tangent_cat (t, s->npair, &s->tangent);
+  for (size_t q = 0; t && q < s->npair; q++)
+    lac_contact_tangent_free (t[q]);
+  lac_free (t);
+  return status;
+}
+
 static int
 consistent (void *self, lac_strategy *st, const char *active,
             const double *lam_lin, double eta, double *dU, double *lambda,
             int *its, double *res)
 {
   lac_nl *s = self;
-  const lac_nl_problem *p = &s->prob;
   const lac_contact *c = s->contact;
-  lac_pairing_facets Mf;
   lac_consistent_info info = { 0 };
   *its = 0;
   *res = 0;
   if (!c || s->frozen)
     return LAC_SUCCESS;
-  if (p->master)
-    {
-      Mf = *p->master;
-      Mf.mesh = &s->cur;
-    }
   double t0 = lac_seconds ();
-  lac_contact_tangent_free (s->tangent);
-  s->tangent = NULL;
-  int status = lac_contact_tangent_build (&s->cur, p->mat->model, p->M,
-                                          s->pairing, p->master ? &Mf : NULL,
-                                          p->obstacle, c, lam_lin, active,
-                                          &s->tangent);
-  if (!status)                                       /* T^T B, T^T H T */
-    status = lac_contact_tangent_rotate (s->tangent, p->dir->frames);
+  int status = tangent (s, active, lam_lin);
+  if (!status)                              /* T^T B, T^T H T, every pair */
+    status = lac_contact_tangent_rotate (s->tangent, s->prob.dir->frames);
   s->time_tangent += lac_seconds () - t0;
   if (status)
     return status;
@@ -388,11 +455,11 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
 {
   lac_nl *s = self;
   memset (u, 0, sizeof *u);
-  if (!s->prob.M)
+  if (!s->npair)
     return LAC_SUCCESS;
   (void) U;                           /* s->x = X + U: the evaluation's */
-  return lac_contact_pair_uncovered (&s->pair, s->x, s->contact,
-                                     2 * s->moved, tol, u);
+  return lac_contact_set_uncovered (&s->set, s->x, &s->data, 2 * s->moved,
+                                    tol, u);
 }
 
 static int
@@ -401,9 +468,10 @@ widen (void *self, const double *U, double reach, size_t *more)
   lac_nl *s = self;
   size_t k0 = s->contact ? s->contact->k : 0;
   *more = 0;
-  if (!s->prob.M)
+  if (!s->npair)
     return LAC_SUCCESS;
-  s->pair.popts.dist_abs += reach;
+  for (size_t q = 0; q < s->npair; q++)
+    s->pair[q].popts.dist_abs += reach;
   int status = contact_update (s, U);
   size_t k1 = s->contact ? s->contact->k : 0;
   *more = k1 > k0 ? k1 - k0 : 0;

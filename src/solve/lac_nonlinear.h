@@ -13,7 +13,7 @@
  *
  * At load factor t the Dirichlet values are t * g (entries flagged
  * "ramp") or g (the others), the external load is t * F and the
- * interference of a shrink fit t * delta.  At U
+ * interference of a shrink fit t * delta (each pair its own delta).  At U
  * (x = X + U):
  *
  *   evaluate   the internal force F_int(U) and, unless left out, the
@@ -47,7 +47,9 @@
  * fem/lac_frames.h) U is the loop's U~ in the frames: each evaluation
  * works in the axes at T U~ and turns what it made, T^T F_int, T^T K_T T,
  * T^T C, T^T B, T^T H T (and the load T^T F once); the fixed dofs and
- * their values are the frames' axes.
+ * their values are the frames' axes.  With several pairs, C and the
+ * tangent of all of them side by side are turned once, after the
+ * concatenation (a node on two contact surfaces has rows in both).
  *
  * Convergence.  Quadratic once the statuses have settled, whatever the
  * pressure (t435 checks the derivatives against finite differences).  The
@@ -64,7 +66,7 @@
 #define LAC_NONLINEAR_H
 
 #include <stddef.h>
-#include "contact/lac_contact_pair.h"
+#include "contact/lac_contact_set.h"
 #include "contact/lac_contact_tangent.h"
 #include "fem/lac_assembly.h"
 #include "fem/lac_hyper.h"
@@ -81,7 +83,7 @@ typedef struct lac_nl_problem
   const lac_dirichlet *dir;      /* fixed dofs and their values at t = 1   */
   const char *ramp;              /* dir->n flags: 1 value * t, 0 value; NULL:
                                     every value is ramped                  */
-  /* contact (M == NULL: none) */
+  /* contact, one pair (M == NULL and set == NULL: none) */
   const lac_macro *M;            /* macro-mesh of the slave surface        */
   const lac_pairing_facets *master; /* master facets of `mesh`, or NULL    */
   const lac_obstacle *obstacle;  /* rigid master when master == NULL       */
@@ -90,6 +92,11 @@ typedef struct lac_nl_problem
   size_t nfree;
   const double *N;               /* ndof x nfree: their rigid motions      */
   const char *const *N_what;     /* nfree descriptions, or NULL            */
+  /* or several pairs: their set (contact/lac_contact_set.h; the four
+   * fields of one pair above are then not read); the model pairs copies
+   * of them, with the pairing options of lac_nl_opts, and takes their
+   * offsets as the interferences at t = 1 (lac_nl_set_interference) */
+  const lac_contact_set *set;
 } lac_nl_problem;
 
 /* The options of a large-deformation solve: of the loop, of the load
@@ -130,13 +137,17 @@ void lac_nl_opts_init (lac_nl_opts *o);   /* the defaults above */
 typedef struct lac_nl
 {
   lac_nl_problem prob;   /* copy of the problem (pointers borrowed)         */
-  lac_contact_pair pair; /* the slave, the master, epsilon, pairing options */
+  size_t npair;
+  lac_contact_pair *pair; /* owned, npair: the slaves, the masters, epsilon,
+                            the pairing options                           */
+  lac_contact_set set;   /* over pair: the slots of the multipliers         */
   int frozen;            /* opts.frozen: no consistent op                  */
   size_t ndof, nmacro;
   double t;              /* the load factor of the evaluations              */
-  lac_pairing *pairing;  /* owned: the last pairing (current coordinates)   */
-  lac_contact *contact;  /* owned: the last C, mean gaps, on the current
-                            coordinates (NULL: nothing in reach)           */
+  lac_contact_set_data data; /* the last pairings and contact data, on the
+                            current coordinates                           */
+  const lac_contact *contact; /* data.all: every column (NULL: nothing in
+                            reach)                                        */
   lac_mesh cur;          /* shallow copy of the mesh with x = X + U         */
   double time_assemble;  /* seconds, cumulated: F_int and K_T,            */
   double time_pairing;   /*   pairing, admissibility, C and mean gaps,    */
@@ -157,7 +168,9 @@ typedef struct lac_nl
                             a node went since the pairing before it       */
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
-  double interference;   /* delta at t = 1 (lac_nl_set_interference), 0    */
+  double *delta;         /* owned, npair: the interference of pair q at
+                            t = 1 (the set's pair's offset, or
+                            lac_nl_set_interference), 0 for none         */
   const double *F;       /* the load in the nodal frames: prob.F or Floc    */
   double *ug, *Floc;     /* owned, ndof, with frames only (else NULL): U in
                             the axes, T^T F                               */
@@ -170,9 +183,11 @@ void lac_nl_free (lac_nl *s);                  /* NULL allowed */
 void lac_nl_model (lac_nl *s, lac_contact_model *m);
 /* The load factor of the next evaluations. */
 void lac_nl_set_load (lac_nl *s, double t);
-/* A shrink fit: delta taken from every gap at t = 1, t delta at load
- * factor t (contact/lac_contact_pair.h); 0 by default. */
-void lac_nl_set_interference (lac_nl *s, double delta);
+/* A shrink fit on pair q: delta taken from every gap of that pair at
+ * t = 1, t delta at load factor t (contact/lac_contact_pair.h); by
+ * default the offset of the set's pair q, or 0.  LAC_EINVAL: no pair q,
+ * delta not finite. */
+int lac_nl_set_interference (lac_nl *s, size_t q, double delta);
 
 /* Contact force on the slave side per macro-element is lambda[m] times
  * |T^m cap Gamma_C|; this is the sum over the columns of the last

@@ -92,14 +92,13 @@ lac_system_residual (const lac_contact_system *sys, const char *active,
 }
 
 /* H = M^T M, M = C_A^T N (k x nfree), and the scale of each motion over
- * all of C (Hall_jj = sum_i (c_i^T N_j)^2). */
+ * all of C (Hall_jj = sum_i (c_i^T N_j)^2); v: nfree of work. */
 static void
 held_gram (const lac_contact_system *sys, const char *active, double *H,
-           double *Hall)
+           double *Hall, double *v)
 {
   const lac_csc *C = sys->C;
   size_t n = C->nrow, m = sys->nfree;
-  double v[64];
   memset (H, 0, m * m * sizeof *H);
   memset (Hall, 0, m * sizeof *Hall);
   for (size_t i = 0; i < C->ncol; i++)
@@ -117,21 +116,23 @@ held_gram (const lac_contact_system *sys, const char *active, double *H,
     }
 }
 
-int
-lac_system_check_held (const lac_contact_system *sys, const char *active)
+/* The free motion of N that the eigenvector a of V (m x m) moves most. */
+static size_t
+worst_motion (const gsl_matrix *V, size_t m, size_t a)
 {
-  size_t m = sys->nfree, na = 0, worst = 0;
-  double H[64], Hall[8], hmax = 0;
-  if (m == 0)
-    return LAC_SUCCESS;
-  if (m > 8)
-    LAC_ERROR (LAC_EINVAL, "%zu free rigid motions: at most 8 (bodies held "
-               "by contact alone)", m);
-  for (size_t i = 0; i < sys->C->ncol; i++)
-    na += is_active (active, i) != 0;
-  held_gram (sys, active, H, Hall);
-  for (size_t a = 0; a < m; a++)
-    hmax = fmax (hmax, Hall[a]);
+  size_t worst = 0;
+  for (size_t b = 1; b < m; b++)
+    if (fabs (gsl_matrix_get (V, b, a)) > fabs (gsl_matrix_get (V, worst, a)))
+      worst = b;
+  return worst;
+}
+
+/* The smallest eigenvalue of H (m x m, overwritten) against hmax: the
+ * error naming the motion it leaves free, or LAC_SUCCESS. */
+static int
+held_rank (const lac_contact_system *sys, double *H, size_t m, double hmax,
+           size_t na)
+{
   gsl_matrix_view A = gsl_matrix_view_array (H, m, m);
   gsl_vector *ev = gsl_vector_alloc (m);
   gsl_matrix *V = gsl_matrix_alloc (m, m);
@@ -144,10 +145,7 @@ lac_system_check_held (const lac_contact_system *sys, const char *active)
       kmin = a;
   if (!status && !(gsl_vector_get (ev, kmin) > 1e-12 * hmax))
     {
-      for (size_t a = 1; a < m; a++)          /* largest part of the mode */
-        if (fabs (gsl_matrix_get (V, a, kmin))
-            > fabs (gsl_matrix_get (V, worst, kmin)))
-          worst = a;
+      size_t worst = worst_motion (V, m, kmin);
       status = LAC_ERRMSG (LAC_ESING, "%s is held by contact alone, and the "
                            "%zu active multiplier%s of %zu leave%s it free "
                            "(a load pulls it off the contact surface, or "
@@ -160,6 +158,26 @@ lac_system_check_held (const lac_contact_system *sys, const char *active)
   gsl_eigen_symmv_free (w);
   gsl_matrix_free (V);
   gsl_vector_free (ev);
+  return status;
+}
+
+int
+lac_system_check_held (const lac_contact_system *sys, const char *active)
+{
+  size_t m = sys->nfree, na = 0;
+  double hmax = 0;
+  if (m == 0)
+    return LAC_SUCCESS;
+  double *H = lac_malloc ((m * m + 2 * m) * sizeof *H);   /* H, Hall, v */
+  if (!H)
+    LAC_ERROR (LAC_ENOMEM, "rank test of %zu free rigid motions", m);
+  for (size_t i = 0; i < sys->C->ncol; i++)
+    na += is_active (active, i) != 0;
+  held_gram (sys, active, H, H + m * m, H + m * m + m);
+  for (size_t a = 0; a < m; a++)
+    hmax = fmax (hmax, H[m * m + a]);
+  int status = held_rank (sys, H, m, hmax, na);
+  lac_free (H);
   return status;
 }
 

@@ -117,10 +117,29 @@ box (lac_elem_type t, size_t n0, size_t n1, size_t n2)
   return m;
 }
 
+/* The 4 sides of a 2x1 quad4 box as one group "loop" (6 segments). */
+static lac_mesh *
+loop6 (void)
+{
+  lac_mesh *m = box (LAC_QUAD4, 2, 1, 0);
+  const lac_group *G[4] = { lac_mesh_group (m, "xmin"),
+                            lac_mesh_group (m, "ymin"),
+                            lac_mesh_group (m, "xmax"),
+                            lac_mesh_group (m, "ymax") };
+  size_t cell[6], n = 0;
+  int face[6];
+  for (int g = 0; g < 4; g++)
+    for (size_t e = 0; e < G[g]->n; e++, n++)
+      cell[n] = G[g]->cell[e], face[n] = G[g]->face[e];
+  lac_mesh_add_group (m, "loop", 1, 0, n, cell, face);
+  return m;
+}
+
 int
 main (void)
 {
   lac_macro_opts six = { LAC_MACRO_HEX_SIX, 0 }, cut2d = { 0, 1 };
+  lac_macro_opts across = { 0, 2 };
   char what[64];
 
   lac_init ();
@@ -230,7 +249,10 @@ main (void)
    *    macro; 3x1 quad4: a chain of 3 -> one macro of 3 (2 interior
    *    nodes); 1x1: a lone segment -> its cell is cut.  Two chains
    *    (ymin, ymax) of 3 -> 2 macros.  Closed loop (4 sides of a 2x1
-   *    box, 6 segments) -> 3 macros.  Quadratic: one macro per segment. */
+   *    box, 6 segments) gathered across its corners (cut_2d = 2) -> 3
+   *    macros; broken at its corners (the default) -> pieces of 2, 1, 2,
+   *    1 segments: 2 macros and 2 cells cut (2 x 3 tri3, 2 nodes).
+   *    Quadratic: one macro per segment. */
   check_build (box (LAC_TRI3, 2, 2, 0), "ymax", NULL,
                (expect) { 0, 0, 1, 2, 1, 0 }, "tri3 chain 2");
   check_build (box (LAC_QUAD4, 3, 1, 0), "ymax", NULL,
@@ -246,20 +268,10 @@ main (void)
     union_group (m, "ymin", "ymax");
     check_build (m, "u", NULL, (expect) { 0, 0, 2, 3, 2, 0 }, "two chains");
   }
-  {
-    lac_mesh *m = box (LAC_QUAD4, 2, 1, 0);
-    const lac_group *G[4] = { lac_mesh_group (m, "xmin"),
-                              lac_mesh_group (m, "ymin"),
-                              lac_mesh_group (m, "xmax"),
-                              lac_mesh_group (m, "ymax") };
-    size_t cell[6], n = 0;
-    int face[6];
-    for (int g = 0; g < 4; g++)
-      for (size_t e = 0; e < G[g]->n; e++, n++)
-        cell[n] = G[g]->cell[e], face[n] = G[g]->face[e];
-    lac_mesh_add_group (m, "loop", 1, 0, n, cell, face);
-    check_build (m, "loop", NULL, (expect) { 0, 0, 3, 2, 1, 0 }, "loop 6");
-  }
+  check_build (loop6 (), "loop", &across, (expect) { 0, 0, 3, 2, 1, 0 },
+               "loop 6");
+  check_build (loop6 (), "loop", NULL, (expect) { 2, 4, 4, 2, 1, 1 },
+               "loop 6, corners");
   check_build (box (LAC_TRI6, 3, 1, 0), "ymax", NULL,
                (expect) { 0, 0, 3, 1, 1, 0 }, "tri6 box");
   check_build (box (LAC_QUAD8, 3, 1, 0), "ymax", NULL,

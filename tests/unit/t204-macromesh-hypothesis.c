@@ -13,7 +13,8 @@
  *     the centroid is never chosen), quad9 centre 4/9, six-hex cut 7/48
  *     (hex8) and 5/36 (hex20) (rectangular faces);
  *   - 2D gathering: chains of odd length (3, 5, closed loops of 3 and 5
- *     segments) give floor(k/2) macro-elements.
+ *     segments gathered across their corners) give floor(k/2)
+ *     macro-elements.
  */
 #include <math.h>
 #include <stdint.h>
@@ -266,6 +267,7 @@ int
 main (void)
 {
   lac_macro_opts six = { LAC_MACRO_HEX_SIX, 0 }, cut2d = { 0, 1 };
+  lac_macro_opts across = { 0, 2 };      /* gathered across corners */
   lac_init ();
 
   for (int two = 0; two < 2; two++)
@@ -284,7 +286,8 @@ main (void)
     }
   /* Gathering: ymax of a 3x2 box is a chain of 3 (one macro of 3); of a
    * 2x2 box with xmax a chain of 4 (2 pairs, mean 1/2); 5 segments: a pair
-   * and a triple; closed loops of 3, 4 and 5 segments. */
+   * and a triple; closed loops of 3, 4 and 5 segments, gathered across
+   * their corners (cut_2d = 2: the gathering of a loop as such). */
   run_box (LAC_QUAD4, 0, NULL, -1, "chain of 3");
   run_box (LAC_TRI3, 1, NULL, -1, "chain of 5");
   {
@@ -299,7 +302,8 @@ main (void)
     {
       char what[32];
       snprintf (what, sizeof what, "fan loop of %d", k);
-      build_and_check (fan (k), "rim", NULL, k == 4 ? 0.5 : -1, k / 2, what);
+      build_and_check (fan (k), "rim", &across, k == 4 ? 0.5 : -1, k / 2,
+                       what);
     }
   lac_finalize ();
   return check_summary ();

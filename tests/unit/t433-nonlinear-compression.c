@@ -157,7 +157,7 @@ compress (lac_elem_type type, run rn)
       master = lac_pairing_facets_of (m, lac_mesh_group (m, g2));
     }
   lac_nl_problem prob = { m, &mat, NULL, D, NULL, M, two ? &master : NULL,
-                          two ? NULL : &ob, 0, 0, NULL, NULL };
+                          two ? NULL : &ob, 0, 0, NULL, NULL, NULL };
   lac_nl_opts opts;
   lac_nl_opts_init (&opts);
   opts.tol = rn.delta > DELTA && !rn.maxit ? 1e-12 : 1e-10;

@@ -78,7 +78,8 @@ limit (lac_elem_type type)
 
   /* 2. the nonlinear loop */
   lac_hyper h = { model, E, nu, NULL, 0 };
-  lac_nl_problem prob = { m, &h, NULL, D, NULL, M, NULL, &ob, 0, 0, NULL, NULL };
+  lac_nl_problem prob = { m, &h, NULL, D, NULL, M, NULL, &ob, 0, 0, NULL, NULL,
+                          NULL };
   lac_nl *s = lac_nl_alloc (&prob, NULL);
   lac_loadstep *ls = s ? lac_loadstep_alloc (s, NULL) : NULL;
   check_status (lac_loadstep_to (ls, 1.0), LAC_SUCCESS, "%s nonlinear", re->name);

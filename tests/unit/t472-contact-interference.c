@@ -1,4 +1,4 @@
-/* t471: an interference fit, the gaps less delta      [LAC (16)-(18)]
+/* t472: an interference fit, the gaps less delta      [LAC (16)-(18)]
  *
  * contact/lac_contact.h, lac_contact_set_offset; contact/lac_contact_pair.h,
  * the pair's offset; contact/lac_contact_tangent.h, B with it.

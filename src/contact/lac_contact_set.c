@@ -1,0 +1,269 @@
+/* lac_contact_set.c -- several contact pairs as one contact problem
+ *                      (see lac_contact_set.h)
+ *                                  [LAC §4.3, §4.6, Def. 1, (16)-(18)]
+ */
+#include "contact/lac_contact_set.h"
+
+#include <string.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+
+int
+lac_contact_set_init (lac_contact_set *s, lac_contact_pair *pair, size_t n)
+{
+  memset (s, 0, sizeof *s);
+  if (n == 0 || !pair)
+    LAC_ERROR (LAC_EINVAL, "a contact set of no pair");
+  for (size_t p = 0; p < n; p++)
+    {
+      if (!pair[p].M || !pair[p].mesh)
+        LAC_ERROR (LAC_EINVAL, "contact pair %zu has no macro-mesh", p);
+      if (pair[p].nts && n > 1)
+        LAC_ERROR (LAC_EINVAL, "contact pair %zu: node-to-segment is "
+                   "compared on one pair only, not among %zu", p, n);
+    }
+  if (!(s->offset = lac_malloc ((n + 1) * sizeof *s->offset)))
+    LAC_ERROR (LAC_ENOMEM, "offsets of %zu contact pairs", n);
+  s->n = n;
+  s->pair = pair;
+  s->offset[0] = 0;
+  for (size_t p = 0; p < n; p++)
+    s->offset[p + 1] = s->offset[p] + pair[p].M->n;   /* slots of p */
+  return LAC_SUCCESS;
+}
+
+void
+lac_contact_set_clear (lac_contact_set *s)
+{
+  lac_free (s->offset);
+  memset (s, 0, sizeof *s);
+}
+
+void
+lac_contact_set_data_clear (lac_contact_set_data *d)
+{
+  if (d->n > 1)
+    lac_contact_free (d->all);
+  for (size_t p = 0; p < d->n; p++)
+    {
+      lac_pairing_free (d->P ? d->P[p] : NULL);
+      lac_contact_free (d->c ? d->c[p] : NULL);
+    }
+  lac_free (d->P);
+  lac_free (d->c);
+  lac_free (d->col);
+  memset (d, 0, sizeof *d);
+}
+
+size_t
+lac_contact_set_nslot (const lac_contact_set *s)
+{
+  return s->offset ? s->offset[s->n] : 0;
+}
+
+size_t
+lac_contact_set_pair_of (const lac_contact_set *s, size_t slot)
+{
+  size_t lo = 0, hi = s->n;            /* offset is increasing: bisection */
+  if (slot >= lac_contact_set_nslot (s))
+    return s->n;
+  while (hi - lo > 1)
+    {
+      size_t mid = (lo + hi) / 2;
+      if (s->offset[mid] <= slot)
+        lo = mid;
+      else
+        hi = mid;
+    }
+  return lo;
+}
+
+/* d emptied and sized for the n pairs of s. */
+static int
+data_alloc (const lac_contact_set *s, lac_contact_set_data *d)
+{
+  lac_contact_set_data_clear (d);
+  d->P = lac_calloc (s->n, sizeof *d->P);
+  d->c = lac_calloc (s->n, sizeof *d->c);
+  d->col = lac_calloc (s->n + 1, sizeof *d->col);
+  if (!d->P || !d->c || !d->col)
+    {
+      lac_contact_set_data_clear (d);
+      LAC_ERROR (LAC_ENOMEM, "contact data of %zu pairs", s->n);
+    }
+  d->n = s->n;
+  return LAC_SUCCESS;
+}
+
+/* An error of pair p: d->failed says which (the caller names it). */
+static int
+pair_error (size_t p, lac_contact_set_data *d, int status)
+{
+  d->failed = p;
+  return status;
+}
+
+int
+lac_contact_set_pairing (const lac_contact_set *s, const double *x,
+                         lac_contact_set_data *d)
+{
+  int status = data_alloc (s, d);
+  for (size_t p = 0; p < s->n && !status; p++)
+    if ((status = lac_contact_pair_pairing (&s->pair[p], x, &d->P[p])))
+      return pair_error (p, d, status);
+  return status;
+}
+
+/* Pair p's per-macro-element arrays into the slots of all. */
+static void
+cat_macros (const lac_contact_set *s, size_t p, const lac_contact *c,
+            size_t col0, lac_contact *all)
+{
+  const lac_macro *M = s->pair[p].M;
+  for (size_t m = 0; m < M->n; m++)
+    {
+      size_t q = s->offset[p] + m;
+      all->inode[q] = c ? c->inode[m] : M->inode[m];
+      all->mult[q] = c && c->mult[m] >= 0 ? (long) col0 + c->mult[m] : -1;
+      if (!c)
+        continue;
+      all->meas[q] = c->meas[m];
+      all->covered[q] = c->covered[m];
+      all->phiint[q] = c->phiint[m];
+      all->crit[q] = c->crit[m];
+      all->admissible[q] = c->admissible[m];
+    }
+}
+
+/* Pair p's columns into all, from column col0 (C's column pointers
+ * too: entries from nnz0). */
+static void
+cat_columns (const lac_contact_set *s, size_t p, const lac_contact *c,
+             size_t col0, int nnz0, lac_contact *all)
+{
+  const lac_csc *C = c->C;
+  for (size_t i = 0; i < c->k; i++)
+    {
+      size_t j = col0 + i;
+      all->macro[j] = s->offset[p] + c->macro[i];
+      all->G[j] = c->G[i];
+      all->area[j] = c->area[i];
+      all->size[j] = c->size[i];
+      all->lost[j] = c->lost[i];
+      all->C->p[j + 1] = nnz0 + C->p[i + 1];
+    }
+  memcpy (all->C->i + nnz0, C->i, (size_t) C->p[c->k] * sizeof *C->i);
+  memcpy (all->C->x + nnz0, C->x, (size_t) C->p[c->k] * sizeof *C->x);
+}
+
+/* all = the contact data of the n > 1 pairs side by side. */
+static int
+concatenate (const lac_contact_set *s, lac_contact_set_data *d)
+{
+  size_t k = 0, nnz = 0, ndof = 0;
+  for (size_t p = 0; p < s->n; p++)
+    {
+      const lac_contact *c = d->c[p];
+      d->col[p] = k;
+      k += c ? c->k : 0;
+      nnz += c ? (size_t) c->C->p[c->k] : 0;
+      ndof = c ? c->C->nrow : ndof;
+    }
+  d->col[s->n] = k;
+  if (k == 0)
+    return LAC_SUCCESS;                          /* no column: all NULL */
+  lac_contact *all = lac_contact_alloc (lac_contact_set_nslot (s));
+  if (!all || !(all->C = lac_csc_alloc (ndof, k, nnz ? nnz : 1)))
+    {
+      lac_contact_free (all);
+      LAC_ERROR (LAC_ENOMEM, "contact data of %zu multipliers", k);
+    }
+  all->k = k;
+  all->C->p[0] = 0;
+  for (size_t p = 0; p < s->n; p++)
+    {
+      cat_macros (s, p, d->c[p], d->col[p], all);
+      if (d->c[p])
+        cat_columns (s, p, d->c[p], d->col[p], all->C->p[d->col[p]], all);
+    }
+  d->all = all;
+  return LAC_SUCCESS;
+}
+
+int
+lac_contact_set_assemble (const lac_contact_set *s, const double *x,
+                          lac_contact_set_data *d)
+{
+  int status;
+  if (d->n != s->n)
+    LAC_ERROR (LAC_ESANITY, "contact data of %zu pairs for a set of %zu",
+               d->n, s->n);
+  if (d->n > 1)
+    lac_contact_free (d->all);
+  d->all = NULL;
+  for (size_t p = 0; p < s->n; p++)
+    {
+      lac_contact_free (d->c[p]);
+      d->c[p] = NULL;
+      if ((status = lac_contact_pair_contact (&s->pair[p], x, d->P[p],
+                                              &d->c[p])))
+        return pair_error (p, d, status);
+    }
+  if (s->n > 1)
+    return concatenate (s, d);
+  d->all = d->c[0];                              /* one pair: itself */
+  d->col[1] = d->all ? d->all->k : 0;
+  return LAC_SUCCESS;
+}
+
+int
+lac_contact_set_build (const lac_contact_set *s, const double *x,
+                       lac_contact_set_data *d)
+{
+  int status = lac_contact_set_pairing (s, x, d);
+  return status ? status : lac_contact_set_assemble (s, x, d);
+}
+
+int
+lac_contact_set_uncovered (const lac_contact_set *s, const double *x,
+                           const lac_contact_set_data *d, double reach,
+                           double tol, lac_contact_uncovered *u)
+{
+  memset (u, 0, sizeof *u);
+  for (size_t p = 0; p < s->n; p++)
+    {
+      lac_contact_uncovered up;
+      int status;
+      if (s->pair[p].nts)
+        continue;                      /* node-to-segment: not checked */
+      if ((status = lac_contact_pair_uncovered (&s->pair[p], x,
+                                                d->n ? d->c[p] : NULL, reach,
+                                                tol, &up)))
+        return status;
+      size_t count = u->count + up.count;
+      if (up.depth > 0 && (u->depth <= 0 || up.depth / up.h > u->depth / u->h))
+        {
+          *u = up;
+          u->macro = s->offset[p] + up.macro;
+        }
+      u->count = count;
+    }
+  return LAC_SUCCESS;
+}
+
+size_t
+lac_contact_set_dropped (const lac_contact_set_data *d, double *lost)
+{
+  size_t nfail = 0;
+  *lost = 0;
+  for (size_t p = 0; p < d->n; p++)
+    {
+      const lac_pairing *P = d->P[p];
+      if (!P || !P->nfail)
+        continue;
+      nfail += P->nfail;
+      for (size_t j = 0; j < P->nslave; j++)
+        *lost += P->lost[j];
+    }
+  return nfail;
+}
