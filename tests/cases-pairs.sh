@@ -16,10 +16,10 @@
 #             macro-element spans the corner (the centroid of each lies on
 #             one of the two faces);
 #   blocks    five bodies, six pairs, a crosspoint (quad4, quad8): every
-#             block held by contact alone is in equilibrium to 1e-10 (the
-#             forces of its pairs, contact_force.NAME on the slave and
-#             minus it on the master, and its loads), the active set
-#             settles;
+#             body is in equilibrium to 1e-10 (the forces of its pairs,
+#             contact_force.NAME on the slave and minus it on the master,
+#             its loads, and for the clamped ones reaction.NAME), the
+#             active set settles;
 #   outputs   the per-pair keys of the summary, the pair column of
 #             contact.csv, the pair field of contact.vtu;
 #   rollers   the stacked blocks turned by 30 degrees on rollers, with an
@@ -106,12 +106,13 @@ corner corner2d-quad4-level1 corner2d --set level=1
 corner corner3d-hex8 corner3d
 corner corner3d-hex8-six corner3d --set contact.corner.hex_cut=six
 
-# ---- five bodies, six pairs: the equilibrium of each held block -----------
-# blocks NAME ARGS...: B, C, D balance their loads with their pairs
+# ---- five bodies, six pairs: the equilibrium of every body ----------------
+# blocks NAME ARGS...: B, C, D balance their loads with their pairs, the
+# clamped A and W their pairs with the reactions of their supports
 blocks () {
   name=$1
   shift
-  if ! "$LAC" run "$PD/blocks.scene" "$@" --quiet --no-output > "$PC/$name.out" 2> "$PC/$name.err"; then
+  if ! "$LAC" run "$PD/blocks.scene" "$@" --set output.reactions=yes --quiet --no-output > "$PC/$name.out" 2> "$PC/$name.err"; then
     pairs_fail "$name" "lac run failed: $(tail -1 "$PC/$name.err")"
     return
   fi
@@ -126,9 +127,15 @@ blocks () {
       cy = w["contact_force.C_on_B"] + w["contact_force.C_on_A"] - 500
       dx = v["contact_force.D_on_B"] + v["contact_force.D_on_W"] - 600
       dy = w["contact_force.D_on_B"] + w["contact_force.D_on_W"] - 1250
-      m = 0
-      split(bx " " by " " cx " " cy " " dx " " dy, r, " ")
-      for (i = 1; i <= 6; i++) { a = r[i] < 0 ? -r[i] : r[i]; if (a > m) m = a }
+      # the clamped slab A and wall W: their supports (reaction.NAME, the
+      # force of the support on the body) against the pairs they master
+      ax = v["reaction.slab"] - v["contact_force.B_on_A"] - v["contact_force.C_on_A"]
+      ay = w["reaction.slab"] - w["contact_force.B_on_A"] - w["contact_force.C_on_A"]
+      wx = v["reaction.wall"] - v["contact_force.B_on_W"] - v["contact_force.D_on_W"]
+      wy = w["reaction.wall"] - w["contact_force.B_on_W"] - w["contact_force.D_on_W"]
+      m = ("reaction.slab" in v && "reaction.wall" in v) ? 0 : 1
+      split(bx " " by " " cx " " cy " " dx " " dy " " ax " " ay " " wx " " wy, r, " ")
+      for (i = 1; i <= 10; i++) { a = r[i] < 0 ? -r[i] : r[i]; if (a > m) m = a }
       printf "%.3e", m / 1250
     }' "$PC/$name.out")
   it=$(pairs_val "$PC/$name.out" newton_iterations)
@@ -136,7 +143,7 @@ blocks () {
   if awk -v r="$res" -v n="$it" -v np="$np" 'BEGIN { exit !(r != "" && r <= 1e-10 && n >= 1 && n <= 10 && np == 6) }'; then
     pairs_ok "$name"
   else
-    pairs_fail "$name" "largest imbalance of B, C, D / 1250 N = $res (want <= 1e-10), newton_iterations = $it, $np contact_force.NAME lines (want 6)"
+    pairs_fail "$name" "largest imbalance of A, W, B, C, D / 1250 N = $res (want <= 1e-10), newton_iterations = $it, $np contact_force.NAME lines (want 6)"
   fi
 }
 blocks blocks-quad4
