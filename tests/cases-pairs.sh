@@ -1,6 +1,6 @@
 # tests/cases-pairs.sh -- several contact pairs (sourced by tests/run.sh)
 #
-# The scenes of chapter 06, section 6, through `lac run`:
+# The scenes of chapter 06, section 5, through `lac run`:
 #   stacked   three stacked blocks, two non-matching interfaces (two
 #             [contact] sections, the middle block slave of one and master
 #             of the other, held by contact alone), the ten element types,

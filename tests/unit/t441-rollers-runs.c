@@ -1,7 +1,7 @@
 /* t441: rollers, reactions and a shrink fit, whole runs
  *                                              [LAC (4), (8), (17), Alg. 1]
  *
- * The scenes of chapter 06, section 5 and chapter 08, run through
+ * The scenes of chapter 08 (section 7 and the patch tests), run through
  * run/lac_run.h with no files written.
  *   1. The 2D Taylor patch test turned by 30 degrees
  *      (chapters/08-experiments/taylor2d-rotated.scene), its three faces on
@@ -331,7 +331,7 @@ shrink_fit_error (int level, double p)
   long off = 0;
   double e = HUGE_VAL;
   snprintf (s1, sizeof s1, "mesh.level=%d", level);
-  lac_run *r = run ("chapters/06-assembly/shrink-fit.scene", NULL, NULL, 1,
+  lac_run *r = run ("chapters/08-experiments/shrink-fit.scene", NULL, NULL, 1,
                     set, &st, &sc);
   check_status (st, LAC_SUCCESS, "shrink fit, level %d", level);
   if (!st)
