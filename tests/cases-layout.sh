@@ -75,6 +75,7 @@ if [ -z "$objs" ]; then
   lay_fail layout-calls "no objects under $B/src (build first)"
 else
   for o in $objs; do
+    s=${o#"$B"/}; [ -f "${s%.o}.c" ] || continue   # an object left by a moved source
     nm "$o" | awk -v o="$o" 'NF == 3 && $2 ~ /^[TDBRC]$/ { print o, "D", $3 }
                              NF == 2 && $1 == "U" { print o, "U", $2 }'
   done > "$LAYOUT_TMP/symbols"

@@ -151,7 +151,7 @@ lac_newton_alloc (const lac_contact_model *m, const lac_newton_opts *opts)
     {
       lac_newton_free (s);
       LAC_ERROR_NULL (LAC_ENOMEM, "workspace of Algorithm 1 for %zu dofs "
-                      "and %zu macro-elements", s->n, s->nslot);
+                      "and %zu macro-elements", m->n, m->nslot);
     }
   return s;
 }

@@ -190,7 +190,8 @@ lac_nl_alloc (const lac_nl_problem *p, const lac_nl_opts *opts)
   if (!ok || !(s->C0 = lac_csc_alloc (s->ndof, 0, 0)))
     {
       lac_nl_free (s);
-      LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear model for %zu dofs", s->ndof);
+      LAC_ERROR_NULL (LAC_ENOMEM, "nonlinear model for %zu dofs",
+                      (size_t) m->dim * m->nnodes);
     }
   s->cur = *m;                       /* shallow: only x differs */
   s->cur.x = s->x;
