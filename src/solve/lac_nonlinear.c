@@ -213,20 +213,6 @@ lac_nl_set_load (lac_nl *s, double t)
     s->pair[q].offset = t * s->delta[q];       /* ramped, as the loads */
 }
 
-int
-lac_nl_set_interference (lac_nl *s, size_t q, double delta)
-{
-  if (q >= s->npair)
-    LAC_ERROR (LAC_EINVAL, "interference of contact pair %zu: the model "
-               "has %zu pairs", q, s->npair);
-  if (!isfinite (delta))
-    LAC_ERROR (LAC_EINVAL, "interference %g of contact pair %zu: expected "
-               "a finite length", delta, q);
-  s->delta[q] = delta;
-  s->pair[q].offset = s->t * delta;
-  return LAC_SUCCESS;
-}
-
 double
 lac_nl_contact_force (const lac_nl *s, const double *lambda)
 {

@@ -95,7 +95,7 @@ typedef struct lac_nl_problem
   /* or several pairs: their set (contact/lac_contact_set.h; the four
    * fields of one pair above are then not read); the model pairs copies
    * of them, with the pairing options of lac_nl_opts, and takes their
-   * offsets as the interferences at t = 1 (lac_nl_set_interference) */
+   * offsets as the interferences at t = 1, t delta at load factor t) */
   const lac_contact_set *set;
 } lac_nl_problem;
 
@@ -169,8 +169,7 @@ typedef struct lac_nl
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
   double *delta;         /* owned, npair: the interference of pair q at
-                            t = 1 (the set's pair's offset, or
-                            lac_nl_set_interference), 0 for none         */
+                            t = 1 (the set's pair's offset), 0 for none */
   const double *F;       /* the load in the nodal frames: prob.F or Floc    */
   double *ug, *Floc;     /* owned, ndof, with frames only (else NULL): U in
                             the axes, T^T F                               */
@@ -183,11 +182,6 @@ void lac_nl_free (lac_nl *s);                  /* NULL allowed */
 void lac_nl_model (lac_nl *s, lac_contact_model *m);
 /* The load factor of the next evaluations. */
 void lac_nl_set_load (lac_nl *s, double t);
-/* A shrink fit on pair q: delta taken from every gap of that pair at
- * t = 1, t delta at load factor t (contact/lac_contact_pair.h); by
- * default the offset of the set's pair q, or 0.  LAC_EINVAL: no pair q,
- * delta not finite. */
-int lac_nl_set_interference (lac_nl *s, size_t q, double delta);
 
 /* Contact force on the slave side per macro-element is lambda[m] times
  * |T^m cap Gamma_C|; this is the sum over the columns of the last
