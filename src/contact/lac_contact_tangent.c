@@ -638,17 +638,24 @@ cat_one (const lac_contact_tangent *t, lac_contact_tangent *out)
 {
   size_t k0 = out->k, b0 = out->nblock;
   size_t z0 = (size_t) out->B->p[k0], d0 = out->bptr[b0], v0 = out->vptr[b0];
+  size_t nz = (size_t) t->B->p[t->k], nd = t->bptr[t->nblock],
+         nv = t->vptr[t->nblock];
   for (size_t i = 0; i < t->k; i++)
     out->B->p[k0 + i + 1] = (int) z0 + t->B->p[i + 1];
-  memcpy (out->B->i + z0, t->B->i, (size_t) t->B->p[t->k] * sizeof (int));
-  memcpy (out->B->x + z0, t->B->x, (size_t) t->B->p[t->k] * sizeof (double));
   for (size_t b = 0; b < t->nblock; b++)
     {
       out->bptr[b0 + b + 1] = d0 + t->bptr[b + 1];
       out->vptr[b0 + b + 1] = v0 + t->vptr[b + 1];
     }
-  memcpy (out->dof + d0, t->dof, t->bptr[t->nblock] * sizeof *t->dof);
-  memcpy (out->val + v0, t->val, t->vptr[t->nblock] * sizeof *t->val);
+  if (nz)                          /* an empty tangent may hold NULL arrays */
+    {
+      memcpy (out->B->i + z0, t->B->i, nz * sizeof (int));
+      memcpy (out->B->x + z0, t->B->x, nz * sizeof (double));
+    }
+  if (nd)
+    memcpy (out->dof + d0, t->dof, nd * sizeof *t->dof);
+  if (nv)
+    memcpy (out->val + v0, t->val, nv * sizeof *t->val);
   out->k += t->k;
   out->nblock += t->nblock;
 }
