@@ -97,3 +97,41 @@ check_summary (void)
     printf ("%d passed, %d failed\n", npass, nfail);
   return nfail != 0;
 }
+
+/* ---- whole runs --------------------------------------------------------- */
+
+lac_run *
+check_run_scene (const char *scene, int nset, const char **set,
+                 lac_scene **sc)
+{
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL };
+  lac_run *r = NULL;
+  *sc = NULL;
+  int st = lac_scene_read (scene, nset, set, sc);
+  if (!st && !(r = lac_run_alloc (*sc, &o)))
+    st = LAC_ENOMEM;
+  if (!st)
+    st = lac_run_all (r);
+  check_status (st, LAC_SUCCESS, "%s %s", scene, nset ? set[0] : "");
+  if (st)
+    {
+      check_run_done (r, *sc);
+      *sc = NULL;
+      return NULL;
+    }
+  return r;
+}
+
+double
+check_run_value (const lac_run *r, const char *key)
+{
+  const char *v = lac_run_summary_get (r, key);
+  return v ? atof (v) : NAN;
+}
+
+void
+check_run_done (lac_run *r, lac_scene *sc)
+{
+  lac_run_free (r);
+  lac_scene_free (sc);
+}

@@ -25,4 +25,18 @@ void check_message (const char *needle, const char *fmt, ...)
   __attribute__ ((format (printf, 2, 3)));
 int check_summary (void);
 
+/* ---- whole runs (run/lac_run.h), for the tests of the exercises ---- */
+#include "io/lac_scene.h"
+#include "run/lac_run.h"
+
+/* Run the scene file `scene` with the `nset` overrides `set`, writing no
+ * file; NULL (and a failed check naming the scene) on error.  *sc
+ * receives the scene, which the run borrows: free both by
+ * check_run_done. */
+lac_run *check_run_scene (const char *scene, int nset, const char **set,
+                          lac_scene **sc);
+/* The summary's value of `key` as a number (NAN if it has none). */
+double check_run_value (const lac_run *r, const char *key);
+void check_run_done (lac_run *r, lac_scene *sc);
+
 #endif

@@ -9,16 +9,16 @@
  *   build   the rows and the assembly of fem/lac_assembly_dist.h (the
  *           cells partitioned by PETSc, C on every process), K_W and
  *           B = -C_A (n x k) preallocated from the own cells and columns,
- *           the near-null space, the solvers (projected: the multigrid
- *           of K_W, CG on P K_W; fieldsplit: the nest [K_W B; B^T D],
- *           GMRES);
+ *           the near-null space, the solvers of
+ *           linalg/lac_petsc_saddle.h (projected CG or fieldsplit GMRES
+ *           on (*W); CG on K_W alone when k = 0);
  *   update  the statuses and W from the root; new numbers: K_W = K /
  *           kappa from the own cells; then K_W += C (W - W_old) C^T /
- *           kappa by the owners of the columns that changed; B; then
- *           B^T B + D (projected) or D and the Schur preconditioner Sp
- *           (fieldsplit), D = 1 on the inactive;
+ *           kappa by the owners of the columns that changed; B, D = 1
+ *           on the inactive and fieldsplit's Schur preconditioner, given
+ *           to the solvers;
  *   solve   the right-hand side and the start from the root, one Krylov
- *           solve, its true residual, the solution back to the root.
+ *           solve, the solution back to the root.
  *
  * A failure on one process is agreed on by all before the next
  * collective call (lac_petsc_agree): the root returns it with the message
@@ -61,15 +61,14 @@ const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 
 #include <petscksp.h>
 #include "fem/lac_assembly_dist.h"
+#include "linalg/lac_petsc_saddle.h"
 
 _Static_assert (sizeof (PetscInt) == sizeof (int), "lac_csc's int indices "
                 "are handed to PETSc: a PETSc with 32-bit indices");
 _Static_assert (sizeof (PetscScalar) == sizeof (double), "real PETSc");
 
-#define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
-#define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
-
-enum { PROJECTED, FIELDSPLIT };   /* the contact solvers (-lac_contact)  */
+enum { PROJECTED = LAC_SADDLE_PROJECTED,     /* the contact solvers  */
+       FIELDSPLIT = LAC_SADDLE_FIELDSPLIT };  /* (-lac_contact)        */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
@@ -99,20 +98,13 @@ typedef struct lac_petsc
   double kappa;                    /* the mean of diag(K): PETSc's K_W and
                                       f_W are divided by it              */
   Mat Kw, B;                       /* K_W; B = -C_A (n x k)               */
-  Mat G, Ah;                       /* projected: B^T B + D; P K_W (shell) */
-  Mat Bt, D, Sp, A;                /* fieldsplit: A = [K_W B; B^T D]      */
-  KSP ku, kp, kg, ks;              /* K_W alone; projected CG, G; (*W)    */
-  PC pg;                           /* projected: the multigrid of K_W     */
-  Vec bu, xu, ru, tu, u0, fw;      /* U's layout                          */
-  Vec tk, sk, dk, gk;              /* the multipliers' layout             */
-  Vec b, x, r, dx;                 /* fieldsplit: (*W)                    */
+  lac_petsc_saddle *sv;            /* owned: the Krylov solvers of (*W)   */
+  Vec fw, xu, ru;                  /* U's layout: f_W, U, scratch         */
+  Vec gk, lk, dk, pk;              /* the multipliers': -g_A, lambda, D's
+                                      diagonal, the Schur preconditioner's */
   Vec useq, lseq;                  /* U, lambda whole on the root (empty
                                       elsewhere)                          */
   VecScatter gu, gl;               /* root -> distributed (forward)       */
-  Mat Bl, Gl;                      /* projected, N > 1: the own rows of
-                                      B (k columns), a copy of G          */
-  KSP kl;                          /*   its LU (prefix gram_local_)       */
-  Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)       */
   lac_solve_counts counts;
   char method[200];
 } lac_petsc;
@@ -153,16 +145,11 @@ petsc_alloc (void)
 static void
 free_petsc (lac_petsc *s)
 {
-  KSP *ksp[] = { &s->ku, &s->kp, &s->kg, &s->ks, &s->kl };
-  Mat *mat[] = { &s->G, &s->Ah, &s->A, &s->Bt, &s->B, &s->D, &s->Sp, &s->Kw,
-                 &s->Bl, &s->Gl };
-  Vec *vec[] = { &s->bu, &s->xu, &s->ru, &s->tu, &s->u0, &s->fw, &s->tk,
-                 &s->sk, &s->dk, &s->gk, &s->b, &s->x, &s->r, &s->dx,
-                 &s->useq, &s->lseq, &s->vl, &s->ul, &s->tl, &s->tg,
-                 &s->sl };
-  for (size_t i = 0; i < COUNT (ksp); i++)
-    KSPDestroy (ksp[i]);
-  PCDestroy (&s->pg);
+  Mat *mat[] = { &s->B, &s->Kw };
+  Vec *vec[] = { &s->fw, &s->xu, &s->ru, &s->gk, &s->lk, &s->dk, &s->pk,
+                 &s->useq, &s->lseq };
+  lac_petsc_saddle_free (s->sv);
+  s->sv = NULL;
   for (size_t i = 0; i < COUNT (mat); i++)
     MatDestroy (mat[i]);
   for (size_t i = 0; i < COUNT (vec); i++)
@@ -427,259 +414,37 @@ near_null_space (lac_petsc *s)
 
 /* ---- collective: build, the solvers --------------------------------------- */
 
-/* k x k diagonal matrix of the multipliers' layout (zeros). */
-static int
-create_diagonal (lac_petsc *s, Mat *M)
-{
-  PetscInt kl = s->l1 - s->l0, k = (PetscInt) s->k;
-  TRY (MatCreateAIJ (PETSC_COMM_WORLD, kl, kl, k, k, 1, NULL, 0, NULL, M));
-  for (PetscInt i = s->l0; i < s->l1; i++)
-    TRY (MatSetValue (*M, i, i, 0.0, INSERT_VALUES));
-  TRY (MatAssemblyBegin (*M, MAT_FINAL_ASSEMBLY));
-  TRY (MatAssemblyEnd (*M, MAT_FINAL_ASSEMBLY));
-  return LAC_SUCCESS;
-}
-
-/* An option's default value, unless the user set it. */
-static int
-default_option (const char *name, const char *value)
-{
-  PetscBool set = PETSC_FALSE;
-  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  if (!set)
-    TRY (PetscOptionsSetValue (NULL, name, value));
-  return LAC_SUCCESS;
-}
-
-/* Conjugate gradients and GAMG on K_W alone (k = 0; prefix elast_). */
-static int
-create_ku (lac_petsc *s)
-{
-  PC pc;
-  TRY (KSPCreate (PETSC_COMM_WORLD, &s->ku));
-  TRY (KSPSetOptionsPrefix (s->ku, "elast_"));
-  TRY (KSPSetOperators (s->ku, s->Kw, s->Kw));
-  TRY (KSPSetType (s->ku, KSPCG));
-  TRY (KSPSetNormType (s->ku, KSP_NORM_UNPRECONDITIONED));
-  TRY (KSPGetPC (s->ku, &pc));
-  TRY (PCSetType (pc, PCGAMG));
-  TRY (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
-  TRY (KSPSetFromOptions (s->ku));
-  return LAC_SUCCESS;
-}
-
-/* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
- * of C_A (l2-orthogonal projection on the null space of C_A^T). */
-static PetscErrorCode
-project_local (lac_petsc *s, Vec v);
-
-static PetscErrorCode
-project (lac_petsc *s, Vec v)
-{
-  if (s->kl)
-    return project_local (s, v);
-  PetscCall (MatMultTranspose (s->B, v, s->tk));
-  PetscCall (KSPSolve (s->kg, s->tk, s->sk));
-  PetscCall (MatMult (s->B, s->sk, s->tu));
-  PetscCall (VecAXPY (v, -1.0, s->tu));
-  return 0;
-}
-
-/* The same on N > 1 processes with one reduction: each process makes
- * B_own^T v_own from its rows, one MPI_Allreduce sums them, each solves
- * with its own copy of G and subtracts B_own s from its rows (instead of
- * the scatters of B^T v, of PCREDUNDANT and of B s: fewer waits for the
- * other processes, twice per CG iteration). */
-static PetscErrorCode
-project_local (lac_petsc *s, Vec v)
-{
-  PetscScalar *a, *g;
-  const PetscScalar *t;
-  PetscCall (VecGetArray (v, &a));
-  PetscCall (VecPlaceArray (s->vl, a));
-  PetscCall (MatMultTranspose (s->Bl, s->vl, s->tl));
-  PetscCall (VecGetArrayRead (s->tl, &t));
-  PetscCall (VecGetArray (s->tg, &g));
-  PetscCallMPI (MPI_Allreduce (t, g, (int) s->k, MPIU_SCALAR, MPIU_SUM,
-                               PETSC_COMM_WORLD));
-  PetscCall (VecRestoreArray (s->tg, &g));
-  PetscCall (VecRestoreArrayRead (s->tl, &t));
-  PetscCall (KSPSolve (s->kl, s->tg, s->sl));
-  PetscCall (MatMult (s->Bl, s->sl, s->ul));
-  PetscCall (VecAXPY (s->vl, -1.0, s->ul));
-  PetscCall (VecResetArray (s->vl));
-  PetscCall (VecRestoreArray (v, &a));
-  return 0;
-}
-
-/* N > 1: the own rows of B and a copy of G on every process, G's LU
- * there (after each new G). */
-static int
-update_local (lac_petsc *s)
-{
-  PC pc;
-  PetscInt nl = s->r1 - s->r0;
-  TRY (MatMPIAIJGetLocalMat (s->B, s->Bl ? MAT_REUSE_MATRIX
-                             : MAT_INITIAL_MATRIX, &s->Bl));
-  TRY (MatCreateRedundantMatrix (s->G, s->size, MPI_COMM_NULL, s->Gl
-                                 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
-                                 &s->Gl));
-  if (!s->kl)
-    {
-      TRY (KSPCreate (PetscObjectComm ((PetscObject) s->Gl), &s->kl));
-      TRY (KSPSetOptionsPrefix (s->kl, "gram_local_"));
-      TRY (KSPSetType (s->kl, KSPPREONLY));
-      TRY (KSPGetPC (s->kl, &pc));
-      TRY (PCSetType (pc, PCLU));
-      TRY (KSPSetFromOptions (s->kl));
-      TRY (MatCreateVecs (s->Gl, &s->sl, &s->tg));
-      TRY (VecCreateSeqWithArray (PETSC_COMM_SELF, 1, nl, NULL, &s->vl));
-      TRY (VecCreateSeq (PETSC_COMM_SELF, nl, &s->ul));
-      TRY (VecCreateSeq (PETSC_COMM_SELF, (PetscInt) s->k, &s->tl));
-    }
-  TRY (KSPSetOperators (s->kl, s->Gl, s->Gl));
-  return LAC_SUCCESS;
-}
-
-/* The operator of the projected CG: y = P K_W x. */
-static PetscErrorCode
-projected_op (Mat A, Vec x, Vec y)
-{
-  lac_petsc *s;
-  PetscCall (MatShellGetContext (A, &s));
-  PetscCall (MatMult (s->Kw, x, y));
-  return project (s, y);
-}
-
-/* Its preconditioner: z = P M r, M one V-cycle of multigrid on K_W. */
-static PetscErrorCode
-projected_pc (PC pc, Vec r, Vec z)
-{
-  lac_petsc *s;
-  PetscCall (PCShellGetContext (pc, &s));
-  PetscCall (PCApply (s->pg, r, z));
-  return project (s, z);
-}
-
-/* projected: the multigrid of K_W (prefix elast_), the solver of B^T B + D
- * (prefix gram_: redundant LU), CG on P K_W (no prefix). */
-static int
-create_projected (lac_petsc *s)
-{
-  PetscInt nl = s->r1 - s->r0;
-  PC pc;
-  TRY (PCCreate (PETSC_COMM_WORLD, &s->pg));
-  TRY (PCSetOptionsPrefix (s->pg, "elast_"));
-  TRY (PCSetOperators (s->pg, s->Kw, s->Kw));
-  TRY (PCSetType (s->pg, PCGAMG));
-  TRY (PCGAMGSetReuseInterpolation (s->pg, PETSC_TRUE));
-  TRY (PCSetFromOptions (s->pg));
-  TRY (KSPCreate (PETSC_COMM_WORLD, &s->kg));
-  TRY (KSPSetOptionsPrefix (s->kg, "gram_"));
-  TRY (KSPSetType (s->kg, KSPPREONLY));
-  TRY (KSPGetPC (s->kg, &pc));
-  TRY (PCSetType (pc, PCREDUNDANT));
-  TRY (KSPSetFromOptions (s->kg));
-  TRY (MatCreateShell (PETSC_COMM_WORLD, nl, nl, (PetscInt) s->n,
-                       (PetscInt) s->n, s, &s->Ah));
-  TRY (MatShellSetOperation (s->Ah, MATOP_MULT, (void (*) (void))
-                             projected_op));
-  TRY (KSPCreate (PETSC_COMM_WORLD, &s->kp));
-  TRY (KSPSetOperators (s->kp, s->Ah, s->Ah));
-  TRY (KSPSetType (s->kp, KSPCG));
-  TRY (KSPSetNormType (s->kp, KSP_NORM_UNPRECONDITIONED));
-  TRY (KSPSetFromOptions (s->kp));
-  TRY (KSPGetPC (s->kp, &pc));
-  TRY (PCSetType (pc, PCSHELL));
-  TRY (PCShellSetContext (pc, s));
-  TRY (PCShellSetApply (pc, projected_pc));
-  TRY (MatCreateVecs (s->B, &s->sk, NULL));
-  TRY (VecDuplicate (s->sk, &s->tk));
-  TRY (VecDuplicate (s->sk, &s->dk));
-  TRY (VecDuplicate (s->sk, &s->gk));
-  TRY (VecDuplicate (s->xu, &s->tu));
-  TRY (VecDuplicate (s->xu, &s->u0));
-  TRY (VecDuplicate (s->xu, &s->fw));
-  return root_scatter (s, s->sk, NULL, &s->gl, &s->lseq);
-}
-
-/* fieldsplit: the nest A = [K_W B; B^T D], its vectors, the Schur
- * preconditioner Sp, and GMRES with the Schur factorization of
- * PCFIELDSPLIT (no prefix; blocks fieldsplit_u_, fieldsplit_lambda_). */
-static int
-create_fieldsplit (lac_petsc *s)
-{
-  Mat blocks[4];
-  Vec xl;
-  PC pc;
-  IS is[2];
-  int status;
-  if ((status = create_diagonal (s, &s->D))
-      || (status = create_diagonal (s, &s->Sp))
-      || (status = default_option ("-fieldsplit_u_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_u_pc_type", "gamg"))
-      || (status = default_option ("-fieldsplit_u_pc_gamg_reuse_interpolation",
-                                   "true"))
-      || (status = default_option ("-fieldsplit_lambda_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_lambda_pc_type", "jacobi")))
-    return status;
-  TRY (MatCreateTranspose (s->B, &s->Bt));
-  blocks[0] = s->Kw, blocks[1] = s->B, blocks[2] = s->Bt, blocks[3] = s->D;
-  TRY (MatCreateNest (PETSC_COMM_WORLD, 2, NULL, 2, NULL, blocks, &s->A));
-  TRY (MatCreateVecs (s->A, &s->x, &s->b));
-  TRY (VecDuplicate (s->b, &s->r));
-  TRY (VecDuplicate (s->b, &s->dx));
-  TRY (MatCreateVecs (s->D, &xl, NULL));
-  if ((status = root_scatter (s, xl, NULL, &s->gl, &s->lseq)))
-    return status;
-  TRY (VecDestroy (&xl));
-  TRY (KSPCreate (PETSC_COMM_WORLD, &s->ks));
-  TRY (KSPSetOperators (s->ks, s->A, s->A));
-  TRY (KSPSetType (s->ks, KSPGMRES));
-  TRY (KSPGMRESSetRestart (s->ks, 100));
-  TRY (KSPSetPCSide (s->ks, PC_RIGHT));
-  TRY (KSPSetNormType (s->ks, KSP_NORM_UNPRECONDITIONED));
-  TRY (KSPGetPC (s->ks, &pc));
-  TRY (PCSetType (pc, PCFIELDSPLIT));
-  TRY (MatNestGetISs (s->A, is, NULL));
-  TRY (PCFieldSplitSetIS (pc, "u", is[0]));
-  TRY (PCFieldSplitSetIS (pc, "lambda", is[1]));
-  TRY (PCFieldSplitSetType (pc, PC_COMPOSITE_SCHUR));
-  TRY (PCFieldSplitSetSchurFactType (pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
-  TRY (PCFieldSplitSetSchurPre (pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s->Sp));
-  TRY (KSPSetFromOptions (s->ks));
-  return LAC_SUCCESS;
-}
-
-/* "cg + gamg on K, 2 processes" from the solvers. */
+/* "projected cg + gamg on K_W, 2 processes" from the solvers. */
 static int
 describe (lac_petsc *s)
 {
-  KSPType kt;
-  PCType pt;
-  PC pc;
-  char inner[32] = "gamg";
-  PetscBool set;
+  char kt[32], pt[32];
   const char *es = s->size > 1 ? "es" : "";
-  if (s->ks)
-    {
-      TRY (KSPGetType (s->ks, &kt));
-      TRY (PetscOptionsGetString (NULL, NULL, "-fieldsplit_u_pc_type", inner,
-                                  sizeof inner, &set));
-      snprintf (s->method, sizeof s->method, "%s + fieldsplit(%s, W) on "
-                "(*W), %d process%s", kt, inner, s->size, es);
-      return LAC_SUCCESS;
-    }
-  TRY (KSPGetType (s->kp ? s->kp : s->ku, &kt));
-  if (s->pg)
-    pc = s->pg;
+  int status = lac_petsc_saddle_types (s->sv, kt, pt, sizeof kt);
+  if (status)
+    return status;
+  if (s->k == 0)
+    snprintf (s->method, sizeof s->method, "%s + %s on K, %d process%s",
+              kt, pt, s->size, es);
+  else if (s->mode == FIELDSPLIT)
+    snprintf (s->method, sizeof s->method, "%s + fieldsplit(%s, W) on "
+              "(*W), %d process%s", kt, pt, s->size, es);
   else
-    TRY (KSPGetPC (s->ku, &pc));
-  TRY (PCGetType (pc, &pt));
-  snprintf (s->method, sizeof s->method, s->kp ? "projected %s + %s on "
-            "K_W, %d process%s" : "%s + %s on K, %d process%s", kt, pt,
-            s->size, es);
+    snprintf (s->method, sizeof s->method, "projected %s + %s on K_W, %d "
+              "process%s", kt, pt, s->size, es);
   return LAC_SUCCESS;
+}
+
+/* The vectors of the multipliers' layout (B's columns) and their scatter
+ * from the root. */
+static int
+multiplier_vectors (lac_petsc *s)
+{
+  Vec *v[] = { &s->gk, &s->dk, &s->pk };
+  TRY (MatCreateVecs (s->B, &s->lk, NULL));
+  for (size_t i = 0; i < COUNT (v); i++)
+    TRY (VecDuplicate (s->lk, v[i]));
+  return root_scatter (s, s->lk, NULL, &s->gl, &s->lseq);
 }
 
 /* The layout and C: the rows of the cells (the root gives its mesh when
@@ -717,18 +482,15 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
     return status;
   TRY (MatSetOption (s->Kw, MAT_SYMMETRIC, PETSC_TRUE));
   TRY (MatSetOption (s->Kw, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-  TRY (MatCreateVecs (s->Kw, &s->xu, &s->bu));
-  TRY (VecDuplicate (s->bu, &s->ru));
+  TRY (MatCreateVecs (s->Kw, &s->xu, &s->fw));
+  TRY (VecDuplicate (s->fw, &s->ru));
   if ((status = root_scatter (s, s->xu, lac_dist_row (s->dist), &s->gu,
                               &s->useq))
-      || (status = near_null_space (s)))
-    return status;
-  if (s->k == 0)
-    status = create_ku (s);
-  else
-    status = s->mode == FIELDSPLIT ? create_fieldsplit (s)
-             : create_projected (s);
-  if (status)
+      || (status = near_null_space (s))
+      || (s->k && (status = multiplier_vectors (s)))
+      || (status = lac_petsc_saddle_create ((lac_saddle_method) s->mode,
+                                            s->Kw, s->k ? s->B : NULL,
+                                            &s->sv)))
     return status;
   s->built = 1;
   s->counts.analyses++;
@@ -861,10 +623,11 @@ contact_terms (lac_petsc *s)
   return status ? status : assemble (s->Kw);
 }
 
-/* B = -C_A (the inactive columns are zeros); fieldsplit: D = 1 and Sp =
- * 1 on the inactive, Sp = -1/w on the active (-S_W^-1 is about -W_A: the
- * Schur complement of (*W) is -S_W); projected: dk = 1 on the inactive
- * (D of B^T B + D).  Each process its own columns and multipliers. */
+/* B = -C_A (the inactive columns are zeros); D = 1 on the inactive, 0
+ * on the active; fieldsplit's Schur preconditioner Sp = 1 on the
+ * inactive, -1/w on the active (-S_W^-1 is about -W_A: the Schur
+ * complement of (*W) is -S_W).  Each process its own columns and
+ * multipliers. */
 static int
 multipliers (lac_petsc *s)
 {
@@ -875,40 +638,14 @@ multipliers (lac_petsc *s)
   for (PetscInt i = s->l0; i < s->l1; i++)
     {
       int on = s->stat[i] && s->w[i] > 0;
-      if (s->D)
-        {
-          TRY (MatSetValue (s->D, i, i, on ? 0.0 : 1.0, INSERT_VALUES));
-          TRY (MatSetValue (s->Sp, i, i, on ? -s->kappa / s->w[i] : 1.0,
-                            INSERT_VALUES));
-        }
-      else
-        TRY (VecSetValue (s->dk, i, s->stat[i] ? 0.0 : 1.0, INSERT_VALUES));
+      TRY (VecSetValue (s->dk, i, on ? 0.0 : 1.0, INSERT_VALUES));
+      TRY (VecSetValue (s->pk, i, on ? -s->kappa / s->w[i] : 1.0,
+                        INSERT_VALUES));
     }
-  if (!s->D)
-    {
-      TRY (VecAssemblyBegin (s->dk));
-      TRY (VecAssemblyEnd (s->dk));
-    }
-  return LAC_SUCCESS;
-}
-
-/* projected: G = B^T B + D, its solver, and the multigrid of the new
- * K_W. */
-static int
-update_projected (lac_petsc *s)
-{
-  int status;
-  if (s->G)
-    TRY (MatTransposeMatMult (s->B, s->B, MAT_REUSE_MATRIX, PETSC_DEFAULT,
-                              &s->G));
-  else
-    TRY (MatTransposeMatMult (s->B, s->B, MAT_INITIAL_MATRIX, PETSC_DEFAULT,
-                              &s->G));
-  TRY (MatDiagonalSet (s->G, s->dk, ADD_VALUES));
-  TRY (KSPSetOperators (s->kg, s->G, s->G));
-  if (s->size > 1 && (status = update_local (s)))
-    return status;
-  TRY (PCSetOperators (s->pg, s->Kw, s->Kw));
+  TRY (VecAssemblyBegin (s->dk));
+  TRY (VecAssemblyEnd (s->dk));
+  TRY (VecAssemblyBegin (s->pk));
+  TRY (VecAssemblyEnd (s->pk));
   return LAC_SUCCESS;
 }
 
@@ -923,19 +660,10 @@ update_values (lac_petsc *s, const lac_petsc_command *c,
                 || (status = lac_petsc_bcast (s->stat, s->k))))
       || (c->all && (status = new_stiffness (s, sys)))
       || (status = contact_terms (s))
-      || (s->B && (status = multipliers (s))))
+      || (s->k && (status = multipliers (s)))
+      || (status = lac_petsc_saddle_update (s->sv, s->k ? s->dk : NULL,
+                                            s->k ? s->pk : NULL)))
     return status;
-  if (s->ks)
-    {
-      if ((status = assemble (s->D)) || (status = assemble (s->Sp))
-          || (status = assemble (s->A)))
-        return status;
-      TRY (KSPSetOperators (s->ks, s->A, s->A));
-    }
-  if (s->kp && (status = update_projected (s)))
-    return status;
-  if (s->ku)
-    TRY (KSPSetOperators (s->ku, s->Kw, s->Kw));
   s->counts.factorizations++;
   return LAC_SUCCESS;
 }
@@ -966,208 +694,32 @@ update (lac_petsc *s, const char *active)
 
 /* ---- collective: the solves --------------------------------------------- */
 
-/* After KSPSolve: iterations and reason; the relative true residual
- * res / ||b|| of the whole system is the caller's. */
-static int
-check_ksp (lac_petsc *s, KSP ksp, double res, const char *what)
-{
-  KSPConvergedReason why;
-  PetscInt its;
-  TRY (KSPGetIterationNumber (ksp, &its));
-  TRY (KSPGetConvergedReason (ksp, &why));
-  s->counts.iterations += (int) its;
-  s->counts.last_iterations = (int) its;
-  s->counts.last_residual = res;
-  s->counts.solves++;
-  if (why < 0)
-    LAC_ERROR (why == KSP_DIVERGED_INDEFINITE_PC
-               || why == KSP_DIVERGED_INDEFINITE_MAT ? LAC_ESING
-               : LAC_EMAXITER, "%s: %s after %d iterations, relative "
-               "residual %.3g", what, KSPConvergedReasons[why], (int) its,
-               res);
-  return LAC_SUCCESS;
-}
-
-/* ||b - A x|| / ||b|| (r: scratch). */
-static int
-true_residual (Mat A, Vec b, Vec x, Vec r, double *res)
-{
-  PetscReal nb, nr;
-  TRY (MatMult (A, x, r));
-  TRY (VecAYPX (r, -1.0, b));
-  TRY (VecNorm (r, NORM_2, &nr));
-  TRY (VecNorm (b, NORM_2, &nb));
-  *res = nb > 0 ? nr / nb : nr;
-  return LAC_SUCCESS;
-}
-
-/* k = 0: K y = x to c->rtol (x, y: the root's, n; y is the start and the
+/* One solve of (*W) (all processes; the data are the root's): f_W (n),
+ * gl = -g_A (k, 0 on the inactive), U and lambda (the start and the
  * solution). */
-static int
-step_solve_kw (lac_petsc *s, const lac_petsc_command *c, const double *x,
-               double *y)
-{
-  double res;
-  int status;
-  if ((status = to_dist (s, s->gu, s->useq, x, s->bu))
-      || (status = to_dist (s, s->gu, s->useq, y, s->xu)))
-    return status;
-  TRY (KSPSetInitialGuessNonzero (s->ku, PETSC_TRUE));
-  TRY (KSPSetTolerances (s->ku, c->rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
-  TRY (KSPSolve (s->ku, s->bu, s->xu));
-  if ((status = true_residual (s->Kw, s->bu, s->xu, s->ru, &res))
-      || (status = check_ksp (s, s->ku, res, "K")))
-    return status;
-  return to_root (s, s->gu, s->xu, s->useq, y);
-}
-
-/* projected, before CG: u0 = B (B^T B + D)^-1 gl with B^T u0 = gl on the
- * active multipliers (C_A^T u0 = g_A), the right-hand side P (f_W - K_W
- * u0) in bu, the start P (U - u0) in xu. */
-static PetscErrorCode
-projected_start (lac_petsc *s, Vec gl)
-{
-  PetscCall (KSPSolve (s->kg, gl, s->sk));
-  PetscCall (MatMult (s->B, s->sk, s->u0));
-  PetscCall (MatMult (s->Kw, s->u0, s->bu));
-  PetscCall (VecAYPX (s->bu, -1.0, s->fw));
-  PetscCall (project (s, s->bu));
-  PetscCall (VecAXPY (s->xu, -1.0, s->u0));
-  return project (s, s->xu);
-}
-
-/* projected, after CG: U = u0 + x (in xu), lambda = (B^T B + D)^-1 B^T
- * (f_W - K_W U) (in sk), and the relative true residual of (*W), each
- * block in its own unit (the larger of the two): the forces f_W - K_W U
- * - B lambda against f_W (2-norms, as the CG's), the gaps gl - B^T U
- * against |gl| + |B^T| |U| (max-norms). */
-static PetscErrorCode
-projected_finish (lac_petsc *s, Vec gl, double *res)
-{
-  PetscReal r1, r2, b1, b2, nB, nU;
-  PetscCall (VecAXPY (s->xu, 1.0, s->u0));
-  PetscCall (MatMult (s->Kw, s->xu, s->ru));
-  PetscCall (VecAYPX (s->ru, -1.0, s->fw));
-  PetscCall (MatMultTranspose (s->B, s->ru, s->tk));
-  PetscCall (KSPSolve (s->kg, s->tk, s->sk));
-  PetscCall (MatMult (s->B, s->sk, s->tu));
-  PetscCall (VecAXPY (s->ru, -1.0, s->tu));
-  PetscCall (VecNorm (s->ru, NORM_2, &r1));
-  PetscCall (MatMultTranspose (s->B, s->xu, s->tk));
-  PetscCall (VecAYPX (s->tk, -1.0, gl));
-  PetscCall (VecNorm (s->tk, NORM_INFINITY, &r2));
-  PetscCall (VecNorm (s->fw, NORM_2, &b1));
-  PetscCall (VecNorm (gl, NORM_INFINITY, &b2));
-  PetscCall (MatNorm (s->B, NORM_1, &nB));              /* |B^T|_inf */
-  PetscCall (VecNorm (s->xu, NORM_INFINITY, &nU));
-  *res = fmax (r1 / fmax (b1, 1e-300), r2 / fmax (b2 + nB * nU, 1e-300));
-  return 0;
-}
-
-/* projected: (*W) by CG on the null space of C_A^T.  The root's f_W (n),
- * gl = -g_A (k, 0 on the inactive), U (start and solution) and lambda. */
-static int
-step_projected (lac_petsc *s, const lac_petsc_command *c, const double *fw,
-                const double *g, double *U, double *lambda)
-{
-  PetscReal b1;
-  double res = 0;
-  int status;
-  if ((status = to_dist (s, s->gu, s->useq, fw, s->fw))
-      || (status = to_dist (s, s->gl, s->lseq, g, s->gk))
-      || (status = to_dist (s, s->gu, s->useq, U, s->xu)))
-    return status;
-  TRY (projected_start (s, s->gk));
-  TRY (VecNorm (s->fw, NORM_2, &b1));     /* the CG's residual: forces */
-  TRY (KSPSetInitialGuessNonzero (s->kp, PETSC_TRUE));
-  TRY (KSPSetTolerances (s->kp, 0.0, c->rtol * b1, PETSC_DEFAULT,
-                         KSP_MAXIT));
-  TRY (KSPSolve (s->kp, s->bu, s->xu));
-  TRY (projected_finish (s, s->gk, &res));
-  if ((status = check_ksp (s, s->kp, res, "projected CG on (*W)")))
-    return status;
-  if ((status = to_root (s, s->gu, s->xu, s->useq, U)))
-    return status;
-  return to_root (s, s->gl, s->sk, s->lseq, lambda);
-}
-
-/* fieldsplit: own entries of a vector of (*W), U's rows from the root's
- * u, lambda's from its l. */
-static int
-fill_saddle (lac_petsc *s, Vec v, const double *u, const double *l)
-{
-  IS is[2];
-  Vec vu, vl;
-  int status;
-  TRY (MatNestGetISs (s->A, is, NULL));
-  TRY (VecGetSubVector (v, is[0], &vu));
-  status = to_dist (s, s->gu, s->useq, u, vu);
-  TRY (VecRestoreSubVector (v, is[0], &vu));
-  TRY (VecGetSubVector (v, is[1], &vl));
-  status = status ? status : to_dist (s, s->gl, s->lseq, l, vl);
-  TRY (VecRestoreSubVector (v, is[1], &vl));
-  return status;
-}
-
-/* fieldsplit: the root's U, lambda = the solution x of (*W). */
-static int
-gather_saddle (lac_petsc *s, double *U, double *lambda)
-{
-  IS is[2];
-  Vec v;
-  int status;
-  TRY (MatNestGetISs (s->A, is, NULL));
-  TRY (VecGetSubVector (s->x, is[0], &v));
-  status = to_root (s, s->gu, v, s->useq, U);
-  TRY (VecRestoreSubVector (s->x, is[0], &v));
-  TRY (VecGetSubVector (s->x, is[1], &v));
-  status = status ? status : to_root (s, s->gl, v, s->lseq, lambda);
-  TRY (VecRestoreSubVector (s->x, is[1], &v));
-  return status;
-}
-
-/* fieldsplit: (*W) as a whole by GMRES; the root's right-hand side (fw,
- * gl), start and solution (U, lambda). */
-static int
-step_fieldsplit (lac_petsc *s, const lac_petsc_command *c, const double *fw,
-                 const double *gl, double *U, double *lambda)
-{
-  double res;
-  int status, first;
-  if ((status = fill_saddle (s, s->b, fw, gl))
-      || (status = fill_saddle (s, s->x, U, lambda)))
-    return status;
-  TRY (KSPSetInitialGuessNonzero (s->ks, PETSC_TRUE));
-  TRY (KSPSetTolerances (s->ks, c->rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
-  TRY (KSPSolve (s->ks, s->b, s->x));
-  if ((status = true_residual (s->A, s->b, s->x, s->r, &res))
-      || (status = check_ksp (s, s->ks, res, "(*W)")))
-    return status;
-  first = s->counts.last_iterations;
-  /* GMRES satisfies C_A^T U = g_A only to its tolerance relative to the
-   * forces (the projected CG exactly): one correction x += A^-1 r. */
-  TRY (KSPSetInitialGuessNonzero (s->ks, PETSC_FALSE));
-  TRY (KSPSetTolerances (s->ks, CORRECTION_RTOL, 0.0, PETSC_DEFAULT,
-                         KSP_MAXIT));
-  TRY (KSPSolve (s->ks, s->r, s->dx));
-  TRY (VecAXPY (s->x, 1.0, s->dx));
-  if ((status = true_residual (s->A, s->b, s->x, s->r, &res))
-      || (status = check_ksp (s, s->ks, res, "(*W), correction")))
-    return status;
-  s->counts.last_iterations += first;
-  return gather_saddle (s, U, lambda);
-}
-
-/* One solve of the mode in use (all processes; the data are the root's). */
 static int
 step_solve (lac_petsc *s, const lac_petsc_command *c, const double *fw,
             const double *gl, double *U, double *lambda)
 {
-  if (s->ku)
-    return step_solve_kw (s, c, fw, U);
-  if (s->kp)
-    return step_projected (s, c, fw, gl, U, lambda);
-  return step_fieldsplit (s, c, fw, gl, U, lambda);
+  lac_saddle_counts n;
+  int status;
+  if ((status = to_dist (s, s->gu, s->useq, fw, s->fw))
+      || (status = to_dist (s, s->gu, s->useq, U, s->xu))
+      || (s->k && ((status = to_dist (s, s->gl, s->lseq, gl, s->gk))
+                   || (status = to_dist (s, s->gl, s->lseq, lambda,
+                                         s->lk)))))
+    return status;
+  status = lac_petsc_saddle_solve (s->sv, s->fw, s->k ? s->gk : NULL,
+                                   c->rtol, s->k == 0 ? "K" : s->mode
+                                   == PROJECTED ? "projected CG on (*W)"
+                                   : "(*W)", s->xu, s->k ? s->lk : NULL, &n);
+  s->counts.iterations += n.iterations;
+  s->counts.last_iterations = n.iterations;
+  s->counts.last_residual = n.residual;
+  s->counts.solves += n.solves;
+  if (status || (status = to_root (s, s->gu, s->xu, s->useq, U)))
+    return status;
+  return s->k ? to_root (s, s->gl, s->lk, s->lseq, lambda) : LAC_SUCCESS;
 }
 
 /* x = f + C_A W_A g_A (n, the root). */

@@ -26,44 +26,6 @@
 
 #define D8 "chapters/08-experiments/"
 
-/* Run SCENE with the overrides SET; NULL (and a failed check) on error.
- * *sc receives the scene, which the run borrows. */
-static lac_run *
-run (const char *scene, int nset, const char **set, lac_scene **sc)
-{
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL };
-  lac_run *r = NULL;
-  *sc = NULL;
-  int st = lac_scene_read (scene, nset, set, sc);
-  if (!st && !(r = lac_run_alloc (*sc, &o)))
-    st = LAC_ENOMEM;
-  if (!st)
-    st = lac_run_all (r);
-  check_status (st, LAC_SUCCESS, "%s %s", scene, nset ? set[0] : "");
-  if (st)
-    {
-      lac_run_free (r);
-      lac_scene_free (*sc);
-      *sc = NULL;
-      return NULL;
-    }
-  return r;
-}
-
-static double
-value (const lac_run *r, const char *key)
-{
-  const char *v = lac_run_summary_get (r, key);
-  return v ? atof (v) : NAN;
-}
-
-static void
-done (lac_run *r, lac_scene *sc)
-{
-  lac_run_free (r);
-  lac_scene_free (sc);
-}
-
 /* ---- exercise 1 ------------------------------------------------------ */
 
 /* The patch test with ELEMENT at LEVEL, the upper or the lower body as
@@ -81,7 +43,7 @@ taylor (const char *scene, const char *element, int level, int upper,
             upper ? "upper_bottom" : "lower_top");
   snprintf (s[3], sizeof s[3], "contact.interface.master=%s",
             upper ? "lower_top" : "upper_bottom");
-  lac_run *r = run (scene, 4, set, &sc);
+  lac_run *r = check_run_scene (scene, 4, set, &sc);
   if (!r)
     return;
   const char *side = upper ? "upper" : "lower";
@@ -90,14 +52,14 @@ taylor (const char *scene, const char *element, int level, int upper,
   check_int ((long) c->k, mult, "ex1 %s level %d %s: multipliers", element,
              level, side);
   if (dofs > 0)
-    check_int ((long) value (r, "dofs"), dofs, "ex1 %s level %d %s: dofs",
-               element, level, side);
-  check_int ((long) value (r, "newton_iterations"), 1,
+    check_int ((long) check_run_value (r, "dofs"), dofs,
+               "ex1 %s level %d %s: dofs", element, level, side);
+  check_int ((long) check_run_value (r, "newton_iterations"), 1,
              "ex1 %s level %d %s: one iteration", element, level, side);
   for (size_t i = 0; i < c->k; i++)
     check_rel (nw->lambda[c->macro[i]], -25, 1e-12, "ex1 %s level %d %s: lambda_%zu",
                element, level, side, i);
-  done (r, sc);
+  check_run_done (r, sc);
 }
 
 static void
@@ -148,7 +110,7 @@ exercise2 (void)
       const char *set[1] = { s };
       lac_scene *sc;
       snprintf (s, sizeof s, "element=%s", el[e]);
-      lac_run *r = run (D8 "taylor2d.scene", 1, set, &sc);
+      lac_run *r = check_run_scene (D8 "taylor2d.scene", 1, set, &sc);
       if (!r)
         continue;
       const lac_mesh *m = r->mesh;
@@ -163,7 +125,7 @@ exercise2 (void)
       check_true (dbest < 1e-12, "ex2 %s: a node at (50, 100)", el[e]);
       check_rel (r->sol.u[2 * best], ux, 1e-12, "ex2 %s: u_x", el[e]);
       check_rel (r->sol.u[2 * best + 1], uy, 1e-12, "ex2 %s: u_y", el[e]);
-      done (r, sc);
+      check_run_done (r, sc);
     }
 }
 
@@ -180,13 +142,13 @@ taylor_method (const char *method, double *lmin, double *lmax)
                          "contact.interface.master=upper_bottom", s };
   lac_scene *sc;
   snprintf (s, sizeof s, "contact.interface.method=%s", method);
-  lac_run *r = run (D8 "taylor2d.scene", 5, set, &sc);
+  lac_run *r = check_run_scene (D8 "taylor2d.scene", 5, set, &sc);
   if (!r)
     return NAN;
-  double err = value (r, "max_rel_err_lambda");
-  *lmin = value (r, "lambda_min");
-  *lmax = value (r, "lambda_max");
-  done (r, sc);
+  double err = check_run_value (r, "max_rel_err_lambda");
+  *lmin = check_run_value (r, "lambda_min");
+  *lmax = check_run_value (r, "lambda_max");
+  check_run_done (r, sc);
   return err;
 }
 

@@ -32,44 +32,6 @@
 
 #define D9 "chapters/09-spheres-rates/"
 
-/* Run SCENE with the overrides SET; NULL (and a failed check) on error.
- * *sc receives the scene, which the run borrows. */
-static lac_run *
-run (const char *scene, int nset, const char **set, lac_scene **sc)
-{
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL };
-  lac_run *r = NULL;
-  *sc = NULL;
-  int st = lac_scene_read (scene, nset, set, sc);
-  if (!st && !(r = lac_run_alloc (*sc, &o)))
-    st = LAC_ENOMEM;
-  if (!st)
-    st = lac_run_all (r);
-  check_status (st, LAC_SUCCESS, "%s %s", scene, nset ? set[0] : "");
-  if (st)
-    {
-      lac_run_free (r);
-      lac_scene_free (*sc);
-      *sc = NULL;
-      return NULL;
-    }
-  return r;
-}
-
-static double
-value (const lac_run *r, const char *key)
-{
-  const char *v = lac_run_summary_get (r, key);
-  return v ? atof (v) : NAN;
-}
-
-static void
-done (lac_run *r, lac_scene *sc)
-{
-  lac_run_free (r);
-  lac_scene_free (sc);
-}
-
 /* ---- exercise 1 ------------------------------------------------------ */
 
 static void
@@ -92,20 +54,21 @@ exercise1 (void)
 
   const char *set[2] = { "element=quad8", "level=2" };
   lac_scene *sc;
-  lac_run *r = run (D9 "spheres-axi.scene", 2, set, &sc);
+  lac_run *r = check_run_scene (D9 "spheres-axi.scene", 2, set, &sc);
   if (!r)
     return;
-  check_rel (value (r, "lambda_min"), lam, 1e-4, "ex1: lambda_min");
-  check_rel (value (r, "lambda_max"), lam, 1e-4, "ex1: lambda_max");
-  check_true (value (r, "max_rel_err_lambda") < 1e-4,
-              "ex1: max_rel_err_lambda %g", value (r, "max_rel_err_lambda"));
-  check_rel (value (r, "u_r_inner"), 0.2, 1e-5, "ex1: u_r_inner");
-  check_rel (value (r, "contact_area"), 1800 * pi, 1e-5,
+  check_rel (check_run_value (r, "lambda_min"), lam, 1e-4, "ex1: lambda_min");
+  check_rel (check_run_value (r, "lambda_max"), lam, 1e-4, "ex1: lambda_max");
+  check_true (check_run_value (r, "max_rel_err_lambda") < 1e-4,
+              "ex1: max_rel_err_lambda %g",
+              check_run_value (r, "max_rel_err_lambda"));
+  check_rel (check_run_value (r, "u_r_inner"), 0.2, 1e-5, "ex1: u_r_inner");
+  check_rel (check_run_value (r, "contact_area"), 1800 * pi, 1e-5,
              "ex1: contact_area = 2 pi R^2");
-  check_rel (value (r, "contact_force"), 900 * pi * lam, 1e-4,
+  check_rel (check_run_value (r, "contact_force"), 900 * pi * lam, 1e-4,
              "ex1: contact_force = pi R^2 lambda");
   check_rel (900 * pi * lam, -13838.0, 1e-5, "ex1: -13838.0");
-  done (r, sc);
+  check_run_done (r, sc);
 }
 
 /* ---- exercise 2 ------------------------------------------------------ */
@@ -133,7 +96,7 @@ manufactured (const char *element, int level)
   man x = { NAN, NAN, NAN, 0 };
   snprintf (s[0], sizeof s[0], "element=%s", element);
   snprintf (s[1], sizeof s[1], "level=%d", level);
-  lac_run *r = run (D9 "manufactured2d.scene", 2, set, &sc);
+  lac_run *r = check_run_scene (D9 "manufactured2d.scene", 2, set, &sc);
   if (!r)
     return x;
   const lac_newton *nw = r->sol.newton;
@@ -144,11 +107,11 @@ manufactured (const char *element, int level)
       double d = nw->lambda[c->macro[i]] - r->res.mult.exact[i];
       avg2 += c->area[i] * d * d;
     }
-  x.err_lam = value (r, "l2_err_lambda");
+  x.err_lam = check_run_value (r, "l2_err_lambda");
   x.e_p0 = sqrt (x.err_lam * x.err_lam - avg2);
-  x.err_u = value (r, "rel_l2_err_u");
+  x.err_u = check_run_value (r, "rel_l2_err_u");
   x.N = (long) c->k;
-  done (r, sc);
+  check_run_done (r, sc);
   return x;
 }
 
@@ -197,12 +160,13 @@ exercise3 (void)
           lac_scene *sc;
           snprintf (s[0], sizeof s[0], "element=%s", el[e]);
           snprintf (s[1], sizeof s[1], "level=%d", l + 1);
-          lac_run *r = run (D9 "manufactured2d.scene", 2, set, &sc);
+          lac_run *r = check_run_scene (D9 "manufactured2d.scene", 2, set,
+                                        &sc);
           if (!r)
             return;
-          eu[l] = value (r, "l2_err_u");
-          el_[l] = value (r, "l2_err_lambda");
-          done (r, sc);
+          eu[l] = check_run_value (r, "l2_err_u");
+          el_[l] = check_run_value (r, "l2_err_lambda");
+          check_run_done (r, sc);
         }
       for (int l = 0; l < 2; l++)
         {

@@ -27,44 +27,6 @@
 
 #define D10 "chapters/10-large-deformation/"
 
-/* Run SCENE with the overrides SET; NULL (and a failed check) on error.
- * *sc receives the scene, which the run borrows. */
-static lac_run *
-run (const char *scene, int nset, const char **set, lac_scene **sc)
-{
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL };
-  lac_run *r = NULL;
-  *sc = NULL;
-  int st = lac_scene_read (scene, nset, set, sc);
-  if (!st && !(r = lac_run_alloc (*sc, &o)))
-    st = LAC_ENOMEM;
-  if (!st)
-    st = lac_run_all (r);
-  check_status (st, LAC_SUCCESS, "%s %s", scene, nset ? set[0] : "");
-  if (st)
-    {
-      lac_run_free (r);
-      lac_scene_free (*sc);
-      *sc = NULL;
-      return NULL;
-    }
-  return r;
-}
-
-static double
-value (const lac_run *r, const char *key)
-{
-  const char *v = lac_run_summary_get (r, key);
-  return v ? atof (v) : NAN;
-}
-
-static void
-done (lac_run *r, lac_scene *sc)
-{
-  lac_run_free (r);
-  lac_scene_free (sc);
-}
-
 /* ---- exercise 1 ------------------------------------------------------ */
 
 static void
@@ -84,12 +46,14 @@ exercise1 (void)
     }
   const char *set[2] = { "element=quad8", "level=2" };
   lac_scene *sc;
-  lac_run *r = run (D10 "hertz-cylinder.scene", 2, set, &sc);
+  lac_run *r = check_run_scene (D10 "hertz-cylinder.scene", 2, set, &sc);
   if (!r)
     return;
-  check_rel (value (r, "max_contact_pressure"), p0, 1e-3, "ex1: p_max");
-  check_rel (value (r, "contact_force"), -P / 2, 1e-9, "ex1: contact force");
-  done (r, sc);
+  check_rel (check_run_value (r, "max_contact_pressure"), p0, 1e-3,
+             "ex1: p_max");
+  check_rel (check_run_value (r, "contact_force"), -P / 2, 1e-9,
+             "ex1: contact force");
+  check_run_done (r, sc);
 }
 
 /* ---- exercises 2 and 3 ------------------------------------------------ */

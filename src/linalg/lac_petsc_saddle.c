@@ -1,0 +1,565 @@
+/* lac_petsc_saddle.c -- a stiffness under linear constraints by Krylov
+ *                       methods and multigrid (see lac_petsc_saddle.h)
+ */
+#include "linalg/lac_petsc_saddle.h"
+
+#ifdef LAC_HAVE_PETSC
+
+#include <math.h>
+#include <stdio.h>
+#include <petscksp.h>
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "linalg/lac_petsc_env.h"
+
+#define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
+#define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
+
+#define TRY(call) do { PetscErrorCode e_ = (call); \
+    if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
+#define COUNT(a) (sizeof (a) / sizeof *(a))
+
+struct lac_petsc_saddle
+{
+  lac_saddle_method method;
+  int size;                        /* MPI processes                      */
+  Mat K, B;                        /* borrowed; B NULL: K alone          */
+  KSP ku;                          /* K alone: CG + GAMG                 */
+  Vec ru;                          /* K alone, projected: U's layout     */
+  /* projected */
+  PC pg;                           /* the multigrid of K                 */
+  KSP kg, kp;                      /* B^T B + D (LU); CG on P K           */
+  Mat G, Ah;                       /* B^T B + D; P K (shell)             */
+  Vec u0, bu, tu, tk, sk;          /* U's layout; the multipliers'       */
+  Mat Bl, Gl;                      /* N > 1: the own rows of B, a copy
+                                      of G                               */
+  KSP kl;                          /*   its LU (prefix gram_local_)      */
+  Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)      */
+  /* fieldsplit */
+  Mat Bt, D, Sp, A;                /* A = [K B; B^T D]                    */
+  KSP ks;                          /* GMRES + PCFIELDSPLIT               */
+  Vec b, x, r, dx;                 /* A's layout                         */
+};
+
+void
+lac_petsc_saddle_free (lac_petsc_saddle *sv)
+{
+  if (!sv)
+    return;
+  KSP *ksp[] = { &sv->ku, &sv->kg, &sv->kp, &sv->kl, &sv->ks };
+  Mat *mat[] = { &sv->G, &sv->Ah, &sv->Bl, &sv->Gl, &sv->A, &sv->Bt,
+                 &sv->D, &sv->Sp };
+  Vec *vec[] = { &sv->ru, &sv->u0, &sv->bu, &sv->tu, &sv->tk, &sv->sk,
+                 &sv->vl, &sv->ul, &sv->tl, &sv->tg, &sv->sl, &sv->b,
+                 &sv->x, &sv->r, &sv->dx };
+  for (size_t i = 0; i < COUNT (ksp); i++)
+    KSPDestroy (ksp[i]);
+  PCDestroy (&sv->pg);
+  for (size_t i = 0; i < COUNT (mat); i++)
+    MatDestroy (mat[i]);
+  for (size_t i = 0; i < COUNT (vec); i++)
+    VecDestroy (vec[i]);
+  lac_free (sv);
+}
+
+/* An option's default value, unless the user set it. */
+static int
+default_option (const char *name, const char *value)
+{
+  PetscBool set = PETSC_FALSE;
+  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
+  if (!set)
+    TRY (PetscOptionsSetValue (NULL, name, value));
+  return LAC_SUCCESS;
+}
+
+/* ---- the projection ----------------------------------------------------- */
+
+/* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
+ * of B (l2-orthogonal projection on the null space of B^T). */
+static PetscErrorCode project_local (lac_petsc_saddle *sv, Vec v);
+
+static PetscErrorCode
+project (lac_petsc_saddle *sv, Vec v)
+{
+  if (sv->kl)
+    return project_local (sv, v);
+  PetscCall (MatMultTranspose (sv->B, v, sv->tk));
+  PetscCall (KSPSolve (sv->kg, sv->tk, sv->sk));
+  PetscCall (MatMult (sv->B, sv->sk, sv->tu));
+  PetscCall (VecAXPY (v, -1.0, sv->tu));
+  return 0;
+}
+
+/* The same on N > 1 processes with one reduction: each process makes
+ * B_own^T v_own from its rows, one MPI_Allreduce sums them, each solves
+ * with its own copy of G and subtracts B_own s from its rows (instead of
+ * the scatters of B^T v, of PCREDUNDANT and of B s: fewer waits for the
+ * other processes, twice per CG iteration). */
+static PetscErrorCode
+project_local (lac_petsc_saddle *sv, Vec v)
+{
+  PetscScalar *a, *g;
+  const PetscScalar *t;
+  PetscInt k;
+  PetscCall (VecGetSize (sv->tg, &k));
+  PetscCall (VecGetArray (v, &a));
+  PetscCall (VecPlaceArray (sv->vl, a));
+  PetscCall (MatMultTranspose (sv->Bl, sv->vl, sv->tl));
+  PetscCall (VecGetArrayRead (sv->tl, &t));
+  PetscCall (VecGetArray (sv->tg, &g));
+  PetscCallMPI (MPI_Allreduce (t, g, (int) k, MPIU_SCALAR, MPIU_SUM,
+                               PETSC_COMM_WORLD));
+  PetscCall (VecRestoreArray (sv->tg, &g));
+  PetscCall (VecRestoreArrayRead (sv->tl, &t));
+  PetscCall (KSPSolve (sv->kl, sv->tg, sv->sl));
+  PetscCall (MatMult (sv->Bl, sv->sl, sv->ul));
+  PetscCall (VecAXPY (sv->vl, -1.0, sv->ul));
+  PetscCall (VecResetArray (sv->vl));
+  PetscCall (VecRestoreArray (v, &a));
+  return 0;
+}
+
+/* N > 1: the own rows of B and a copy of G on every process, G's LU
+ * there (after each new G). */
+static int
+update_local (lac_petsc_saddle *sv)
+{
+  PC pc;
+  PetscInt nl, k;
+  TRY (MatGetLocalSize (sv->B, &nl, NULL));
+  TRY (MatGetSize (sv->B, NULL, &k));
+  TRY (MatMPIAIJGetLocalMat (sv->B, sv->Bl ? MAT_REUSE_MATRIX
+                             : MAT_INITIAL_MATRIX, &sv->Bl));
+  TRY (MatCreateRedundantMatrix (sv->G, sv->size, MPI_COMM_NULL, sv->Gl
+                                 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
+                                 &sv->Gl));
+  if (!sv->kl)
+    {
+      TRY (KSPCreate (PetscObjectComm ((PetscObject) sv->Gl), &sv->kl));
+      TRY (KSPSetOptionsPrefix (sv->kl, "gram_local_"));
+      TRY (KSPSetType (sv->kl, KSPPREONLY));
+      TRY (KSPGetPC (sv->kl, &pc));
+      TRY (PCSetType (pc, PCLU));
+      TRY (KSPSetFromOptions (sv->kl));
+      TRY (MatCreateVecs (sv->Gl, &sv->sl, &sv->tg));
+      TRY (VecCreateSeqWithArray (PETSC_COMM_SELF, 1, nl, NULL, &sv->vl));
+      TRY (VecCreateSeq (PETSC_COMM_SELF, nl, &sv->ul));
+      TRY (VecCreateSeq (PETSC_COMM_SELF, k, &sv->tl));
+    }
+  TRY (KSPSetOperators (sv->kl, sv->Gl, sv->Gl));
+  return LAC_SUCCESS;
+}
+
+/* The operator of the projected CG: y = P K x. */
+static PetscErrorCode
+projected_op (Mat A, Vec x, Vec y)
+{
+  lac_petsc_saddle *sv;
+  PetscCall (MatShellGetContext (A, &sv));
+  PetscCall (MatMult (sv->K, x, y));
+  return project (sv, y);
+}
+
+/* Its preconditioner: z = P M r, M one V-cycle of multigrid on K. */
+static PetscErrorCode
+projected_pc (PC pc, Vec r, Vec z)
+{
+  lac_petsc_saddle *sv;
+  PetscCall (PCShellGetContext (pc, &sv));
+  PetscCall (PCApply (sv->pg, r, z));
+  return project (sv, z);
+}
+
+/* ---- the solvers -------------------------------------------------------- */
+
+/* K alone: conjugate gradients and GAMG (prefix elast_). */
+static int
+create_alone (lac_petsc_saddle *sv)
+{
+  PC pc;
+  TRY (KSPCreate (PETSC_COMM_WORLD, &sv->ku));
+  TRY (KSPSetOptionsPrefix (sv->ku, "elast_"));
+  TRY (KSPSetOperators (sv->ku, sv->K, sv->K));
+  TRY (KSPSetType (sv->ku, KSPCG));
+  TRY (KSPSetNormType (sv->ku, KSP_NORM_UNPRECONDITIONED));
+  TRY (KSPGetPC (sv->ku, &pc));
+  TRY (PCSetType (pc, PCGAMG));
+  TRY (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
+  TRY (KSPSetFromOptions (sv->ku));
+  TRY (MatCreateVecs (sv->K, NULL, &sv->ru));
+  return LAC_SUCCESS;
+}
+
+/* projected: the multigrid of K (prefix elast_), the solver of B^T B + D
+ * (prefix gram_: redundant LU), CG on P K (no prefix). */
+static int
+create_projected (lac_petsc_saddle *sv)
+{
+  PetscInt nl, n;
+  PC pc;
+  TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
+  TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
+  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  TRY (PCSetType (sv->pg, PCGAMG));
+  TRY (PCGAMGSetReuseInterpolation (sv->pg, PETSC_TRUE));
+  TRY (PCSetFromOptions (sv->pg));
+  TRY (KSPCreate (PETSC_COMM_WORLD, &sv->kg));
+  TRY (KSPSetOptionsPrefix (sv->kg, "gram_"));
+  TRY (KSPSetType (sv->kg, KSPPREONLY));
+  TRY (KSPGetPC (sv->kg, &pc));
+  TRY (PCSetType (pc, PCREDUNDANT));
+  TRY (KSPSetFromOptions (sv->kg));
+  TRY (MatGetLocalSize (sv->K, &nl, NULL));
+  TRY (MatGetSize (sv->K, &n, NULL));
+  TRY (MatCreateShell (PETSC_COMM_WORLD, nl, nl, n, n, sv, &sv->Ah));
+  TRY (MatShellSetOperation (sv->Ah, MATOP_MULT, (void (*) (void))
+                             projected_op));
+  TRY (KSPCreate (PETSC_COMM_WORLD, &sv->kp));
+  TRY (KSPSetOperators (sv->kp, sv->Ah, sv->Ah));
+  TRY (KSPSetType (sv->kp, KSPCG));
+  TRY (KSPSetNormType (sv->kp, KSP_NORM_UNPRECONDITIONED));
+  TRY (KSPSetFromOptions (sv->kp));
+  TRY (KSPGetPC (sv->kp, &pc));
+  TRY (PCSetType (pc, PCSHELL));
+  TRY (PCShellSetContext (pc, sv));
+  TRY (PCShellSetApply (pc, projected_pc));
+  TRY (MatCreateVecs (sv->B, &sv->sk, &sv->u0));
+  TRY (VecDuplicate (sv->sk, &sv->tk));
+  TRY (VecDuplicate (sv->u0, &sv->bu));
+  TRY (VecDuplicate (sv->u0, &sv->tu));
+  TRY (VecDuplicate (sv->u0, &sv->ru));
+  return LAC_SUCCESS;
+}
+
+/* k x k diagonal matrix of the multipliers' layout (zeros). */
+static int
+create_diagonal (lac_petsc_saddle *sv, Mat *M)
+{
+  PetscInt kl, k, l0, l1;
+  TRY (MatGetLocalSize (sv->B, NULL, &kl));
+  TRY (MatGetSize (sv->B, NULL, &k));
+  TRY (MatCreateAIJ (PETSC_COMM_WORLD, kl, kl, k, k, 1, NULL, 0, NULL, M));
+  TRY (MatGetOwnershipRange (*M, &l0, &l1));
+  for (PetscInt i = l0; i < l1; i++)
+    TRY (MatSetValue (*M, i, i, 0.0, INSERT_VALUES));
+  TRY (MatAssemblyBegin (*M, MAT_FINAL_ASSEMBLY));
+  TRY (MatAssemblyEnd (*M, MAT_FINAL_ASSEMBLY));
+  return LAC_SUCCESS;
+}
+
+/* fieldsplit: the nest A = [K B; B^T D], its vectors, the Schur
+ * preconditioner Sp, and GMRES with the Schur factorization of
+ * PCFIELDSPLIT (no prefix; blocks fieldsplit_u_, fieldsplit_lambda_). */
+static int
+create_fieldsplit (lac_petsc_saddle *sv)
+{
+  Mat blocks[4];
+  PC pc;
+  IS is[2];
+  int status;
+  if ((status = create_diagonal (sv, &sv->D))
+      || (status = create_diagonal (sv, &sv->Sp))
+      || (status = default_option ("-fieldsplit_u_ksp_type", "preonly"))
+      || (status = default_option ("-fieldsplit_u_pc_type", "gamg"))
+      || (status = default_option ("-fieldsplit_u_pc_gamg_reuse_interpolation",
+                                   "true"))
+      || (status = default_option ("-fieldsplit_lambda_ksp_type", "preonly"))
+      || (status = default_option ("-fieldsplit_lambda_pc_type", "jacobi")))
+    return status;
+  TRY (MatCreateTranspose (sv->B, &sv->Bt));
+  blocks[0] = sv->K, blocks[1] = sv->B, blocks[2] = sv->Bt, blocks[3] = sv->D;
+  TRY (MatCreateNest (PETSC_COMM_WORLD, 2, NULL, 2, NULL, blocks, &sv->A));
+  TRY (MatCreateVecs (sv->A, &sv->x, &sv->b));
+  TRY (VecDuplicate (sv->b, &sv->r));
+  TRY (VecDuplicate (sv->b, &sv->dx));
+  TRY (KSPCreate (PETSC_COMM_WORLD, &sv->ks));
+  TRY (KSPSetOperators (sv->ks, sv->A, sv->A));
+  TRY (KSPSetType (sv->ks, KSPGMRES));
+  TRY (KSPGMRESSetRestart (sv->ks, 100));
+  TRY (KSPSetPCSide (sv->ks, PC_RIGHT));
+  TRY (KSPSetNormType (sv->ks, KSP_NORM_UNPRECONDITIONED));
+  TRY (KSPGetPC (sv->ks, &pc));
+  TRY (PCSetType (pc, PCFIELDSPLIT));
+  TRY (MatNestGetISs (sv->A, is, NULL));
+  TRY (PCFieldSplitSetIS (pc, "u", is[0]));
+  TRY (PCFieldSplitSetIS (pc, "lambda", is[1]));
+  TRY (PCFieldSplitSetType (pc, PC_COMPOSITE_SCHUR));
+  TRY (PCFieldSplitSetSchurFactType (pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
+  TRY (PCFieldSplitSetSchurPre (pc, PC_FIELDSPLIT_SCHUR_PRE_USER, sv->Sp));
+  TRY (KSPSetFromOptions (sv->ks));
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
+                         lac_saddle_mat B, lac_petsc_saddle **out)
+{
+  lac_petsc_saddle *sv;
+  int status, rank;
+  *out = NULL;
+  if (!(sv = lac_calloc (1, sizeof *sv)))
+    LAC_ERROR (LAC_ENOMEM, "the Krylov solvers");
+  sv->method = method;
+  sv->K = K;
+  sv->B = B;
+  lac_petsc_rank (&rank, &sv->size);
+  status = !B ? create_alone (sv) : method == LAC_SADDLE_FIELDSPLIT
+           ? create_fieldsplit (sv) : create_projected (sv);
+  if (status)
+    {
+      lac_petsc_saddle_free (sv);
+      return status;
+    }
+  *out = sv;
+  return LAC_SUCCESS;
+}
+
+/* ---- new values --------------------------------------------------------- */
+
+/* projected: G = B^T B + D, its solver, and the multigrid of the new K. */
+static int
+update_projected (lac_petsc_saddle *sv, Vec d)
+{
+  int status;
+  TRY (MatTransposeMatMult (sv->B, sv->B, sv->G ? MAT_REUSE_MATRIX
+                            : MAT_INITIAL_MATRIX, PETSC_DEFAULT, &sv->G));
+  TRY (MatDiagonalSet (sv->G, d, ADD_VALUES));
+  TRY (KSPSetOperators (sv->kg, sv->G, sv->G));
+  if (sv->size > 1 && (status = update_local (sv)))
+    return status;
+  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  return LAC_SUCCESS;
+}
+
+/* fieldsplit: D, Sp and the nest that holds them. */
+static int
+update_fieldsplit (lac_petsc_saddle *sv, Vec d, Vec sp)
+{
+  TRY (MatDiagonalSet (sv->D, d, INSERT_VALUES));
+  TRY (MatDiagonalSet (sv->Sp, sp, INSERT_VALUES));
+  TRY (MatAssemblyBegin (sv->A, MAT_FINAL_ASSEMBLY));
+  TRY (MatAssemblyEnd (sv->A, MAT_FINAL_ASSEMBLY));
+  TRY (KSPSetOperators (sv->ks, sv->A, sv->A));
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_saddle_update (lac_petsc_saddle *sv, lac_saddle_vec d,
+                         lac_saddle_vec sp)
+{
+  if (sv->ku)
+    {
+      TRY (KSPSetOperators (sv->ku, sv->K, sv->K));
+      return LAC_SUCCESS;
+    }
+  if (!d || (sv->ks && !sp))
+    LAC_ERROR (LAC_EINVAL, "the diagonal of the multipliers is missing");
+  return sv->ks ? update_fieldsplit (sv, d, sp) : update_projected (sv, d);
+}
+
+/* ---- the solves --------------------------------------------------------- */
+
+/* After KSPSolve: iterations and reason into c; the relative true
+ * residual res is the caller's. */
+static int
+check_ksp (KSP ksp, double res, const char *what, lac_saddle_counts *c)
+{
+  KSPConvergedReason why;
+  PetscInt its;
+  TRY (KSPGetIterationNumber (ksp, &its));
+  TRY (KSPGetConvergedReason (ksp, &why));
+  c->iterations += (int) its;
+  c->solves++;
+  c->residual = res;
+  if (why < 0)
+    LAC_ERROR (why == KSP_DIVERGED_INDEFINITE_PC
+               || why == KSP_DIVERGED_INDEFINITE_MAT ? LAC_ESING
+               : LAC_EMAXITER, "%s: %s after %d iterations, relative "
+               "residual %.3g", what, KSPConvergedReasons[why], (int) its,
+               res);
+  return LAC_SUCCESS;
+}
+
+/* ||b - A x|| / ||b|| (r: scratch). */
+static int
+true_residual (Mat A, Vec b, Vec x, Vec r, double *res)
+{
+  PetscReal nb, nr;
+  TRY (MatMult (A, x, r));
+  TRY (VecAYPX (r, -1.0, b));
+  TRY (VecNorm (r, NORM_2, &nr));
+  TRY (VecNorm (b, NORM_2, &nb));
+  *res = nb > 0 ? nr / nb : nr;
+  return LAC_SUCCESS;
+}
+
+/* K alone: K u = f to rtol (u: the start and the solution). */
+static int
+solve_alone (lac_petsc_saddle *sv, Vec f, double rtol, const char *what,
+             Vec u, lac_saddle_counts *c)
+{
+  double res;
+  int status;
+  TRY (KSPSetInitialGuessNonzero (sv->ku, PETSC_TRUE));
+  TRY (KSPSetTolerances (sv->ku, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (KSPSolve (sv->ku, f, u));
+  if ((status = true_residual (sv->K, f, u, sv->ru, &res)))
+    return status;
+  return check_ksp (sv->ku, res, what, c);
+}
+
+/* projected, before CG: u0 = B (B^T B + D)^-1 g with B^T u0 = g where D
+ * = 0, the right-hand side P (f - K u0) in bu, the start P (u - u0). */
+static PetscErrorCode
+projected_start (lac_petsc_saddle *sv, Vec f, Vec g, Vec u)
+{
+  PetscCall (KSPSolve (sv->kg, g, sv->sk));
+  PetscCall (MatMult (sv->B, sv->sk, sv->u0));
+  PetscCall (MatMult (sv->K, sv->u0, sv->bu));
+  PetscCall (VecAYPX (sv->bu, -1.0, f));
+  PetscCall (project (sv, sv->bu));
+  PetscCall (VecAXPY (u, -1.0, sv->u0));
+  return project (sv, u);
+}
+
+/* projected, after CG: u = u0 + x, l = (B^T B + D)^-1 B^T (f - K u), and
+ * the relative true residual, each block in its own unit (the larger of
+ * the two): the forces f - K u - B l against f (2-norms, as the CG's),
+ * the constraints g - B^T u against |g| + |B^T| |u| (max-norms). */
+static PetscErrorCode
+projected_finish (lac_petsc_saddle *sv, Vec f, Vec g, Vec u, Vec l,
+                  double *res)
+{
+  PetscReal r1, r2, b1, b2, nB, nU;
+  PetscCall (VecAXPY (u, 1.0, sv->u0));
+  PetscCall (MatMult (sv->K, u, sv->ru));
+  PetscCall (VecAYPX (sv->ru, -1.0, f));
+  PetscCall (MatMultTranspose (sv->B, sv->ru, sv->tk));
+  PetscCall (KSPSolve (sv->kg, sv->tk, l));
+  PetscCall (MatMult (sv->B, l, sv->tu));
+  PetscCall (VecAXPY (sv->ru, -1.0, sv->tu));
+  PetscCall (VecNorm (sv->ru, NORM_2, &r1));
+  PetscCall (MatMultTranspose (sv->B, u, sv->tk));
+  PetscCall (VecAYPX (sv->tk, -1.0, g));
+  PetscCall (VecNorm (sv->tk, NORM_INFINITY, &r2));
+  PetscCall (VecNorm (f, NORM_2, &b1));
+  PetscCall (VecNorm (g, NORM_INFINITY, &b2));
+  PetscCall (MatNorm (sv->B, NORM_1, &nB));              /* |B^T|_inf */
+  PetscCall (VecNorm (u, NORM_INFINITY, &nU));
+  *res = fmax (r1 / fmax (b1, 1e-300), r2 / fmax (b2 + nB * nU, 1e-300));
+  return 0;
+}
+
+/* projected: CG on the null space of B^T, to rtol of the forces. */
+static int
+solve_projected (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
+                 const char *what, Vec u, Vec l, lac_saddle_counts *c)
+{
+  PetscReal b1;
+  double res = 0;
+  TRY (projected_start (sv, f, g, u));
+  TRY (VecNorm (f, NORM_2, &b1));           /* the CG's residual: forces */
+  TRY (KSPSetInitialGuessNonzero (sv->kp, PETSC_TRUE));
+  TRY (KSPSetTolerances (sv->kp, 0.0, rtol * b1, PETSC_DEFAULT,
+                         KSP_MAXIT));
+  TRY (KSPSolve (sv->kp, sv->bu, u));
+  TRY (projected_finish (sv, f, g, u, l, &res));
+  return check_ksp (sv->kp, res, what, c);
+}
+
+/* fieldsplit: the blocks of a vector of A, in (to = 1) or out of it. */
+static int
+nest_blocks (lac_petsc_saddle *sv, Vec v, Vec vu, Vec vl, int to)
+{
+  IS is[2];
+  Vec part[2] = { vu, vl }, sub;
+  TRY (MatNestGetISs (sv->A, is, NULL));
+  for (int j = 0; j < 2; j++)
+    {
+      TRY (VecGetSubVector (v, is[j], &sub));
+      TRY (to ? VecCopy (part[j], sub) : VecCopy (sub, part[j]));
+      TRY (VecRestoreSubVector (v, is[j], &sub));
+    }
+  return LAC_SUCCESS;
+}
+
+/* fieldsplit: A as a whole by GMRES, then one correction: GMRES
+ * satisfies B^T u = g only to its tolerance relative to the forces (the
+ * projected CG exactly), so x += A^-1 r once, to CORRECTION_RTOL. */
+static int
+solve_fieldsplit (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
+                  const char *what, Vec u, Vec l, lac_saddle_counts *c)
+{
+  char part[200];
+  double res;
+  int status;
+  if ((status = nest_blocks (sv, sv->b, f, g, 1))
+      || (status = nest_blocks (sv, sv->x, u, l, 1)))
+    return status;
+  TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_TRUE));
+  TRY (KSPSetTolerances (sv->ks, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (KSPSolve (sv->ks, sv->b, sv->x));
+  if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
+      || (status = check_ksp (sv->ks, res, what, c)))
+    return status;
+  TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_FALSE));
+  TRY (KSPSetTolerances (sv->ks, CORRECTION_RTOL, 0.0, PETSC_DEFAULT,
+                         KSP_MAXIT));
+  TRY (KSPSolve (sv->ks, sv->r, sv->dx));
+  TRY (VecAXPY (sv->x, 1.0, sv->dx));
+  snprintf (part, sizeof part, "%s, correction", what);
+  if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
+      || (status = check_ksp (sv->ks, res, part, c)))
+    return status;
+  return nest_blocks (sv, sv->x, u, l, 0);
+}
+
+int
+lac_petsc_saddle_solve (lac_petsc_saddle *sv, lac_saddle_vec f,
+                        lac_saddle_vec g, double rtol, const char *what,
+                        lac_saddle_vec u, lac_saddle_vec l,
+                        lac_saddle_counts *c)
+{
+  *c = (lac_saddle_counts) { 0, 0, 0.0 };
+  if (sv->ku)
+    return solve_alone (sv, f, rtol, what, u, c);
+  if (!g || !l)
+    LAC_ERROR (LAC_EINVAL, "%s: the constraints or the multipliers are "
+               "missing", what);
+  if (sv->kp)
+    return solve_projected (sv, f, g, rtol, what, u, l, c);
+  return solve_fieldsplit (sv, f, g, rtol, what, u, l, c);
+}
+
+int
+lac_petsc_saddle_types (const lac_petsc_saddle *sv, char *krylov, char *pc,
+                        size_t size)
+{
+  KSPType kt;
+  PCType pt;
+  PC p;
+  PetscBool set;
+  TRY (KSPGetType (sv->ks ? sv->ks : sv->kp ? sv->kp : sv->ku, &kt));
+  snprintf (krylov, size, "%s", kt);
+  if (sv->ks)
+    {
+      snprintf (pc, size, "gamg");
+      TRY (PetscOptionsGetString (NULL, NULL, "-fieldsplit_u_pc_type", pc,
+                                  size, &set));
+      return LAC_SUCCESS;
+    }
+  if (sv->pg)
+    p = sv->pg;
+  else
+    TRY (KSPGetPC (sv->ku, &p));
+  TRY (PCGetType (p, &pt));
+  snprintf (pc, size, "%s", pt);
+  return LAC_SUCCESS;
+}
+
+#else /* LAC_HAVE_PETSC */
+
+typedef int lac_petsc_saddle_unused;   /* nothing without PETSc */
+
+#endif /* LAC_HAVE_PETSC */
