@@ -24,6 +24,11 @@
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
 #                    "lac: ..." and exit status 1;
+#   large-deformation  the large-deformation loop through petsc: the 3D
+#                    patch test (hex8, a body held by contact alone) and the
+#                    Hertz cylinder (2D, an obstacle), two load steps each,
+#                    on 1 process and on mpirun -n 2: every number of the
+#                    summary equal to the direct run's to 1e-8 relative;
 #   no-petsc         a build without PETSc: --strategy petsc and --solver
 #                    petsc fail with the apt-get line (the other cases are
 #                    then skipped).
@@ -254,14 +259,60 @@ if [ "$have_petsc" = 1 ]; then
     petsc_fail "options unused" "want exit 0 and the warnings, got $rc $rc2: $(cat "$C/opt-unused.err" "$C/opt-typo.err")"
   fi
 
-  # ---- large deformation: refused, not solved by CHOLMOD ---------------
-  env "$PETSC_ENV" "$LAC" run chapters/10-large-deformation/ring.scene --strategy petsc --quiet --no-output \
-    > "$C/large.out" 2> "$C/large.err"
-  rc=$?
-  if [ "$rc" = 1 ] && [ "$(wc -l < "$C/large.err")" -eq 1 ] \
-     && grep -q "^lac: .*--strategy petsc: the large-deformation loop .*dense, schur or saddle" "$C/large.err"; then
-    petsc_ok "large deformation refused"
-  else
-    petsc_fail "large deformation refused" "want exit 1 and one line naming the strategies, got $rc: $(head -3 "$C/large.err")"
-  fi
+  # ---- large deformation: the same loop through petsc -----------------
+  # petsc_ld NAME SCENE ARGS...: the scene's own strategy, --strategy petsc
+  # on 1 process and on mpirun -n 2 (when there): every number of the
+  # summary equal to 1e-8 relative (a vector: of its largest component),
+  # and the petsc runs report their processes.
+  petsc_ld () {
+    ld_name=$1 ld_scene=$2
+    shift 2
+    petsc_run "$ld_name.direct" "$ld_scene" "$@" || return
+    petsc_run "$ld_name.petsc" "$ld_scene" "$@" --strategy petsc || return
+    ld_runs="petsc"
+    if [ -n "${MPIRUN:-}" ]; then    # set by the mpi cases when mpirun is there
+      # shellcheck disable=SC2086
+      if env "$PETSC_ENV" $MPIRUN -n 2 "$LAC" run "$ld_scene" "$@" --strategy petsc --quiet \
+           --no-output > "$C/$ld_name.np2.out" 2> "$C/$ld_name.np2.err"; then
+        ld_runs="petsc np2"
+      else
+        petsc_fail "large-deformation $ld_name -n 2" "mpirun -n 2 failed: $(tail -1 "$C/$ld_name.np2.err")"
+      fi
+    fi
+    for r in $ld_runs; do
+      np=1
+      [ "$r" = np2 ] && np=2
+      if awk -v np="$np" '
+        function num(v) { return v ~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/ }
+        FNR == 1 { f++ }
+        { k = $1; sub(/^[^=]* = /, ""); val[f, k] = $0 }
+        f == 1 && k != "" { keys[k] = 1 }
+        END {
+          bad = ""; n = 0
+          for (k in keys) {
+            m = split(val[1, k], b, " "); split(val[2, k], a, " ")
+            if (!num(b[1])) continue
+            big = 0
+            for (i = 1; i <= m; i++) { x = b[i] < 0 ? -b[i] : b[i]; if (x > big) big = x }
+            for (i = 1; i <= m; i++) { d = a[i] - b[i]; if (d < 0) d = -d
+              if (!(a[i] != "" && d <= 1e-8 * big)) { bad = bad " " k ": " val[2, k] " against " val[1, k] ";"; break } }
+            n++
+          }
+          if (val[2, "processes"] != np) bad = bad " processes = " val[2, "processes"] " (want " np ")"
+          if (bad != "" || n < 10) { print n " values;" bad > "/dev/stderr"; exit 1 } }' \
+          "$C/$ld_name.direct.out" "$C/$ld_name.$r.out" 2> "$C/$ld_name.$r.diff"; then
+        petsc_ok "large-deformation $ld_name $r"
+      else
+        petsc_fail "large-deformation $ld_name $r" "against the direct run: $(cat "$C/$ld_name.$r.diff")"
+      fi
+    done
+  }
+  # the 3D patch test in large deformation (a body held by contact alone),
+  # two load steps; the Hertz cylinder on a rigid flat (2D, an obstacle)
+  sed '/^\[exact\]/,$d' "$D8/taylor3d.scene" > "$C/taylor3d-ld.scene"
+  cp "$D8/taylor3d.geo" "$C/"
+  petsc_ld taylor3d-ld "$C/taylor3d-ld.scene" --set element=hex8 --set level=1 \
+    --set scene.large_deformation=yes --set steps.n=2
+  petsc_ld hertz-cylinder-ld chapters/10-large-deformation/hertz-cylinder.scene \
+    --set scene.large_deformation=yes --set steps.n=2
 fi

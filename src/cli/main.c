@@ -121,7 +121,7 @@ static const char *help_text =
   "                    Dirichlet conditions), augmented, split (bodies\n"
   "                    held by contact alone), saddle, or petsc (Krylov\n"
   "                    methods and algebraic multigrid, no factorization,\n"
-  "                    on N MPI processes; also without contact; not with\n"
+  "                    on N MPI processes; also without contact and in\n"
   "                    large deformation); overrides the scene's [contact]\n"
   "                    strategy (chapters 07, 13)\n"
   "  --petsc-options \"...\"  PETSc options for the petsc strategy; they win\n"

@@ -43,38 +43,9 @@ large (const lac_run *r)
   return r->scene->scene.large_deformation;
 }
 
-/* The large-deformation loop solves with the dense, schur or saddle
- * strategy, chosen by [scene] solver (lac_run_nonlinear.c); a type that
- * is for small strain (petsc), asked for on the command line or in
- * [contact], is refused, not replaced. */
-static int
-check_large_strategy (const lac_run *r)
-{
-  const lac_scene *sc = r->scene;
-  int scene = sc->ncontact ? sc->contact[sc->contact_loop].strategy
-              : LAC_STRATEGY_AUTO;
-  const lac_strategy_type *t = lac_strategy_type_of (r->opts.strategy
-                                                     ? r->opts.strategy
-                                                     : scene);
-  static const char why[] = "the large-deformation loop ([scene] "
-    "large_deformation = yes) solves with the dense, schur or saddle "
-    "strategy, chosen by [scene] solver = dense, cholmod or umfpack";
-  if (!large (r) || !t || !t->small_strain)
-    return LAC_SUCCESS;
-  if (r->opts.strategy)
-    LAC_ERROR (LAC_EINVAL, "--strategy %s: %s; %s is for small strain",
-               t->name, why, t->name);
-  return lac_scene_error (sc, &sc->contact[sc->contact_loop].sec,
-                          "strategy", LAC_EINVAL, "%s: %s; %s is for small "
-                          "strain", t->name, why, t->name);
-}
-
 static int
 stage_mesh (lac_run *r)
 {
-  int status = check_large_strategy (r);
-  if (status)
-    return status;
   return lac_run_mesh (r->scene, r->model, r->opts.strategy,
                        r->opts.max_memory, &r->mesh, r->progress,
                        sizeof r->progress);

@@ -209,6 +209,23 @@ nl_strategy (const lac_scene *sc, int strategy, size_t nfree)
   return lac_strategy_choose_factor (of_solver[sc->scene.solver], nfree);
 }
 
+/* The loop's strategy, made now to give it the coordinates: the rigid
+ * motions of the current ones (lac_nl's x = X + U, read at each new
+ * pattern of the system) are the near-null space of K_T for the
+ * multigrid of petsc (chapter 13: on the CI ring 90 iterations per solve
+ * with them, 106 with the reference coordinates, 260 without); the other
+ * types ignore them.  Never given a mesh (lac_strategy_set_mesh): the
+ * cells' assembly is linear elastic, K_T comes from lac_nl. */
+static int
+nl_strategy_alloc (lac_run_nl *nl, int dim, lac_strategy_kind kind)
+{
+  if (!(nl->ls->loop->strategy = lac_strategy_alloc (kind)))
+    return LAC_EDEP;                   /* the message says which and why */
+  lac_strategy_set_coordinates (nl->ls->loop->strategy, dim,
+                                nl->model->cur.x);
+  return LAC_SUCCESS;
+}
+
 static int
 nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
           const lac_run_material *mat, const lac_run_setup *setup,
@@ -245,7 +262,7 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
       || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
     return LAC_ENOMEM;       /* each pair's shrink fit: t delta, from its
                                 offset (lac_run_setup.c, make_pair) */
-  return LAC_SUCCESS;
+  return nl_strategy_alloc (nl, m->dim, o.kind);
 }
 
 /* ---- one load step per call --------------------------------------------- */

@@ -396,6 +396,8 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
   if ((status = lac_hyper_cauchy_nodal (in->mesh, &in->mat->hyper, in->u,
                                         NULL, res->sigma, res->vm))
       || (status = nl_summary (in, res))
+      || (status = lac_run_strategy_summary (in->nl->ls->loop->strategy,
+                                             &res->summary))
       || (status = reactions (in, &res->summary)))
     return status;
   snprintf (progress, size, "Cauchy stresses, von Mises; %zu Newton "

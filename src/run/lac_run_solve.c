@@ -199,6 +199,16 @@ lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum)
                           sol->krylov_residual);
 }
 
+int
+lac_run_strategy_summary (const lac_strategy *s, lac_summary *sum)
+{
+  lac_run_solution sol;
+  memset (&sol, 0, sizeof sol);
+  if (s)
+    krylov_counts (s, &sol);
+  return lac_run_solve_summary (&sol, sum);
+}
+
 /* One iteration of [LAC Alg. 1]; LAC_CONTINUE until it settles. */
 static int
 contact_iterate (const lac_scene *sc, const lac_run_setup *setup,

@@ -51,5 +51,8 @@ void lac_run_solution_clear (lac_run_solution *sol);
 /* The summary lines of a strategy that factorizes nothing (processes,
  * solver_iterations, solver_residual); nothing for the direct ones. */
 int lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum);
+/* The same for the strategy s of a large-deformation loop (NULL:
+ * nothing). */
+int lac_run_strategy_summary (const lac_strategy *s, lac_summary *sum);
 
 #endif /* LAC_RUN_SOLVE_H */

@@ -29,25 +29,26 @@
 #define TOL_KRYLOV 1e-11     /* solve, so only above this backward error */
 
 /* Each row: name, operations, the scenes it applies to, the size up to
- * which auto takes it; what it factorizes, falls back unasked, refused
- * by the large-deformation loop, solves on the MPI processes
- * (lac_strategy_type).  Auto takes the first row that applies. */
+ * which auto takes it; what it factorizes, falls back unasked, solves on
+ * the MPI processes (lac_strategy_type).  Auto takes the first row that
+ * applies; every row solves both loops, small strain and large
+ * deformation. */
 const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
   { "auto", NULL, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 0, 0 },
+    LAC_FACTOR_NONE, 0, 0 },
   { "dense", &lac_saddle_dense_ops, LAC_BODIES_ANY, LAC_STRATEGY_DENSE_MAX,
-    LAC_FACTOR_DENSE, 0, 0, 0 },
+    LAC_FACTOR_DENSE, 0, 0 },
   { "schur", &lac_schur_ops, LAC_BODIES_HELD, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 0, 0, 0 },
+    LAC_FACTOR_CHOLESKY, 0, 0 },
   { "augmented", &lac_augmented_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
+    LAC_FACTOR_CHOLESKY, 1, 0 },
   { "saddle", &lac_saddle_lu_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_LU, 0, 0, 0 },
+    LAC_FACTOR_LU, 0, 0 },
   { "petsc", &lac_petsc_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 1, 1 },
+    LAC_FACTOR_NONE, 0, 1 },
   { "split", &lac_split_ops, LAC_BODIES_FLOATING, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
-  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0, 0 }
+    LAC_FACTOR_CHOLESKY, 1, 0 },
+  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0 }
 };
 
 /* The type every failed Cholesky factorization falls back to. */

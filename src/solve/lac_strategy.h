@@ -124,7 +124,6 @@ typedef struct lac_strategy_type
                                    refinement only above 1e-11          */
   int falls_back;               /* a failed Cholesky factorization falls
                                    back to saddle unasked               */
-  int small_strain;             /* refused by the large-deformation loop */
   int processes;                /* solves on N MPI processes: MPI and
                                    PETSc started before the scene, the
                                    processes 1..N-1 serving process 0   */

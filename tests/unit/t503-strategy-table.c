@@ -133,7 +133,7 @@ static const lac_strategy_ops gauss_ops = {
   .solve = gauss_solve, .get_counts = gauss_get_counts
 };
 static const lac_strategy_type gauss_type = {
-  "gauss", &gauss_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_DENSE, 0, 0, 0
+  "gauss", &gauss_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_DENSE, 0, 0
 };
 
 /* "failing": a Cholesky that always fails, falling back unasked or not. */
@@ -143,10 +143,10 @@ static const lac_strategy_ops failing_ops = {
   .factor_failed = failing_factor_failed
 };
 static const lac_strategy_type failing_type = {
-  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 1, 0, 0
+  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 1, 0
 };
 static const lac_strategy_type failing_asked_type = {
-  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 0, 0, 0
+  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 0, 0
 };
 
 /* ---- a small contact problem: t501's chain of springs ------------------- */
