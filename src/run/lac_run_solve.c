@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "io/lac_scene_query.h"
 #include "run/lac_run_scene.h"
 
 #define NEWTON_TOL 1e-10
@@ -139,7 +140,8 @@ young_min (const lac_scene *sc)
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
-contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
+contact_start (const lac_scene *sc, int strategy,
+               const lac_strategy_context *ctx, lac_run_setup *setup,
                lac_run_system *sys, lac_run_solution *sol)
 {
   const lac_scene_contact *c = &sc->contact[sc->contact_loop];
@@ -151,8 +153,9 @@ contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
   sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
                                    sys->nfree, sys->N,
                                    (const char *const *) sys->N_what };
-  sol->strategy = lac_strategy_choose (want, sys->ndof,
-                                       setup->data.all->k, sys->nfree);
+  sol->strategy = lac_strategy_choose_in (want, sys->ndof,
+                                          setup->data.all->k, sys->nfree,
+                                          ctx);
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
@@ -245,20 +248,40 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
   return LAC_CONTINUE;
 }
 
+/* Without contact and nothing asked for ([scene] solver, a strategy):
+ * the strategy auto takes in the run ctx if it factorizes nothing (N > 1
+ * MPI processes, or a factor that does not fit), else 0: the scene's
+ * solver. */
+static int
+plain_auto (const lac_scene *sc, const lac_strategy_context *ctx,
+            const lac_run_system *sys)
+{
+  lac_strategy_kind kind = lac_strategy_choose_in (LAC_STRATEGY_AUTO,
+                                                   sys->ndof, 0, 0, ctx);
+  const lac_strategy_type *t = lac_strategy_type_of (kind);
+  if (lac_scene_key_line (&sc->scene.sec, "solver")
+      || !t || t->factor != LAC_FACTOR_NONE)
+    return LAC_STRATEGY_AUTO;
+  return kind;
+}
+
 int
-lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
+lac_run_solve (const lac_scene *sc, int strategy,
+               const lac_strategy_context *ctx, lac_run_setup *setup,
                lac_run_system *sys, lac_run_solution *sol, char *progress,
                size_t size)
 {
   int status;
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
+  if (!setup->data.all && !strategy)
+    strategy = plain_auto (sc, ctx, sys);
   if (!setup->data.all)
     return strategy != LAC_STRATEGY_AUTO
            ? solve_plain_strategy (strategy, sys, sol, progress, size)
            : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
-      && (status = contact_start (sc, strategy, setup, sys, sol)))
+      && (status = contact_start (sc, strategy, ctx, setup, sys, sol)))
     return status;
   status = contact_iterate (sc, setup, sys, sol, progress, size);
   sys->contact = setup->data.all;       /* the loop may have paired again */
