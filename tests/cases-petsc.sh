@@ -225,7 +225,7 @@ if [ "$have_petsc" = 1 ]; then
     if env "$PETSC_ENV" $MPIRUN -n 2 "$LAC" run "$D8/taylor3d.scene" --set element=hex8 --set level=1 \
          --no-output > "$C/auto-mpi.out" 2> "$C/auto-mpi.err" \
        && [ "$(petsc_value "$C/auto-mpi.out" processes)" = 2 ] \
-       && grep -q "solve .*projected cg + gamg on K_W, 2 processes" "$C/auto-mpi.err"; then
+       && grep -q "solve .*projected cg + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
       petsc_ok "auto-mpi petsc"
       [ -f "$C/taylor3d-hex8.direct.out" ] && petsc_same "auto-mpi vs direct" \
         "$C/auto-mpi.out" "$C/taylor3d-hex8.direct.out" lambda_min lambda_max max_u

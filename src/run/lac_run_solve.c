@@ -63,8 +63,10 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
       lac_strategy_get_counts (s, &c);
     }
   if (!status && sol->krylov)
-    snprintf (progress, size, "%s: %s, %d iterations, true residual %.1e",
-              lac_strategy_name (kind), lac_strategy_method (s),
+    snprintf (progress, size, "%s: %s%s%s%s, %d iterations, true "
+              "residual %.1e", lac_strategy_name (kind),
+              lac_strategy_method (s), sol->why ? " (" : "",
+              sol->why ? sol->why : "", sol->why ? ")" : "",
               c.last_iterations, c.last_residual);
   else if (!status)
     snprintf (progress, size, "%s, rcond %.1e", lac_strategy_method (s),
@@ -137,6 +139,19 @@ young_min (const lac_scene *sc)
   return E < HUGE_VAL ? E : 1.0;
 }
 
+/* Why auto took `kind` in the run ctx rather than by size (NULL: it
+ * did not), for the progress line. */
+static const char *
+auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
+          size_t k, size_t nfree, const lac_strategy_context *ctx)
+{
+  if (want != LAC_STRATEGY_AUTO
+      || kind == lac_strategy_choose (want, n, k, nfree))
+    return NULL;
+  return ctx->processes > 1 ? "auto: more than one MPI process"
+         : "auto: a Cholesky factor would not fit in --max-memory";
+}
+
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
@@ -159,6 +174,8 @@ contact_start (const lac_scene *sc, int strategy,
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
+  sol->why = auto_why (want, sol->strategy, sys->ndof, setup->data.all->k,
+                       sys->nfree, ctx);
   if ((status = lac_linear_model_init_set (&sol->lin, &sol->cs, &setup->set,
                                            &setup->data, sys->dir,
                                            young_min (sc), &model)))
@@ -223,9 +240,10 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
     {
       h = nw->nhist ? &nw->hist[nw->nhist - 1] : NULL;
       memcpy (sol->u, nw->U, sys->ndof * sizeof *sol->u);
-      snprintf (progress, size, "%s, active set: %zu iteration%s, %zu of "
-                "%zu multipliers active%s",
-                lac_strategy_method (nw->strategy), nw->nhist,
+      snprintf (progress, size, "%s%s%s%s, active set: %zu iteration%s, "
+                "%zu of %zu multipliers active%s",
+                lac_strategy_method (nw->strategy), sol->why ? " (" : "",
+                sol->why ? sol->why : "", sol->why ? ")" : "", nw->nhist,
                 nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
                 setup->data.all->k, sol->krylov && h ? "; last solve: "
                 : "");
@@ -274,8 +292,9 @@ lac_run_solve (const lac_scene *sc, int strategy,
   int status;
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
-  if (!setup->data.all && !strategy)
-    strategy = plain_auto (sc, ctx, sys);
+  if (!setup->data.all && !strategy
+      && (strategy = plain_auto (sc, ctx, sys)))
+    sol->why = auto_why (LAC_STRATEGY_AUTO, strategy, sys->ndof, 0, 0, ctx);
   if (!setup->data.all)
     return strategy != LAC_STRATEGY_AUTO
            ? solve_plain_strategy (strategy, sys, sol, progress, size)

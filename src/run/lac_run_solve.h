@@ -42,6 +42,9 @@ typedef struct lac_run_solution
   double krylov_residual;      /* the true relative residual of the last
                                   solve (before refinement)                */
   int processes;               /* MPI processes that solved                 */
+  const char *why;             /* static: why auto took the strategy from
+                                  the run (ctx), for the progress line;
+                                  NULL when by size or asked for           */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.
