@@ -19,6 +19,12 @@
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
 #                    the line "lac: ... process 1: failure injected ...";
+#   auto             the strategy auto (no --strategy): under mpirun -n 2
+#                    petsc on 2 processes, with the direct lambda; on one
+#                    process, with a --max-memory the Cholesky factor is
+#                    estimated not to fit in (the 3D patch test, n = 14),
+#                    petsc instead of the refusal, which stays when petsc
+#                    does not fit either;
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
@@ -218,6 +224,19 @@ if [ "$have_petsc" = 1 ]; then
     }
     petsc_fault 2 1
     petsc_fault 4 3
+
+    # ---- auto on 2 processes: petsc, with the direct answer ------------
+    # shellcheck disable=SC2086
+    if env "$PETSC_ENV" $MPIRUN -n 2 "$LAC" run "$D8/taylor3d.scene" --set element=hex8 --set level=1 \
+         --no-output > "$C/auto-mpi.out" 2> "$C/auto-mpi.err" \
+       && [ "$(petsc_value "$C/auto-mpi.out" processes)" = 2 ] \
+       && grep -q "solve .*projected cg + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
+      petsc_ok "auto-mpi petsc"
+      [ -f "$C/taylor3d-hex8.direct.out" ] && petsc_same "auto-mpi vs direct" \
+        "$C/auto-mpi.out" "$C/taylor3d-hex8.direct.out" lambda_min lambda_max max_u
+    else
+      petsc_fail "auto-mpi petsc" "want processes = 2 and the projected CG: $(grep -E 'solve|^lac: [^[]' "$C/auto-mpi.err" | tail -2)"
+    fi
   else
     petsc_fail "mpi" "mpirun not found (Debian: openmpi-bin)"
   fi
@@ -315,4 +334,40 @@ if [ "$have_petsc" = 1 ]; then
     --set scene.large_deformation=yes --set steps.n=2
   petsc_ld hertz-cylinder-ld chapters/10-large-deformation/hertz-cylinder.scene \
     --set scene.large_deformation=yes --set steps.n=2
+  # ---- auto when the factor does not fit: petsc, not a refusal ----------
+  # 18,864 dofs: about 0.27 GB with a Cholesky factor, 0.19 GB with
+  # petsc (src/io/lac_mesh_gmsh_estimate.c); --max-memory 230M between.
+  NOFIT="--set element=hex8 --set mesh.numbers=n=14"
+  # shellcheck disable=SC2086
+  if petsc_run auto-nofit "$D8/taylor3d.scene" $NOFIT --max-memory 230M \
+     && petsc_run auto-fit "$D8/taylor3d.scene" $NOFIT; then
+    if [ "$(petsc_value "$C/auto-nofit.out" processes)" = 1 ] \
+       && [ -n "$(petsc_value "$C/auto-nofit.out" solver_iterations)" ] \
+       && [ -z "$(petsc_value "$C/auto-fit.out" solver_iterations)" ]; then
+      petsc_ok "auto-nofit petsc"
+    else
+      petsc_fail "auto-nofit petsc" "want the petsc lines with --max-memory 230M only: $(grep -c solver_ "$C/auto-nofit.out") and $(grep -c solver_ "$C/auto-fit.out")"
+    fi
+    petsc_same "auto-nofit vs direct" "$C/auto-nofit.out" "$C/auto-fit.out" lambda_min lambda_max max_u
+  fi
+  # shellcheck disable=SC2086
+  env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" $NOFIT --max-memory 150M --quiet --no-output \
+    > "$C/auto-none.out" 2> "$C/auto-none.err"
+  rc=$?
+  if [ "$rc" = 1 ] && grep -q "^lac: .*0.193 GB of memory with an iterative solve, more than the limit of 0.15 GB" "$C/auto-none.err"; then
+    petsc_ok "auto-nofit refused when petsc does not fit either"
+  else
+    petsc_fail "auto-nofit refused when petsc does not fit either" "got $rc: $(cat "$C/auto-none.err")"
+  fi
+
+  # ---- large deformation: refused, not solved by CHOLMOD ---------------
+  env "$PETSC_ENV" "$LAC" run chapters/10-large-deformation/ring.scene --strategy petsc --quiet --no-output \
+    > "$C/large.out" 2> "$C/large.err"
+  rc=$?
+  if [ "$rc" = 1 ] && [ "$(wc -l < "$C/large.err")" -eq 1 ] \
+     && grep -q "^lac: .*--strategy petsc: the large-deformation loop .*dense, schur or saddle" "$C/large.err"; then
+    petsc_ok "large deformation refused"
+  else
+    petsc_fail "large deformation refused" "want exit 1 and one line naming the strategies, got $rc: $(head -3 "$C/large.err")"
+  fi
 fi

@@ -3,7 +3,7 @@
  *   lac run SCENE [--set KEY=VALUE]... [--solver NAME] [--strategy NAME]
  *                 [--petsc-options "..."] [--out DIR]
  *                 [--quiet] [--timings] [--no-output]
- *   mpirun -n N lac run SCENE --strategy petsc [...]
+ *   mpirun -n N lac run SCENE [--strategy petsc] [...]
  *   lac infsup SCENE [...]     (lac_cli_infsup.c)
  *   lac render RESULT [...]    (lac_cli_render.c)
  *   lac --help | --version
@@ -116,14 +116,17 @@ static const char *help_text =
   "                    --set scene.solver=NAME; petsc: same as --strategy\n"
   "                    petsc\n"
   "  --strategy NAME   how each active set's system is solved: auto (the\n"
-  "                    default: dense for small systems, else schur or\n"
-  "                    split), dense, schur (every body held by its\n"
-  "                    Dirichlet conditions), augmented, split (bodies\n"
-  "                    held by contact alone), saddle, or petsc (Krylov\n"
-  "                    methods and algebraic multigrid, no factorization,\n"
-  "                    on N MPI processes; also without contact and in\n"
-  "                    large deformation); overrides the scene's [contact]\n"
-  "                    strategy (chapters 07, 13)\n"
+  "                    default: petsc on N > 1 MPI processes, or when a\n"
+  "                    Cholesky factor would not fit in --max-memory;\n"
+  "                    else dense for small systems, else schur or split;\n"
+  "                    without contact, petsc in the same two cases when\n"
+  "                    [scene] solver is not given), dense, schur (every\n"
+  "                    body held by its Dirichlet conditions), augmented,\n"
+  "                    split (bodies held by contact alone), saddle, or\n"
+  "                    petsc (Krylov methods and algebraic multigrid, no\n"
+  "                    factorization, on N MPI processes; also without\n"
+  "                    contact and in large deformation); overrides the\n"
+  "                    scene's [contact] strategy (chapters 07, 13)\n"
   "  --petsc-options \"...\"  PETSc options for the petsc strategy; they win\n"
   "                    over the environment variable PETSC_OPTIONS.  The\n"
   "                    solve of K alone (no [contact]) takes the prefix\n"
@@ -143,7 +146,9 @@ static const char *help_text =
   "  --max-memory SIZE memory a mesh may need (8G, 500M, 2e9 bytes; default\n"
   "                    80 % of the machine's): gmsh runs in a child process\n"
   "                    limited to it, and a .geo whose mesh is estimated to\n"
-  "                    need more is refused before gmsh makes it\n"
+  "                    need more is refused before gmsh makes it (with the\n"
+  "                    strategy auto: unless it fits with petsc, which auto\n"
+  "                    then takes)\n"
   "\n"
   "output files in DIR (written beside it, in .NAME.lac-new-PID, and put in\n"
   "place all at once at the end, once the summary is on stdout: a run that\n"
@@ -176,7 +181,8 @@ static const char *help_text =
   "'name = value' per line.  Exit status: 0 success, 1 the run failed\n"
   "(message 'lac: ...' on stderr), 2 bad command line.\n"
   "\n"
-  "MPI: mpirun -n N lac run SCENE --strategy petsc runs on N processes:\n"
+  "MPI: mpirun -n N lac run SCENE runs on N processes, with the petsc\n"
+  "strategy (auto takes it; a direct one asked for solves on process 0):\n"
   "process 0 reads the scene, assembles (on one process), runs the active\n"
   "set and alone prints and writes the files; the matrices and vectors of\n"
   "the solves are distributed by rows over the N processes.  The petsc\n"

@@ -431,9 +431,9 @@ static const char *const solve_names[] = {
   "a sparse Cholesky factor", "a sparse LU factor", "a dense LU factor",
   "an iterative solve" };
 
-/* lac_gmsh_estimate_check: see lac_mesh_gmsh_estimate.h. */
-int
-lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim)
+/* The estimate and its check against the limit, for R->opts->solve. */
+static int
+estimate_check (lac_gmsh_reader *R, int dim)
 {
   const lac_mesh_opts *o = R->opts;
   double nodes, bytes, early = 0;
@@ -453,4 +453,23 @@ lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim)
                    "%s, more than the limit of %.3g GB (--max-memory)",
                    R->path, o->level, o->size > 0 ? o->size : 1, nodes, at,
                    bytes / 1e9, solve_names[s], o->max_memory / 1e9);
+}
+
+/* lac_gmsh_estimate_check: see lac_mesh_gmsh_estimate.h. */
+int
+lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim)
+{
+  const lac_mesh_opts *o = R->opts;
+  lac_mesh_opts it;
+  int status = estimate_check (R, dim);
+  if (status != LAC_EINVAL || !o->else_iterative
+      || o->solve == LAC_MESH_SOLVE_ITERATIVE)
+    return status;
+  it = *o;                      /* the factor does not fit: without one? */
+  it.solve = LAC_MESH_SOLVE_ITERATIVE;
+  lac_error_clear ();
+  R->opts = &it;
+  status = estimate_check (R, dim);
+  R->opts = o;
+  return status;
 }

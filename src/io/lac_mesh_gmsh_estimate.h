@@ -42,7 +42,10 @@ double lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o);
  * from 1 (halving it, so that no 1D mesh is made much larger than one
  * already within the limit); a curve with fewer segments at a smaller
  * factor is an error too: gmsh's count of segments overflowed (size =
- * 1e-10 gave 1 segment a curve and fewer cells than size = 1). */
+ * 1e-10 gave 1 segment a curve and fewer cells than size = 1).  With
+ * R->opts->else_iterative, bytes over the limit are estimated again for
+ * an iterative solve, and the error (naming it) only if they still
+ * exceed it. */
 int lac_gmsh_estimate_check (lac_gmsh_reader *R, int dim);
 
 #endif /* LAC_MESH_GMSH_ESTIMATE_H */

@@ -57,6 +57,9 @@ typedef struct lac_mesh_opts
                           cell) for the estimate; anything else: from
                           recombine, order and serendipity             */
   int solve;           /* lac_mesh_solve, for the estimate             */
+  int else_iterative;  /* 1: a mesh that does not fit with `solve` is
+                          made if it fits with an iterative solve (the
+                          strategy auto then takes petsc, chapter 13)  */
 } lac_mesh_opts;
 
 /* One NAME=VALUE of lac_mesh_opts.numbers. */

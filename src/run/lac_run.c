@@ -73,13 +73,29 @@ stage_assemble (lac_run *r)
                                sizeof r->progress);
 }
 
+/* What the strategy auto reads of the run: the MPI processes, and
+ * whether a Cholesky factor of K is estimated to fit in --max-memory
+ * (else petsc, if lac has it; chapter 13). */
+static lac_strategy_context
+auto_context (const lac_run *r)
+{
+  lac_strategy_context ctx = { 1, 1 };
+  int rank;
+  lac_petsc_rank (&rank, &ctx.processes);
+  if (lac_petsc_available ())
+    ctx.factor_fits = lac_run_mesh_factor_fits (r->scene, r->mesh,
+                                                r->opts.max_memory);
+  return ctx;
+}
+
 static int
 stage_solve (lac_run *r)
 {
   if (!large (r))
     {
-      int status = lac_run_solve (r->scene, r->opts.strategy, &r->setup,
-                                  &r->sys, &r->sol, r->progress,
+      lac_strategy_context ctx = auto_context (r);
+      int status = lac_run_solve (r->scene, r->opts.strategy, &ctx,
+                                  &r->setup, &r->sys, &r->sol, r->progress,
                                   sizeof r->progress);
       if (!status)
         {

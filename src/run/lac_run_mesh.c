@@ -8,7 +8,10 @@
 #include <string.h>
 #include "base/lac_status.h"
 #include "io/lac_mesh_gmsh.h"
+#include "io/lac_mesh_child.h"
+#include "io/lac_mesh_gmsh_estimate.h"
 #include "io/lac_scene_query.h"
+#include "linalg/lac_petsc_env.h"
 #include "run/lac_run_conflict.h"
 #include "run/lac_run_scene.h"
 #include "solve/lac_strategy.h"
@@ -148,12 +151,24 @@ geo_transfinite (const char *path)
   return found;
 }
 
+/* lac_run_mesh_auto: see lac_run_mesh.h. */
+int
+lac_run_mesh_auto (const lac_scene *sc, int strategy)
+{
+  int scene = sc->ncontact ? sc->contact[sc->contact_loop].strategy
+              : LAC_STRATEGY_AUTO;
+  return !strategy && scene == LAC_STRATEGY_AUTO
+         && !sc->scene.large_deformation
+         && (sc->ncontact || !lac_scene_key_line (&sc->scene.sec, "solver"));
+}
+
 /* How the solve stage will solve (for the memory a .geo's mesh needs):
  * what the type of the strategy factorizes (the strategy asked for, else
- * the scene's; auto: a Cholesky factor, schur or split), the solver of a
- * run without contact or of the large-deformation loop. */
+ * the scene's; auto: a Cholesky factor, schur or split, else_iterative
+ * petsc if lac has it, and on N > 1 MPI processes petsc), the solver of
+ * a run without contact or of the large-deformation loop. */
 static lac_mesh_solve
-solve_kind (const lac_scene *sc, int strategy)
+solve_kind (const lac_scene *sc, int strategy, int *else_iterative)
 {
   static const lac_mesh_solve by_factor[] = {   /* lac_strategy_factor */
     LAC_MESH_SOLVE_ITERATIVE, LAC_MESH_SOLVE_DENSE, LAC_MESH_SOLVE_LU,
@@ -163,7 +178,10 @@ solve_kind (const lac_scene *sc, int strategy)
   const lac_strategy_type *t = lac_strategy_type_of (strategy ? strategy
                                                      : scene);
   int large = sc->scene.large_deformation, solver = sc->scene.solver;
-  if (t && t->factor == LAC_FACTOR_NONE && !large)
+  int rank, size, autorun = lac_run_mesh_auto (sc, strategy);
+  lac_petsc_rank (&rank, &size);
+  *else_iterative = autorun && lac_petsc_available ();
+  if ((t && t->factor == LAC_FACTOR_NONE && !large) || (autorun && size > 1))
     return LAC_MESH_SOLVE_ITERATIVE;
   if (solver == LAC_SOLVER_DENSE || (t && t->factor == LAC_FACTOR_DENSE))
     return LAC_MESH_SOLVE_DENSE;
@@ -193,7 +211,7 @@ lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
   o.flip_inverted = sc->mesh.inverted == 0;
   o.max_memory = max_memory;
   o.element = sc->scene.element;
-  o.solve = solve_kind (sc, strategy);
+  o.solve = solve_kind (sc, strategy, &o.else_iterative);
   size_t gend[LAC_SCENE_MAX_MESHES];
   *mesh = NULL;
   for (int k = 0; k < sc->mesh.nfiles; k++)
@@ -239,3 +257,17 @@ lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
   return LAC_SUCCESS;
 }
 
+/* lac_run_mesh_factor_fits: see lac_run_mesh.h (the bytes of
+ * src/io/lac_mesh_gmsh_estimate.c, for the cells of the mesh made). */
+int
+lac_run_mesh_factor_fits (const lac_scene *sc, const lac_mesh *m,
+                          double max_memory)
+{
+  lac_mesh_opts o;
+  memset (&o, 0, sizeof o);
+  o.element = m->ncells ? (int) m->type[0] : sc->scene.element;
+  o.solve = LAC_MESH_SOLVE_CHOLESKY;
+  if (max_memory <= 0)
+    max_memory = lac_mesh_default_memory ();
+  return lac_gmsh_run_bytes ((double) m->nnodes, m->dim, &o) <= max_memory;
+}

@@ -18,9 +18,24 @@
  * progress[size].  max_memory: bytes the mesh may need (0: the default of
  * io/lac_mesh_opts.h), checked against a .geo's estimate made for the
  * scene's cells and the way the run will solve: strategy (lac_strategy_kind,
- * LAC_STRATEGY_AUTO: the scene's), the scene's solver. */
+ * LAC_STRATEGY_AUTO: the scene's), the scene's solver; with auto, a mesh
+ * whose Cholesky factor is estimated not to fit is made if it fits with
+ * petsc (lac built with PETSc), and on N > 1 MPI processes the estimate
+ * is petsc's. */
 int lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
                   double max_memory, lac_mesh **mesh, char *progress,
                   size_t size);
+
+/* 1 if the run leaves the choice of the solve to the strategy auto:
+ * none asked for (strategy 0, the scene's auto), small strain, and with
+ * contact, or without contact and without [scene] solver. */
+int lac_run_mesh_auto (const lac_scene *sc, int strategy);
+/* 1 if the run on mesh m is estimated to fit in max_memory bytes (0: the
+ * default of io/lac_mesh_opts.h) with a sparse Cholesky factor
+ * (lac_gmsh_run_bytes, the estimate a .geo is checked with before gmsh
+ * meshes it); 0 if not: the strategy auto then takes petsc
+ * (solve/lac_strategy.h, lac_strategy_context). */
+int lac_run_mesh_factor_fits (const lac_scene *sc, const lac_mesh *m,
+                              double max_memory);
 
 #endif /* LAC_RUN_MESH_H */

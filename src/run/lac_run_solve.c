@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "io/lac_scene_query.h"
 #include "run/lac_run_scene.h"
 
 #define NEWTON_TOL 1e-10
@@ -62,8 +63,10 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
       lac_strategy_get_counts (s, &c);
     }
   if (!status && sol->krylov)
-    snprintf (progress, size, "%s: %s, %d iterations, true residual %.1e",
-              lac_strategy_name (kind), lac_strategy_method (s),
+    snprintf (progress, size, "%s: %s%s%s%s, %d iterations, true "
+              "residual %.1e", lac_strategy_name (kind),
+              lac_strategy_method (s), sol->why ? " (" : "",
+              sol->why ? sol->why : "", sol->why ? ")" : "",
               c.last_iterations, c.last_residual);
   else if (!status)
     snprintf (progress, size, "%s, rcond %.1e", lac_strategy_method (s),
@@ -136,10 +139,24 @@ young_min (const lac_scene *sc)
   return E < HUGE_VAL ? E : 1.0;
 }
 
+/* Why auto took `kind` in the run ctx rather than by size (NULL: it
+ * did not), for the progress line. */
+static const char *
+auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
+          size_t k, size_t nfree, const lac_strategy_context *ctx)
+{
+  if (want != LAC_STRATEGY_AUTO
+      || kind == lac_strategy_choose (want, n, k, nfree))
+    return NULL;
+  return ctx->processes > 1 ? "auto: more than one MPI process"
+         : "auto: a Cholesky factor would not fit in --max-memory";
+}
+
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
-contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
+contact_start (const lac_scene *sc, int strategy,
+               const lac_strategy_context *ctx, lac_run_setup *setup,
                lac_run_system *sys, lac_run_solution *sol)
 {
   const lac_scene_contact *c = &sc->contact[sc->contact_loop];
@@ -151,11 +168,14 @@ contact_start (const lac_scene *sc, int strategy, lac_run_setup *setup,
   sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
                                    sys->nfree, sys->N,
                                    (const char *const *) sys->N_what };
-  sol->strategy = lac_strategy_choose (want, sys->ndof,
-                                       setup->data.all->k, sys->nfree);
+  sol->strategy = lac_strategy_choose_in (want, sys->ndof,
+                                          setup->data.all->k, sys->nfree,
+                                          ctx);
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
+  sol->why = auto_why (want, sol->strategy, sys->ndof, setup->data.all->k,
+                       sys->nfree, ctx);
   if ((status = lac_linear_model_init_set (&sol->lin, &sol->cs, &setup->set,
                                            &setup->data, sys->dir,
                                            young_min (sc), &model)))
@@ -230,9 +250,10 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
     {
       h = nw->nhist ? &nw->hist[nw->nhist - 1] : NULL;
       memcpy (sol->u, nw->U, sys->ndof * sizeof *sol->u);
-      snprintf (progress, size, "%s, active set: %zu iteration%s, %zu of "
-                "%zu multipliers active%s",
-                lac_strategy_method (nw->strategy), nw->nhist,
+      snprintf (progress, size, "%s%s%s%s, active set: %zu iteration%s, "
+                "%zu of %zu multipliers active%s",
+                lac_strategy_method (nw->strategy), sol->why ? " (" : "",
+                sol->why ? sol->why : "", sol->why ? ")" : "", nw->nhist,
                 nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
                 setup->data.all->k, sol->krylov && h ? "; last solve: "
                 : "");
@@ -255,20 +276,41 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
   return LAC_CONTINUE;
 }
 
+/* Without contact and nothing asked for ([scene] solver, a strategy):
+ * the strategy auto takes in the run ctx if it factorizes nothing (N > 1
+ * MPI processes, or a factor that does not fit), else 0: the scene's
+ * solver. */
+static int
+plain_auto (const lac_scene *sc, const lac_strategy_context *ctx,
+            const lac_run_system *sys)
+{
+  lac_strategy_kind kind = lac_strategy_choose_in (LAC_STRATEGY_AUTO,
+                                                   sys->ndof, 0, 0, ctx);
+  const lac_strategy_type *t = lac_strategy_type_of (kind);
+  if (lac_scene_key_line (&sc->scene.sec, "solver")
+      || !t || t->factor != LAC_FACTOR_NONE)
+    return LAC_STRATEGY_AUTO;
+  return kind;
+}
+
 int
-lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
+lac_run_solve (const lac_scene *sc, int strategy,
+               const lac_strategy_context *ctx, lac_run_setup *setup,
                lac_run_system *sys, lac_run_solution *sol, char *progress,
                size_t size)
 {
   int status;
   if (!sol->u && !(sol->u = lac_malloc (sys->ndof * sizeof *sol->u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", sys->ndof);
+  if (!setup->data.all && !strategy
+      && (strategy = plain_auto (sc, ctx, sys)))
+    sol->why = auto_why (LAC_STRATEGY_AUTO, strategy, sys->ndof, 0, 0, ctx);
   if (!setup->data.all)
     return strategy != LAC_STRATEGY_AUTO
            ? solve_plain_strategy (strategy, sys, sol, progress, size)
            : solve_plain (sc, sys, sol, progress, size);
   if (!sol->newton
-      && (status = contact_start (sc, strategy, setup, sys, sol)))
+      && (status = contact_start (sc, strategy, ctx, setup, sys, sol)))
     return status;
   status = contact_iterate (sc, setup, sys, sol, progress, size);
   sys->contact = setup->data.all;       /* the loop may have paired again */

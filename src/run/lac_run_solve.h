@@ -8,9 +8,12 @@
  * Without contact, K U = b is solved once by the scene's solver (dense,
  * umfpack, cholmod), or by the strategy asked for on the command line
  * with no multiplier (k = 0; --strategy petsc: conjugate gradients and
- * algebraic multigrid on the MPI processes).  With contact, the strategy
- * is chosen from the problem (solve/lac_strategy.h: the size, and whether
- * a body is held by contact alone) and each call does ONE active-set
+ * algebraic multigrid on the MPI processes), or, with neither asked for,
+ * by the one auto takes in the run ctx when it factorizes nothing (N > 1
+ * MPI processes, or a factor that does not fit: petsc).  With contact,
+ * the strategy is chosen from the problem and the run (solve/lac_strategy.h:
+ * the MPI processes, the memory, the size, and whether a body is held by
+ * contact alone) and each call does ONE active-set
  * iteration, returning LAC_CONTINUE with a progress line about it until
  * the statuses settle.
  */
@@ -39,12 +42,16 @@ typedef struct lac_run_solution
   double krylov_residual;      /* the true relative residual of the last
                                   solve (before refinement)                */
   int processes;               /* MPI processes that solved                 */
+  const char *why;             /* static: why auto took the strategy from
+                                  the run (ctx), for the progress line;
+                                  NULL when by size or asked for           */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.
  * The set-up's pairing and the system's contact data are replaced when
  * the loop pairs again (lac_newton.h: no silent penetration). */
-int lac_run_solve (const lac_scene *sc, int strategy, lac_run_setup *setup,
+int lac_run_solve (const lac_scene *sc, int strategy,
+                   const lac_strategy_context *ctx, lac_run_setup *setup,
                    lac_run_system *sys, lac_run_solution *sol,
                    char *progress, size_t size);
 void lac_run_solution_clear (lac_run_solution *sol);

@@ -30,9 +30,11 @@
 
 /* Each row: name, operations, the scenes it applies to, the size up to
  * which auto takes it; what it factorizes, falls back unasked, solves on
- * the MPI processes (lac_strategy_type).  Auto takes the first row that
- * applies; every row solves both loops, small strain and large
- * deformation. */
+ * the MPI processes (lac_strategy_type); every row solves both loops,
+ * small strain and large deformation.  Auto takes the first row that
+ * applies: on N > 1 MPI processes, or when no factor fits in memory, by
+ * the properties processes and factor (lac_strategy_choose_in); else by
+ * size. */
 const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
   { "auto", NULL, LAC_BODIES_ANY, 0,
     LAC_FACTOR_NONE, 0, 0 },
@@ -124,16 +126,43 @@ refuse (const lac_strategy_type *t, size_t nfree)
   return LAC_NSTRATEGIES;
 }
 
+/* Auto in the run ctx: the first row that applies and, on N > 1
+ * processes, solves on them, or, when no factor fits, factorizes
+ * nothing; -1 if ctx asks for neither (or no row has it). */
+static int
+choose_for_run (size_t k, size_t nfree, const lac_strategy_context *ctx)
+{
+  int mpi = ctx && ctx->processes > 1, nofit = ctx && !ctx->factor_fits;
+  for (int j = 1; (mpi || nofit) && j < LAC_NSTRATEGIES; j++)
+    {
+      const lac_strategy_type *t = &lac_strategy_table[j];
+      if ((k == 0 || applies (t, nfree))
+          && (mpi ? t->processes : t->factor == LAC_FACTOR_NONE))
+        return j;
+    }
+  return -1;
+}
+
 lac_strategy_kind
 lac_strategy_choose (lac_strategy_kind want, size_t n, size_t k,
                      size_t nfree)
 {
+  return lac_strategy_choose_in (want, n, k, nfree, NULL);
+}
+
+lac_strategy_kind
+lac_strategy_choose_in (lac_strategy_kind want, size_t n, size_t k,
+                        size_t nfree, const lac_strategy_context *ctx)
+{
   const lac_strategy_type *t = lac_strategy_type_of (want);
+  int j;
   if (t)                         /* without contact (k = 0) any type */
     return k == 0 || applies (t, nfree) ? want : refuse (t, nfree);
   if (want != LAC_STRATEGY_AUTO)
     return want;
-  for (int j = 1; j < LAC_NSTRATEGIES; j++)
+  if ((j = choose_for_run (k, nfree, ctx)) > 0)
+    return (lac_strategy_kind) j;
+  for (j = 1; j < LAC_NSTRATEGIES; j++)
     if (n + k <= lac_strategy_table[j].auto_upto
         && applies (&lac_strategy_table[j], nfree))
       return (lac_strategy_kind) j;

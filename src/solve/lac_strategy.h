@@ -46,6 +46,11 @@
  * dense for n + k <= LAC_STRATEGY_DENSE_MAX, else schur when every body
  * is held (one factorization for the whole active-set iteration), split
  * when a body is held by contact alone (chapter 07 has the measurements).
+ * Before the sizes, two facts of the run (lac_strategy_context) come
+ * first: on more than one MPI process auto takes the first row that
+ * solves on the processes (petsc), and on one process, when the factor
+ * of a direct strategy is estimated not to fit in memory, the first row
+ * that factorizes nothing (petsc; chapter 13, section 4).
  * Before (b) or (b') factorizes, lac_system_check_held says whether the
  * active multipliers hold the bodies (else a message naming the body and
  * its free motion, never NaN).  If a Cholesky factorization fails all the
@@ -147,6 +152,25 @@ const lac_strategy_type *lac_strategy_type_of (int kind);
  * contact every type solves K U = F). */
 lac_strategy_kind lac_strategy_choose (lac_strategy_kind want, size_t n,
                                        size_t k, size_t nfree);
+
+/* What auto reads of the run besides the system (the caller's: the MPI
+ * processes from linalg/lac_petsc_env.h, the memory from the size of the
+ * mesh, run/lac_run_mesh.h). */
+typedef struct lac_strategy_context
+{
+  int processes;      /* MPI processes of the run (1: one)                */
+  int factor_fits;    /* 0: a direct factor is estimated not to fit in
+                         memory and a type that factorizes nothing can
+                         run (lac built with PETSc); 1 otherwise          */
+} lac_strategy_context;
+
+/* lac_strategy_choose in the run described by ctx (NULL: one process,
+ * the factor fits -- lac_strategy_choose): auto takes a row that solves
+ * on the processes when ctx->processes > 1, else one that factorizes
+ * nothing when !ctx->factor_fits, else the rule of the sizes. */
+lac_strategy_kind lac_strategy_choose_in (lac_strategy_kind want, size_t n,
+                                          size_t k, size_t nfree,
+                                          const lac_strategy_context *ctx);
 
 /* The first type of the table that factorizes as `factor` and applies to
  * nfree rigid motions left free (a scene's [scene] solver: dense,

@@ -353,6 +353,21 @@ choice (void)
              LAC_STRATEGY_AUGMENTED, "augmented: any");
   check_int (lac_strategy_choose (LAC_STRATEGY_SPLIT, 10, 0, 0),
              LAC_STRATEGY_SPLIT, "without contact, split too");
+  {
+    lac_strategy_context mpi = { 2, 1 }, nofit = { 1, 0 }, one = { 1, 1 };
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 500, 100, 1, &mpi),
+               LAC_STRATEGY_PETSC, "auto on 2 processes: petsc");
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
+                                       &nofit),
+               LAC_STRATEGY_PETSC, "auto, no factor fits: petsc");
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 0, 0,
+                                       &nofit),
+               LAC_STRATEGY_PETSC, "auto, no factor fits, no contact");
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 2, &one),
+               LAC_STRATEGY_SPLIT, "auto, one process, fits: by size");
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_SCHUR, 9000, 1, 0, &mpi),
+               LAC_STRATEGY_SCHUR, "asked for: kept on 2 processes");
+  }
   for (int k = 0; k < LAC_NSTRATEGIES; k++)
     check_int (lac_strategy_from_name (lac_strategy_name (k)), k,
                "name of %d", k);
