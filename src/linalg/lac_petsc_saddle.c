@@ -191,13 +191,11 @@ create_alone (lac_petsc_saddle *sv)
   return LAC_SUCCESS;
 }
 
-/* projected: the multigrid of K (prefix elast_; threshold: on its finest
- * level, if >= 0), the solver of B^T B + D (prefix gram_: redundant LU),
- * CG on P K (no prefix). */
+/* projected: the multigrid of K (prefix elast_), the solver of B^T B + D
+ * (prefix gram_: redundant LU), CG on P K (no prefix). */
 static int
-create_projected (lac_petsc_saddle *sv, double threshold)
+create_projected (lac_petsc_saddle *sv)
 {
-  PetscReal th[2] = { threshold, 0.0 };
   PetscInt nl, n;
   PC pc;
   TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
@@ -205,8 +203,6 @@ create_projected (lac_petsc_saddle *sv, double threshold)
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
   TRY (PCSetType (sv->pg, PCGAMG));
   TRY (PCGAMGSetReuseInterpolation (sv->pg, PETSC_TRUE));
-  if (threshold >= 0)
-    TRY (PCGAMGSetThreshold (sv->pg, th, 2));
   TRY (PCSetFromOptions (sv->pg));
   TRY (KSPCreate (PETSC_COMM_WORLD, &sv->kg));
   TRY (KSPSetOptionsPrefix (sv->kg, "gram_"));
@@ -297,8 +293,7 @@ create_fieldsplit (lac_petsc_saddle *sv)
 
 int
 lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
-                         lac_saddle_mat B, double threshold,
-                         lac_petsc_saddle **out)
+                         lac_saddle_mat B, lac_petsc_saddle **out)
 {
   lac_petsc_saddle *sv;
   int status, rank;
@@ -310,7 +305,7 @@ lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
   sv->B = B;
   lac_petsc_rank (&rank, &sv->size);
   status = !B ? create_alone (sv) : method == LAC_SADDLE_FIELDSPLIT
-           ? create_fieldsplit (sv) : create_projected (sv, threshold);
+           ? create_fieldsplit (sv) : create_projected (sv);
   if (status)
     {
       lac_petsc_saddle_free (sv);

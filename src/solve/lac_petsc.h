@@ -26,16 +26,7 @@
  *      K_W; then lambda_A = (C_A^T C_A)^-1 C_A^T (K_W U - f_W).  On the
  *      null space K_W is K: W only makes K_W positive definite for the
  *      multigrid (omega = LAC_PETSC_OMEGA, smaller than the augmented
- *      strategy's: a stiffer K_W is harder for the multigrid).  The
- *      bodies touch without friction: C_A W C_A^T couples the normal
- *      displacements of the two sides only, a coupling weaker than the
- *      elastic ones, and an aggregate of the multigrid that straddles
- *      the interface would move both sides together also tangentially.
- *      On the finest level GAMG drops the couplings below
- *      LAC_PETSC_GAMG_THRESHOLD of the diagonal before it aggregates:
- *      its aggregates stay on one side (72 CG iterations on the 1M-dof
- *      patch test before, 28 after; the cube without contact needs 23;
- *      chapter 13).
+ *      strategy's: a stiffer K_W is harder for the multigrid).
  *   fieldsplit  GMRES on the whole of (*W), right preconditioned by the
  *      block factorization of PCFIELDSPLIT (Schur type, "upper"): K_W by
  *      one V-cycle of GAMG, the Schur complement S_W = C_A^T K_W^-1 C_A
@@ -106,10 +97,6 @@
 #include "solve/lac_system.h"
 
 #define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */
-/* GAMG's threshold on the finest level of K_W when there is contact
- * (-elast_pc_gamg_threshold; chapter 13: 0.07 and 0.12 too small and
- * too large on the patch test) */
-#define LAC_PETSC_GAMG_THRESHOLD 0.1
 
 /* The processes other than the root: follow the root's commands until it
  * finalizes (lac_petsc_finalize).  LAC_SUCCESS then; an error if called
