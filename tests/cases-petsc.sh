@@ -359,15 +359,4 @@ if [ "$have_petsc" = 1 ]; then
   else
     petsc_fail "auto-nofit refused when petsc does not fit either" "got $rc: $(cat "$C/auto-none.err")"
   fi
-
-  # ---- large deformation: refused, not solved by CHOLMOD ---------------
-  env "$PETSC_ENV" "$LAC" run chapters/10-large-deformation/ring.scene --strategy petsc --quiet --no-output \
-    > "$C/large.out" 2> "$C/large.err"
-  rc=$?
-  if [ "$rc" = 1 ] && [ "$(wc -l < "$C/large.err")" -eq 1 ] \
-     && grep -q "^lac: .*--strategy petsc: the large-deformation loop .*dense, schur or saddle" "$C/large.err"; then
-    petsc_ok "large deformation refused"
-  else
-    petsc_fail "large deformation refused" "want exit 1 and one line naming the strategies, got $rc: $(head -3 "$C/large.err")"
-  fi
 fi
