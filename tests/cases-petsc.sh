@@ -25,6 +25,8 @@
 #                    estimated not to fit in (the 3D patch test, n = 14),
 #                    petsc instead of the refusal, which stays when petsc
 #                    does not fit either;
+#   contact pc       the 3D patch test (n = 20) within 1.5 times the CG
+#                    iterations of the cube of the same size;
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
@@ -239,6 +241,21 @@ if [ "$have_petsc" = 1 ]; then
     fi
   else
     petsc_fail "mpi" "mpirun not found (Debian: openmpi-bin)"
+  fi
+
+  # ---- the contact solve against plain elasticity (chapter 13, section 1):
+  # the patch test at n = 20 (52,866 dofs) within 1.5 times the CG
+  # iterations of the cube at n = 25 (52,728 dofs); 52 against 20 without
+  # the threshold on GAMG's finest level, 27 with it.
+  if petsc_run pc-taylor "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
+     && petsc_run pc-cube bench/cube.scene --set mesh.numbers=n=25 --strategy petsc; then
+    a=$(petsc_value "$C/pc-taylor.out" solver_iterations) b=$(petsc_value "$C/pc-cube.out" solver_iterations)
+    if awk -v a="$a" -v b="$b" 'BEGIN { exit !(a > 0 && b > 0 && a <= 1.5 * b) }'; then
+      petsc_ok "contact solve within 1.5 x the iterations of plain elasticity"
+    else
+      petsc_fail "contact solve within 1.5 x the iterations of plain elasticity" \
+        "patch test $a CG iterations, cube $b (want <= 1.5 x)"
+    fi
   fi
 
   # ---- options ---------------------------------------------------------

@@ -191,11 +191,14 @@ create_alone (lac_petsc_saddle *sv)
   return LAC_SUCCESS;
 }
 
-/* projected: the multigrid of K (prefix elast_), the solver of B^T B + D
- * (prefix gram_: redundant LU), CG on P K (no prefix). */
+/* projected: the multigrid of K (prefix elast_; threshold: on its finest
+ * level, if >= 0), the solver of B^T B + D (prefix gram_: redundant LU),
+ * CG on P K (no prefix). */
 static int
-create_projected (lac_petsc_saddle *sv)
+create_projected (lac_petsc_saddle *sv, double threshold)
 {
+  PetscReal th[2] = { threshold, 0.0 };
+  PetscBool set = PETSC_FALSE;
   PetscInt nl, n;
   PC pc;
   TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
@@ -204,6 +207,9 @@ create_projected (lac_petsc_saddle *sv)
   TRY (PCSetType (sv->pg, PCGAMG));
   TRY (PCGAMGSetReuseInterpolation (sv->pg, PETSC_TRUE));
   TRY (PCSetFromOptions (sv->pg));
+  TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
+  if (threshold >= 0 && !set)       /* after the options: they would copy */
+    TRY (PCGAMGSetThreshold (sv->pg, th, 2));   /* th[0] to every level */
   TRY (KSPCreate (PETSC_COMM_WORLD, &sv->kg));
   TRY (KSPSetOptionsPrefix (sv->kg, "gram_"));
   TRY (KSPSetType (sv->kg, KSPPREONLY));
@@ -293,7 +299,8 @@ create_fieldsplit (lac_petsc_saddle *sv)
 
 int
 lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
-                         lac_saddle_mat B, lac_petsc_saddle **out)
+                         lac_saddle_mat B, double threshold,
+                         lac_petsc_saddle **out)
 {
   lac_petsc_saddle *sv;
   int status, rank;
@@ -305,7 +312,7 @@ lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
   sv->B = B;
   lac_petsc_rank (&rank, &sv->size);
   status = !B ? create_alone (sv) : method == LAC_SADDLE_FIELDSPLIT
-           ? create_fieldsplit (sv) : create_projected (sv);
+           ? create_fieldsplit (sv) : create_projected (sv, threshold);
   if (status)
     {
       lac_petsc_saddle_free (sv);

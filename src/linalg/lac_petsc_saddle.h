@@ -54,9 +54,14 @@ typedef struct
 } lac_saddle_counts;
 
 /* The solvers of K (and B: NULL for K alone) by `method`; K and B are
- * borrowed and keep their patterns (new values: _update).  Collective. */
+ * borrowed and keep their patterns (new values: _update).  threshold >=
+ * 0: the multigrid of the projected CG drops the couplings of K's
+ * graph below it on the finest level before it aggregates (PCGAMG's
+ * threshold, 0 on the coarser levels; -elast_pc_gamg_threshold still
+ * wins); < 0: PETSc's default.  Collective. */
 int lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
-                             lac_saddle_mat B, lac_petsc_saddle **out);
+                             lac_saddle_mat B, double threshold,
+                             lac_petsc_saddle **out);
 void lac_petsc_saddle_free (lac_petsc_saddle *sv);
 /* After new values of K and B: D's diagonal d and (fieldsplit) the
  * Schur preconditioner's diagonal sp, both k, in the layout of B's

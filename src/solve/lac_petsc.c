@@ -490,7 +490,8 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
       || (s->k && (status = multiplier_vectors (s)))
       || (status = lac_petsc_saddle_create ((lac_saddle_method) s->mode,
                                             s->Kw, s->k ? s->B : NULL,
-                                            &s->sv)))
+                                            s->k ? LAC_PETSC_GAMG_THRESHOLD
+                                            : -1.0, &s->sv)))
     return status;
   s->built = 1;
   s->counts.analyses++;
