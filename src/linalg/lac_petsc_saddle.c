@@ -173,6 +173,16 @@ projected_pc (PC pc, Vec r, Vec z)
 
 /* ---- the solvers -------------------------------------------------------- */
 
+/* GAMG, which keeps its interpolation when only the values of the matrix
+ * change (new statuses: chapter 13). */
+static PetscErrorCode
+gamg_setup (PC pc)
+{
+  PetscCall (PCSetType (pc, PCGAMG));
+  PetscCall (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
+  return 0;
+}
+
 /* K alone: conjugate gradients and GAMG (prefix elast_). */
 static int
 create_alone (lac_petsc_saddle *sv)
@@ -184,8 +194,7 @@ create_alone (lac_petsc_saddle *sv)
   TRY (KSPSetType (sv->ku, KSPCG));
   TRY (KSPSetNormType (sv->ku, KSP_NORM_UNPRECONDITIONED));
   TRY (KSPGetPC (sv->ku, &pc));
-  TRY (PCSetType (pc, PCGAMG));
-  TRY (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
+  TRY (gamg_setup (pc));
   TRY (KSPSetFromOptions (sv->ku));
   TRY (MatCreateVecs (sv->K, NULL, &sv->ru));
   return LAC_SUCCESS;
@@ -204,8 +213,7 @@ create_projected (lac_petsc_saddle *sv, double threshold)
   TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
   TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
-  TRY (PCSetType (sv->pg, PCGAMG));
-  TRY (PCGAMGSetReuseInterpolation (sv->pg, PETSC_TRUE));
+  TRY (gamg_setup (sv->pg));
   TRY (PCSetFromOptions (sv->pg));
   TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
   if (threshold >= 0 && !set)       /* after the options: they would copy */

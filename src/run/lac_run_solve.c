@@ -9,6 +9,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_scene_query.h"
+#include "run/lac_run_mesh.h"
 #include "run/lac_run_scene.h"
 
 #define NEWTON_TOL 1e-10
@@ -287,8 +288,7 @@ plain_auto (const lac_scene *sc, const lac_strategy_context *ctx,
   lac_strategy_kind kind = lac_strategy_choose_in (LAC_STRATEGY_AUTO,
                                                    sys->ndof, 0, 0, ctx);
   const lac_strategy_type *t = lac_strategy_type_of (kind);
-  if (lac_scene_key_line (&sc->scene.sec, "solver")
-      || !t || t->factor != LAC_FACTOR_NONE)
+  if (!lac_run_mesh_auto (sc, 0) || !t || t->factor != LAC_FACTOR_NONE)
     return LAC_STRATEGY_AUTO;
   return kind;
 }

@@ -625,7 +625,7 @@ contact_terms (lac_petsc *s)
 }
 
 /* B = -C_A (the inactive columns are zeros); D = 1 on the inactive, 0
- * on the active; fieldsplit's Schur preconditioner Sp = 1 on the
+ * on the active; with fieldsplit, its Schur preconditioner Sp = 1 on the
  * inactive, -1/w on the active (-S_W^-1 is about -W_A: the Schur
  * complement of (*W) is -S_W).  Each process its own columns and
  * multipliers. */
@@ -640,8 +640,9 @@ multipliers (lac_petsc *s)
     {
       int on = s->stat[i] && s->w[i] > 0;
       TRY (VecSetValue (s->dk, i, on ? 0.0 : 1.0, INSERT_VALUES));
-      TRY (VecSetValue (s->pk, i, on ? -s->kappa / s->w[i] : 1.0,
-                        INSERT_VALUES));
+      if (s->mode == FIELDSPLIT)
+        TRY (VecSetValue (s->pk, i, on ? -s->kappa / s->w[i] : 1.0,
+                          INSERT_VALUES));
     }
   TRY (VecAssemblyBegin (s->dk));
   TRY (VecAssemblyEnd (s->dk));
@@ -706,9 +707,9 @@ step_solve (lac_petsc *s, const lac_petsc_command *c, const double *fw,
   int status;
   if ((status = to_dist (s, s->gu, s->useq, fw, s->fw))
       || (status = to_dist (s, s->gu, s->useq, U, s->xu))
-      || (s->k && ((status = to_dist (s, s->gl, s->lseq, gl, s->gk))
-                   || (status = to_dist (s, s->gl, s->lseq, lambda,
-                                         s->lk)))))
+      || (s->k && (status = to_dist (s, s->gl, s->lseq, gl, s->gk)))
+      || (s->k && s->mode == FIELDSPLIT              /* GMRES's start */
+          && (status = to_dist (s, s->gl, s->lseq, lambda, s->lk))))
     return status;
   status = lac_petsc_saddle_solve (s->sv, s->fw, s->k ? s->gk : NULL,
                                    c->rtol, s->k == 0 ? "K" : s->mode
