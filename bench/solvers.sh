@@ -30,7 +30,9 @@
 # `--out figures`):
 #   solvers.csv        one row per run (columns below)
 #   solvers.txt        the same as a markdown table, then the acceptance
-#                      checks of the 1M-dof contact problem
+#                      checks of the 1M-dof contact problem, and its wall
+#                      time and CG iterations over the 1M-dof cube's
+#                      (petsc, 2 processes; issue 26 asks <= 1.3 each)
 #   solvers-time.png   wall time against dofs, per solver and processes
 #   solvers-memory.png peak memory (summed over the processes) against dofs
 # Columns: problem, n, dofs, multipliers, solver (direct | petsc |
@@ -237,6 +239,13 @@ for n in $CH; do run cube "$n" petsc-hypre 2; done
         $3, $15, ($15 != "" && $15 + 0 <= 1e-8) ? "yes" : "NO", $7, ($7 <= 60) ? "yes" : "NO", $14, ($14 <= 8192) ? "yes" : "NO" }
     NR > 1 && $1 == "taylor" && $5 == "petsc" && $6 == 2 && $3 >= 120000 && $3 < 160000 {
       printf "  %s dofs: wall %s s (<= 5: %s), lambda error %s\n", $3, $7, ($7 <= 5) ? "yes" : "NO", $15 }' "$CSV"
+  echo
+  echo "Contact against plain elasticity (petsc, 2 processes, about a million dofs; rerun both rows with --rows to compare them in one run):"
+  awk -F, 'NR > 1 && $5 == "petsc" && $6 == 2 && $3 >= 1000000 && $17 == "ok" { w[$1] = $7; it[$1] = $12 }
+    END { if (!("taylor" in w) || !("cube" in w)) { print "  (needs both rows: --rows \"taylor:55:petsc:2 cube:69:petsc:2\")"; exit }
+          rw = w["taylor"] / w["cube"]; ri = it["taylor"] / it["cube"]
+          printf "  wall %s / %s s = %.2f (<= 1.3: %s), CG iterations %s / %s = %.2f (<= 1.3: %s)\n",
+            w["taylor"], w["cube"], rw, rw <= 1.3 ? "yes" : "NO", it["taylor"], it["cube"], ri, ri <= 1.3 ? "yes" : "NO" }' "$CSV"
 } > "$OUT/solvers.txt"
 cat "$OUT/solvers.txt"
 chart "$CSV"
