@@ -76,7 +76,7 @@ press (const lac_csc *K, const double *F, const lac_contact *c,
        const lac_contact *all, lac_strategy_kind kind, double *lambda_m,
        double *gap_m)
 {
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   check_status (lac_newton_solve_system (kind, &sys, 20, 1e-10, &s),
                 "lac_newton_solve_system");

@@ -212,7 +212,7 @@ main (int argc, char **argv)
   check_status (lac_assembly_pressure (m, mat.model, lac_mesh_group (m, "up.ymax"),
                                        p, F), "lac_assembly_pressure");
   check_status (lac_dirichlet_apply (D, K, F), "lac_dirichlet_apply");
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   check_status (lac_newton_solve_system (kind, &sys, 10, 1e-10, &s),
                 "lac_newton_solve_system");

@@ -210,7 +210,7 @@ tilted_block (lac_strategy_kind kind)
    *    active.  Each iteration updates the statuses (active iff
    *    lambda_i + rho_i d_i < 0), tests, then solves the saddle system
    *    for the active set A (identity rows lambda_i = 0 for the others). */
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_linear_model lin;
   lac_newton *s = NULL;
   if (kind == LAC_STRATEGY_SCHUR)
@@ -293,7 +293,7 @@ spring_chain (void)
   double F[N];
   for (int j = 0; j < N; j++)
     F[j] = j == 0 ? 0.0 : 1.0;
-  lac_contact_system sys = { K, F, C, gap, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, C, gap, NULL, 0, NULL, NULL, NULL };
   lac_linear_model lin;
   printf ("2. spring chain, %d dofs, obstacles at dofs 3 6 9 12, schur\n", N);
   lac_newton *s = run (LAC_STRATEGY_SCHUR, &sys, &lin, 20);

@@ -338,6 +338,12 @@ lac_dist_rows (const lac_dist *d, int *r0, int *r1)
   *r1 = d->rstart[d->rank + 1];
 }
 
+const lac_csc *
+lac_dist_c (const lac_dist *d)
+{
+  return d->C;
+}
+
 const int *
 lac_dist_row (const lac_dist *d)
 {

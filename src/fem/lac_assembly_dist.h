@@ -68,6 +68,8 @@ void lac_dist_free (lac_dist *d);
 void lac_dist_rows (const lac_dist *d, int *r0, int *r1);
 /* row[j], the PETSc row of dof j (NULL: j itself). */
 const int *lac_dist_row (const lac_dist *d);
+/* The copy of C the contact terms were added from (NULL: none). */
+const lac_csc *lac_dist_c (const lac_dist *d);
 /* The root's C (n x k; others NULL) to every process: its pattern and
  * values (pattern = 1) or its values (0: the pattern is the last one). */
 int lac_dist_set_c (lac_dist *d, const lac_csc *C, int pattern);

@@ -59,6 +59,7 @@ typedef enum
   LAC_PETSC_CMD_SOLVE,      /* one solve of (*W) (of K when k = 0)        */
   LAC_PETSC_CMD_FREE,       /* destroy the strategy's objects             */
   LAC_PETSC_CMD_MEMORY,     /* add the peak memory to the root's          */
+  LAC_PETSC_CMD_KMUL,       /* K_W x for the root's residuals             */
   LAC_PETSC_CMD_QUIT        /* the root is done                           */
 } lac_petsc_cmd;
 

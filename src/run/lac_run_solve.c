@@ -20,6 +20,7 @@ lac_run_solution_clear (lac_run_solution *sol)
   lac_free (sol->u);
   lac_newton_free (sol->newton);
   lac_linear_model_clear (&sol->lin);
+  lac_free (sol->kdiag);
   memset (sol, 0, sizeof *sol);
 }
 
@@ -47,7 +48,7 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
   static const double G[1] = { 0 };
   double lambda[1] = { 0 };
   lac_csc *C = lac_csc_alloc (sys->ndof, 0, 0);
-  lac_contact_system cs = { sys->K, sys->b, C, G, NULL, 0, NULL, NULL };
+  lac_contact_system cs = { sys->K, sys->b, C, G, NULL, 0, NULL, NULL, NULL };
   lac_strategy_kind kind = (lac_strategy_kind) strategy;   /* any, k = 0 */
   lac_strategy *s = NULL;
   lac_strategy_counts c;
@@ -153,6 +154,58 @@ auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
          : "auto: a Cholesky factor would not fit in --max-memory";
 }
 
+/* kop's product: K 0 = 0 before the strategy has its matrices (the loop
+ * begins at U = 0), else the strategy's. */
+static int
+kmul_root (void *solution, const double *x, double *y)
+{
+  lac_run_solution *sol = solution;
+  size_t n = sol->kop.n;
+  int zero = 1;
+  for (size_t j = 0; zero && j < n; j++)
+    zero = x[j] == 0;
+  if (zero)
+    {
+      memset (y, 0, n * sizeof *y);
+      return LAC_SUCCESS;
+    }
+  return lac_strategy_kmul (sol->newton->strategy, x, y);
+}
+
+/* When the strategy assembles K on its processes from the cells (petsc):
+ * the root keeps of its K only diag(K) and ||K||_inf (the residuals take
+ * K x from the strategy, lac_system.h's Kop) and frees it: a million
+ * hex8 dofs, 1 GB less on the root (chapter 13, section 6). */
+static int
+drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol)
+{
+  const lac_csc *K = sys->K;
+  double normK = 0;
+  if (!K || !sys->cells.mesh || !sys->x || !lac_strategy_has_kmul (st))
+    return LAC_SUCCESS;
+  if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
+                                 sizeof *sol->kdiag)))
+    LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
+  for (size_t j = 0; j < K->ncol; j++)
+    {
+      double sum = 0;                 /* K symmetric: column sums = rows */
+      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+        {
+          sum += fabs (K->x[p]);
+          if ((size_t) K->i[p] == j)
+            sol->kdiag[j] = K->x[p];
+        }
+      normK = fmax (normK, sum);
+    }
+  sol->kop = (lac_stiffness_op) { sys->ndof, normK, sol->kdiag, sol,
+                                  kmul_root };
+  sol->cs.K = NULL;
+  sol->cs.Kop = &sol->kop;
+  lac_csc_free (sys->K);
+  sys->K = NULL;
+  return LAC_SUCCESS;
+}
+
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
@@ -165,10 +218,11 @@ contact_start (const lac_scene *sc, int strategy,
                                                 : c->strategy);
   lac_contact_model model;
   lac_newton_opts o;
+  lac_strategy *st;
   int status;
   sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
                                    sys->nfree, sys->N,
-                                   (const char *const *) sys->N_what };
+                                   (const char *const *) sys->N_what, NULL };
   sol->strategy = lac_strategy_choose_in (want, sys->ndof,
                                           setup->data.all->k, sys->nfree,
                                           ctx);
@@ -177,22 +231,29 @@ contact_start (const lac_scene *sc, int strategy,
                             lac_error_message ());
   sol->why = auto_why (want, sol->strategy, sys->ndof, setup->data.all->k,
                        sys->nfree, ctx);
-  if ((status = lac_linear_model_init_set (&sol->lin, &sol->cs, &setup->set,
-                                           &setup->data, sys->dir,
-                                           young_min (sc), &model)))
-    return status;
+  if (!(st = lac_strategy_alloc (sol->strategy)))
+    return LAC_EDEP;           /* the message says which and why */
+  lac_strategy_set_coordinates (st, sys->coord_dim, sys->x);
+  lac_strategy_set_mesh (st, sys->cells.mesh ? &sys->cells : NULL);
+  if ((status = drop_root_k (sys, st, sol))
+      || (status = lac_linear_model_init_set (&sol->lin, &sol->cs,
+                                              &setup->set, &setup->data,
+                                              sys->dir, young_min (sc),
+                                              &model)))
+    {
+      lac_strategy_free (st);
+      return status;
+    }
   lac_newton_opts_init (&o);
   o.kind = sol->strategy;
   o.maxit = c->max_iterations;
   o.tol = NEWTON_TOL;
   if (!(sol->newton = lac_newton_alloc (&model, &o)))
-    return LAC_ENOMEM;
-  if (!(sol->newton->strategy = lac_strategy_alloc (sol->strategy)))
-    return LAC_EDEP;           /* the message says which and why */
-  lac_strategy_set_coordinates (sol->newton->strategy, sys->coord_dim,
-                                sys->x);
-  lac_strategy_set_mesh (sol->newton->strategy,
-                         sys->cells.mesh ? &sys->cells : NULL);
+    {
+      lac_strategy_free (st);
+      return LAC_ENOMEM;
+    }
+  sol->newton->strategy = st;
   return lac_newton_begin (sol->newton);
 }
 

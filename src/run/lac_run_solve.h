@@ -45,6 +45,9 @@ typedef struct lac_run_solution
   const char *why;             /* static: why auto took the strategy from
                                   the run (ctx), for the progress line;
                                   NULL when by size or asked for           */
+  lac_stiffness_op kop;        /* K for the residuals when the strategy
+                                  holds it (petsc): the system's K freed  */
+  double *kdiag;               /* owned, ndof: kop's diag(K)              */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.

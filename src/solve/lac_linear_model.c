@@ -8,21 +8,17 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-/* r = F - K U, d = G - C^T U; the force scale: |F| and |K| |U|
- * (the size of the terms that K U adds up, whatever cancels). */
-static int
-evaluate (void *self, const double *U, int tangent, lac_model_point *p)
+/* r = F - K U and ||(|K| |U|)||^2 (the size of the terms that K U adds
+ * up, whatever cancels), from K's entries. */
+static void
+residual_entries (lac_linear_model *lm, const double *U, double *nku)
 {
-  lac_linear_model *lm = self;
-  const lac_contact_system *sys = &lm->sys;
-  const lac_csc *K = sys->K;
-  size_t n = K->ncol, k = sys->C ? sys->C->ncol : 0;
-  double nf = 0, nku = 0;
-  (void) tangent;
+  const lac_csc *K = lm->sys.K;
+  size_t n = K->ncol;
   double *ku = lm->x;                               /* |K| |U|, scratch */
   memset (ku, 0, n * sizeof *ku);
   for (size_t j = 0; j < n; j++)
-    lm->r[j] = sys->F[j];
+    lm->r[j] = lm->sys.F[j];
   for (size_t j = 0; j < n; j++)
     for (int q = K->p[j]; q < K->p[j + 1]; q++)
       {
@@ -30,10 +26,44 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
         ku[K->i[q]] += fabs (K->x[q] * U[j]);
       }
   for (size_t j = 0; j < n; j++)
+    *nku += ku[j] * ku[j];
+}
+
+/* The same from Kop (no entries): K U by its product, and the bound
+ * ||(|K| |U|)|| <= ||K||_inf ||U||_2 (|K| symmetric). */
+static int
+residual_op (lac_linear_model *lm, const double *U, double *nku)
+{
+  const lac_stiffness_op *op = lm->sys.Kop;
+  double nu = 0;
+  int status = op->mult (op->self, U, lm->x);       /* K U */
+  if (status)
+    return status;
+  for (size_t j = 0; j < op->n; j++)
     {
-      nf += sys->F[j] * sys->F[j];
-      nku += ku[j] * ku[j];
+      lm->r[j] = lm->sys.F[j] - lm->x[j];
+      nu += U[j] * U[j];
     }
+  *nku = op->norm * op->norm * nu;
+  return LAC_SUCCESS;
+}
+
+/* r = F - K U, d = G - C^T U; the force scale: |F| and |K| |U|. */
+static int
+evaluate (void *self, const double *U, int tangent, lac_model_point *p)
+{
+  lac_linear_model *lm = self;
+  const lac_contact_system *sys = &lm->sys;
+  size_t n = lac_system_n (sys), k = sys->C ? sys->C->ncol : 0;
+  double nf = 0, nku = 0;
+  int status = LAC_SUCCESS;
+  (void) tangent;
+  if (sys->K)
+    residual_entries (lm, U, &nku);
+  else if ((status = residual_op (lm, U, &nku)))
+    return status;
+  for (size_t j = 0; j < n; j++)
+    nf += sys->F[j] * sys->F[j];
   if (k > 0)
     lac_system_gaps (sys, U, lm->d);                /* d = G - C^T U */
   const lac_contact *c = lm->data ? lm->data->all : NULL;
@@ -144,7 +174,7 @@ static int
 init (lac_linear_model *lm, const lac_contact_system *sys, double E,
       size_t nslot, lac_contact_model *m)
 {
-  size_t n = sys->K->ncol;
+  size_t n = lac_system_n (sys);
   memset (lm, 0, sizeof *lm);
   lm->sys = *sys;
   lm->news = LAC_MODEL_NEW_K;

@@ -356,7 +356,7 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
     return status;
   s->sys = (lac_contact_system) { s->pat->K, s->r, c ? c->C : s->C0,
                                   c ? c->G : NULL, NULL, s->prob.nfree,
-                                  s->prob.N, s->prob.N_what };
+                                  s->prob.N, s->prob.N_what, NULL };
   *sys = &s->sys;
   *news = LAC_MODEL_NEW_K;
   s->have_K = 0;                      /* the increments are in K now */

@@ -19,6 +19,9 @@
  *           to the solvers;
  *   solve   the right-hand side and the start from the root, one Krylov
  *           solve, the solution back to the root.
+ *   kmul    x from the root, K_W x back: the root's residuals take
+ *           K x = kappa K_W x - C W_old C^T x from it when it freed its K
+ *           (run/lac_run_solve.c, drop_root_k).
  *
  * A failure on one process is agreed on by all before the next
  * collective call (lac_petsc_agree): the root returns it with the message
@@ -503,7 +506,7 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
 static int
 root_build (lac_petsc *s, const lac_contact_system *sys)
 {
-  size_t n = sys->K->ncol, k = sys->C ? sys->C->ncol : 0;
+  size_t n = lac_system_n (sys), k = sys->C ? sys->C->ncol : 0;
   size_t bs = s->dim > 0 && n % (size_t) s->dim == 0 ? (size_t) s->dim : 1;
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
@@ -511,6 +514,9 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
     .cells = s->src && s->src->mesh && (size_t) s->src->mesh->dim
              * s->src->mesh->nnodes == n && (int) bs == s->src->mesh->dim };
   int status;
+  if (!c.cells && !sys->K)
+    LAC_ERROR (LAC_EINVAL, "petsc: no K and no cells of these dofs to "
+               "assemble it from");
   if ((status = alloc_arrays (s, n, k))
       || (status = lac_petsc_command_send (&c)))
     return status;
@@ -521,18 +527,20 @@ static int
 petsc_set (void *w, const lac_contact_system *sys)
 {
   lac_petsc *s = w;
-  unsigned long long hK = lac_csc_pattern_hash (sys->K);
+  unsigned long long hK = sys->K ? lac_csc_pattern_hash (sys->K)
+                           : (unsigned long long) sys->Kop->n; /* fixed */
   unsigned long long hC = sys->C ? lac_csc_pattern_hash (sys->C) : 0;
-  size_t k = sys->C ? sys->C->ncol : 0;
+  size_t n = lac_system_n (sys), k = sys->C ? sys->C->ncol : 0;
   int status;
   if (!s->root)
     LAC_ERROR (LAC_ESANITY, "process %d: only the root sets a system",
                s->rank);
-  if (sys->K->ncol != sys->K->nrow || (sys->C && sys->C->nrow != sys->K->ncol))
-    LAC_ERROR (LAC_EBADLEN, "K is %zu x %zu, C %zu x %zu", sys->K->nrow,
-               sys->K->ncol, sys->C ? sys->C->nrow : sys->K->nrow, k);
+  if ((sys->K && sys->K->ncol != sys->K->nrow)
+      || (sys->C && sys->C->nrow != n))
+    LAC_ERROR (LAC_EBADLEN, "K is %zu x %zu, C %zu x %zu", n, n,
+               sys->C ? sys->C->nrow : n, k);
   s->sys = sys;
-  if (!s->built || sys->K->ncol != s->n || k != s->k || hK != s->hK
+  if (!s->built || n != s->n || k != s->k || hK != s->hK
       || hC != s->hC)
     {
       s->built = 0;
@@ -771,6 +779,49 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
   return LAC_SUCCESS;
 }
 
+/* ---- K x for the root's residuals --------------------------------------- */
+
+/* K_W x (all processes; x and y: the root's, n). */
+static int
+step_kmul (lac_petsc *s, const double *x, double *y)
+{
+  int status = to_dist (s, s->gu, s->useq, x, s->xu);
+  if (status)
+    return status;
+  TRY (MatMult (s->Kw, s->xu, s->ru));
+  return to_root (s, s->gu, s->ru, s->useq, y);
+}
+
+/* y = K x = kappa K_W x - C W_old C^T x: K_W holds K / kappa and the
+ * contact terms of W_old (contact_terms), with the copy of C they were
+ * added from; no K on the root. */
+static int
+petsc_kmul (void *w, const double *x, double *y)
+{
+  lac_petsc *s = w;
+  lac_petsc_command c = { .cmd = LAC_PETSC_CMD_KMUL };
+  const lac_csc *C = s->dist ? lac_dist_c (s->dist) : NULL;
+  int status;
+  if (!s->built || !s->have_stat || s->new_numbers)
+    LAC_ERROR (LAC_EINVAL, "petsc: K x before the matrices of the last set "
+               "were made");
+  if ((status = lac_petsc_command_send (&c))
+      || (status = step_kmul (s, x, y)))
+    return status;
+  for (size_t j = 0; j < s->n; j++)
+    y[j] *= s->kappa;
+  for (size_t i = 0; C && i < s->k; i++)
+    if (s->wold[i] != 0)
+      {
+        double t = 0;
+        for (int p = C->p[i]; p < C->p[i + 1]; p++)
+          t += C->x[p] * x[C->i[p]];
+        for (int p = C->p[i]; p < C->p[i + 1]; p++)
+          y[C->i[p]] -= s->wold[i] * C->x[p] * t;
+      }
+  return LAC_SUCCESS;
+}
+
 /* ---- the other processes ------------------------------------------------ */
 
 /* The others: the root's command, the same steps as the root's with
@@ -793,6 +844,8 @@ follow (lac_petsc *s, const lac_petsc_command *c)
       return LAC_SUCCESS;
     case LAC_PETSC_CMD_MEMORY:
       return lac_petsc_memory_reply ();
+    case LAC_PETSC_CMD_KMUL:
+      return step_kmul (s, NULL, NULL);
     default:
       LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
     }
@@ -830,7 +883,7 @@ const lac_strategy_ops lac_petsc_ops = {
   .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
   .solve = petsc_solve, .get_counts = petsc_get_counts,
   .method = petsc_method, .set_coordinates = petsc_set_coordinates,
-  .set_mesh = petsc_set_mesh
+  .set_mesh = petsc_set_mesh, .kmul = petsc_kmul
 };
 
 #endif /* LAC_HAVE_PETSC */

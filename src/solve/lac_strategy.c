@@ -249,6 +249,20 @@ lac_strategy_set_mesh (lac_strategy *s, const struct lac_dist_source *src)
     s->type->ops->set_mesh (s->w, src);
 }
 
+int
+lac_strategy_kmul (lac_strategy *s, const double *x, double *y)
+{
+  if (!s->type->ops->kmul)
+    LAC_ERROR (LAC_EINVAL, "the strategy %s holds no K", s->type->name);
+  return s->type->ops->kmul (s->w, x, y);
+}
+
+int
+lac_strategy_has_kmul (const lac_strategy *s)
+{
+  return s->type->ops->kmul != NULL;
+}
+
 /* The residuals and corrections for n displacements, k multipliers. */
 static int
 work_arrays (lac_strategy *s, size_t n, size_t k)
@@ -301,7 +315,7 @@ int
 lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
 {
   double t0 = lac_seconds ();
-  int status = work_arrays (s, sys->K->ncol, sys->C->ncol);
+  int status = work_arrays (s, lac_system_n (sys), sys->C->ncol);
   if (status)
     return status;
   s->sys = sys;
@@ -316,11 +330,11 @@ int
 lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
                     int *kept)
 {
-  *kept = s->type->ops->reset && s->sys && s->n == sys->K->ncol;
+  *kept = s->type->ops->reset && s->sys && s->n == lac_system_n (sys);
   if (!*kept)
     return lac_strategy_set (s, sys);
   double t0 = lac_seconds ();
-  int status = work_arrays (s, sys->K->ncol, sys->C->ncol);
+  int status = work_arrays (s, lac_system_n (sys), sys->C->ncol);
   s->sys = sys;
   if (!status)
     status = s->type->ops->reset (s->w, sys);
@@ -344,14 +358,17 @@ solve_once (lac_strategy *s, const char *active, const double *f,
 static int
 refine (lac_strategy *s, const char *active, double *U, double *lambda)
 {
-  double be = lac_system_residual (s->sys, active, U, lambda, s->r, s->g);
+  double be;
+  int status = lac_system_residual (s->sys, active, U, lambda, s->r, s->g,
+                                    &be);
+  if (status)
+    return status;
   int krylov = s->type->factor == LAC_FACTOR_NONE;
   int steps = krylov ? MAX_REFINE_KRYLOV : MAX_REFINE;
   double tol = krylov ? TOL_KRYLOV : LAC_STRATEGY_TOL;
   for (int step = 0; step < steps && be > tol; step++)
     {
       double bnew;
-      int status;
       memset (s->dU, 0, s->n * sizeof *s->dU);
       memset (s->dl, 0, s->k * sizeof *s->dl);
       if ((status = solve_once (s, active, s->r, s->g, CG_RTOL_REFINE,
@@ -361,7 +378,9 @@ refine (lac_strategy *s, const char *active, double *U, double *lambda)
         s->dU[j] += U[j];                         /* trial U + dU */
       for (size_t i = 0; i < s->k; i++)
         s->dl[i] += lambda[i];
-      bnew = lac_system_residual (s->sys, active, s->dU, s->dl, s->r, s->g);
+      if ((status = lac_system_residual (s->sys, active, s->dU, s->dl, s->r,
+                                         s->g, &bnew)))
+        return status;
       s->counts.refinements++;
       if (!(bnew < be))
         break;                                    /* no better: keep U */

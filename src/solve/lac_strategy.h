@@ -239,6 +239,11 @@ void lac_strategy_set_coordinates (lac_strategy *s, int dim,
  * the processes that own them).  Before set; the others ignore them. */
 void lac_strategy_set_mesh (lac_strategy *s,
                             const struct lac_dist_source *src);
+/* y = K x with the K of the last set, from the type's own copy (the
+ * petsc strategy: its processes' rows; a collective call).  1 from
+ * _has_kmul if the type can. */
+int lac_strategy_kmul (lac_strategy *s, const double *x, double *y);
+int lac_strategy_has_kmul (const lac_strategy *s);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);

@@ -34,11 +34,14 @@ lac_system_norms (const lac_contact_system *sys, double *normK,
                   double *normC)
 {
   const lac_csc *K = sys->K, *C = sys->C;
-  double *row = lac_calloc (K->nrow ? K->nrow : 1, sizeof *row);
+  size_t n = lac_system_n (sys);
+  double *row = lac_calloc (n ? n : 1, sizeof *row);
   *normK = *normC = 0;
   if (!row)
     return;
-  for (size_t j = 0; j < K->ncol; j++)          /* K symmetric: columns */
+  if (!K)
+    *normK = sys->Kop->norm;
+  for (size_t j = 0; K && j < K->ncol; j++)     /* K symmetric: columns */
     {
       double sum = 0;
       for (int p = K->p[j]; p < K->p[j + 1]; p++)
@@ -62,15 +65,31 @@ norm_inf (size_t n, const double *x)
   return m;
 }
 
-double
+size_t
+lac_system_n (const lac_contact_system *sys)
+{
+  return sys->K ? sys->K->ncol : sys->Kop->n;
+}
+
+int
+lac_system_k_mult (const lac_contact_system *sys, const double *x, double *y)
+{
+  if (sys->K)
+    return lac_csc_matvec (sys->K, x, y);
+  return sys->Kop->mult (sys->Kop->self, x, y);
+}
+
+int
 lac_system_residual (const lac_contact_system *sys, const char *active,
                      const double *U, const double *lambda, double *r,
-                     double *g)
+                     double *g, double *berr)
 {
-  const lac_csc *K = sys->K, *C = sys->C;
-  size_t n = K->ncol, k = C->ncol;
+  const lac_csc *C = sys->C;
+  size_t n = lac_system_n (sys), k = C->ncol;
   double normK, normC, scale;
-  lac_csc_matvec (K, U, r);
+  int status = lac_system_k_mult (sys, U, r);
+  if (status)
+    return status;
   for (size_t j = 0; j < n; j++)
     r[j] = sys->F[j] - r[j];                               /* F - K U */
   for (size_t i = 0; i < k; i++)
@@ -87,8 +106,9 @@ lac_system_residual (const lac_contact_system *sys, const char *active,
   lac_system_norms (sys, &normK, &normC);
   scale = normK * norm_inf (n, U) + normC * norm_inf (k, lambda)
           + norm_inf (n, sys->F) + norm_inf (k, sys->G);
-  return fmax (norm_inf (n, r), norm_inf (k, g)) / (scale > 0 ? scale
-                                                    : 1e-300);
+  *berr = fmax (norm_inf (n, r), norm_inf (k, g)) / (scale > 0 ? scale
+                                                     : 1e-300);
+  return LAC_SUCCESS;
 }
 
 /* H = M^T M, M = C_A^T N (k x nfree), and the scale of each motion over
@@ -186,10 +206,10 @@ lac_system_column_scales (const lac_contact_system *sys, double *work,
                           double *s)
 {
   const lac_csc *K = sys->K, *C = sys->C;
-  for (size_t j = 0; j < K->ncol; j++)
+  for (size_t j = 0; j < lac_system_n (sys); j++)
     {
-      double kjj = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
+      double kjj = K ? 0 : fabs (sys->Kop->diag[j]);
+      for (int p = K ? K->p[j] : 0; K && p < K->p[j + 1]; p++)
         if ((size_t) K->i[p] == j)
           kjj = fabs (K->x[p]);
       work[j] = kjj > 0 ? 1 / kjj : 0.0;             /* diag(K)^-1 */

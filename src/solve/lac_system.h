@@ -41,9 +41,22 @@
 
 struct lac_dist_source;        /* fem/lac_assembly_dist.h */
 
+/* K without its entries: what the residuals need of it when no process
+ * holds it whole (the petsc strategy, whose processes hold its rows:
+ * solve/lac_petsc.h).  mult: y = K x (n), a collective call. */
+typedef struct lac_stiffness_op
+{
+  size_t n;
+  double norm;               /* ||K||_inf                               */
+  const double *diag;        /* borrowed, n: diag(K)                    */
+  void *self;
+  int (*mult) (void *self, const double *x, double *y);
+} lac_stiffness_op;
+
 typedef struct lac_contact_system
 {
-  const lac_csc *K;    /* borrowed, n x n, Dirichlet applied (symmetric)  */
+  const lac_csc *K;    /* borrowed, n x n, Dirichlet applied (symmetric);
+                          NULL: Kop                                       */
   const double *F;     /* borrowed, n                                     */
   const lac_csc *C;    /* borrowed, n x k, rows of fixed dofs are zero     */
   const double *G;     /* borrowed, k, mean gaps (fixed dofs moved in);
@@ -54,6 +67,7 @@ typedef struct lac_contact_system
   const double *N;     /* borrowed, n x nfree, column after column        */
   const char *const *N_what;  /* borrowed, nfree: "body 'upper':
                           translation along z", or NULL                    */
+  const lac_stiffness_op *Kop; /* borrowed; used when K is NULL          */
 } lac_contact_system;
 
 /* What the Cholesky-based solvers of (*) did (solve/lac_schur.h,
@@ -103,16 +117,25 @@ typedef struct lac_strategy_ops
   /* Optional: the cells K was assembled from (fem/lac_assembly_dist.h),
    * before set: a type that assembles K itself may use them. */
   void (*set_mesh) (void *w, const struct lac_dist_source *src);
+  /* Optional: y = K x with the K of the last set, from the type's own
+   * copy (the residuals of a system whose K is NULL: Kop). */
+  int (*kmul) (void *w, const double *x, double *y);
 } lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
  *   r = F - K U + C_A lambda_A   (n),   g = G_A - C_A^T U   (k; 0 on I).
- * Returns the normwise backward error of (*) in infinity norms,
+ * *berr: the normwise backward error of (*) in infinity norms,
  *   max(||r||, ||g||) / (||K|| ||U|| + ||C|| ||lambda|| + ||F|| + ||G||),
- * whatever the units and the contrast of the stiffnesses. */
-double lac_system_residual (const lac_contact_system *sys, const char *active,
-                            const double *U, const double *lambda,
-                            double *r, double *g);
+ * whatever the units and the contrast of the stiffnesses.  An error only
+ * from Kop's product. */
+int lac_system_residual (const lac_contact_system *sys, const char *active,
+                         const double *U, const double *lambda,
+                         double *r, double *g, double *berr);
+/* n, K's order (K or Kop). */
+size_t lac_system_n (const lac_contact_system *sys);
+/* y = K x (K or Kop). */
+int lac_system_k_mult (const lac_contact_system *sys, const double *x,
+                       double *y);
 /* ||K||_inf and ||C||_inf (max row sums). */
 void lac_system_norms (const lac_contact_system *sys, double *normK,
                        double *normC);

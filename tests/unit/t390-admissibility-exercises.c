@@ -315,7 +315,7 @@ press (double eps, double *force, double *gap3)
   lac_dirichlet_apply (D, K, F);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
   lac_contact_apply_dirichlet (all, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   st = lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 20, 1e-10, &s);
   check_status (st, LAC_SUCCESS, "ex3 press: newton at epsilon = %g", eps);

@@ -72,7 +72,7 @@ limit (lac_elem_type type)
   check_status (lac_contact_build (m, model, M, P, NULL, LAC_EPSILON_DEFAULT, &c),
                 LAC_SUCCESS, "contact");
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *lin = NULL;
   check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 30, 1e-10, &lin), LAC_SUCCESS, "linear");
 

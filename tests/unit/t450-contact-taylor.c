@@ -101,7 +101,7 @@ taylor (lac_elem_type type, int swap)
       lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
       check_int ((long) c->k, (long) M->n, "%s/%d: every macro-element admissible", tn, swap);
       /* 5. the active set */
-      lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+      lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
       lac_newton *s = NULL;
       st = lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 10, 1e-10, &s);
       check_status (st, LAC_SUCCESS, "%s/%d newton", tn, swap);

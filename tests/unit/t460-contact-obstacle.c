@@ -218,7 +218,7 @@ rigid_patch (lac_elem_type type, double g0)
   check_status (lac_contact_build (m, mat.model, M, P, NULL, 1e-2, &c), LAC_SUCCESS,
                 "%s g0 = %g: contact", re->name, g0);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 10, 1e-10, &s), LAC_SUCCESS, "%s g0 = %g: newton", re->name, g0);
   check_int (s->restarted, g0 > 0, "%s g0 = %g: restart from all active", re->name, g0);

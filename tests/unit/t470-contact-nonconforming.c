@@ -112,7 +112,7 @@ solve (problem *pb, double eps, int exact)
   lac_contact *c = NULL;
   lac_contact_build (m, pb->mat.model, pb->M, pb->P, &pb->Mf, eps, &c);
   lac_contact_apply_dirichlet (c, D->n, D->dof, D->val);
-  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, c->C, c->G, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &sys, 20, 1e-10, &s), LAC_SUCCESS, "%dD eps %g: newton", dim, eps);
   double el = 0, force = 0;

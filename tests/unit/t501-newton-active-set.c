@@ -60,7 +60,7 @@ main (void)
   lac_csc *K, *C;
   double F[N], G[KC], Uref[N], Lref[KC];
   build (&K, F, &C, G);
-  lac_contact_system sys = { K, F, C, G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, C, G, NULL, 0, NULL, NULL, NULL };
   const lac_strategy_kind kinds[4] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_SADDLE,
                                           LAC_STRATEGY_SCHUR, LAC_STRATEGY_AUGMENTED };
   for (int b = 0; b < 4; b++)
@@ -104,7 +104,7 @@ main (void)
   /* no contact at all: gaps far away -> no multiplier active, U = K^{-1} F */
   double Gfar[KC];
   for (int i = 0; i < KC; i++) Gfar[i] = 1e6;
-  lac_contact_system far = { K, F, C, Gfar, NULL, 0, NULL, NULL };
+  lac_contact_system far = { K, F, C, Gfar, NULL, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   check_status (lac_newton_solve_system (LAC_STRATEGY_SADDLE, &far, 10, 1e-10, &s), LAC_SUCCESS, "no contact");
   check_int ((long) lac_newton_nactive (s), 0, "no contact: active set empty");
@@ -117,7 +117,7 @@ main (void)
   lac_csc *C2 = lac_csc_from_triplet (T);
   lac_triplet_free (T);
   double G2[2] = { 0.1, 0.1 };
-  lac_contact_system dup = { K, F, C2, G2, NULL, 0, NULL, NULL };
+  lac_contact_system dup = { K, F, C2, G2, NULL, 0, NULL, NULL, NULL };
   s = NULL;
   check_status (lac_newton_solve_system (LAC_STRATEGY_SCHUR, &dup, 10, 1e-10, &s), LAC_ESING, "dependent constraints");
   check_message ("linearly dependent", "dependent constraints message");

@@ -266,7 +266,7 @@ no_contact (const lac_contact_system *with)
 {
   lac_csc *C0 = lac_csc_alloc (N, 0, 0);
   lac_contact_system sys = { with->K, with->F, C0, with->G, NULL, 0, NULL,
-                             NULL };
+                             NULL, NULL };
   double Uref[N] = { 0 }, U[N], lambda[1];
   lac_strategy *ref = lac_strategy_alloc_type (&gauss_type);
   check_status (lac_strategy_set (ref, &sys), LAC_SUCCESS, "k = 0: set");
@@ -384,8 +384,8 @@ main (void)
   lac_init ();
   build (-250.0, &Ki, F, &Ci, G);
   build (0.0, &K, F, &C, G);
-  lac_contact_system sys = { K, F, C, G, NULL, 0, NULL, NULL };
-  lac_contact_system indef = { Ki, F, C, G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { K, F, C, G, NULL, 0, NULL, NULL, NULL };
+  lac_contact_system indef = { Ki, F, C, G, NULL, 0, NULL, NULL, NULL };
   own_type (&sys);
   no_contact (&sys);
   fallback (&sys, &indef);

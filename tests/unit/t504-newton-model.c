@@ -59,7 +59,7 @@ pair (chain *c)
   c->C = lac_csc_from_triplet (T);
   lac_triplet_free (T);
   c->sys = (lac_contact_system) { c->K, c->F, c->C, c->G, NULL, 0, NULL,
-                                  NULL };
+                                  NULL, NULL };
 }
 
 static int

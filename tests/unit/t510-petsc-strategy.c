@@ -7,7 +7,10 @@
  * and without the nodal coordinates, and fieldsplit) gives the lambda
  * and U of the augmented strategy (CHOLMOD) to 1e-8 relative, and lambda
  * = -25 to 1e-8; the iterations and the true residual of the last solve
- * are reported.  Without multipliers (k = 0) it is the Cholesky solution
+ * are reported.  After the loop, K U from the strategy's processes
+ * (kappa K_W U - C W C^T U, what the root's residuals use once it freed
+ * its K) equals K U to 1e-12 relative.  Without multipliers (k = 0) it
+ * is the Cholesky solution
  * of K U = F.  A bad -lac_contact is refused with a message.  Built
  * without PETSc: the strategy fails with the apt-get line.  Runs on one
  * process; tests/cases-petsc.sh runs lac on two.
@@ -136,7 +139,7 @@ newton (const taylor *t, lac_strategy_kind kind, int coords, double *U,
         double *lambda, lac_strategy_counts *cnt)
 {
   lac_contact_system sys = { t->K, t->F, t->c->C, t->c->G, NULL, 0, NULL,
-                             NULL };
+                             NULL, NULL };
   lac_linear_model lin;
   lac_contact_model m;
   lac_newton_opts o;
@@ -154,6 +157,20 @@ newton (const taylor *t, lac_strategy_kind kind, int coords, double *U,
   if (coords)
     lac_strategy_set_coordinates (s->strategy, t->m->dim, t->m->x);
   st = lac_newton_solve (s);
+  if (!st && kind == LAC_STRATEGY_PETSC)        /* K U from the processes */
+    {
+      double *y0 = malloc (t->ndof * sizeof *y0);
+      double *y1 = malloc (t->ndof * sizeof *y1);
+      int sk = lac_strategy_kmul (s->strategy, s->U, y1);
+      check_status (sk, LAC_SUCCESS, "kmul");
+      lac_csc_matvec (t->K, s->U, y0);
+      if (!sk)
+        check_true (reldiff (t->ndof, y1, y0) <= 1e-12,
+                    "kappa K_W U - C W C^T U against K U: %.2e",
+                    reldiff (t->ndof, y1, y0));
+      free (y0);
+      free (y1);
+    }
   if (!st)
     {
       memcpy (U, s->U, t->ndof * sizeof *U);
@@ -223,7 +240,7 @@ plain (void)
   for (int comp = 0; comp < 3; comp++)
     fix (D, t.m, "up.zmin", comp);
   lac_dirichlet_apply (D, t.K, t.F);
-  lac_contact_system sys = { t.K, t.F, C, NULL, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { t.K, t.F, C, NULL, NULL, 0, NULL, NULL, NULL };
   lac_strategy *s = lac_strategy_alloc (LAC_STRATEGY_PETSC);
   lac_solver *chol = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
   double *U = calloc (t.ndof, sizeof *U), *V = calloc (t.ndof, sizeof *V);

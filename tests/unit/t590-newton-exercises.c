@@ -174,7 +174,7 @@ static const lac_strategy_kind kinds[4] = { LAC_STRATEGY_DENSE, LAC_STRATEGY_SAD
 static lac_newton *
 solve (const problem *pb, lac_strategy_kind kind, const double *rho, int *st)
 {
-  lac_contact_system sys = { pb->K, pb->F, pb->c->C, pb->c->G, rho, 0, NULL, NULL };
+  lac_contact_system sys = { pb->K, pb->F, pb->c->C, pb->c->G, rho, 0, NULL, NULL, NULL };
   lac_newton *s = NULL;
   *st = lac_newton_solve_system (kind, &sys, 20, 1e-10, &s);
   return s;
@@ -313,7 +313,7 @@ exercise4 (void)
   for (int r = 0; r < 3; r++)
     {
       double rho[KC] = { rhos[r], rhos[r], rhos[r], rhos[r] };
-      lac_contact_system sys = { K, F, C, gap, r ? rho : NULL, 0, NULL, NULL };
+      lac_contact_system sys = { K, F, C, gap, r ? rho : NULL, 0, NULL, NULL, NULL };
       for (int b = 0; b < 4; b++)
         {
           const char *kn = lac_strategy_name (kinds[b]);

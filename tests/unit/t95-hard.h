@@ -258,7 +258,7 @@ hard_run (const hard_spec *sp, hard *h)
                                          h->D->val)))
     return hard_fail (h, "contact", st);
   /* 6. the active set */
-  lac_contact_system sys = { h->K, h->F, h->c->C, h->c->G, NULL, 0, NULL, NULL };
+  lac_contact_system sys = { h->K, h->F, h->c->C, h->c->G, NULL, 0, NULL, NULL, NULL };
   lac_strategy_kind kind = LAC_STRATEGY_SADDLE;
   if (sp->solver)
     kind = (lac_strategy_kind) lac_strategy_from_name (sp->solver);
