@@ -63,7 +63,15 @@ doc_run () {
     -e "s#^\([ (;]*\)\(build/\)\{0,1\}lac #\1$DOC_LAC #" \
     -e "s#\([ (;]\)\(build/\)\{0,1\}lac #\1$DOC_LAC #g" \
     -e "s#^build/chapters/#$DOC_ROOT/$B/chapters/#")
-  (cd "$DOC_TMP/run" && sh -c "$cmd")
+  # a command that may start MPI (petsc, mpirun, or auto under a
+  # --max-memory that takes petsc) unwinds in full under make test-asan,
+  # as in cases-petsc.sh: else the leak checker cannot see that the
+  # start-up data it reports are Open MPI's (tests/lsan.supp)
+  case $1 in
+    *petsc*|*mpirun*|*--max-memory*) da="${ASAN_OPTIONS:-}${LAC_MPI_ASAN:-}" ;;
+    *) da="${ASAN_OPTIONS:-}" ;;
+  esac
+  (cd "$DOC_TMP/run" && ASAN_OPTIONS="$da" sh -c "$cmd")
 }
 
 # ---- doc-paths -------------------------------------------------------------
