@@ -52,6 +52,10 @@ int lac_csc_matvec (const lac_csc *A, const double *x, double *y); /* y = A x */
 lac_csc *lac_csc_transpose (const lac_csc *A);
 lac_csc *lac_csc_copy (const lac_csc *A);
 int lac_csc_write_mm (const lac_csc *A, const char *path);  /* Matrix Market */
+/* The diagonal of a square A into d (ncol entries, 0 where none is
+ * stored; d may be NULL) and its 1-norm, the largest column sum of
+ * |a_ij| (the infinity norm too when A is symmetric, as K is). */
+double lac_csc_diag_norm1 (const lac_csc *A, double *d);
 /* The augmented matrix K + C W C^T of the contact solves [LAC (17)]:
  * the pattern of K + C C^T with the values of K (zeros elsewhere), made
  * once; then A = K + C diag(w) C^T in that pattern (w_i = 0: column i

@@ -16,6 +16,7 @@
 
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 #include "base/lac_file.h"
@@ -270,6 +271,26 @@ lac_csc_matvec (const lac_csc *A, const double *x, double *y)
     for (int q = A->p[j]; q < A->p[j + 1]; q++)
       y[A->i[q]] += A->x[q] * x[j];                    /* y += A(:,j) x_j */
   return LAC_SUCCESS;
+}
+
+double
+lac_csc_diag_norm1 (const lac_csc *A, double *d)
+{
+  double norm = 0;
+  for (size_t j = 0; j < A->ncol; j++)
+    {
+      double sum = 0;                              /* sum_i |a_ij| */
+      if (d)
+        d[j] = 0;
+      for (int q = A->p[j]; q < A->p[j + 1]; q++)
+        {
+          sum += fabs (A->x[q]);
+          if (d && (size_t) A->i[q] == j)
+            d[j] = A->x[q];                        /* a_jj */
+        }
+      norm = fmax (norm, sum);
+    }
+  return norm;
 }
 
 lac_csc *

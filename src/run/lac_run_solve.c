@@ -40,9 +40,44 @@ krylov_counts (const lac_strategy *s, lac_run_solution *sol)
   sol->processes = c.processes;
 }
 
-/* K u = b, no contact (k = 0), by the strategy asked for. */
+/* kop's product: the strategy's K x (sol->kst). */
 static int
-solve_plain_strategy (int strategy, const lac_run_system *sys,
+kmul_root (void *solution, const double *x, double *y)
+{
+  lac_run_solution *sol = solution;
+  return lac_strategy_kmul (sol->kst, sol->kop.n, x, y);
+}
+
+/* When the strategy assembles its own K from the cells (petsc,
+ * lac_strategy_own_k): the root keeps of its K only diag(K) and ||K||_inf
+ * (the residuals take K x from the strategy: cs's Kop) and frees it
+ * before the solve: a million hex8 dofs, 1 GB less on the root (chapter
+ * 13, section 6).  Else nothing changes. */
+static int
+drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol,
+             lac_contact_system *cs)
+{
+  double normK;
+  if (!sys->K || !lac_strategy_own_k (st, sys->ndof))
+    return LAC_SUCCESS;
+  if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
+                                 sizeof *sol->kdiag)))
+    LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
+  normK = lac_csc_diag_norm1 (sys->K, sol->kdiag);  /* K symmetric */
+  sol->kst = st;
+  sol->kop = (lac_stiffness_op) { sys->ndof, normK, sol->kdiag, sol,
+                                  kmul_root };
+  cs->K = NULL;
+  cs->Kop = &sol->kop;
+  lac_csc_free (sys->K);
+  sys->K = NULL;
+  return LAC_SUCCESS;
+}
+
+/* K u = b, no contact (k = 0), by the strategy asked for (petsc from
+ * the cells: the root's K freed first, as with contact). */
+static int
+solve_plain_strategy (int strategy, lac_run_system *sys,
                       lac_run_solution *sol, char *progress, size_t size)
 {
   static const double G[1] = { 0 };
@@ -59,7 +94,8 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
       lac_strategy_set_coordinates (s, sys->coord_dim, sys->x);
       lac_strategy_set_mesh (s, sys->cells.mesh ? &sys->cells : NULL);
       memset (sol->u, 0, sys->ndof * sizeof *sol->u);
-      if (!(status = lac_strategy_set (s, &cs)))
+      if (!(status = drop_root_k (sys, s, sol, &cs))
+          && !(status = lac_strategy_set (s, &cs)))
         status = lac_strategy_solve (s, "", sol->u, lambda);
       krylov_counts (s, sol);
       lac_strategy_get_counts (s, &c);
@@ -74,6 +110,7 @@ solve_plain_strategy (int strategy, const lac_run_system *sys,
     snprintf (progress, size, "%s, rcond %.1e", lac_strategy_method (s),
               sol->rcond = c.rcond);
   lac_strategy_free (s);
+  sol->kst = NULL;
   lac_csc_free (C);
   return status;
 }
@@ -154,58 +191,6 @@ auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
          : "auto: a Cholesky factor would not fit in --max-memory";
 }
 
-/* kop's product: K 0 = 0 before the strategy has its matrices (the loop
- * begins at U = 0), else the strategy's. */
-static int
-kmul_root (void *solution, const double *x, double *y)
-{
-  lac_run_solution *sol = solution;
-  size_t n = sol->kop.n;
-  int zero = 1;
-  for (size_t j = 0; zero && j < n; j++)
-    zero = x[j] == 0;
-  if (zero)
-    {
-      memset (y, 0, n * sizeof *y);
-      return LAC_SUCCESS;
-    }
-  return lac_strategy_kmul (sol->newton->strategy, x, y);
-}
-
-/* When the strategy assembles K on its processes from the cells (petsc):
- * the root keeps of its K only diag(K) and ||K||_inf (the residuals take
- * K x from the strategy, lac_system.h's Kop) and frees it: a million
- * hex8 dofs, 1 GB less on the root (chapter 13, section 6). */
-static int
-drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol)
-{
-  const lac_csc *K = sys->K;
-  double normK = 0;
-  if (!K || !sys->cells.mesh || !sys->x || !lac_strategy_has_kmul (st))
-    return LAC_SUCCESS;
-  if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
-                                 sizeof *sol->kdiag)))
-    LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
-  for (size_t j = 0; j < K->ncol; j++)
-    {
-      double sum = 0;                 /* K symmetric: column sums = rows */
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        {
-          sum += fabs (K->x[p]);
-          if ((size_t) K->i[p] == j)
-            sol->kdiag[j] = K->x[p];
-        }
-      normK = fmax (normK, sum);
-    }
-  sol->kop = (lac_stiffness_op) { sys->ndof, normK, sol->kdiag, sol,
-                                  kmul_root };
-  sol->cs.K = NULL;
-  sol->cs.Kop = &sol->kop;
-  lac_csc_free (sys->K);
-  sys->K = NULL;
-  return LAC_SUCCESS;
-}
-
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
@@ -235,7 +220,7 @@ contact_start (const lac_scene *sc, int strategy,
     return LAC_EDEP;           /* the message says which and why */
   lac_strategy_set_coordinates (st, sys->coord_dim, sys->x);
   lac_strategy_set_mesh (st, sys->cells.mesh ? &sys->cells : NULL);
-  if ((status = drop_root_k (sys, st, sol))
+  if ((status = drop_root_k (sys, st, sol, &sol->cs))
       || (status = lac_linear_model_init_set (&sol->lin, &sol->cs,
                                               &setup->set, &setup->data,
                                               sys->dir, young_min (sc),

@@ -48,6 +48,7 @@ typedef struct lac_run_solution
   lac_stiffness_op kop;        /* K for the residuals when the strategy
                                   holds it (petsc): the system's K freed  */
   double *kdiag;               /* owned, ndof: kop's diag(K)              */
+  lac_strategy *kst;           /* borrowed: the strategy kop asks for K x */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.

@@ -501,18 +501,34 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
   return describe (s);
 }
 
+/* The block size of n dofs: dim with the coordinates of dim per node. */
+static size_t
+block_size (const lac_petsc *s, size_t n)
+{
+  return s->dim > 0 && n % (size_t) s->dim == 0 ? (size_t) s->dim : 1;
+}
+
+/* 1 if K of these n dofs comes from the cells of set_mesh (dim dofs a
+ * node, the coordinates given), not from the root's K. */
+static int
+petsc_own_k (const void *w, size_t n)
+{
+  const lac_petsc *s = w;
+  return s->src && s->src->mesh && (size_t) s->src->mesh->dim
+         * s->src->mesh->nnodes == n
+         && (int) block_size (s, n) == s->src->mesh->dim;
+}
+
 /* The root: the command of a new pattern; K from the cells when a mesh of
  * these dofs was given (set_mesh). */
 static int
 root_build (lac_petsc *s, const lac_contact_system *sys)
 {
   size_t n = lac_system_n (sys), k = sys->C ? sys->C->ncol : 0;
-  size_t bs = s->dim > 0 && n % (size_t) s->dim == 0 ? (size_t) s->dim : 1;
+  size_t bs = block_size (s, n);
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
-    .n = (long long) n, .k = (long long) k,
-    .cells = s->src && s->src->mesh && (size_t) s->src->mesh->dim
-             * s->src->mesh->nnodes == n && (int) bs == s->src->mesh->dim };
+    .n = (long long) n, .k = (long long) k, .cells = petsc_own_k (s, n) };
   int status;
   if (!c.cells && !sys->K)
     LAC_ERROR (LAC_EINVAL, "petsc: no K and no cells of these dofs to "
@@ -883,7 +899,7 @@ const lac_strategy_ops lac_petsc_ops = {
   .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
   .solve = petsc_solve, .get_counts = petsc_get_counts,
   .method = petsc_method, .set_coordinates = petsc_set_coordinates,
-  .set_mesh = petsc_set_mesh, .kmul = petsc_kmul
+  .set_mesh = petsc_set_mesh, .kmul = petsc_kmul, .own_k = petsc_own_k
 };
 
 #endif /* LAC_HAVE_PETSC */

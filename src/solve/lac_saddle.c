@@ -97,14 +97,9 @@ saddle_scaling (const lac_saddle *s, const char *active)
 {
   const lac_csc *K = s->sys->K, *C = s->sys->C;
   double *D = s->D;
+  lac_csc_diag_norm1 (K, D);                       /* D = diag(K) */
   for (size_t j = 0; j < s->n; j++)
-    {
-      double kjj = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        if ((size_t) K->i[p] == j)
-          kjj = fabs (K->x[p]);
-      D[j] = kjj > 0 ? 1 / sqrt (kjj) : 1.0;
-    }
+    D[j] = D[j] != 0 ? 1 / sqrt (fabs (D[j])) : 1.0;
   for (size_t i = 0; i < s->k; i++)
     {
       double cmax = 0;

@@ -250,17 +250,26 @@ lac_strategy_set_mesh (lac_strategy *s, const struct lac_dist_source *src)
 }
 
 int
-lac_strategy_kmul (lac_strategy *s, const double *x, double *y)
+lac_strategy_kmul (lac_strategy *s, size_t n, const double *x, double *y)
 {
+  int zero = 1;
+  for (size_t j = 0; zero && j < n; j++)
+    zero = x[j] == 0;
+  if (zero)                 /* K 0 = 0, before any set too (U = 0) */
+    {
+      memset (y, 0, n * sizeof *y);
+      return LAC_SUCCESS;
+    }
   if (!s->type->ops->kmul)
     LAC_ERROR (LAC_EINVAL, "the strategy %s holds no K", s->type->name);
   return s->type->ops->kmul (s->w, x, y);
 }
 
 int
-lac_strategy_has_kmul (const lac_strategy *s)
+lac_strategy_own_k (const lac_strategy *s, size_t n)
 {
-  return s->type->ops->kmul != NULL;
+  return s->type->ops->kmul && s->type->ops->own_k
+         && s->type->ops->own_k (s->w, n);
 }
 
 /* The residuals and corrections for n displacements, k multipliers. */

@@ -239,11 +239,17 @@ void lac_strategy_set_coordinates (lac_strategy *s, int dim,
  * the processes that own them).  Before set; the others ignore them. */
 void lac_strategy_set_mesh (lac_strategy *s,
                             const struct lac_dist_source *src);
-/* y = K x with the K of the last set, from the type's own copy (the
- * petsc strategy: its processes' rows; a collective call).  1 from
- * _has_kmul if the type can. */
-int lac_strategy_kmul (lac_strategy *s, const double *x, double *y);
-int lac_strategy_has_kmul (const lac_strategy *s);
+/* 1 if the type assembles its own K of these n dofs from the cells of
+ * set_mesh (petsc, with the coordinates): the system's K may then be
+ * NULL (lac_system.h's Kop), K x coming from _kmul.  After set_mesh and
+ * set_coordinates. */
+int lac_strategy_own_k (const lac_strategy *s, size_t n);
+/* y = K x (n) with the K of the last set, from the type's own copy (the
+ * petsc strategy: its processes' rows; a collective call); x = 0 gives
+ * y = 0 without the type, also before the first set (Algorithm 1's
+ * first residual, at U = 0). */
+int lac_strategy_kmul (lac_strategy *s, size_t n, const double *x,
+                       double *y);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);

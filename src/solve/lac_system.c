@@ -39,15 +39,7 @@ lac_system_norms (const lac_contact_system *sys, double *normK,
   *normK = *normC = 0;
   if (!row)
     return;
-  if (!K)
-    *normK = sys->Kop->norm;
-  for (size_t j = 0; K && j < K->ncol; j++)     /* K symmetric: columns */
-    {
-      double sum = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        sum += fabs (K->x[p]);
-      *normK = fmax (*normK, sum);
-    }
+  *normK = K ? lac_csc_diag_norm1 (K, NULL) : sys->Kop->norm;
   for (size_t i = 0; i < C->ncol; i++)          /* row sums of C */
     for (int p = C->p[i]; p < C->p[i + 1]; p++)
       row[C->i[p]] += fabs (C->x[p]);
@@ -205,15 +197,14 @@ void
 lac_system_column_scales (const lac_contact_system *sys, double *work,
                           double *s)
 {
-  const lac_csc *K = sys->K, *C = sys->C;
-  for (size_t j = 0; j < lac_system_n (sys); j++)
-    {
-      double kjj = K ? 0 : fabs (sys->Kop->diag[j]);
-      for (int p = K ? K->p[j] : 0; K && p < K->p[j + 1]; p++)
-        if ((size_t) K->i[p] == j)
-          kjj = fabs (K->x[p]);
-      work[j] = kjj > 0 ? 1 / kjj : 0.0;             /* diag(K)^-1 */
-    }
+  const lac_csc *C = sys->C;
+  size_t n = lac_system_n (sys);
+  if (sys->K)
+    lac_csc_diag_norm1 (sys->K, work);
+  else
+    memcpy (work, sys->Kop->diag, n * sizeof *work);
+  for (size_t j = 0; j < n; j++)
+    work[j] = work[j] != 0 ? 1 / fabs (work[j]) : 0.0;   /* diag(K)^-1 */
   for (size_t i = 0; i < C->ncol; i++)
     {
       s[i] = 0;

@@ -118,8 +118,11 @@ typedef struct lac_strategy_ops
    * before set: a type that assembles K itself may use them. */
   void (*set_mesh) (void *w, const struct lac_dist_source *src);
   /* Optional: y = K x with the K of the last set, from the type's own
-   * copy (the residuals of a system whose K is NULL: Kop). */
+   * copy (the residuals of a system whose K is NULL: Kop); own_k: 1 if
+   * the type assembles that copy for these n dofs from set_mesh's cells,
+   * so that the caller's K may be NULL. */
   int (*kmul) (void *w, const double *x, double *y);
+  int (*own_k) (const void *w, size_t n);
 } lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):

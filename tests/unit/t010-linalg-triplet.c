@@ -1,5 +1,5 @@
 /* t010: triplets -> CSC: duplicates summed, rows sorted, transpose, matvec
- * against a dense reference, growth and argument errors. */
+ * against a dense reference, diagonal and 1-norm, growth and argument errors. */
 #include <stdlib.h>
 #include "check.h"
 #include "linalg/lac_linalg.h"
@@ -120,9 +120,15 @@ test_block (void)
   if (K)
     {
       check_int (K->p[5], 13, "tridiagonal 5x5: 13 entries");
+      double d[5];
       for (size_t i = 0; i < 5; i++)
         for (size_t j = 0; j < 5; j++)
           check_abs (csc_get (K, i, j), want[i][j], 0, "K(%zu,%zu)", i, j);
+      /* diag(K) = (1 2 2 2 1), ||K||_1 = |-1| + 2 + |-1| = 4 */
+      check_abs (lac_csc_diag_norm1 (K, d), 4, 0, "||K||_1");
+      for (size_t j = 0; j < 5; j++)
+        check_abs (d[j], want[j][j], 0, "diag(K)_%zu", j);
+      check_abs (lac_csc_diag_norm1 (K, NULL), 4, 0, "||K||_1, no diag");
     }
   lac_csc_free (K);
   lac_triplet_free (T);

@@ -161,8 +161,10 @@ newton (const taylor *t, lac_strategy_kind kind, int coords, double *U,
     {
       double *y0 = malloc (t->ndof * sizeof *y0);
       double *y1 = malloc (t->ndof * sizeof *y1);
-      int sk = lac_strategy_kmul (s->strategy, s->U, y1);
+      int sk = lac_strategy_kmul (s->strategy, t->ndof, s->U, y1);
       check_status (sk, LAC_SUCCESS, "kmul");
+      check_true (!lac_strategy_own_k (s->strategy, t->ndof),
+                  "no cells given: the strategy's K is the root's");
       lac_csc_matvec (t->K, s->U, y0);
       if (!sk)
         check_true (reldiff (t->ndof, y1, y0) <= 1e-12,
