@@ -26,7 +26,9 @@
 #                    petsc instead of the refusal, which stays when petsc
 #                    does not fit either;
 #   contact pc       the 3D patch test (n = 20) within 1.5 times the CG
-#                    iterations of the cube of the same size;
+#                    iterations of the cube of the same size, and the
+#                    oblique projection P_Z (one Jacobi step) fewer than
+#                    the l2 one (-lac_projection_steps 0), lambda to 1e-9;
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
@@ -246,7 +248,8 @@ if [ "$have_petsc" = 1 ]; then
   # ---- the contact solve against plain elasticity (chapter 13, section 1):
   # the patch test at n = 20 (52,866 dofs) within 1.5 times the CG
   # iterations of the cube at n = 25 (52,728 dofs); 52 against 20 without
-  # the threshold on GAMG's finest level, 27 with it.
+  # the threshold on GAMG's finest level, 27 with it, 25 with the oblique
+  # projection.
   if petsc_run pc-taylor "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
      && petsc_run pc-cube bench/cube.scene --set mesh.numbers=n=25 --strategy petsc; then
     a=$(petsc_value "$C/pc-taylor.out" solver_iterations) b=$(petsc_value "$C/pc-cube.out" solver_iterations)
@@ -255,6 +258,17 @@ if [ "$have_petsc" = 1 ]; then
     else
       petsc_fail "contact solve within 1.5 x the iterations of plain elasticity" \
         "patch test $a CG iterations, cube $b (want <= 1.5 x)"
+    fi
+    if petsc_run pc-taylor-l2 "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
+         --petsc-options "-lac_projection_steps 0"; then
+      a0=$(petsc_value "$C/pc-taylor-l2.out" solver_iterations)
+      e=$(petsc_value "$C/pc-taylor.out" max_rel_err_lambda)
+      if awk -v a="$a" -v a0="$a0" -v e="$e" 'BEGIN { exit !(a > 0 && a < a0 && e <= 1e-9) }'; then
+        petsc_ok "the oblique projection saves iterations"
+      else
+        petsc_fail "the oblique projection saves iterations" \
+          "P_Z: $a CG iterations (max_rel_err_lambda $e), l2 P: $a0 (want fewer, lambda to 1e-9)"
+      fi
     fi
   fi
 

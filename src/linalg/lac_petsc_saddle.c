@@ -14,6 +14,7 @@
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
+#define PROJECTION_STEPS 1    /* projected: Jacobi steps of Z ~ K^-1 B   */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
@@ -34,6 +35,12 @@ struct lac_petsc_saddle
   Mat Bl, Gl;                      /* N > 1: the own rows of B, a copy
                                       of G                               */
   KSP kl;                          /*   its LU (prefix gram_local_)      */
+  int steps;                       /* Jacobi steps of Z (0: P only)      */
+  Mat Z, Gz;                       /* Z ~ K^-1 B; B^T Z + D              */
+  KSP kz;                          /*   its LU (prefix gramz_)           */
+  Mat Zl, Gzl;                     /* N > 1: Z's own rows, a copy of G_Z */
+  KSP kzl;                         /*   its LU (prefix gramz_local_)     */
+  Vec dinv;                        /* diag(K)^-1                         */
   Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)      */
   /* fieldsplit */
   Mat Bt, D, Sp, A;                /* A = [K B; B^T D]                    */
@@ -46,12 +53,13 @@ lac_petsc_saddle_free (lac_petsc_saddle *sv)
 {
   if (!sv)
     return;
-  KSP *ksp[] = { &sv->ku, &sv->kg, &sv->kp, &sv->kl, &sv->ks };
+  KSP *ksp[] = { &sv->ku, &sv->kg, &sv->kp, &sv->kl, &sv->ks, &sv->kz,
+                 &sv->kzl };
   Mat *mat[] = { &sv->G, &sv->Ah, &sv->Bl, &sv->Gl, &sv->A, &sv->Bt,
-                 &sv->D, &sv->Sp };
+                 &sv->D, &sv->Sp, &sv->Z, &sv->Gz, &sv->Zl, &sv->Gzl };
   Vec *vec[] = { &sv->ru, &sv->u0, &sv->bu, &sv->tu, &sv->tk, &sv->sk,
                  &sv->vl, &sv->ul, &sv->tl, &sv->tg, &sv->sl, &sv->b,
-                 &sv->x, &sv->r, &sv->dx };
+                 &sv->x, &sv->r, &sv->dx, &sv->dinv };
   for (size_t i = 0; i < COUNT (ksp); i++)
     KSPDestroy (ksp[i]);
   PCDestroy (&sv->pg);
@@ -75,49 +83,68 @@ default_option (const char *name, const char *value)
 
 /* ---- the projection ----------------------------------------------------- */
 
-/* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
- * of B (l2-orthogonal projection on the null space of B^T). */
-static PetscErrorCode project_local (lac_petsc_saddle *sv, Vec v);
-
-static PetscErrorCode
-project (lac_petsc_saddle *sv, Vec v)
+/* *ksp: one application of a factorization (pc_type: PCLU on a
+ * process's own copy, PCREDUNDANT on a distributed matrix), options
+ * prefix `prefix`. */
+static int
+direct_solver (MPI_Comm comm, const char *prefix, PCType pc_type, KSP *ksp)
 {
-  if (sv->kl)
-    return project_local (sv, v);
-  PetscCall (MatMultTranspose (sv->B, v, sv->tk));
-  PetscCall (KSPSolve (sv->kg, sv->tk, sv->sk));
-  PetscCall (MatMult (sv->B, sv->sk, sv->tu));
-  PetscCall (VecAXPY (v, -1.0, sv->tu));
-  return 0;
+  PC pc;
+  TRY (KSPCreate (comm, ksp));
+  TRY (KSPSetOptionsPrefix (*ksp, prefix));
+  TRY (KSPSetType (*ksp, KSPPREONLY));
+  TRY (KSPGetPC (*ksp, &pc));
+  TRY (PCSetType (pc, pc_type));
+  TRY (KSPSetFromOptions (*ksp));
+  return LAC_SUCCESS;
 }
 
-/* The same on N > 1 processes with one reduction: each process makes
- * B_own^T v_own from its rows, one MPI_Allreduce sums them, each solves
- * with its own copy of G and subtracts B_own s from its rows (instead of
- * the scatters of B^T v, of PCREDUNDANT and of B s: fewer waits for the
+/* v -= Y G^-1 X^T v (G^-T: trans), G's solver kx: the projections'
+ * common step.  On N > 1 processes (Xl, Yl: the own rows of X and Y, kl
+ * a copy of G's LU on every process) with one reduction: each process
+ * makes X_own^T v_own, one MPI_Allreduce sums them, each solves with its
+ * own copy of G and subtracts Y_own s from its rows (instead of the
+ * scatters of X^T v, of PCREDUNDANT and of Y s: fewer waits for the
  * other processes, twice per CG iteration). */
 static PetscErrorCode
-project_local (lac_petsc_saddle *sv, Vec v)
+subtract (lac_petsc_saddle *sv, Mat X, Mat Y, KSP kx, Mat Xl, Mat Yl,
+          KSP kl, int trans, Vec v)
 {
   PetscScalar *a, *g;
   const PetscScalar *t;
   PetscInt k;
+  if (!kl)
+    {
+      PetscCall (MatMultTranspose (X, v, sv->tk));
+      PetscCall ((trans ? KSPSolveTranspose : KSPSolve) (kx, sv->tk,
+                                                          sv->sk));
+      PetscCall (MatMult (Y, sv->sk, sv->tu));
+      return VecAXPY (v, -1.0, sv->tu);
+    }
   PetscCall (VecGetSize (sv->tg, &k));
   PetscCall (VecGetArray (v, &a));
   PetscCall (VecPlaceArray (sv->vl, a));
-  PetscCall (MatMultTranspose (sv->Bl, sv->vl, sv->tl));
+  PetscCall (MatMultTranspose (Xl, sv->vl, sv->tl));
   PetscCall (VecGetArrayRead (sv->tl, &t));
   PetscCall (VecGetArray (sv->tg, &g));
   PetscCallMPI (MPI_Allreduce (t, g, (int) k, MPIU_SCALAR, MPIU_SUM,
                                PETSC_COMM_WORLD));
   PetscCall (VecRestoreArray (sv->tg, &g));
   PetscCall (VecRestoreArrayRead (sv->tl, &t));
-  PetscCall (KSPSolve (sv->kl, sv->tg, sv->sl));
-  PetscCall (MatMult (sv->Bl, sv->sl, sv->ul));
+  PetscCall ((trans ? KSPSolveTranspose : KSPSolve) (kl, sv->tg, sv->sl));
+  PetscCall (MatMult (Yl, sv->sl, sv->ul));
   PetscCall (VecAXPY (sv->vl, -1.0, sv->ul));
   PetscCall (VecResetArray (sv->vl));
   PetscCall (VecRestoreArray (v, &a));
   return 0;
+}
+
+/* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
+ * of B (l2-orthogonal projection on the null space of B^T). */
+static PetscErrorCode
+project (lac_petsc_saddle *sv, Vec v)
+{
+  return subtract (sv, sv->B, sv->B, sv->kg, sv->Bl, sv->Bl, sv->kl, 0, v);
 }
 
 /* N > 1: the own rows of B and a copy of G on every process, G's LU
@@ -125,8 +152,8 @@ project_local (lac_petsc_saddle *sv, Vec v)
 static int
 update_local (lac_petsc_saddle *sv)
 {
-  PC pc;
   PetscInt nl, k;
+  int status;
   TRY (MatGetLocalSize (sv->B, &nl, NULL));
   TRY (MatGetSize (sv->B, NULL, &k));
   TRY (MatMPIAIJGetLocalMat (sv->B, sv->Bl ? MAT_REUSE_MATRIX
@@ -136,12 +163,9 @@ update_local (lac_petsc_saddle *sv)
                                  &sv->Gl));
   if (!sv->kl)
     {
-      TRY (KSPCreate (PetscObjectComm ((PetscObject) sv->Gl), &sv->kl));
-      TRY (KSPSetOptionsPrefix (sv->kl, "gram_local_"));
-      TRY (KSPSetType (sv->kl, KSPPREONLY));
-      TRY (KSPGetPC (sv->kl, &pc));
-      TRY (PCSetType (pc, PCLU));
-      TRY (KSPSetFromOptions (sv->kl));
+      if ((status = direct_solver (PetscObjectComm ((PetscObject) sv->Gl),
+                                   "gram_local_", PCLU, &sv->kl)))
+        return status;
       TRY (MatCreateVecs (sv->Gl, &sv->sl, &sv->tg));
       TRY (VecCreateSeqWithArray (PETSC_COMM_SELF, 1, nl, NULL, &sv->vl));
       TRY (VecCreateSeq (PETSC_COMM_SELF, nl, &sv->ul));
@@ -161,14 +185,24 @@ projected_op (Mat A, Vec x, Vec y)
   return project (sv, y);
 }
 
-/* Its preconditioner: z = P M r, M one V-cycle of multigrid on K. */
+/* Its preconditioner, M one V-cycle of multigrid on K: z = P M r, or
+ * with Z (steps > 0) z = P_Z M P_Z^T r, P_Z = I - Z G_Z^-1 B^T and
+ * G_Z = B^T Z + D: P_Z is K-orthogonal when Z = K^-1 B. */
 static PetscErrorCode
 projected_pc (PC pc, Vec r, Vec z)
 {
   lac_petsc_saddle *sv;
   PetscCall (PCShellGetContext (pc, &sv));
-  PetscCall (PCApply (sv->pg, r, z));
-  return project (sv, z);
+  if (!sv->steps)
+    {
+      PetscCall (PCApply (sv->pg, r, z));
+      return project (sv, z);
+    }
+  PetscCall (VecCopy (r, sv->ru));                     /* P_Z^T r */
+  PetscCall (subtract (sv, sv->Z, sv->B, sv->kz, sv->Zl, sv->Bl, sv->kzl, 1,
+                       sv->ru));
+  PetscCall (PCApply (sv->pg, sv->ru, z));             /* M */
+  return subtract (sv, sv->B, sv->Z, sv->kz, sv->Bl, sv->Zl, sv->kzl, 0, z);
 }
 
 /* ---- the solvers -------------------------------------------------------- */
@@ -208,8 +242,15 @@ create_projected (lac_petsc_saddle *sv, double threshold)
 {
   PetscReal th[2] = { threshold, 0.0 };
   PetscBool set = PETSC_FALSE;
-  PetscInt nl, n;
+  PetscInt nl, n, steps = PROJECTION_STEPS;
   PC pc;
+  int status;
+  TRY (PetscOptionsGetInt (NULL, NULL, "-lac_projection_steps", &steps,
+                           NULL));
+  if (steps < 0)
+    LAC_ERROR (LAC_EINVAL, "-lac_projection_steps %d: expected 0 or more",
+               (int) steps);
+  sv->steps = (int) steps;
   TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
   TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
@@ -218,12 +259,9 @@ create_projected (lac_petsc_saddle *sv, double threshold)
   TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
   if (threshold >= 0 && !set)       /* after the options: they would copy */
     TRY (PCGAMGSetThreshold (sv->pg, th, 2));   /* th[0] to every level */
-  TRY (KSPCreate (PETSC_COMM_WORLD, &sv->kg));
-  TRY (KSPSetOptionsPrefix (sv->kg, "gram_"));
-  TRY (KSPSetType (sv->kg, KSPPREONLY));
-  TRY (KSPGetPC (sv->kg, &pc));
-  TRY (PCSetType (pc, PCREDUNDANT));
-  TRY (KSPSetFromOptions (sv->kg));
+  if ((status = direct_solver (PETSC_COMM_WORLD, "gram_", PCREDUNDANT,
+                              &sv->kg)))
+    return status;
   TRY (MatGetLocalSize (sv->K, &nl, NULL));
   TRY (MatGetSize (sv->K, &n, NULL));
   TRY (MatCreateShell (PETSC_COMM_WORLD, nl, nl, n, n, sv, &sv->Ah));
@@ -332,7 +370,84 @@ lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
 
 /* ---- new values --------------------------------------------------------- */
 
-/* projected: G = B^T B + D, its solver, and the multigrid of the new K. */
+/* The weight w of the Jacobi steps: 1 / (a bound of the largest
+ * eigenvalue of D^-1 K, Gershgorin's: max_i sum_j |k_ij| / k_ii), so
+ * that every step keeps Z's directions those of a positive K^-1. */
+static int
+jacobi_weight (lac_petsc_saddle *sv, PetscReal *w)
+{
+  PetscInt r0, r1, nc;
+  const PetscScalar *a, *dinv;
+  PetscReal g = 0, gall;
+  TRY (MatGetOwnershipRange (sv->K, &r0, &r1));
+  TRY (VecGetArrayRead (sv->dinv, &dinv));
+  for (PetscInt i = r0; i < r1; i++)
+    {
+      PetscReal sum = 0;
+      TRY (MatGetRow (sv->K, i, &nc, NULL, &a));
+      for (PetscInt q = 0; q < nc; q++)
+        sum += PetscAbsScalar (a[q]);
+      TRY (MatRestoreRow (sv->K, i, &nc, NULL, &a));
+      g = PetscMax (g, sum * PetscAbsScalar (dinv[i - r0]));
+    }
+  TRY (VecRestoreArrayRead (sv->dinv, &dinv));
+  if (MPI_Allreduce (&g, &gall, 1, MPIU_REAL, MPI_MAX, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the Jacobi weight failed");
+  *w = gall > 0 ? 1 / gall : 1;
+  return LAC_SUCCESS;
+}
+
+/* Z ~ K^-1 B by `steps` Jacobi steps from D^-1 B, Z += w D^-1 (B - K Z)
+ * (sparse: each step widens a column by one ring of nodes), and the LU
+ * of G_Z = B^T Z + D (projected_pc). */
+static int
+smoothed_constraints (lac_petsc_saddle *sv, Vec d)
+{
+  PetscReal w = 1;
+  int status;
+  if (!sv->dinv)
+    TRY (MatCreateVecs (sv->K, NULL, &sv->dinv));
+  TRY (MatGetDiagonal (sv->K, sv->dinv));
+  TRY (VecReciprocal (sv->dinv));
+  if ((status = jacobi_weight (sv, &w)))
+    return status;
+  TRY (MatDestroy (&sv->Z));
+  TRY (MatDuplicate (sv->B, MAT_COPY_VALUES, &sv->Z));
+  TRY (MatDiagonalScale (sv->Z, sv->dinv, NULL));          /* D^-1 B */
+  for (int j = 0; j < sv->steps; j++)
+    {
+      Mat R;
+      TRY (MatMatMult (sv->K, sv->Z, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &R));
+      TRY (MatAYPX (R, -1.0, sv->B, DIFFERENT_NONZERO_PATTERN)); /* B - KZ */
+      TRY (MatDiagonalScale (R, sv->dinv, NULL));
+      TRY (MatAXPY (sv->Z, w, R, DIFFERENT_NONZERO_PATTERN));
+      TRY (MatDestroy (&R));
+    }
+  TRY (MatDestroy (&sv->Gz));
+  TRY (MatTransposeMatMult (sv->B, sv->Z, MAT_INITIAL_MATRIX, PETSC_DEFAULT,
+                            &sv->Gz));
+  TRY (MatDiagonalSet (sv->Gz, d, ADD_VALUES));
+  if (!sv->kz && (status = direct_solver (PETSC_COMM_WORLD, "gramz_",
+                                          PCREDUNDANT, &sv->kz)))
+    return status;
+  TRY (KSPSetOperators (sv->kz, sv->Gz, sv->Gz));
+  if (sv->size == 1)
+    return LAC_SUCCESS;
+  TRY (MatDestroy (&sv->Zl));                  /* N > 1: local copies */
+  TRY (MatMPIAIJGetLocalMat (sv->Z, MAT_INITIAL_MATRIX, &sv->Zl));
+  TRY (MatDestroy (&sv->Gzl));
+  TRY (MatCreateRedundantMatrix (sv->Gz, sv->size, MPI_COMM_NULL,
+                                 MAT_INITIAL_MATRIX, &sv->Gzl));
+  if (!sv->kzl
+      && (status = direct_solver (PetscObjectComm ((PetscObject) sv->Gzl),
+                                  "gramz_local_", PCLU, &sv->kzl)))
+    return status;
+  TRY (KSPSetOperators (sv->kzl, sv->Gzl, sv->Gzl));
+  return LAC_SUCCESS;
+}
+
+/* projected: G = B^T B + D, its solver, Z and G_Z, and the multigrid of
+ * the new K. */
 static int
 update_projected (lac_petsc_saddle *sv, Vec d)
 {
@@ -341,7 +456,8 @@ update_projected (lac_petsc_saddle *sv, Vec d)
                             : MAT_INITIAL_MATRIX, PETSC_DEFAULT, &sv->G));
   TRY (MatDiagonalSet (sv->G, d, ADD_VALUES));
   TRY (KSPSetOperators (sv->kg, sv->G, sv->G));
-  if (sv->size > 1 && (status = update_local (sv)))
+  if ((sv->size > 1 && (status = update_local (sv)))
+      || (sv->steps && (status = smoothed_constraints (sv, d))))
     return status;
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
   return LAC_SUCCESS;

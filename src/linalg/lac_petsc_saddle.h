@@ -16,10 +16,14 @@
  *   projected    conjugate gradients on the null space of B^T: with the
  *                l2-orthogonal projection P = I - B (B^T B + D)^-1 B^T,
  *                u = u0 + x, B^T u0 = g, and P K x = P (f - K u0), each
- *                iteration preconditioned by GAMG on K followed by P; the
+ *                iteration preconditioned by z = P_Z M P_Z^T r, M one
+ *                V-cycle of GAMG on K, P_Z = I - Z (B^T Z + D)^-1 B^T
+ *                with Z ~ K^-1 B after -lac_projection_steps Jacobi
+ *                steps from diag(K)^-1 B (default 1; 0: P_Z = P); the
  *                multipliers after, l = (B^T B + D)^-1 B^T (f - K u).
- *                B^T B + D (k x k) is factored by LU, on every process
- *                (prefix gram_; gram_local_ on N > 1 processes);
+ *                B^T B + D and B^T Z + D (k x k) are factored by LU, on
+ *                every process (prefixes gram_, gramz_; gram_local_,
+ *                gramz_local_ on N > 1 processes);
  *   fieldsplit   GMRES on the whole system, preconditioned by PETSc's
  *                PCFIELDSPLIT (Schur complement, upper factorization):
  *                GAMG on K (prefix fieldsplit_u_), the diagonal Sp given
