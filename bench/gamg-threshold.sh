@@ -10,10 +10,11 @@
 # --petsc-options "-elast_pc_gamg_threshold T,0"` for each threshold T
 # (default: -1 0.07 0.08 0.1 0.11 0.12; -1 keeps every coupling), with
 # PETSC_OPTIONS="-info :pc" for the operator complexity of the multigrid.
-# Prints chapter 13's table: a Markdown table, one column per threshold,
-# the rows the projected CG's iterations and the complexity.  On two
-# processes the iterations vary by one or two from run to run.  Nothing
-# is written but to stdout.
+# Prints the table of bench/README.md (section "Why the patch test took
+# three times the cube's iterations"): a Markdown table, one column per
+# threshold, the rows the projected CG's iterations and the complexity.
+# On two processes the iterations vary by one or two from run to run.
+# Nothing is written but to stdout.
 set -u
 B=${1:-build}
 N=${2:-36}
