@@ -397,13 +397,17 @@ jacobi_weight (lac_petsc_saddle *sv, PetscReal *w)
   return LAC_SUCCESS;
 }
 
-/* Z ~ K^-1 B by `steps` Jacobi steps from D^-1 B, Z += w D^-1 (B - K Z)
- * (sparse: each step widens a column by one ring of nodes), and the LU
- * of G_Z = B^T Z + D (projected_pc). */
+/* Z ~ K^-1 B by `steps` Jacobi steps from Y = D^-1 B,
+ *   Z += w D^-1 (B - K Z),  i.e.  Z = -w D^-1 (K Z) + Z + w Y,
+ * made in the product K Z, whose pattern holds Z's and Y's (K has its
+ * diagonal): no matrix of a third pattern (sparse: each step widens a
+ * column by one ring of nodes); then the LU of G_Z = B^T Z + D
+ * (projected_pc). */
 static int
 smoothed_constraints (lac_petsc_saddle *sv, Vec d)
 {
   PetscReal w = 1;
+  Mat Y;
   int status;
   if (!sv->dinv)
     TRY (MatCreateVecs (sv->K, NULL, &sv->dinv));
@@ -412,20 +416,27 @@ smoothed_constraints (lac_petsc_saddle *sv, Vec d)
   if ((status = jacobi_weight (sv, &w)))
     return status;
   TRY (MatDestroy (&sv->Z));
-  TRY (MatDuplicate (sv->B, MAT_COPY_VALUES, &sv->Z));
-  TRY (MatDiagonalScale (sv->Z, sv->dinv, NULL));          /* D^-1 B */
+  TRY (MatDuplicate (sv->B, MAT_COPY_VALUES, &Y));
+  TRY (MatDiagonalScale (Y, sv->dinv, NULL));              /* D^-1 B */
+  TRY (MatDuplicate (Y, MAT_COPY_VALUES, &sv->Z));
   for (int j = 0; j < sv->steps; j++)
     {
-      Mat R;
-      TRY (MatMatMult (sv->K, sv->Z, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &R));
-      TRY (MatAYPX (R, -1.0, sv->B, DIFFERENT_NONZERO_PATTERN)); /* B - KZ */
-      TRY (MatDiagonalScale (R, sv->dinv, NULL));
-      TRY (MatAXPY (sv->Z, w, R, DIFFERENT_NONZERO_PATTERN));
-      TRY (MatDestroy (&R));
+      Mat KZ;
+      TRY (MatMatMult (sv->K, sv->Z, MAT_INITIAL_MATRIX, PETSC_DEFAULT,
+                       &KZ));
+      TRY (MatDiagonalScale (KZ, sv->dinv, NULL));
+      TRY (MatScale (KZ, -w));
+      TRY (MatAXPY (KZ, 1.0, sv->Z, SUBSET_NONZERO_PATTERN));
+      TRY (MatAXPY (KZ, w, Y, SUBSET_NONZERO_PATTERN));
+      TRY (MatDestroy (&sv->Z));
+      sv->Z = KZ;
     }
+  TRY (MatDestroy (&Y));
+  TRY (MatProductClear (sv->Z));        /* no product data kept for reuse */
   TRY (MatDestroy (&sv->Gz));
   TRY (MatTransposeMatMult (sv->B, sv->Z, MAT_INITIAL_MATRIX, PETSC_DEFAULT,
                             &sv->Gz));
+  TRY (MatProductClear (sv->Gz));
   TRY (MatDiagonalSet (sv->Gz, d, ADD_VALUES));
   if (!sv->kz && (status = direct_solver (PETSC_COMM_WORLD, "gramz_",
                                           PCREDUNDANT, &sv->kz)))
