@@ -70,14 +70,19 @@ lac_petsc_saddle_free (lac_petsc_saddle *sv)
   lac_free (sv);
 }
 
-/* An option's default value, unless the user set it. */
+/* An option's default value, unless the user set it; lac's own is
+ * marked read (looked up once more), so that the warning about options
+ * nothing read does not name it when another preconditioner than the
+ * one it configures was chosen. */
 static int
 default_option (const char *name, const char *value)
 {
   PetscBool set = PETSC_FALSE;
   TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  if (!set)
-    TRY (PetscOptionsSetValue (NULL, name, value));
+  if (set)
+    return LAC_SUCCESS;
+  TRY (PetscOptionsSetValue (NULL, name, value));
+  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
   return LAC_SUCCESS;
 }
 
@@ -304,13 +309,17 @@ create_diagonal (lac_petsc_saddle *sv, Mat *M)
  * preconditioner Sp, and GMRES with the Schur factorization of
  * PCFIELDSPLIT (no prefix; blocks fieldsplit_u_, fieldsplit_lambda_). */
 static int
-create_fieldsplit (lac_petsc_saddle *sv)
+create_fieldsplit (lac_petsc_saddle *sv, double threshold)
 {
   Mat blocks[4];
   PC pc;
   IS is[2];
+  char th[40];
   int status;
-  if ((status = create_diagonal (sv, &sv->D))
+  snprintf (th, sizeof th, "%g,0", threshold);  /* the finest level only */
+  if ((threshold >= 0
+       && (status = default_option ("-fieldsplit_u_pc_gamg_threshold", th)))
+      || (status = create_diagonal (sv, &sv->D))
       || (status = create_diagonal (sv, &sv->Sp))
       || (status = default_option ("-fieldsplit_u_ksp_type", "preonly"))
       || (status = default_option ("-fieldsplit_u_pc_type", "gamg"))
@@ -358,7 +367,8 @@ lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
   sv->B = B;
   lac_petsc_rank (&rank, &sv->size);
   status = !B ? create_alone (sv) : method == LAC_SADDLE_FIELDSPLIT
-           ? create_fieldsplit (sv) : create_projected (sv, threshold);
+           ? create_fieldsplit (sv, threshold)
+           : create_projected (sv, threshold);
   if (status)
     {
       lac_petsc_saddle_free (sv);

@@ -26,7 +26,8 @@
  *                gramz_local_ on N > 1 processes);
  *   fieldsplit   GMRES on the whole system, preconditioned by PETSc's
  *                PCFIELDSPLIT (Schur complement, upper factorization):
- *                GAMG on K (prefix fieldsplit_u_), the diagonal Sp given
+ *                GAMG on K (prefix fieldsplit_u_; the threshold as the
+ *                projected CG's, by default), the diagonal Sp given
  *                for the Schur complement (fieldsplit_lambda_: Jacobi).
  *
  * Every PETSc option of those prefixes is read (-ksp_type, -pc_type of
@@ -59,10 +60,11 @@ typedef struct
 
 /* The solvers of K (and B: NULL for K alone) by `method`; K and B are
  * borrowed and keep their patterns (new values: _update).  threshold >=
- * 0: the multigrid of the projected CG drops the couplings of K's
- * graph below it on the finest level before it aggregates (PCGAMG's
- * threshold, 0 on the coarser levels; -elast_pc_gamg_threshold still
- * wins); < 0: PETSc's default.  Collective. */
+ * 0: the multigrid of K (projected CG or fieldsplit) drops the
+ * couplings of K's graph below it on the finest level before it
+ * aggregates (PCGAMG's threshold, 0 on the coarser levels;
+ * -elast_pc_gamg_threshold, -fieldsplit_u_pc_gamg_threshold still win);
+ * < 0: PETSc's default.  Collective. */
 int lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
                              lac_saddle_mat B, double threshold,
                              lac_petsc_saddle **out);
