@@ -36,7 +36,7 @@ residual_op (lac_linear_model *lm, const double *U, double *nku)
 {
   const lac_stiffness_op *op = lm->sys.Kop;
   double nu = 0;
-  int status = op->mult (op->self, U, lm->x);       /* K U */
+  int status = lac_system_k_mult (&lm->sys, U, lm->x);   /* K U */
   if (status)
     return status;
   for (size_t j = 0; j < op->n; j++)
