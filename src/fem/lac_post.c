@@ -51,19 +51,29 @@ cell_diameter (int nen, int dim, const double *xe)
   return diam;
 }
 
-/* Displacement and its gradient at a mapped point of a cell:
+/* The displacements of the nodes of cell c: ue[a*dim + i] = u_{a,i}. */
+static void
+cell_values (const lac_mesh *m, size_t c, int nen, const double *u,
+             double *ue)
+{
+  const int *conn = m->conn + m->ptr[c];
+  for (int a = 0; a < nen; a++)
+    memcpy (ue + a * m->dim, u + (size_t) m->dim * (size_t) conn[a],
+            (size_t) m->dim * sizeof *ue);
+}
+
+/* Displacement and its gradient at a mapped point of a cell, from its
+ * nodal values ue (cell_values):
  *   uh[i] = sum_a N_a u_{a,i},  gh[i*dim + k] = sum_a u_{a,i} dN_a/dx_k. */
 static void
-interp (const lac_mesh *m, size_t c, int nen, const lac_map *mp,
-        const double *u, double *uh, double *gh)
+interp (int dim, int nen, const lac_map *mp, const double *ue, double *uh,
+        double *gh)
 {
-  int dim = m->dim;
-  const int *conn = m->conn + m->ptr[c];
   memset (uh, 0, (size_t) dim * sizeof *uh);
   memset (gh, 0, (size_t) (dim * dim) * sizeof *gh);
   for (int a = 0; a < nen; a++)
     {
-      const double *ua = u + (size_t) dim * (size_t) conn[a];
+      const double *ua = ue + a * dim;
       for (int i = 0; i < dim; i++)
         {
           uh[i] += mp->N[a] * ua[i];                          /* u_h */
@@ -104,7 +114,8 @@ stress_at (const lac_mesh *m, const void *law, const double *u, size_t c,
 {
   const lac_elastic *mat = law;
   int dim = m->dim, ns = lac_model_nstress (mat->model);
-  double xe[LAC_MAX_NODES * 3], D[36], uh[3], gh[9], e[6];
+  double xe[LAC_MAX_NODES * 3], ue[LAC_MAX_NODES * 3], D[36], uh[3], gh[9],
+         e[6];
   lac_map mp;
   const lac_refelem *re = lac_refelem_get (m->type[c]);
   if (!re || re->dim != dim)
@@ -118,7 +129,8 @@ stress_at (const lac_mesh *m, const void *law, const double *u, size_t c,
   if (status)
     LAC_ERROR (status, "cell %zu (%s): det J = %g <= 0 at the point", c,
                re->name, mp.detJ);
-  interp (m, c, re->nnodes, &mp, u, uh, gh);
+  cell_values (m, c, re->nnodes, u, ue);
+  interp (dim, re->nnodes, &mp, ue, uh, gh);
   double hoop = 0.0;
   if (mat->model == LAC_AXISYMMETRIC)
     {
@@ -177,6 +189,45 @@ lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                                               stress_at, mat, u, sigma, vm);
 }
 
+/* A quadrature rule of a cell type and its shape functions there
+ * (N[p*nen + a], dN[(p*nen + a)*dim + k]): evaluated once per type, not
+ * at every cell (lac_map_cell_at). */
+typedef struct rule_tables
+{
+  lac_quad *q;
+  double *N, *dN;
+} rule_tables;
+
+static void
+rule_tables_clear (rule_tables *t)
+{
+  lac_quad_free (t->q);
+  lac_free (t->N);
+  lac_free (t->dN);
+  t->q = NULL;
+  t->N = t->dN = NULL;
+}
+
+static int
+rule_tables_make (const lac_refelem *re, int degree, rule_tables *t)
+{
+  int nen = re->nnodes, d = re->dim;
+  if (!(t->q = lac_quad_alloc (re->shape, degree)))
+    return LAC_ENOMEM;                   /* message set by lac_quad_alloc */
+  t->N = lac_malloc ((size_t) (t->q->n * nen) * sizeof *t->N);
+  t->dN = lac_malloc ((size_t) (t->q->n * nen * d) * sizeof *t->dN);
+  if (!t->N || !t->dN)
+    {
+      rule_tables_clear (t);
+      LAC_ERROR (LAC_ENOMEM, "shape functions of %s at its error rule",
+                 re->name);
+    }
+  for (int p = 0; p < t->q->n; p++)
+    lac_refelem_eval (re, t->q->xi + p * d, t->N + p * nen,
+                      t->dN + p * nen * d);
+  return LAC_SUCCESS;
+}
+
 /* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,
  * with l2_exact = ||u||_0, h1_exact = |u|_1 (norms as in the file header:
  * weight 2 pi r and the hoop term in the axisymmetric model).
@@ -198,9 +249,9 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
     LAC_ERROR (LAC_EINVAL, "H1 errors asked for but the gradient is NULL");
   int dim = m->dim, status = LAC_SUCCESS, axi = model == LAC_AXISYMMETRIC;
   double el2 = 0, eh1 = 0, nl2 = 0, nh1 = 0;
-  double xe[LAC_MAX_NODES * 3], uh[3], gh[9], ue[3], ge[9];
-  lac_quad *q = NULL;
-  int qshape = -1, qdeg = -1;
+  double xe[LAC_MAX_NODES * 3], uc[LAC_MAX_NODES * 3], uh[3], gh[9], ue[3],
+         ge[9];
+  rule_tables tab[LAC_NELEM_TYPES] = { { NULL, NULL, NULL } };
   lac_map mp;
   for (size_t c = 0; c < m->ncells; c++)
     {
@@ -211,27 +262,23 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
                                dim);
           break;
         }
-      int deg = 2 * re->order + 2 + axi;
-      if ((int) re->shape != qshape || deg != qdeg)
-        {
-          lac_quad_free (q);
-          q = lac_quad_alloc (re->shape, deg);
-          if (!q)
-            {
-              status = LAC_ENOMEM;   /* message set by lac_quad_alloc */
-              break;
-            }
-          qshape = (int) re->shape;
-          qdeg = deg;
-        }
+      rule_tables *t = &tab[re->type];
+      if (!t->q && (status = rule_tables_make (re, 2 * re->order + 2 + axi,
+                                               t)))
+        break;
+      const lac_quad *q = t->q;
+      int nen = re->nnodes;
       lac_mesh_cell_coords (m, c, xe);
+      cell_values (m, c, nen, u, uc);
       for (int p = 0; p < q->n; p++)
         {
-          status = lac_map_cell (re, dim, xe, q->xi + p * dim, &mp);
+          status = lac_map_cell_at (re, dim, xe, q->xi + p * dim,
+                                    t->N + p * nen, t->dN + p * nen * dim,
+                                    &mp);
           if (status)
             break;
           double w = q->w[p] * mp.detJ * lac_model_weight (model, mp.x);
-          interp (m, c, re->nnodes, &mp, u, uh, gh);
+          interp (dim, nen, &mp, uc, uh, gh);
           exact (mp.x, ctx, ue);
           for (int i = 0; i < dim; i++)
             {
@@ -261,7 +308,8 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
           break;
         }
     }
-  lac_quad_free (q);
+  for (int k = 0; k < LAC_NELEM_TYPES; k++)
+    rule_tables_clear (&tab[k]);
   if (status)
     return status;
   if (l2)

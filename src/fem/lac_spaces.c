@@ -449,13 +449,13 @@ lac_refelem_contains (const lac_refelem *re, const double *xi, double tol)
 
 /* ---- isoparametric maps ------------------------------------------------- */
 
-/* x = sum_a x_a N_a,  J[i*dim+k] = sum_a x_ai dN_a/dxi_k. */
+/* x = sum_a x_a N_a,  J[i*dim+k] = sum_a x_ai dN_a/dxi_k, with m->N and
+ * dN at the point. */
 static void
-map_eval (const lac_refelem *re, int sdim, const double *xe,
-          const double *xi, lac_map *m, double *dN)
+map_geometry (const lac_refelem *re, int sdim, const double *xe, lac_map *m,
+              const double *dN)
 {
   int d = re->dim;
-  lac_refelem_eval (re, xi, m->N, dN);
   memset (m->x, 0, sizeof m->x);
   memset (m->J, 0, sizeof m->J);
   for (int a = 0; a < re->nnodes; a++)
@@ -466,6 +466,14 @@ map_eval (const lac_refelem *re, int sdim, const double *xe,
         for (int k = 0; k < d; k++)
           m->J[i * d + k] += xa * dN[a * d + k];
       }
+}
+
+static void
+map_eval (const lac_refelem *re, int sdim, const double *xe,
+          const double *xi, lac_map *m, double *dN)
+{
+  lac_refelem_eval (re, xi, m->N, dN);
+  map_geometry (re, sdim, xe, m, dN);
 }
 
 /* det J and, if Jinv is not NULL and det != 0, J^{-1} (d x d). */
@@ -513,12 +521,24 @@ int
 lac_map_cell (const lac_refelem *re, int sdim, const double *xe,
               const double *xi, lac_map *m)
 {
+  double N[LAC_MAX_NODES], dN[LAC_MAX_NODES * 3];
+  lac_refelem_eval (re, xi, N, dN);
+  return lac_map_cell_at (re, sdim, xe, xi, N, dN, m);
+}
+
+/* lac_map_cell_at: the same from N and dN/dxi at xi. */
+int
+lac_map_cell_at (const lac_refelem *re, int sdim, const double *xe,
+                 const double *xi, const double *N, const double *dN,
+                 lac_map *m)
+{
   int d = re->dim;
-  double dN[LAC_MAX_NODES * 3], Jinv[9];
+  double Jinv[9];
   if (sdim != d)
     LAC_ERROR (LAC_EINVAL, "%s cell in %d-D space (need sdim == %d)",
                re->name, sdim, d);
-  map_eval (re, sdim, xe, xi, m, dN);
+  memcpy (m->N, N, (size_t) re->nnodes * sizeof *N);
+  map_geometry (re, sdim, xe, m, dN);
   memset (m->normal, 0, sizeof m->normal);
   m->detJ = det_inv (d, m->J, Jinv);
   if (!(m->detJ > 0))

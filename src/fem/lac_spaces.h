@@ -99,6 +99,13 @@ typedef struct lac_map
 int lac_map_cell (const lac_refelem *re, int sdim, const double *xe,
                   const double *xi, lac_map *m);
 
+/* The same with N and dN/dxi (as lac_refelem_eval gives them) already
+ * evaluated at xi: a quadrature rule's tables, made once for all cells
+ * (fem/lac_post.c).  The results are those of lac_map_cell, bit for bit. */
+int lac_map_cell_at (const lac_refelem *re, int sdim, const double *xe,
+                     const double *xi, const double *N, const double *dN,
+                     lac_map *m);
+
 /* Face map (re->dim == sdim - 1): x, N, J (sdim x dim), the unit normal
  * (right-hand rule on the face's node order: for a segment in 2D the normal
  * is (t_y, -t_x) with t = dx/dxi; for a surface in 3D it is t_1 x t_2) and

@@ -8,6 +8,8 @@
  *   - sum_a x_a dN_a/dx^T = I and dN/dx equals central finite differences
  *     in x, through lac_map_inverse (1e-6);
  *   - lac_map_inverse round trip xi -> x -> xi (1e-12);
+ *   - lac_map_cell_at with N and dN/dxi from lac_refelem_eval gives
+ *     lac_map_cell's x, N, dN/dx, J and det J bit for bit;
  *   - divergence theorem on the curved cell: sum_f int_f x.n dS computed
  *     with lac_map_face equals dim int_K dx computed with lac_map_cell
  *     (1e-12), and n . (x_f - x_K) > 0 at each face centroid;
@@ -138,6 +140,17 @@ check_point (const lac_refelem *re, const double *xe, const double *xi)
         }
     }
   check_rel (m.detJ, det (d, G), 1e-13, "%s: det J", re->name);
+  double N[LAC_MAX_NODES], dN[LAC_MAX_NODES * 3];   /* from tables */
+  lac_map mt;
+  lac_refelem_eval (re, xi, N, dN);
+  check_status (lac_map_cell_at (re, d, xe, xi, N, dN, &mt), LAC_SUCCESS,
+                "%s: map from tables", re->name);
+  check_true (!memcmp (mt.x, m.x, sizeof m.x)
+              && !memcmp (mt.J, m.J, sizeof m.J) && mt.detJ == m.detJ
+              && !memcmp (mt.N, m.N, (size_t) re->nnodes * sizeof *m.N)
+              && !memcmp (mt.dNdx, m.dNdx, (size_t) (re->nnodes * d)
+                          * sizeof *m.dNdx),
+              "%s: lac_map_cell_at = lac_map_cell bit for bit", re->name);
   check_true (m.detJ > 0, "%s: det J > 0", re->name);
   check_status (lac_map_inverse (re, d, xe, m.x, xi2), LAC_SUCCESS,
                 "%s: inverse", re->name);
