@@ -214,7 +214,7 @@ lac_cli_infsup (int argc, char **argv)
   args a;
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL };
+  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL, 1 };
   int ret, status;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))

@@ -434,7 +434,7 @@ cmd_run (const cmdline *c)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
-                        c->max_memory, &stop_signal };
+                        c->max_memory, &stop_signal, 0 };
   int status;
 
   /* 1. The scene, with the overrides. */

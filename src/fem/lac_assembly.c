@@ -240,6 +240,13 @@ lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
   return status;
 }
 
+int
+lac_assembly_cell_stiffness_q (const lac_mesh *m, const lac_elastic *mat,
+                               size_t c, lac_quad_cache *qc, double *Ke)
+{
+  return cell_stiffness (m, mat, c, qc, Ke);
+}
+
 /* lac_assembly_stiffness: K += sum_c Ke over the cells with E[c] > 0
  * (cells with E[c] <= 0 belong to no elastic body and are skipped).
  *   [in]     m, mat
@@ -598,6 +605,28 @@ lac_dirichlet_add_field (lac_dirichlet *d, const lac_mesh *m,
   return LAC_SUCCESS;
 }
 
+/* lac_dirichlet_dense: the pairs of d as two arrays of n dofs, fixed[k]
+ * (0/1) and g[k] (later pairs for a dof win), new.
+ *   returns LAC_SUCCESS, LAC_EBADLEN (a dof >= n), LAC_ENOMEM */
+int
+lac_dirichlet_dense (const lac_dirichlet *d, size_t n, char **fixed,
+                     double **g)
+{
+  *fixed = lac_calloc (n ? n : 1, 1);
+  *g = lac_calloc (n ? n : 1, sizeof **g);
+  if (!*fixed || !*g)
+    LAC_ERROR (LAC_ENOMEM, "work arrays for %zu dofs", n);
+  for (size_t k = 0; k < d->n; k++)
+    {
+      if (d->dof[k] >= n)
+        LAC_ERROR (LAC_EBADLEN, "fixed dof %zu out of range (K has %zu "
+                   "dofs)", d->dof[k], n);
+      (*fixed)[d->dof[k]] = 1;
+      (*g)[d->dof[k]] = d->val[k];                 /* later entries win */
+    }
+  return LAC_SUCCESS;
+}
+
 /* lac_dirichlet_apply: symmetric elimination of the fixed dofs.
  *   For every fixed dof k with value g_k:  F -= K(:,k) g_k, then row and
  *   column k of K are zeroed except the diagonal, and F(k) = d_k g_k, so
@@ -620,24 +649,10 @@ lac_dirichlet_apply (const lac_dirichlet *d, lac_csc *K, double *F)
   if (K->nrow != K->ncol)
     LAC_ERROR (LAC_EBADLEN, "K is %zu x %zu, not square", K->nrow, K->ncol);
   size_t n = K->ncol;
-  char *fixed = lac_calloc (n, 1);
-  double *g = lac_calloc (n, sizeof *g);
-  if (!fixed || !g)
-    {
-      status = LAC_ERRMSG (LAC_ENOMEM, "work arrays for %zu dofs", n);
-      goto done;
-    }
-  for (size_t k = 0; k < d->n; k++)
-    {
-      if (d->dof[k] >= n)
-        {
-          status = LAC_ERRMSG (LAC_EBADLEN, "fixed dof %zu out of range (K has"
-                               " %zu dofs)", d->dof[k], n);
-          goto done;
-        }
-      fixed[d->dof[k]] = 1;
-      g[d->dof[k]] = d->val[k];                    /* later entries win */
-    }
+  char *fixed = NULL;
+  double *g = NULL;
+  if ((status = lac_dirichlet_dense (d, n, &fixed, &g)))
+    goto done;
   /* Step 1: F -= K(:,k) g_k over the fixed columns k. */
   for (size_t j = 0; j < n; j++)
     if (fixed[j] && g[j] != 0.0)

@@ -19,6 +19,7 @@
 #include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
+#include "fem/lac_quadrature.h"
 
 /* A vector field given by a function: out[0..dim-1] = f(x). */
 typedef void lac_field (const double *x, void *ctx, double *out);
@@ -40,6 +41,10 @@ typedef struct lac_elastic
  * (node a, component i) -> a*dim + i.  Returns LAC_ESING if det J <= 0. */
 int lac_assembly_cell_stiffness (const lac_mesh *m, const lac_elastic *mat,
                                  size_t c, double *Ke);
+/* The same with the caller's cache of quadrature rules (a loop over many
+ * cells; fem/lac_quadrature.h). */
+int lac_assembly_cell_stiffness_q (const lac_mesh *m, const lac_elastic *mat,
+                                   size_t c, lac_quad_cache *qc, double *Ke);
 
 /* K += sum_c Ke (all cells with E[c] > 0). */
 int lac_assembly_stiffness (const lac_mesh *m, const lac_elastic *mat,
@@ -99,5 +104,9 @@ int lac_dirichlet_add_field (lac_dirichlet *d, const lac_mesh *m,
  * F(k) = d_k g_k.  K stays symmetric (positive definite if the body is
  * fixed against rigid motions).  Works on the CSC in place. */
 int lac_dirichlet_apply (const lac_dirichlet *d, lac_csc *K, double *F);
+/* The pairs of d as dense arrays of n dofs: fixed[k] = 1 and g[k] the
+ * value (later pairs win), new (the caller frees them, also on error). */
+int lac_dirichlet_dense (const lac_dirichlet *d, size_t n, char **fixed,
+                         double **g);
 
 #endif /* LAC_ASSEMBLY_H */

@@ -65,14 +65,6 @@ stage_material (lac_run *r)
                                  r->progress, sizeof r->progress);
 }
 
-static int
-stage_assemble (lac_run *r)
-{
-  return lac_run_system_build (r->scene, r->model, r->mesh, &r->mat,
-                               &r->setup, &r->sys, r->progress,
-                               sizeof r->progress);
-}
-
 /* What the strategy auto reads of the run: the MPI processes, and
  * whether a Cholesky factor of K is estimated to fit in --max-memory
  * (else petsc, if lac has it; chapter 13). */
@@ -86,6 +78,24 @@ auto_context (const lac_run *r)
     ctx.factor_fits = lac_run_mesh_factor_fits (r->scene, r->mesh,
                                                 r->opts.max_memory);
   return ctx;
+}
+
+/* The system, then K: not kept when the solve assembles it from the
+ * cells (petsc) and the caller does not read it (opts.keep_k). */
+static int
+stage_assemble (lac_run *r)
+{
+  lac_strategy_context ctx = auto_context (r);
+  int status = lac_run_system_build (r->scene, r->model, r->mesh, &r->mat,
+                                     &r->setup, &r->sys, r->progress,
+                                     sizeof r->progress);
+  int from_cells = !status && !r->opts.keep_k
+                   && lac_run_solve_k_from_cells (r->scene, r->opts.strategy,
+                                                  &ctx, &r->setup, &r->sys);
+  return status ? status
+         : lac_run_system_stiffness (r->scene, r->mesh, &r->mat, from_cells,
+                                     &r->sys, r->progress,
+                                     sizeof r->progress);
 }
 
 static int

@@ -73,6 +73,10 @@ typedef struct lac_run_opts
                             output stage then stops between two files and
                             publishes nothing (io/lac_output_batch.h);
                             NULL: never                                  */
+  int keep_k;            /* 1: K stays whole after stage 4 for a caller
+                            that reads r->sys.K (lac infsup); else it is
+                            not kept when the solver assembles K from the
+                            cells itself (lac_run_system_stiffness)      */
 } lac_run_opts;
 
 #define LAC_RUN_MAX_EFFECTS 8

@@ -49,28 +49,41 @@ kmul_root (void *solution, const double *x, double *y)
 }
 
 /* When the strategy assembles its own K from the cells (petsc,
- * lac_strategy_own_k): the root keeps of its K only diag(K) and ||K||_inf
- * (the residuals take K x from the strategy: cs's Kop) and frees it
- * before the solve: a million hex8 dofs, 1 GB less on the root (chapter
- * 13, section 6).  Else nothing changes. */
+ * lac_strategy_own_k): the root keeps of K only diag(K) and ||K||_inf
+ * (the residuals take K x from the strategy: cs's Kop).  Stage 4 made
+ * them without K (sys->kd: lac_run_system_stiffness), or, when it kept K,
+ * they are taken from it and K is freed before the solve (a million
+ * hex8 dofs: 1 GB less on the root; chapter 13, section 6).  Else
+ * nothing changes. */
 static int
 drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol,
              lac_contact_system *cs)
 {
   double normK;
-  if (!sys->K || !lac_strategy_own_k (st, sys->ndof))
-    return LAC_SUCCESS;
-  if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
-                                 sizeof *sol->kdiag)))
-    LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
-  normK = lac_csc_diag_norm1 (sys->K, sol->kdiag);  /* K symmetric */
+  const double *diag = sys->kd.diag;
+  if (!lac_strategy_own_k (st, sys->ndof))
+    {
+      if (!sys->K)
+        LAC_ERROR (LAC_ESANITY, "stage 4 kept no K, but the strategy "
+                   "needs one");
+      return LAC_SUCCESS;
+    }
+  if (sys->K)
+    {
+      if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
+                                     sizeof *sol->kdiag)))
+        LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
+      normK = lac_csc_diag_norm1 (sys->K, sol->kdiag);  /* K symmetric */
+      diag = sol->kdiag;
+      lac_csc_free (sys->K);
+      sys->K = NULL;
+    }
+  else
+    normK = sys->kd.norm1;
   sol->kst = st;
-  sol->kop = (lac_stiffness_op) { sys->ndof, normK, sol->kdiag, sol,
-                                  kmul_root };
+  sol->kop = (lac_stiffness_op) { sys->ndof, normK, diag, sol, kmul_root };
   cs->K = NULL;
   cs->Kop = &sol->kop;
-  lac_csc_free (sys->K);
-  sys->K = NULL;
   return LAC_SUCCESS;
 }
 
@@ -191,6 +204,21 @@ auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
          : "auto: a Cholesky factor would not fit in --max-memory";
 }
 
+/* The strategy of a scene with contact: asked for (the command line,
+ * else the scene's [contact]), or auto's choice in the run ctx;
+ * LAC_NSTRATEGIES with a message if it does not apply. */
+static lac_strategy_kind
+contact_kind (const lac_scene *sc, int strategy,
+              const lac_strategy_context *ctx, const lac_run_setup *setup,
+              const lac_run_system *sys)
+{
+  const lac_scene_contact *c = &sc->contact[sc->contact_loop];
+  lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
+                                                : c->strategy);
+  return lac_strategy_choose_in (want, sys->ndof, setup->data.all->k,
+                                 sys->nfree, ctx);
+}
+
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy
  * chosen, the loop begun. */
 static int
@@ -208,9 +236,7 @@ contact_start (const lac_scene *sc, int strategy,
   sol->cs = (lac_contact_system) { sys->K, sys->b, NULL, NULL, NULL,
                                    sys->nfree, sys->N,
                                    (const char *const *) sys->N_what, NULL };
-  sol->strategy = lac_strategy_choose_in (want, sys->ndof,
-                                          setup->data.all->k, sys->nfree,
-                                          ctx);
+  sol->strategy = contact_kind (sc, strategy, ctx, setup, sys);
   if (sol->strategy == LAC_NSTRATEGIES)
     return lac_scene_error (sc, &c->sec, "strategy", LAC_EINVAL, "%s",
                             lac_error_message ());
@@ -337,6 +363,25 @@ plain_auto (const lac_scene *sc, const lac_strategy_context *ctx,
   if (!lac_run_mesh_auto (sc, 0) || !t || t->factor != LAC_FACTOR_NONE)
     return LAC_STRATEGY_AUTO;
   return kind;
+}
+
+int
+lac_run_solve_k_from_cells (const lac_scene *sc, int strategy,
+                            const lac_strategy_context *ctx,
+                            const lac_run_setup *setup,
+                            const lac_run_system *sys)
+{
+  const lac_strategy_type *t;
+  int kind = setup->data.all ? (int) contact_kind (sc, strategy, ctx, setup,
+                                                   sys)
+             : strategy ? strategy : plain_auto (sc, ctx, sys);
+  if (kind == LAC_STRATEGY_AUTO || kind == LAC_NSTRATEGIES)
+    {
+      lac_error_clear ();        /* stage 5 says it, if it still holds */
+      return 0;                  /* the scene's solver; or an error */
+    }
+  t = lac_strategy_type_of (kind);
+  return t && t->ops && t->ops->own_k && sys->x && sys->coord_dim >= 2;
 }
 
 int

@@ -47,7 +47,9 @@ typedef struct lac_run_solution
                                   NULL when by size or asked for           */
   lac_stiffness_op kop;        /* K for the residuals when the strategy
                                   holds it (petsc): the system's K freed  */
-  double *kdiag;               /* owned, ndof: kop's diag(K)              */
+  double *kdiag;               /* owned, ndof: kop's diag(K) (when it came
+                                  from the system's K; else the system's
+                                  digest's, sys->kd)                       */
   lac_strategy *kst;           /* borrowed: the strategy kop asks for K x */
 } lac_run_solution;
 
@@ -59,6 +61,14 @@ int lac_run_solve (const lac_scene *sc, int strategy,
                    lac_run_system *sys, lac_run_solution *sol,
                    char *progress, size_t size);
 void lac_run_solution_clear (lac_run_solution *sol);
+/* 1 if the strategy lac_run_solve will take (the same choice, from the
+ * system of stage 4 before its K) assembles K from the cells itself
+ * (petsc: lac_strategy_own_k), so that stage 4 need not keep K
+ * (lac_run_system_stiffness). */
+int lac_run_solve_k_from_cells (const lac_scene *sc, int strategy,
+                                const lac_strategy_context *ctx,
+                                const lac_run_setup *setup,
+                                const lac_run_system *sys);
 /* The summary lines of a strategy that factorizes nothing (processes,
  * solver_iterations, solver_residual); nothing for the direct ones. */
 int lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum);

@@ -26,6 +26,7 @@ lac_run_system_clear (lac_run_system *sys)
   for (size_t j = 0; sys->N_what && j < sys->nfree; j++)
     lac_free (sys->N_what[j]);
   lac_free (sys->N_what);
+  lac_k_digest_clear (&sys->kd);
   memset (sys, 0, sizeof *sys);
 }
 
@@ -299,13 +300,10 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
     T = alloc_triplets (m, sys->ndof);
   if (!sys->F || !sys->b || !sys->dir || (plates && !T))
     LAC_ERROR (LAC_ENOMEM, "system of %zu dofs", sys->ndof);
-  /* K in its compressed columns straight away (no triplet list: the peak
-   * of the assembly is K and the map of the cells), but through triplets
-   * when rigid plates condense it; the Newton loop of large deformation
-   * assembles K_T itself. */
-  if ((!large && (status = plates
-                  ? lac_assembly_stiffness (m, &mat->elastic, T)
-                  : lac_assembly_stiffness_csc (m, &mat->elastic, &sys->K)))
+  /* With rigid plates K through triplets here, which their condensation
+   * works on; else K after the rest (lac_run_system_stiffness); the
+   * Newton loop of large deformation assembles K_T itself. */
+  if ((plates && (status = lac_assembly_stiffness (m, &mat->elastic, T)))
       || (status = add_loads (sc, model, m, sys->F))          /* F = l(v)    */
       || (status = add_dirichlet (sc, model, m, sys->dir))
       || (status = find_bodies (sc, model, m, setup, sys))
@@ -316,31 +314,64 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
   if (large)                              /* the Newton loop's affair */
     {
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
+      snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "
+                "at every Newton iteration)", sys->ndof);
       goto done;
     }
   if (plates
       && ((status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
                                        &sys->ties))
-          || (!(sys->K = lac_csc_from_triplet (T)) && (status = LAC_ENOMEM))))
+          || (!(sys->K = lac_csc_from_triplet (T)) && (status = LAC_ENOMEM))
+          || (status = eliminate (sc, sys))))
     goto done;
+done:
   lac_triplet_free (T);
-  T = NULL;
-  if ((status = eliminate (sc, sys)))
-    goto done;
-  if (!plates && !sys->dir->frames)  /* K is the cells' (and Dirichlet's):
-                                        not turned to rollers' frames */
-    sys->cells = (lac_dist_source) { m, &mat->elastic, sys->fixed };
+  return status;
+}
+
+/* The progress line of stage 4. */
+static void
+system_progress (const lac_run_system *sys, char *progress, size_t size)
+{
   if (sys->ties.n)
     snprintf (progress, size, "%zu dofs (%zu fixed, %zu tied to %zu rigid "
               "plates), %zu nonzeros in K", sys->ndof, sys->nfixed,
               sys->ties.n, sys->ties.nplates, sys->nnz);
   else
-    snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K",
-              sys->ndof, sys->nfixed, sys->nnz);
-done:
-  if (!status && large)
-    snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "
-              "at every Newton iteration)", sys->ndof);
-  lac_triplet_free (T);
-  return status;
+    snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K%s",
+              sys->ndof, sys->nfixed, sys->nnz, sys->kd.diag
+              ? " (not kept: the solver assembles it from the cells)" : "");
+}
+
+int
+lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
+                          const lac_run_material *mat, int from_cells,
+                          lac_run_system *sys, char *progress, size_t size)
+{
+  int status;
+  if (sc->scene.large_deformation)
+    return LAC_SUCCESS;                 /* K_T: the Newton loop's affair */
+  if (sys->ties.n || sys->K)
+    {
+      system_progress (sys, progress, size);  /* made with the plates */
+      return LAC_SUCCESS;
+    }
+  if (from_cells && !sys->dir->frames && !sc->output.matrix)
+    {                                   /* b, diag(K), ||K||: K not kept */
+      memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
+      if ((status = lac_assembly_digest (m, &mat->elastic, sys->dir, 0,
+                                         sys->b, &sys->kd)))
+        return status;
+      sys->nnz = sys->kd.nnz;
+    }
+  /* K in its compressed columns straight away (no triplet list: the peak
+   * of the assembly is K and the map of the cells). */
+  else if ((status = lac_assembly_stiffness_csc (m, &mat->elastic, &sys->K))
+           || (status = eliminate (sc, sys)))
+    return status;
+  if (!sys->dir->frames)   /* K is the cells' (and Dirichlet's): not turned
+                              to rollers' frames */
+    sys->cells = (lac_dist_source) { m, &mat->elastic, sys->fixed };
+  system_progress (sys, progress, size);
+  return LAC_SUCCESS;
 }

@@ -2,7 +2,9 @@
  *                                          [LAC (8), (16)-(18); §4.3]
  * In:  the scene (loads, Dirichlet conditions, [contact]), the model, the
  *      mesh, the material, the contact set-up.
- * Out: K and F [LAC (8)], the Dirichlet data and their elimination (b);
+ * Out: K and F [LAC (8)], the Dirichlet data and their elimination (b)
+ *      (or, for a solver that assembles K from the cells, only what the
+ *      elimination leaves of K: lac_run_system_stiffness);
  *      for a linear scene with contact, admissibility [LAC Def. 1], C and
  *      the mean gaps G [LAC (16)-(18)] of every pair (less the pair's
  *      interference), C turned to the nodal frames of rollers (T^T C),
@@ -22,6 +24,7 @@
 #include <stddef.h>
 #include "contact/lac_contact.h"
 #include "fem/lac_assembly.h"
+#include "fem/lac_assembly_digest.h"
 #include "fem/lac_assembly_dist.h"
 #include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
@@ -56,12 +59,27 @@ typedef struct lac_run_system
                               NULL: rigid plates, rollers' frames, large
                               deformation)                              */
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
+  lac_k_digest kd;         /* K = NULL because the solver assembles K from
+                              the cells (lac_run_system_stiffness): its
+                              diag, ||K||_1 and entries; diag NULL else */
 } lac_run_system;
 
+/* Everything but K (with rigid plates: also K, which their condensation
+ * needs). */
 int lac_run_system_build (const lac_scene *sc, lac_model model,
                           const lac_mesh *m, const lac_run_material *mat,
                           lac_run_setup *setup, lac_run_system *sys,
                           char *progress, size_t size);
+/* Then K and its elimination (b); from_cells: the solve will assemble K
+ * from the cells (run/lac_run_solve.h, lac_run_solve_k_from_cells), so,
+ * where the cells are what K is made of (no rollers' frames, no
+ * [output] matrix), K is never whole here: only b, diag(K), ||K||_1 and
+ * the entries (fem/lac_assembly_digest.h, sys->kd).  The progress line
+ * says which. */
+int lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
+                              const lac_run_material *mat, int from_cells,
+                              lac_run_system *sys, char *progress,
+                              size_t size);
 void lac_run_system_clear (lac_run_system *sys);
 
 #endif /* LAC_RUN_SYSTEM_H */

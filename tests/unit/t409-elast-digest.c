@@ -1,0 +1,171 @@
+/* t409: the digest of K (lac_assembly_digest) against the whole K
+ *                                                        [LAC §4.3]
+ *
+ * On distorted box meshes of several element types and models, with
+ * Dirichlet values that are zero on some groups, nonzero on others and
+ * given twice for some dofs (the later wins), and a few cells of no body
+ * (E = 0): the right-hand side, diag(K), ||K||_1 and the number of
+ * entries that lac_assembly_digest gives in blocks of one node, of a few
+ * nodes and in one block must equal, bit for bit, those of
+ * lac_assembly_stiffness_csc + lac_dirichlet_apply + lac_csc_diag_norm1.
+ * A fixed dof of a node in no cell of a body is refused by both with the
+ * same status.
+ */
+#include <math.h>
+#include <string.h>
+#include "check.h"
+#include "base/lac_mem.h"
+#include "base/lac_status.h"
+#include "fem/lac_assembly.h"
+#include "fem/lac_assembly_digest.h"
+
+/* The whole-K reference: b, diag, ||K||_1, nnz. */
+static int
+reference (const lac_mesh *m, const lac_elastic *mat, const lac_dirichlet *d,
+           double *b, double *diag, double *norm1, size_t *nnz)
+{
+  lac_csc *K = NULL;
+  int status = lac_assembly_stiffness_csc (m, mat, &K);
+  if (!status)
+    {
+      *nnz = (size_t) K->p[K->ncol];
+      status = lac_dirichlet_apply (d, K, b);
+    }
+  if (!status)
+    *norm1 = lac_csc_diag_norm1 (K, diag);
+  lac_csc_free (K);
+  return status;
+}
+
+static void
+run (lac_elem_type type, lac_model model)
+{
+  const lac_refelem *re = lac_refelem_get (type);
+  const char *name = re->name, *mname = lac_model_name (model);
+  int dim = lac_model_dim (model);
+  size_t n[3] = { 4, 3, 2 };
+  double L[3] = { 1.0, 1.3, 0.9 };
+  lac_mesh *m = NULL;
+  int status = lac_mesh_box (type, n, L, 0.2, &m);
+  check_status (status, LAC_SUCCESS, "%s %s: box mesh", name, mname);
+  if (status)
+    return;
+  if (model == LAC_AXISYMMETRIC)
+    for (size_t a = 0; a < m->nnodes; a++)
+      m->x[2 * a] += 1.0;                             /* r in [1, 2] */
+  size_t ndof = (size_t) dim * m->nnodes;
+  double *E = lac_malloc (m->ncells * sizeof *E);
+  double *nu = lac_malloc (m->ncells * sizeof *nu);
+  double *F = lac_malloc (ndof * sizeof *F);
+  double *b = lac_malloc (ndof * sizeof *b);
+  double *diag = lac_malloc (ndof * sizeof *diag);
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      E[c] = 200.0 + (double) (c % 5);
+      nu[c] = 0.3;
+    }
+  for (size_t j = 0; j < ndof; j++)
+    F[j] = sin (0.37 * (double) j);
+  lac_elastic mat = { model, E, nu };
+  lac_dirichlet *d = lac_dirichlet_alloc ();
+  check_status (lac_dirichlet_add_group (d, m, lac_mesh_group (m, "xmin"), 0,
+                                         0.0), LAC_SUCCESS, "xmin");
+  for (int c = 0; c < dim; c++)
+    check_status (lac_dirichlet_add_group (d, m, lac_mesh_group (m, "ymin"), c,
+                                           1e-3 * (c + 1)), LAC_SUCCESS,
+                  "ymin");
+  check_status (lac_dirichlet_add_group (d, m, lac_mesh_group (m, "xmax"), 1,
+                                         -2e-3), LAC_SUCCESS, "xmax");
+  check_status (lac_dirichlet_add_group (d, m, lac_mesh_group (m, "ymin"), 0,
+                                         5e-3), LAC_SUCCESS, "ymin again");
+  char *fixed = lac_calloc (m->nnodes, 1);       /* holes: every 7th cell */
+  for (size_t k = 0; k < d->n; k++)               /* with no fixed node   */
+    fixed[d->dof[k] / (size_t) dim] = 1;
+  for (size_t c = 3; c < m->ncells; c += 7)
+    {
+      int free_cell = 1;
+      for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
+        free_cell &= !fixed[m->conn[q]];
+      E[c] = free_cell ? 0.0 : E[c];
+    }
+  lac_free (fixed);
+  double norm_ref = 0;
+  size_t nnz_ref = 0;
+  memcpy (b, F, ndof * sizeof *b);
+  status = reference (m, &mat, d, b, diag, &norm_ref, &nnz_ref);
+  size_t blocks[3] = { 1, 40 * (size_t) dim * (size_t) dim * 27, 0 };
+  for (int k = 0; k < 3 && !status; k++)
+    {
+      lac_k_digest kd;
+      double *f = lac_malloc (ndof * sizeof *f);
+      memcpy (f, F, ndof * sizeof *f);
+      check_status (lac_assembly_digest (m, &mat, d, blocks[k], f, &kd),
+                    LAC_SUCCESS, "%s %s: digest, block %zu", name, mname,
+                    blocks[k]);
+      check_true (kd.diag && !memcmp (f, b, ndof * sizeof *f),
+                  "%s %s block %zu: b bit for bit", name, mname, blocks[k]);
+      check_true (kd.diag && !memcmp (kd.diag, diag, ndof * sizeof *diag),
+                  "%s %s block %zu: diag(K) bit for bit", name, mname,
+                  blocks[k]);
+      check_true (kd.norm1 == norm_ref, "%s %s block %zu: ||K||_1 %.17g "
+                  "against %.17g", name, mname, blocks[k], kd.norm1,
+                  norm_ref);
+      check_int ((long) kd.nnz, (long) nnz_ref, "%s %s block %zu: entries",
+                 name, mname, blocks[k]);
+      lac_k_digest_clear (&kd);
+      lac_free (f);
+    }
+  check_status (status, LAC_SUCCESS, "%s %s: the whole K", name, mname);
+  lac_dirichlet_free (d);
+  lac_free (diag);
+  lac_free (b);
+  lac_free (F);
+  lac_free (nu);
+  lac_free (E);
+  lac_mesh_free (m);
+}
+
+/* A fixed dof whose node is in no cell of a body: both refuse it. */
+static void
+orphan (void)
+{
+  size_t n[3] = { 2, 2, 2 };
+  double L[3] = { 1, 1, 1 };
+  lac_mesh *m = NULL;
+  if (lac_mesh_box (LAC_QUAD4, n, L, 0.0, &m))
+    return;
+  size_t ndof = 2 * m->nnodes;
+  double E[4] = { 0, 1, 1, 1 }, nu[4] = { 0.3, 0.3, 0.3, 0.3 };
+  double *F = lac_calloc (ndof, sizeof *F), *diag = lac_malloc (ndof * 8);
+  double norm = 0;
+  size_t nnz = 0;
+  lac_elastic mat = { LAC_PLANE_STRAIN, E, nu };
+  lac_dirichlet *d = lac_dirichlet_alloc ();
+  size_t a0 = (size_t) m->conn[m->ptr[0]];      /* a corner of cell 0 only */
+  lac_dirichlet_add (d, 2 * a0, 1.0);
+  lac_k_digest kd;
+  int want = reference (m, &mat, d, F, diag, &norm, &nnz);
+  check_status (want, LAC_EINVAL, "orphan fixed dof: the whole K refuses it");
+  check_status (lac_assembly_digest (m, &mat, d, 0, F, &kd), want,
+                "orphan fixed dof: the digest refuses it too");
+  check_message ("no diagonal entry", "orphan: the message");
+  lac_dirichlet_free (d);
+  lac_free (diag);
+  lac_free (F);
+  lac_mesh_free (m);
+}
+
+int
+main (void)
+{
+  lac_init ();
+  run (LAC_HEX8, LAC_SOLID3D);
+  run (LAC_HEX20, LAC_SOLID3D);
+  run (LAC_TET10, LAC_SOLID3D);
+  run (LAC_QUAD8, LAC_PLANE_STRAIN);
+  run (LAC_TRI3, LAC_PLANE_STRAIN);
+  run (LAC_QUAD4, LAC_AXISYMMETRIC);
+  orphan ();
+  lac_finalize ();
+  return check_summary ();
+}
