@@ -421,9 +421,9 @@ print_start (const lac_scene *sc, const lac_run *r)
   fprintf (stderr, "\n");
   lac_petsc_rank (&rank, &size);
   if (size > 1)
-    fprintf (stderr, "lac: %d MPI processes: process 0 reads, assembles "
-             "and writes; the petsc strategy solves on all %d\n", size,
-             size);
+    fprintf (stderr, "lac: %d MPI processes: process 0 reads, pairs and "
+             "writes; the petsc strategy assembles and solves on all %d\n",
+             size, size);
 }
 
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the

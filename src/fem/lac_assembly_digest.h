@@ -33,7 +33,8 @@ typedef struct lac_k_digest
  * block: entries of K at most in one block of columns (about; at least
  * one node's columns; 0: a default of 2^23, about 100 MB).
  *   returns LAC_SUCCESS, LAC_EINVAL, LAC_EBADLEN, LAC_ESING, LAC_ENOMEM
- *   (lac_assembly_stiffness_csc's and lac_dirichlet_apply's errors) */
+ *   (lac_assembly_stiffness_csc's and lac_dirichlet_apply's errors); on
+ *   an error *out is empty and F partly lifted (of no use) */
 int lac_assembly_digest (const lac_mesh *m, const lac_elastic *mat,
                          const lac_dirichlet *d, size_t block, double *F,
                          lac_k_digest *out);

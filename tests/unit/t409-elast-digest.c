@@ -9,7 +9,8 @@
  * nodes and in one block must equal, bit for bit, those of
  * lac_assembly_stiffness_csc + lac_dirichlet_apply + lac_csc_diag_norm1.
  * A fixed dof of a node in no cell of a body is refused by both with the
- * same status.
+ * same status.  Out of memory at every allocation of a run in blocks of a
+ * few nodes: LAC_ENOMEM and no digest left, then the same numbers.
  */
 #include <math.h>
 #include <string.h>
@@ -155,6 +156,64 @@ orphan (void)
   lac_mesh_free (m);
 }
 
+/* Out of memory at the k-th allocation, for every k until it succeeds. */
+static void
+no_memory (void)
+{
+  size_t n[3] = { 3, 2, 2 };
+  double L[3] = { 1, 1, 1 };
+  lac_mesh *m = NULL;
+  if (lac_mesh_box (LAC_HEX8, n, L, 0.1, &m))
+    return;
+  size_t ndof = 3 * m->nnodes;
+  double *E = lac_malloc (m->ncells * sizeof *E);
+  double *nu = lac_malloc (m->ncells * sizeof *nu);
+  double *F = lac_malloc (ndof * sizeof *F), *f = lac_malloc (ndof * 8);
+  double *b = lac_malloc (ndof * sizeof *b), *diag = lac_malloc (ndof * 8);
+  for (size_t c = 0; c < m->ncells; c++)
+    E[c] = 100, nu[c] = 0.25;
+  for (size_t j = 0; j < ndof; j++)
+    F[j] = cos ((double) j);
+  lac_elastic mat = { LAC_SOLID3D, E, nu };
+  lac_dirichlet *d = lac_dirichlet_alloc ();
+  for (int c = 0; c < 3; c++)
+    lac_dirichlet_add_group (d, m, lac_mesh_group (m, "zmin"), c, 1e-3 * c);
+  double norm = 0;
+  size_t nnz = 0;
+  memcpy (b, F, ndof * sizeof *b);
+  int status = reference (m, &mat, d, b, diag, &norm, &nnz);
+  lac_k_digest kd;
+  long k;
+  for (k = 0; k < 10000 && !status; k++)
+    {
+      memcpy (f, F, ndof * sizeof *f);
+      lac_mem_fail_after (k);
+      status = lac_assembly_digest (m, &mat, d, 300, f, &kd);
+      lac_mem_fail_after (-1);
+      if (status == LAC_SUCCESS)
+        break;
+      check_status (status, LAC_ENOMEM, "no memory at allocation %ld", k);
+      check_true (!kd.diag, "no memory at allocation %ld: no digest left",
+                  k);
+      status = status == LAC_ENOMEM ? LAC_SUCCESS : status;
+    }
+  check_true (k > 5 && k < 10000, "no memory: the loop ends (%ld "
+              "allocations)", k);
+  check_true (!status && kd.diag && !memcmp (f, b, ndof * sizeof *f)
+              && !memcmp (kd.diag, diag, ndof * sizeof *diag)
+              && kd.norm1 == norm && kd.nnz == nnz,
+              "no memory: the same numbers after the loop");
+  lac_k_digest_clear (&kd);
+  lac_dirichlet_free (d);
+  lac_free (diag);
+  lac_free (b);
+  lac_free (f);
+  lac_free (F);
+  lac_free (nu);
+  lac_free (E);
+  lac_mesh_free (m);
+}
+
 int
 main (void)
 {
@@ -166,6 +225,7 @@ main (void)
   run (LAC_TRI3, LAC_PLANE_STRAIN);
   run (LAC_QUAD4, LAC_AXISYMMETRIC);
   orphan ();
+  no_memory ();
   lac_finalize ();
   return check_summary ();
 }
