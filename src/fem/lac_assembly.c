@@ -627,6 +627,43 @@ lac_dirichlet_dense (const lac_dirichlet *d, size_t n, char **fixed,
   return LAC_SUCCESS;
 }
 
+/* lac_dirichlet_column: steps 1 and 2 of lac_dirichlet_apply for one
+ * column, jl of K, dof j (row indices are dofs): F -= K(:,j) g_j if j is
+ * fixed; then the entries in fixed rows or in a fixed column are zeroed
+ * but the diagonal, which keeps d_j (1 if it was not positive), and g_j
+ * becomes d_j g_j.  A column's lift reads only that column and g_j, and
+ * its zeroing writes only that column, so the columns may be done one at
+ * a time, in dof order, with the numbers of the whole matrix (the
+ * digest of K, fem/lac_assembly_digest.c).
+ *   returns LAC_SUCCESS, LAC_EINVAL (a fixed j with no diagonal entry) */
+int
+lac_dirichlet_column (lac_csc *K, size_t jl, size_t j, const char *fixed,
+                      double *g, double *F)
+{
+  int diag = 0;
+  if (fixed[j] && g[j] != 0.0)                            /* step 1 */
+    for (int p = K->p[jl]; p < K->p[jl + 1]; p++)
+      F[K->i[p]] -= K->x[p] * g[j];
+  for (int p = K->p[jl]; p < K->p[jl + 1]; p++)          /* step 2 */
+    {
+      size_t i = (size_t) K->i[p];
+      if (i == j)
+        {
+          diag = 1;
+          if (fixed[j] && !(K->x[p] > 0.0))
+            K->x[p] = 1.0;                                /* d_j = 1 */
+          if (fixed[j])
+            g[j] *= K->x[p];                              /* F(j) = d_j g_j */
+        }
+      else if (fixed[i] || fixed[j])
+        K->x[p] = 0.0;
+    }
+  if (fixed[j] && !diag)
+    LAC_ERROR (LAC_EINVAL, "fixed dof %zu has no diagonal entry in K: its "
+               "node belongs to no assembled cell", j);
+  return LAC_SUCCESS;
+}
+
 /* lac_dirichlet_apply: symmetric elimination of the fixed dofs.
  *   For every fixed dof k with value g_k:  F -= K(:,k) g_k, then row and
  *   column k of K are zeroed except the diagonal, and F(k) = d_k g_k, so
@@ -653,37 +690,10 @@ lac_dirichlet_apply (const lac_dirichlet *d, lac_csc *K, double *F)
   double *g = NULL;
   if ((status = lac_dirichlet_dense (d, n, &fixed, &g)))
     goto done;
-  /* Step 1: F -= K(:,k) g_k over the fixed columns k. */
-  for (size_t j = 0; j < n; j++)
-    if (fixed[j] && g[j] != 0.0)
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        F[K->i[p]] -= K->x[p] * g[j];
-  /* Step 2: zero the fixed rows and columns, keep d_k on their diagonal. */
-  for (size_t j = 0; j < n; j++)
-    {
-      int diag = 0;
-      for (int p = K->p[j]; p < K->p[j + 1]; p++)
-        {
-          size_t i = (size_t) K->i[p];
-          if (i == j)
-            {
-              diag = 1;
-              if (fixed[j] && !(K->x[p] > 0.0))
-                K->x[p] = 1.0;                        /* d_k = 1 */
-              if (fixed[j])
-                g[j] *= K->x[p];                      /* F(k) = d_k g_k */
-            }
-          else if (fixed[i] || fixed[j])
-            K->x[p] = 0.0;
-        }
-      if (fixed[j] && !diag)
-        {
-          status = LAC_ERRMSG (LAC_EINVAL, "fixed dof %zu has no diagonal entry"
-                               " in K: its node belongs to no assembled cell",
-                               j);
-          goto done;
-        }
-    }
+  for (size_t j = 0; j < n && !status; j++)            /* steps 1 and 2 */
+    status = lac_dirichlet_column (K, j, j, fixed, g, F);
+  if (status)
+    goto done;
   /* Step 3: F(k) = d_k g_k. */
   for (size_t k = 0; k < n; k++)
     if (fixed[k])

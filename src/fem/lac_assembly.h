@@ -104,6 +104,12 @@ int lac_dirichlet_add_field (lac_dirichlet *d, const lac_mesh *m,
  * F(k) = d_k g_k.  K stays symmetric (positive definite if the body is
  * fixed against rigid motions).  Works on the CSC in place. */
 int lac_dirichlet_apply (const lac_dirichlet *d, lac_csc *K, double *F);
+/* lac_dirichlet_apply for one column only: column jl of K, which is dof
+ * j (rows are dofs), with fixed[] and g[] of lac_dirichlet_dense; g[j]
+ * becomes d_j g_j, F(j) is left to the caller.  Column by column in dof
+ * order it gives lac_dirichlet_apply's numbers. */
+int lac_dirichlet_column (lac_csc *K, size_t jl, size_t j, const char *fixed,
+                          double *g, double *F);
 /* The pairs of d as dense arrays of n dofs: fixed[k] = 1 and g[k] the
  * value (later pairs win), new (the caller frees them, also on error). */
 int lac_dirichlet_dense (const lac_dirichlet *d, size_t n, char **fixed,

@@ -5,11 +5,10 @@
  * For each block of nodes b0 <= b < b1:
  *   1. the block's columns of K, from every cell around its nodes, in the
  *      order of the cells (lac_pattern_build_nodes, lac_pattern_add);
- *   2. each column j in order: its entries counted; if j is fixed with
- *      g_j != 0, F -= K(:,j) g_j (lac_dirichlet_apply's step 1); the
- *      column's sum of |k_ij| and its diagonal as they are after the
- *      elimination (fixed rows and columns zero, d_j on a fixed diagonal:
- *      lac_csc_diag_norm1 of the eliminated K).
+ *   2. each column j in order: its entries counted, its elimination
+ *      (lac_dirichlet_column: the lift F -= K(:,j) g_j, fixed rows and
+ *      columns zeroed, d_j on a fixed diagonal), its sum of |k_ij| and its
+ *      diagonal (lac_csc_diag_norm1 of the eliminated K).
  * Then F(k) = d_k g_k on the fixed dofs (step 3).
  */
 #include "fem/lac_assembly_digest.h"
@@ -64,39 +63,25 @@ fill_block (const lac_mesh *m, const lac_elastic *mat, const char *cells,
   return LAC_SUCCESS;
 }
 
-/* Step 2 for column j of the block (its entries x[p0 .. p1) at rows i[]):
- * the lift, the diagonal and the sum of |k_ij| after the elimination;
- * g[j] becomes d_j g_j on a fixed j. */
+/* Step 2 for column jl of the block, dof j: its elimination
+ * (lac_dirichlet_column, in place: the block is thrown away), then its
+ * diagonal and sum of |k_ij| (lac_csc_diag_norm1's, row numbers being
+ * dofs). */
 static int
-read_column (const lac_csc *K, size_t jl, size_t j, const char *fixed,
-             double *g, double *F, double *diag, double *norm1)
+read_column (lac_csc *K, size_t jl, size_t j, const char *fixed, double *g,
+             double *F, double *diag, double *norm1)
 {
   double sum = 0;
-  int has_diag = 0;
-  if (fixed[j] && g[j] != 0.0)
-    for (int p = K->p[jl]; p < K->p[jl + 1]; p++)
-      F[K->i[p]] -= K->x[p] * g[j];                  /* F -= K(:,j) g_j */
+  int status = lac_dirichlet_column (K, jl, j, fixed, g, F);
+  if (status)
+    return status;
   diag[j] = 0;
   for (int p = K->p[jl]; p < K->p[jl + 1]; p++)
     {
-      size_t i = (size_t) K->i[p];
-      double x = K->x[p];
-      if (i == j)
-        {
-          has_diag = 1;
-          if (fixed[j] && !(x > 0.0))
-            x = 1.0;                                 /* d_j = 1 */
-          if (fixed[j])
-            g[j] *= x;                               /* F(j) = d_j g_j */
-          diag[j] = x;
-        }
-      else if (fixed[i] || fixed[j])
-        continue;                                    /* zeroed */
-      sum += fabs (x);
+      sum += fabs (K->x[p]);
+      if ((size_t) K->i[p] == j)
+        diag[j] = K->x[p];
     }
-  if (fixed[j] && !has_diag)
-    LAC_ERROR (LAC_EINVAL, "fixed dof %zu has no diagonal entry in K: its "
-               "node belongs to no assembled cell", j);
   *norm1 = fmax (*norm1, sum);
   return LAC_SUCCESS;
 }
