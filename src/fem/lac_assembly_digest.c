@@ -1,168 +1,187 @@
-/* lac_assembly_digest.c -- what the Dirichlet elimination leaves of K,
- *                          without K whole (see lac_assembly_digest.h)
- *                                                          [LAC §4.3]
+/* lac_assembly_digest.c -- what the Dirichlet elimination leaves of K on
+ *                          the program that reads the mesh, without K
+ *                          (see lac_assembly_digest.h)     [LAC §4.3]
  *
- * For each block of nodes b0 <= b < b1:
- *   1. the block's columns of K, from every cell around its nodes, in the
- *      order of the cells (lac_pattern_build_nodes, lac_pattern_add);
- *   2. each column j in order: its entries counted, its elimination
- *      (lac_dirichlet_column: the lift F -= K(:,j) g_j, fixed rows and
- *      columns zeroed, d_j on a fixed diagonal), its sum of |k_ij| and its
- *      diagonal (lac_csc_diag_norm1 of the eliminated K).
- * Then F(k) = d_k g_k on the fixed dofs (step 3).
+ * 1. the entries: lac_pattern_count;
+ * 2. every fixed dof has a cell of a body around its node (else the error
+ *    of lac_dirichlet_column);
+ * 3. for each node a with a nonzero Dirichlet value, in node order: its
+ *    dim columns K(:, dim a + k), summed over the cells around a in
+ *    their order, then for each fixed dof j of a in order the lift
+ *    F -= K(:,j) g_j and g_j *= d_j (lac_dirichlet_column's steps);
+ * 4. F(k) = d_k g_k on the fixed dofs (lac_dirichlet_apply's step 3).
  */
 #include "fem/lac_assembly_digest.h"
 
-#include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "fem/lac_pattern.h"
 
-#define DEFAULT_BLOCK ((size_t) 1 << 23)   /* entries of K in a block */
-
-void
-lac_k_digest_clear (lac_k_digest *k)
+/* The columns of one node: its neighbours nbr[0 .. nn) (slot[b]: the
+ * place of node b among them, SIZE_MAX if none) and col, the entries
+ * K(dim nbr[s] + i, dim a + k) at col[(dim s + i) dim + k]. */
+typedef struct node_columns
 {
-  if (!k)
-    return;
-  lac_free (k->diag);
-  memset (k, 0, sizeof *k);
-}
+  size_t *cptr, *cidx;     /* the cells of bodies around each node       */
+  size_t *slot, *nbr, nn;
+  double *col, *Ke;
+  lac_quad_cache qc;
+} node_columns;
 
-/* Nodes in the first block of about `block` entries: entries per node
- * estimated by dim^2 sum_c nen_c^2 / nnodes (at least the true mean;
- * the next blocks follow what the last one held, next_step). */
-static size_t
-nodes_per_block (const lac_mesh *m, size_t block)
-{
-  size_t sum = 0, d = (size_t) m->dim;
-  for (size_t c = 0; c < m->ncells; c++)
-    {
-      size_t nen = m->ptr[c + 1] - m->ptr[c];
-      sum += nen * nen;
-    }
-  size_t per_node = m->nnodes ? d * d * (sum / m->nnodes + 1) : 1;
-  size_t nodes = (block ? block : DEFAULT_BLOCK) / per_node;
-  return nodes ? nodes : 1;
-}
-
-/* Step 1: the columns of the block P from the cells kept, in order. */
+/* 1 if node a has a fixed dof with a nonzero value. */
 static int
-fill_block (const lac_mesh *m, const lac_elastic *mat, const char *cells,
-            lac_pattern *P, lac_quad_cache *qc, double *Ke)
+lifted (size_t a, size_t d, const char *fixed, const double *g)
 {
-  for (size_t c = 0; c < m->ncells; c++)
-    if (cells[c] && P->cptr[c + 1] > P->cptr[c])
-      {
-        int status = lac_assembly_cell_stiffness_q (m, mat, c, qc, Ke);
-        if (status)
-          return status;
-        lac_pattern_add (P, m, c, Ke);                       /* K += Ke */
-      }
-  return LAC_SUCCESS;
+  for (size_t k = 0; k < d; k++)
+    if (fixed[d * a + k] && g[d * a + k] != 0.0)
+      return 1;
+  return 0;
 }
 
-/* Step 2 for column jl of the block, dof j: its elimination
- * (lac_dirichlet_column, in place: the block is thrown away), then its
- * diagonal and sum of |k_ij| (lac_csc_diag_norm1's, row numbers being
- * dofs). */
+/* Step 3's columns of node a: the sum of its cells' blocks, in order. */
 static int
-read_column (lac_csc *K, size_t jl, size_t j, const char *fixed, double *g,
-             double *F, double *diag, double *norm1)
+columns (const lac_mesh *m, const lac_elastic *mat, size_t a,
+         node_columns *nc)
 {
-  double sum = 0;
-  int status = lac_dirichlet_column (K, jl, j, fixed, g, F);
-  if (status)
-    return status;
-  diag[j] = 0;
-  for (int p = K->p[jl]; p < K->p[jl + 1]; p++)
-    {
-      sum += fabs (K->x[p]);
-      if ((size_t) K->i[p] == j)
-        diag[j] = K->x[p];
-    }
-  *norm1 = fmax (*norm1, sum);
-  return LAC_SUCCESS;
-}
-
-/* Steps 1 and 2 for the nodes b0 <= b < b1; *entries: the block's. */
-static int
-one_block (const lac_mesh *m, const lac_elastic *mat, const char *cells,
-           size_t b0, size_t b1, const char *fixed, double *g, double *F,
-           lac_quad_cache *qc, double *Ke, lac_k_digest *out,
-           size_t *entries)
-{
-  lac_pattern *P = lac_pattern_build_nodes (m, cells, b0, b1);
   size_t d = (size_t) m->dim;
-  int status = P ? fill_block (m, mat, cells, P, qc, Ke) : LAC_ENOMEM;
-  *entries = P ? (size_t) P->K->p[P->K->ncol] : 0;
-  for (size_t jl = 0; !status && jl < d * (b1 - b0); jl++)
+  nc->nn = 0;
+  for (size_t q = nc->cptr[a]; q < nc->cptr[a + 1]; q++)
     {
-      out->nnz += (size_t) (P->K->p[jl + 1] - P->K->p[jl]);
-      status = read_column (P->K, jl, d * b0 + jl, fixed, g, F, out->diag,
-                            &out->norm1);
+      size_t c = nc->cidx[q], nen = m->ptr[c + 1] - m->ptr[c], ia = 0;
+      const int *conn = m->conn + m->ptr[c];
+      int status = lac_assembly_cell_stiffness_q (m, mat, c, &nc->qc, nc->Ke);
+      if (status)
+        return status;
+      while ((size_t) conn[ia] != a)
+        ia++;
+      for (size_t b = 0; b < nen; b++)
+        {
+          size_t *s = nc->slot + conn[b];
+          if (*s == SIZE_MAX)
+            {
+              *s = nc->nn++;
+              nc->nbr[*s] = (size_t) conn[b];
+              memset (nc->col + *s * d * d, 0, d * d * sizeof *nc->col);
+            }
+          for (size_t i = 0; i < d; i++)
+            for (size_t k = 0; k < d; k++)                    /* K += Ke */
+              nc->col[(*s * d + i) * d + k]
+                += nc->Ke[(b * d + i) * nen * d + ia * d + k];
+        }
     }
-  lac_pattern_free (P);
+  return LAC_SUCCESS;
+}
+
+/* Step 3 for node a: F -= K(:,j) g_j, g_j *= d_j for its fixed dofs j. */
+static int
+lift_node (const lac_mesh *m, const lac_elastic *mat, size_t a,
+           const char *fixed, double *g, double *F, node_columns *nc)
+{
+  size_t d = (size_t) m->dim;
+  int status = columns (m, mat, a, nc);
+  for (size_t k = 0; !status && k < d; k++)
+    {
+      size_t j = d * a + k;
+      if (!fixed[j])
+        continue;
+      if (g[j] != 0.0)
+        for (size_t s = 0; s < nc->nn; s++)
+          for (size_t i = 0; i < d; i++)
+            F[d * nc->nbr[s] + i] -= nc->col[(s * d + i) * d + k] * g[j];
+      double kjj = nc->col[(nc->slot[a] * d + k) * d + k];
+      g[j] *= kjj > 0.0 ? kjj : 1.0;                     /* d_j g_j */
+    }
+  for (size_t s = 0; s < nc->nn; s++)
+    nc->slot[nc->nbr[s]] = SIZE_MAX;
   return status;
 }
 
-/* The nodes of the next block: the last block's scaled to `block`
- * entries by what it held (between half and twice as many nodes). */
-static size_t
-next_step (size_t step, size_t entries, size_t block)
+/* Step 2: the first fixed dof of a node in no cell of a body. */
+static int
+check_fixed (const lac_mesh *m, const char *fixed, const size_t *cptr)
 {
-  double r = entries ? (double) block / (double) entries : 2.0;
-  size_t next = (size_t) ((double) step * (r < 0.5 ? 0.5 : r > 2.0 ? 2.0
-                                           : r));
-  return next ? next : 1;
+  size_t d = (size_t) m->dim;
+  for (size_t j = 0; j < d * m->nnodes; j++)
+    if (fixed[j] && cptr[j / d + 1] == cptr[j / d])
+      LAC_ERROR (LAC_EINVAL, "fixed dof %zu has no diagonal entry in K: "
+                 "its node belongs to no assembled cell", j);
+  return LAC_SUCCESS;
+}
+
+/* The arrays of nc for the lifted nodes: neighbours at most the sum of
+ * the cells' nodes around one of them. */
+static int
+alloc_columns (const lac_mesh *m, const char *fixed, const double *g,
+               node_columns *nc)
+{
+  size_t d = (size_t) m->dim, cap = 1;
+  for (size_t a = 0; a < m->nnodes; a++)
+    if (lifted (a, d, fixed, g))
+      {
+        size_t sum = 0;
+        for (size_t q = nc->cptr[a]; q < nc->cptr[a + 1]; q++)
+          sum += m->ptr[nc->cidx[q] + 1] - m->ptr[nc->cidx[q]];
+        cap = sum > cap ? sum : cap;
+      }
+  nc->slot = lac_malloc ((m->nnodes + 1) * sizeof *nc->slot);
+  nc->nbr = lac_malloc (cap * sizeof *nc->nbr);
+  nc->col = lac_malloc (cap * d * d * sizeof *nc->col);
+  nc->Ke = lac_malloc (LAC_MAX_NODES * 3 * LAC_MAX_NODES * 3
+                       * sizeof *nc->Ke);
+  if (!nc->slot || !nc->nbr || !nc->col || !nc->Ke)
+    LAC_ERROR (LAC_ENOMEM, "the lift of %zu nodes", m->nnodes);
+  for (size_t a = 0; a <= m->nnodes; a++)
+    nc->slot[a] = SIZE_MAX;
+  return LAC_SUCCESS;
 }
 
 int
 lac_assembly_digest (const lac_mesh *m, const lac_elastic *mat,
-                     const lac_dirichlet *d, size_t block, double *F,
-                     lac_k_digest *out)
+                     const lac_dirichlet *d, double *F, size_t *nnz)
 {
   size_t n = m ? (size_t) m->dim * m->nnodes : 0;
   char *fixed = NULL, *cells = NULL;
-  double *g = NULL, *Ke = NULL;
-  lac_quad_cache qc;
+  double *g = NULL;
+  node_columns nc;
   int status;
-  memset (out, 0, sizeof *out);
-  memset (&qc, 0, sizeof qc);
+  memset (&nc, 0, sizeof nc);
+  *nnz = 0;
   if (!m || !mat || !d || !F || !mat->E)
     LAC_ERROR (LAC_EINVAL, "mesh, material, Dirichlet list or loads NULL");
   if ((status = lac_dirichlet_dense (d, n, &fixed, &g)))
     goto done;
-  cells = lac_malloc (m->ncells + 1);
-  Ke = lac_malloc (LAC_MAX_NODES * 3 * LAC_MAX_NODES * 3 * sizeof *Ke);
-  out->diag = lac_calloc (n ? n : 1, sizeof *out->diag);
-  if (!cells || !Ke || !out->diag)
+  if (!(cells = lac_malloc (m->ncells + 1)))
     {
-      status = LAC_ERRMSG (LAC_ENOMEM, "the digest of K of %zu dofs", n);
+      status = LAC_ERRMSG (LAC_ENOMEM, "the cells of %zu", m->ncells);
       goto done;
     }
   for (size_t c = 0; c < m->ncells; c++)
     cells[c] = mat->E[c] > 0.0;            /* the cells of elastic bodies */
-  size_t step = nodes_per_block (m, block), entries = 0;
-  block = block ? block : DEFAULT_BLOCK;
-  for (size_t b0 = 0, b1; b0 < m->nnodes && !status; b0 = b1)
-    {
-      b1 = b0 + step < m->nnodes ? b0 + step : m->nnodes;
-      status = one_block (m, mat, cells, b0, b1, fixed, g, F, &qc, Ke, out,
-                          &entries);
-      step = next_step (step, entries, block);
-    }
-  for (size_t k = 0; !status && k < n; k++)
+  if ((status = lac_pattern_count (m, cells, nnz))                   /* 1 */
+      || (status = lac_pattern_node_cells (m, cells, &nc.cptr, &nc.cidx))
+      || (status = check_fixed (m, fixed, nc.cptr))                  /* 2 */
+      || (status = alloc_columns (m, fixed, g, &nc)))
+    goto done;
+  for (size_t a = 0; !status && a < m->nnodes; a++)                  /* 3 */
+    if (lifted (a, (size_t) m->dim, fixed, g))
+      status = lift_node (m, mat, a, fixed, g, F, &nc);
+  for (size_t k = 0; !status && k < n; k++)                          /* 4 */
     if (fixed[k])
-      F[k] = g[k];                                   /* F(k) = d_k g_k */
+      F[k] = g[k];                                     /* F(k) = d_k g_k */
 done:
-  lac_quad_cache_free (&qc);
-  lac_free (Ke);
+  lac_quad_cache_free (&nc.qc);
+  lac_free (nc.Ke);
+  lac_free (nc.col);
+  lac_free (nc.nbr);
+  lac_free (nc.slot);
+  lac_free (nc.cidx);
+  lac_free (nc.cptr);
   lac_free (cells);
   lac_free (g);
   lac_free (fixed);
   if (status)
-    lac_k_digest_clear (out);
+    *nnz = 0;
   return status;
 }

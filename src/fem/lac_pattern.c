@@ -61,16 +61,14 @@ cmp_size (const void *x, const void *y)
   return (a > b) - (a < b);
 }
 
-/* Node b0 + j -> its neighbours (the nodes of its cells, itself
- * included), sorted, for the nodes b0 <= b < b1 (nb->ptr[j], j = b -
- * b0); two passes with a marker per node. */
+/* Node -> its neighbours (the nodes of its cells, itself included),
+ * sorted; two passes with a marker per node. */
 static int
-neighbours (const lac_mesh *m, const graph *nc, size_t b0, size_t b1,
-            graph *nb)
+neighbours (const lac_mesh *m, const graph *nc, graph *nb)
 {
-  size_t n = m->nnodes, nr = b1 - b0;
+  size_t n = m->nnodes;
   size_t *mark = lac_malloc ((n + 1) * sizeof *mark);
-  nb->ptr = lac_calloc (nr + 1, sizeof *nb->ptr);
+  nb->ptr = lac_calloc (n + 1, sizeof *nb->ptr);
   if (!mark || !nb->ptr)
     {
       lac_free (mark);
@@ -80,9 +78,9 @@ neighbours (const lac_mesh *m, const graph *nc, size_t b0, size_t b1,
     {
       for (size_t a = 0; a <= n; a++)
         mark[a] = SIZE_MAX;
-      for (size_t b = b0; b < b1; b++)
+      for (size_t b = 0; b < n; b++)
         {
-          size_t deg = 0, j = b - b0;
+          size_t deg = 0;
           for (size_t q = nc->ptr[b]; q < nc->ptr[b + 1]; q++)
             for (size_t r = m->ptr[nc->idx[q]]; r < m->ptr[nc->idx[q] + 1];
                  r++)
@@ -90,15 +88,15 @@ neighbours (const lac_mesh *m, const graph *nc, size_t b0, size_t b1,
                 {
                   mark[m->conn[r]] = b;
                   if (pass)
-                    nb->idx[nb->ptr[j] + deg] = (size_t) m->conn[r];
+                    nb->idx[nb->ptr[b] + deg] = (size_t) m->conn[r];
                   deg++;
                 }
           if (!pass)
-            nb->ptr[j + 1] = nb->ptr[j] + deg;
+            nb->ptr[b + 1] = nb->ptr[b] + deg;
           else
-            qsort (nb->idx + nb->ptr[j], deg, sizeof *nb->idx, cmp_size);
+            qsort (nb->idx + nb->ptr[b], deg, sizeof *nb->idx, cmp_size);
         }
-      if (!pass && !(nb->idx = lac_malloc ((nb->ptr[nr] + 1)
+      if (!pass && !(nb->idx = lac_malloc ((nb->ptr[n] + 1)
                                            * sizeof *nb->idx)))
         {
           lac_free (mark);
@@ -109,20 +107,19 @@ neighbours (const lac_mesh *m, const graph *nc, size_t b0, size_t b1,
   return LAC_SUCCESS;
 }
 
-/* The CSC of the nr nodes of nb (nnodes in all): column dim j + k holds
- * rows dim a + i, a among node j's neighbours. */
+/* The CSC: column dim b + k holds rows dim a + i, a among b's neighbours. */
 static int
-csc_of (const graph *nb, size_t nr, size_t nnodes, int dim, lac_csc **out)
+csc_of (const graph *nb, size_t nnodes, int dim, lac_csc **out)
 {
-  size_t d = (size_t) dim, nnz = nb->ptr[nr] * d * d;
+  size_t d = (size_t) dim, nnz = nb->ptr[nnodes] * d * d;
   if (nnz > INT_MAX)
     LAC_ERROR (LAC_EINVAL, "%zu entries in the pattern: more than INT_MAX "
                "(int indices)", nnz);
-  lac_csc *K = *out = lac_csc_alloc (d * nnodes, d * nr, nnz);
+  lac_csc *K = *out = lac_csc_alloc (d * nnodes, d * nnodes, nnz);
   if (!K)
     return LAC_ENOMEM;
   size_t q = 0;
-  for (size_t b = 0; b < nr; b++)
+  for (size_t b = 0; b < nnodes; b++)
     for (size_t k = 0; k < d; k++)
       {
         for (size_t t = nb->ptr[b]; t < nb->ptr[b + 1]; t++)
@@ -151,18 +148,6 @@ position (const graph *nb, size_t b, size_t a)
   return (int) lo;
 }
 
-/* Does cell c have a node among p's columns? */
-static int
-in_range (const lac_pattern *p, const lac_mesh *m, size_t c)
-{
-  for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
-    if ((size_t) m->conn[q] >= p->b0 && (size_t) m->conn[q] < p->b1)
-      return 1;
-  return 0;
-}
-
-/* The map of the cells kept that have a node among the columns; -1 for
- * a node b outside them. */
 static int
 make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
           const graph *nb)
@@ -173,8 +158,7 @@ make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
   for (size_t c = 0; c < m->ncells; c++)
     {
       size_t nen = m->ptr[c + 1] - m->ptr[c];
-      p->cptr[c + 1] = p->cptr[c] + ((!cells || cells[c]) && in_range (p, m, c)
-                                     ? nen * nen : 0);
+      p->cptr[c + 1] = p->cptr[c] + (!cells || cells[c] ? nen * nen : 0);
     }
   if (!(p->pos = lac_malloc ((p->cptr[m->ncells] + 1) * sizeof *p->pos)))
     return LAC_ENOMEM;
@@ -185,12 +169,7 @@ make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
       int *pos = p->pos + p->cptr[c];
       for (size_t a = 0; p->cptr[c + 1] > p->cptr[c] && a < nen; a++)
         for (size_t b = 0; b < nen; b++)
-          {
-            size_t nb_b = (size_t) conn[b];
-            pos[a * nen + b] = nb_b < p->b0 || nb_b >= p->b1 ? -1
-                               : position (nb, nb_b - p->b0,
-                                           (size_t) conn[a]);
-          }
+          pos[a * nen + b] = position (nb, (size_t) conn[b], (size_t) conn[a]);
     }
   return LAC_SUCCESS;
 }
@@ -198,31 +177,19 @@ make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
 lac_pattern *
 lac_pattern_build (const lac_mesh *m, const char *cells)
 {
-  return lac_pattern_build_nodes (m, cells, 0, m->nnodes);
-}
-
-lac_pattern *
-lac_pattern_build_nodes (const lac_mesh *m, const char *cells, size_t b0,
-                         size_t b1)
-{
   graph nc = { NULL, NULL }, nb = { NULL, NULL };
-  if (b1 > m->nnodes || b0 > b1)
-    LAC_ERROR_NULL (LAC_EINVAL, "the columns of nodes %zu to %zu: the mesh "
-                    "has %zu nodes", b0, b1, m->nnodes);
   lac_pattern *p = lac_calloc (1, sizeof *p);
   int status = p ? node_cells (m, cells, &nc)
                  : LAC_ERRMSG (LAC_ENOMEM, "the pattern of K");
   if (!status)
-    status = neighbours (m, &nc, b0, b1, &nb);
+    status = neighbours (m, &nc, &nb);
   graph_free (&nc);
   if (!status)
     {
       p->dim = m->dim;
       p->ncells = m->ncells;
       p->ndof = (size_t) m->dim * m->nnodes;
-      p->b0 = b0;
-      p->b1 = b1;
-      status = csc_of (&nb, b1 - b0, m->nnodes, m->dim, &p->K);
+      status = csc_of (&nb, m->nnodes, m->dim, &p->K);
     }
   if (!status)
     status = make_map (p, m, cells, &nb);
@@ -236,6 +203,49 @@ lac_pattern_build_nodes (const lac_mesh *m, const char *cells, size_t b0,
       return NULL;
     }
   return p;
+}
+
+int
+lac_pattern_node_cells (const lac_mesh *m, const char *cells, size_t **ptr,
+                        size_t **idx)
+{
+  graph g = { NULL, NULL };
+  int status = node_cells (m, cells, &g);
+  if (status)
+    {
+      graph_free (&g);
+      LAC_ERROR (status, "the cells around %zu nodes", m->nnodes);
+    }
+  *ptr = g.ptr;
+  *idx = g.idx;
+  return LAC_SUCCESS;
+}
+
+int
+lac_pattern_count (const lac_mesh *m, const char *cells, size_t *nnz)
+{
+  graph nc = { NULL, NULL };
+  size_t d = (size_t) m->dim, *mark = NULL;
+  *nnz = 0;
+  if (node_cells (m, cells, &nc)
+      || !(mark = lac_malloc ((m->nnodes + 1) * sizeof *mark)))
+    {
+      graph_free (&nc);
+      LAC_ERROR (LAC_ENOMEM, "the pattern's count of %zu nodes", m->nnodes);
+    }
+  for (size_t a = 0; a < m->nnodes; a++)
+    mark[a] = SIZE_MAX;
+  for (size_t b = 0; b < m->nnodes; b++)       /* the neighbours of b */
+    for (size_t q = nc.ptr[b]; q < nc.ptr[b + 1]; q++)
+      for (size_t r = m->ptr[nc.idx[q]]; r < m->ptr[nc.idx[q] + 1]; r++)
+        if (mark[m->conn[r]] != b)
+          {
+            mark[m->conn[r]] = b;
+            *nnz += d * d;
+          }
+  lac_free (mark);
+  graph_free (&nc);
+  return LAC_SUCCESS;
 }
 
 void
@@ -265,11 +275,10 @@ lac_pattern_add (lac_pattern *p, const lac_mesh *m, size_t c,
   size_t nc = nen * d;
   double *x = p->K->x;
   for (size_t b = 0; b < nen; b++)
-    for (size_t k = 0; k < d && (size_t) conn[b] >= p->b0
-                       && (size_t) conn[b] < p->b1; k++)   /* its columns */
+    for (size_t k = 0; k < d; k++)
       {
         size_t col = b * d + k;
-        double *xc = x + cp[((size_t) conn[b] - p->b0) * d + k];
+        double *xc = x + cp[(size_t) conn[b] * d + k];
         for (size_t a = 0; a < nen; a++)
           {
             double *xa = xc + (size_t) pos[a * nen + b] * d;

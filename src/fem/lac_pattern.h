@@ -31,10 +31,7 @@ typedef struct lac_pattern
 {
   int dim;
   size_t ndof, ncells;
-  size_t b0, b1;         /* the columns are those of nodes b0 <= b < b1
-                            (all: 0, nnodes)                               */
-  lac_csc *K;            /* owned, ndof x dim (b1 - b0): the pattern, its
-                            values; column dim (b - b0) + k is dof dim b + k */
+  lac_csc *K;            /* owned, ndof x ndof: the pattern, its values    */
   size_t *cptr;          /* owned, ncells+1: the map of cell c is
                             pos[cptr[c] .. cptr[c+1]), nen^2 values, or
                             nothing for a cell left out                    */
@@ -45,19 +42,24 @@ typedef struct lac_pattern
 /* The pattern of the cells c with cells[c] != 0 (cells NULL: all).
  * NULL on error (LAC_ENOMEM, LAC_EINVAL: more than INT_MAX entries). */
 lac_pattern *lac_pattern_build (const lac_mesh *m, const char *cells);
-/* The same for the columns of nodes b0 <= b < b1 only (a block of K's
- * columns, whole: every cell kept around those nodes adds to them; the
- * map holds the cells with a node among them, -1 for the others' nodes).
- * NULL on error (also LAC_EINVAL: not 0 <= b0 <= b1 <= nnodes). */
-lac_pattern *lac_pattern_build_nodes (const lac_mesh *m, const char *cells,
-                                      size_t b0, size_t b1);
 void lac_pattern_free (lac_pattern *p);               /* NULL allowed */
+
+/* Step 1 alone: the cells c with cells[c] != 0 (cells NULL: all) around
+ * each node, in increasing order: those of node a are
+ * idx[ptr[a] .. ptr[a + 1]) (*ptr: nnodes + 1 entries; both new, freed by
+ * the caller).  LAC_SUCCESS or LAC_ENOMEM (nothing left). */
+int lac_pattern_node_cells (const lac_mesh *m, const char *cells,
+                            size_t **ptr, size_t **idx);
+/* The number of entries of the pattern of those cells (dim^2 for every
+ * pair of nodes that share one of them), without building it: time
+ * about that of step 2, memory the node-to-cell list.  LAC_SUCCESS or
+ * LAC_ENOMEM. */
+int lac_pattern_count (const lac_mesh *m, const char *cells, size_t *nnz);
 
 /* K->x = 0. */
 void lac_pattern_zero (lac_pattern *p);
 /* K += Ke for cell c (Ke: (nen dim)^2 values, row-major, in the order of
- * lac_mesh_cell_dofs), into the pattern's columns; the cell must be one
- * of the pattern's. */
+ * lac_mesh_cell_dofs); the cell must be one of the pattern's. */
 void lac_pattern_add (lac_pattern *p, const lac_mesh *m, size_t c,
                       const double *Ke);
 

@@ -73,7 +73,8 @@ typedef struct lac_petsc_command
   int warm;                 /* solve: the start is the last solution      */
   long long n, k;           /* build: displacements, multipliers          */
   double rtol;              /* solve: relative residual                   */
-  double scale;             /* update, every row: K_W is divided by it    */
+  double omega;             /* build: W_i = omega / s_i, which every
+                               process computes                          */
 } lac_petsc_command;
 
 /* The root: c to every other process (nothing with one process). */

@@ -20,7 +20,6 @@ lac_run_solution_clear (lac_run_solution *sol)
   lac_free (sol->u);
   lac_newton_free (sol->newton);
   lac_linear_model_clear (&sol->lin);
-  lac_free (sol->kdiag);
   memset (sol, 0, sizeof *sol);
 }
 
@@ -48,19 +47,25 @@ kmul_root (void *solution, const double *x, double *y)
   return lac_strategy_kmul (sol->kst, sol->kop.n, x, y);
 }
 
+/* kop's norm: the strategy's ||K||_inf. */
+static int
+knorm_root (void *solution, double *norm)
+{
+  const lac_run_solution *sol = solution;
+  return lac_strategy_knorm (sol->kst, norm);
+}
+
 /* When the strategy assembles its own K from the cells (petsc,
- * lac_strategy_own_k): the root keeps of K only diag(K) and ||K||_inf
- * (the residuals take K x from the strategy: cs's Kop).  Stage 4 made
- * them without K (sys->kd: lac_run_system_stiffness), or, when it kept K,
- * they are taken from it and K is freed before the solve (a million
- * hex8 dofs: 1 GB less on the root; chapter 13, section 6).  Else
- * nothing changes. */
+ * lac_strategy_own_k): the root keeps nothing of K (the residuals take
+ * K x and ||K||_inf from the strategy: cs's Kop; diag(K) stays on the
+ * processes, which weigh the contact columns with it).  Stage 4 made no
+ * K (lac_run_system_stiffness), or, when it kept one, K is freed before
+ * the solve (a million hex8 dofs: 1 GB less on the root; chapter 13,
+ * section 6).  Else nothing changes. */
 static int
 drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol,
              lac_contact_system *cs)
 {
-  double normK;
-  const double *diag = sys->kd.diag;
   if (!lac_strategy_own_k (st, sys->ndof))
     {
       if (!sys->K)
@@ -68,20 +73,10 @@ drop_root_k (lac_run_system *sys, lac_strategy *st, lac_run_solution *sol,
                    "needs one");
       return LAC_SUCCESS;
     }
-  if (sys->K)
-    {
-      if (!(sol->kdiag = lac_calloc (sys->ndof ? sys->ndof : 1,
-                                     sizeof *sol->kdiag)))
-        LAC_ERROR (LAC_ENOMEM, "diag(K) of %zu dofs", sys->ndof);
-      normK = lac_csc_diag_norm1 (sys->K, sol->kdiag);  /* K symmetric */
-      diag = sol->kdiag;
-      lac_csc_free (sys->K);
-      sys->K = NULL;
-    }
-  else
-    normK = sys->kd.norm1;
+  lac_csc_free (sys->K);
+  sys->K = NULL;
   sol->kst = st;
-  sol->kop = (lac_stiffness_op) { sys->ndof, normK, diag, sol, kmul_root };
+  sol->kop = (lac_stiffness_op) { sys->ndof, sol, kmul_root, knorm_root };
   cs->K = NULL;
   cs->Kop = &sol->kop;
   return LAC_SUCCESS;

@@ -47,10 +47,8 @@ typedef struct lac_run_solution
                                   NULL when by size or asked for           */
   lac_stiffness_op kop;        /* K for the residuals when the strategy
                                   holds it (petsc): the system's K freed  */
-  double *kdiag;               /* owned, ndof: kop's diag(K) (when it came
-                                  from the system's K; else the system's
-                                  digest's, sys->kd)                       */
-  lac_strategy *kst;           /* borrowed: the strategy kop asks for K x */
+  lac_strategy *kst;           /* borrowed: the strategy kop asks for K x
+                                  and ||K||_inf                            */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.

@@ -26,7 +26,6 @@ lac_run_system_clear (lac_run_system *sys)
   for (size_t j = 0; sys->N_what && j < sys->nfree; j++)
     lac_free (sys->N_what[j]);
   lac_free (sys->N_what);
-  lac_k_digest_clear (&sys->kd);
   memset (sys, 0, sizeof *sys);
 }
 
@@ -339,8 +338,8 @@ system_progress (const lac_run_system *sys, char *progress, size_t size)
               sys->ties.n, sys->ties.nplates, sys->nnz);
   else
     snprintf (progress, size, "%zu dofs (%zu fixed), %zu nonzeros in K%s",
-              sys->ndof, sys->nfixed, sys->nnz, sys->kd.diag
-              ? " (not kept: the solver assembles it from the cells)" : "");
+              sys->ndof, sys->nfixed, sys->nnz, sys->k_by_solver
+              ? " (not made: the solver assembles it from the cells)" : "");
 }
 
 int
@@ -357,12 +356,12 @@ lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
       return LAC_SUCCESS;
     }
   if (from_cells && !sys->dir->frames && !sc->output.matrix)
-    {                                   /* b, diag(K), ||K||: K not kept */
+    {                                   /* b and the entries: no K */
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
-      if ((status = lac_assembly_digest (m, &mat->elastic, sys->dir, 0,
-                                         sys->b, &sys->kd)))
+      if ((status = lac_assembly_digest (m, &mat->elastic, sys->dir, sys->b,
+                                         &sys->nnz)))
         return status;
-      sys->nnz = sys->kd.nnz;
+      sys->k_by_solver = 1;
     }
   /* K in its compressed columns straight away (no triplet list: the peak
    * of the assembly is K and the map of the cells). */

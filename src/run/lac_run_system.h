@@ -59,9 +59,8 @@ typedef struct lac_run_system
                               NULL: rigid plates, rollers' frames, large
                               deformation)                              */
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
-  lac_k_digest kd;         /* K = NULL because the solver assembles K from
-                              the cells (lac_run_system_stiffness): its
-                              diag, ||K||_1 and entries; diag NULL else */
+  int k_by_solver;         /* 1: K = NULL because the solver assembles it
+                              from the cells (lac_run_system_stiffness) */
 } lac_run_system;
 
 /* Everything but K (with rigid plates: also K, which their condensation
@@ -73,9 +72,9 @@ int lac_run_system_build (const lac_scene *sc, lac_model model,
 /* Then K and its elimination (b); from_cells: the solve will assemble K
  * from the cells (run/lac_run_solve.h, lac_run_solve_k_from_cells), so,
  * where the cells are what K is made of (no rollers' frames, no
- * [output] matrix), K is never whole here: only b, diag(K), ||K||_1 and
- * the entries (fem/lac_assembly_digest.h, sys->kd).  The progress line
- * says which. */
+ * [output] matrix), K is never made here: only b and the number of
+ * entries (fem/lac_assembly_digest.h, sys->k_by_solver).  The progress
+ * line says which. */
 int lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
                               const lac_run_material *mat, int from_cells,
                               lac_run_system *sys, char *progress,

@@ -121,15 +121,17 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
   size_t n = cs->sys->K->ncol, k = cs->sys->C->ncol;
   double normK, normC, nrhs = 0, nb = 0;
   ctx c = { cs, n, k, 1.0, NULL, NULL, NULL, cs->sys->F };
-  lac_system_norms (cs->sys, &normK, &normC);
+  int status = lac_system_norm_k (cs->sys, &normK);
+  if (!status)
+    status = lac_system_norm_c (cs->sys, &normC);
   c.omega = normC > 0 ? normK / normC : 1.0;
   c.h = lac_malloc (n * sizeof *c.h);
   c.f = lac_malloc (n * sizeof *c.f);
   c.g = lac_malloc ((k + 1) * sizeof *c.g);
   double *b = lac_malloc ((n + k) * sizeof *b);
   double *z = lac_calloc (n + k, sizeof *z);
-  int status = c.h && c.f && c.g && b && z ? LAC_SUCCESS
-               : LAC_ERRMSG (LAC_ENOMEM, "Newton step of %zu unknowns", n + k);
+  if (!status && !(c.h && c.f && c.g && b && z))
+    status = LAC_ERRMSG (LAC_ENOMEM, "Newton step of %zu unknowns", n + k);
   lac_gmres_info gi = { 0, 0 };
   if (!status)
     status = start_residual (&c, dU, lambda, b, &nrhs);

@@ -35,7 +35,7 @@ static int
 residual_op (lac_linear_model *lm, const double *U, double *nku)
 {
   const lac_stiffness_op *op = lm->sys.Kop;
-  double nu = 0;
+  double nu = 0, norm = 0;
   int status = lac_system_k_mult (&lm->sys, U, lm->x);   /* K U */
   if (status)
     return status;
@@ -44,7 +44,9 @@ residual_op (lac_linear_model *lm, const double *U, double *nku)
       lm->r[j] = lm->sys.F[j] - lm->x[j];
       nu += U[j] * U[j];
     }
-  *nku = op->norm * op->norm * nu;
+  if (nu > 0 && (status = lac_system_norm_k (&lm->sys, &norm)))
+    return status;                /* at U = 0 (before the first set) none */
+  *nku = norm * norm * nu;
   return LAC_SUCCESS;
 }
 

@@ -12,9 +12,12 @@
  *           the near-null space, the solvers of
  *           linalg/lac_petsc_saddle.h (projected CG or fieldsplit GMRES
  *           on (*W); CG on K_W alone when k = 0);
- *   update  the statuses and W from the root; new numbers: K_W = K /
- *           kappa from the own cells; then K_W += C (W - W_old) C^T /
- *           kappa by the owners of the columns that changed; B, D = 1
+ *   update  the statuses from the root; new numbers: K_W = K / kappa
+ *           from the own cells, and from K ||K||_inf (for the root's
+ *           residuals) and the scales s_i = c_i^T diag(K)^-1 c_i of
+ *           W_i = omega / s_i, on every process; then K_W += C (W -
+ *           W_old) C^T / kappa by the owners of the columns that
+ *           changed; B, D = 1
  *           on the inactive and fieldsplit's Schur preconditioner, given
  *           to the solvers;
  *   solve   the right-hand side and the start from the root, one Krylov
@@ -90,12 +93,13 @@ typedef struct lac_petsc
   int dim;                         /* components per node (coordinates)   */
   const double *coords;            /* borrowed, n, or NULL                */
   unsigned long long hK, hC;       /* patterns the matrices were made for */
-  double *s;                       /* owned, k: c_i^T diag(K)^-1 c_i      */
   int have_stat, new_numbers;
   double *xv;                      /* owned, n: scratch                   */
   size_t na, *idx;                 /* owned, k: the active multipliers    */
   double *rhs, *lst;               /* owned, k                            */
   /* every process */
+  double *s;                       /* owned, k: c_i^T diag(K)^-1 c_i      */
+  double knorm;                    /* ||K||_inf (before the kappa)        */
   double *w, *wold, *dw;           /* owned, k: W, the W in K_W, change   */
   char *stat;                      /* owned, k: statuses of the matrices  */
   double kappa;                    /* the mean of diag(K): PETSc's K_W and
@@ -237,12 +241,11 @@ alloc_arrays (lac_petsc *s, size_t n, size_t k)
 {
   size_t k1 = k ? k : 1;
   free_arrays (s);
-  s->s = lac_calloc (k1, sizeof *s->s);
   s->idx = lac_malloc (k1 * sizeof *s->idx);
   s->rhs = lac_malloc (k1 * sizeof *s->rhs);
   s->lst = lac_malloc (k1 * sizeof *s->lst);
   s->xv = lac_malloc (n * sizeof *s->xv);
-  if (!s->s || !s->idx || !s->rhs || !s->lst || !s->xv)
+  if (!s->idx || !s->rhs || !s->lst || !s->xv)
     LAC_ERROR (LAC_ENOMEM, "petsc strategy, n = %zu, k = %zu", n, k);
   return LAC_SUCCESS;
 }
@@ -252,15 +255,17 @@ static int
 alloc_weights (lac_petsc *s)
 {
   size_t k1 = s->k ? s->k : 1;
+  lac_free (s->s);
   lac_free (s->w);
   lac_free (s->wold);
   lac_free (s->dw);
   lac_free (s->stat);
+  s->s = lac_calloc (k1, sizeof *s->s);
   s->w = lac_calloc (k1, sizeof *s->w);
   s->wold = lac_calloc (k1, sizeof *s->wold);
   s->dw = lac_calloc (k1, sizeof *s->dw);
   s->stat = lac_calloc (k1, 1);
-  if (!s->w || !s->wold || !s->dw || !s->stat)
+  if (!s->s || !s->w || !s->wold || !s->dw || !s->stat)
     return LAC_ERRMSG (LAC_ENOMEM, "the weights of %zu multipliers", s->k);
   return LAC_SUCCESS;
 }
@@ -478,6 +483,7 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
   s->k = (size_t) c->k;
   s->bs = c->bs;
   s->mode = c->mode;
+  s->omega = c->omega;
   s->coords_given = c->coords;
   s->cells = c->cells;
   if ((status = build_layout (s, c, sys ? sys->C : NULL))
@@ -528,7 +534,8 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   size_t bs = block_size (s, n);
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
-    .n = (long long) n, .k = (long long) k, .cells = petsc_own_k (s, n) };
+    .n = (long long) n, .k = (long long) k, .cells = petsc_own_k (s, n),
+    .omega = s->omega };
   int status;
   if (!c.cells && !sys->K)
     LAC_ERROR (LAC_EINVAL, "petsc: no K and no cells of these dofs to "
@@ -565,8 +572,6 @@ petsc_set (void *w, const lac_contact_system *sys)
       s->hK = hK;
       s->hC = hC;
     }
-  if (k)
-    lac_system_column_scales (s->sys, s->xv, s->s);
   s->new_numbers = 1;
   return LAC_SUCCESS;
 }
@@ -606,6 +611,34 @@ sum_abs (Vec v, double *sum)
   return LAC_SUCCESS;
 }
 
+/* s_i = c_i^T diag(K)^-1 c_i (lac_system_column_scales' sums) from d =
+ * diag(K), PETSc's: each process the entries of C in its own rows, then
+ * the sum over the processes, so that every process has W. */
+static int
+column_scales (lac_petsc *s, Vec d)
+{
+  const lac_csc *C = lac_dist_c (s->dist);
+  const int *row = lac_dist_row (s->dist);
+  const PetscScalar *a;
+  TRY (VecGetArrayRead (d, &a));
+  for (size_t i = 0; i < s->k; i++)
+    {
+      s->s[i] = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        {
+          PetscInt r = row ? row[C->i[p]] : C->i[p];
+          double kjj = r >= s->r0 && r < s->r1 ? a[r - s->r0] : 0.0;
+          if (kjj != 0)
+            s->s[i] += C->x[p] * C->x[p] * (1 / fabs (kjj));
+        }
+    }
+  TRY (VecRestoreArrayRead (d, &a));
+  if (s->size > 1 && MPI_Allreduce (MPI_IN_PLACE, s->s, (int) s->k,
+                                    MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
+    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the column scales failed");
+  return LAC_SUCCESS;
+}
+
 /* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
  * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
  * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
@@ -613,7 +646,9 @@ sum_abs (Vec v, double *sum)
  * whatever the units (its GAMG with the rigid motions is not
  * scale-invariant: with lengths and moduli scaled by powers of two, the
  * results changed in their last bits, which the projected CG amplifies to
- * 1e-9; chapter 13).  No contact term in it yet (wold = 0). */
+ * 1e-9; chapter 13).  No contact term in it yet (wold = 0).  From K,
+ * before the division, ||K||_inf for the root's residuals and the
+ * column scales s of W. */
 static int
 new_stiffness (lac_petsc *s, const lac_contact_system *sys)
 {
@@ -626,8 +661,10 @@ new_stiffness (lac_petsc *s, const lac_contact_system *sys)
                                         ? sys->K : NULL, s->Kw, 1.0))
       || (status = assemble (s->Kw)))
     return status;
+  TRY (MatNorm (s->Kw, NORM_INFINITY, &s->knorm));
   TRY (MatGetDiagonal (s->Kw, s->ru));
-  if ((status = sum_abs (s->ru, &sum)))
+  if ((status = sum_abs (s->ru, &sum))
+      || (s->k && (status = column_scales (s, s->ru))))
     return status;
   s->kappa = s->mode == FIELDSPLIT || !(sum > 0) ? 1.0
              : sum / (double) s->n;
@@ -675,17 +712,26 @@ multipliers (lac_petsc *s)
   return LAC_SUCCESS;
 }
 
-/* The values (all processes; sys: the root's): the statuses and W from
- * the root, K_W (new numbers: from the cells), B and the solvers. */
+/* W_i = omega / s_i on the active columns, 0 on the others. */
+static void
+weights (lac_petsc *s)
+{
+  for (size_t i = 0; i < s->k; i++)
+    s->w[i] = s->stat[i] && s->s[i] > 0 ? s->omega / s->s[i] : 0.0;
+}
+
+/* The values (all processes; sys: the root's): the statuses from the
+ * root, K_W (new numbers: from the cells) and W, B and the solvers. */
 static int
 update_values (lac_petsc *s, const lac_petsc_command *c,
                const lac_contact_system *sys)
 {
   int status;
-  if ((s->k && ((status = lac_petsc_bcast (s->w, s->k * sizeof *s->w))
-                || (status = lac_petsc_bcast (s->stat, s->k))))
-      || (c->all && (status = new_stiffness (s, sys)))
-      || (status = contact_terms (s))
+  if ((s->k && (status = lac_petsc_bcast (s->stat, s->k)))
+      || (c->all && (status = new_stiffness (s, sys))))
+    return status;
+  weights (s);
+  if ((status = contact_terms (s))
       || (s->k && (status = multipliers (s)))
       || (status = lac_petsc_saddle_update (s->sv, s->k ? s->dk : NULL,
                                             s->k ? s->pk : NULL)))
@@ -705,8 +751,6 @@ update (lac_petsc *s, const char *active)
   if (!s->new_numbers && s->have_stat
       && (s->k == 0 || memcmp (active, s->stat, s->k) == 0))
     return LAC_SUCCESS;
-  for (size_t i = 0; i < s->k; i++)
-    s->w[i] = active[i] && s->s[i] > 0 ? s->omega / s->s[i] : 0.0;
   if (s->k)
     memcpy (s->stat, active, s->k);
   s->have_stat = 0;
@@ -838,6 +882,19 @@ petsc_kmul (void *w, const double *x, double *y)
   return LAC_SUCCESS;
 }
 
+/* ||K||_inf, taken by every process when K was assembled (new_stiffness). */
+static int
+petsc_knorm (const void *w, double *norm)
+{
+  const lac_petsc *s = w;
+  *norm = 0;
+  if (!s->built || !s->have_stat || s->new_numbers)
+    LAC_ERROR (LAC_EINVAL, "petsc: ||K|| before the matrices of the last "
+               "set were made");
+  *norm = s->knorm;
+  return LAC_SUCCESS;
+}
+
 /* ---- the other processes ------------------------------------------------ */
 
 /* The others: the root's command, the same steps as the root's with
@@ -899,7 +956,8 @@ const lac_strategy_ops lac_petsc_ops = {
   .alloc = petsc_alloc, .free = petsc_free, .set = petsc_set,
   .solve = petsc_solve, .get_counts = petsc_get_counts,
   .method = petsc_method, .set_coordinates = petsc_set_coordinates,
-  .set_mesh = petsc_set_mesh, .kmul = petsc_kmul, .own_k = petsc_own_k
+  .set_mesh = petsc_set_mesh, .kmul = petsc_kmul, .knorm = petsc_knorm,
+  .own_k = petsc_own_k
 };
 
 #endif /* LAC_HAVE_PETSC */

@@ -266,9 +266,18 @@ lac_strategy_kmul (lac_strategy *s, size_t n, const double *x, double *y)
 }
 
 int
+lac_strategy_knorm (const lac_strategy *s, double *norm)
+{
+  *norm = 0;
+  if (!s->type->ops->knorm)
+    LAC_ERROR (LAC_EINVAL, "the strategy %s holds no K", s->type->name);
+  return s->type->ops->knorm (s->w, norm);
+}
+
+int
 lac_strategy_own_k (const lac_strategy *s, size_t n)
 {
-  return s->type->ops->kmul && s->type->ops->own_k
+  return s->type->ops->kmul && s->type->ops->knorm && s->type->ops->own_k
          && s->type->ops->own_k (s->w, n);
 }
 

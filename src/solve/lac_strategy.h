@@ -250,6 +250,9 @@ int lac_strategy_own_k (const lac_strategy *s, size_t n);
  * first residual, at U = 0). */
 int lac_strategy_kmul (lac_strategy *s, size_t n, const double *x,
                        double *y);
+/* ||K||_inf of the K of the last set, from the type's own copy (known on
+ * the root once the set's matrices were made: an error before). */
+int lac_strategy_knorm (const lac_strategy *s, double *norm);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);

@@ -29,23 +29,34 @@ lac_system_gaps (const lac_contact_system *sys, const double *U, double *d)
     }
 }
 
-void
-lac_system_norms (const lac_contact_system *sys, double *normK,
-                  double *normC)
+int
+lac_system_norm_k (const lac_contact_system *sys, double *normK)
 {
-  const lac_csc *K = sys->K, *C = sys->C;
+  *normK = 0;
+  if (sys->K)
+    {
+      *normK = lac_csc_diag_norm1 (sys->K, NULL);
+      return LAC_SUCCESS;
+    }
+  return sys->Kop->norm (sys->Kop->self, normK);
+}
+
+int
+lac_system_norm_c (const lac_contact_system *sys, double *normC)
+{
+  const lac_csc *C = sys->C;
   size_t n = lac_system_n (sys);
   double *row = lac_calloc (n ? n : 1, sizeof *row);
-  *normK = *normC = 0;
+  *normC = 0;
   if (!row)
-    return;
-  *normK = K ? lac_csc_diag_norm1 (K, NULL) : sys->Kop->norm;
+    LAC_ERROR (LAC_ENOMEM, "the row sums of C (%zu rows)", n);
   for (size_t i = 0; i < C->ncol; i++)          /* row sums of C */
     for (int p = C->p[i]; p < C->p[i + 1]; p++)
       row[C->i[p]] += fabs (C->x[p]);
   for (size_t r = 0; r < C->nrow; r++)
     *normC = fmax (*normC, row[r]);
   lac_free (row);
+  return LAC_SUCCESS;
 }
 
 static double
@@ -95,8 +106,12 @@ lac_system_residual (const lac_contact_system *sys, const char *active,
         }
       g[i] = is_active (active, i) ? sys->G[i] - cu : 0.0; /* G_A - C_A^T U */
     }
-  lac_system_norms (sys, &normK, &normC);
-  scale = normK * norm_inf (n, U) + normC * norm_inf (k, lambda)
+  double nu = norm_inf (n, U);          /* at U = 0 (before the first set:
+                                           Kop knows no norm yet) no K */
+  if ((nu > 0 && (status = lac_system_norm_k (sys, &normK)))
+      || (status = lac_system_norm_c (sys, &normC)))
+    return status;
+  scale = (nu > 0 ? normK * nu : 0.0) + normC * norm_inf (k, lambda)
           + norm_inf (n, sys->F) + norm_inf (k, sys->G);
   *berr = fmax (norm_inf (n, r), norm_inf (k, g)) / (scale > 0 ? scale
                                                      : 1e-300);
@@ -199,10 +214,7 @@ lac_system_column_scales (const lac_contact_system *sys, double *work,
 {
   const lac_csc *C = sys->C;
   size_t n = lac_system_n (sys);
-  if (sys->K)
-    lac_csc_diag_norm1 (sys->K, work);
-  else
-    memcpy (work, sys->Kop->diag, n * sizeof *work);
+  lac_csc_diag_norm1 (sys->K, work);
   for (size_t j = 0; j < n; j++)
     work[j] = work[j] != 0 ? 1 / fabs (work[j]) : 0.0;   /* diag(K)^-1 */
   for (size_t i = 0; i < C->ncol; i++)

@@ -43,14 +43,15 @@ struct lac_dist_source;        /* fem/lac_assembly_dist.h */
 
 /* K without its entries: what the residuals need of it when no process
  * holds it whole (the petsc strategy, whose processes hold its rows:
- * solve/lac_petsc.h).  mult: y = K x (n), a collective call. */
+ * solve/lac_petsc.h).  mult: y = K x (n); norm: ||K||_inf, known once K
+ * was assembled (an error before); both collective calls or answers of
+ * the processes. */
 typedef struct lac_stiffness_op
 {
   size_t n;
-  double norm;               /* ||K||_inf                               */
-  const double *diag;        /* borrowed, n: diag(K)                    */
   void *self;
   int (*mult) (void *self, const double *x, double *y);
+  int (*norm) (void *self, double *value);
 } lac_stiffness_op;
 
 typedef struct lac_contact_system
@@ -117,11 +118,12 @@ typedef struct lac_strategy_ops
   /* Optional: the cells K was assembled from (fem/lac_assembly_dist.h),
    * before set: a type that assembles K itself may use them. */
   void (*set_mesh) (void *w, const struct lac_dist_source *src);
-  /* Optional: y = K x with the K of the last set, from the type's own
-   * copy (the residuals of a system whose K is NULL: Kop); own_k: 1 if
-   * the type assembles that copy for these n dofs from set_mesh's cells,
-   * so that the caller's K may be NULL. */
+  /* Optional: y = K x and ||K||_inf with the K of the last set, from
+   * the type's own copy (the residuals of a system whose K is NULL:
+   * Kop); own_k: 1 if the type assembles that copy for these n dofs from
+   * set_mesh's cells, so that the caller's K may be NULL. */
   int (*kmul) (void *w, const double *x, double *y);
+  int (*knorm) (const void *w, double *norm);
   int (*own_k) (const void *w, size_t n);
 } lac_strategy_ops;
 
@@ -139,9 +141,11 @@ size_t lac_system_n (const lac_contact_system *sys);
 /* y = K x (K or Kop). */
 int lac_system_k_mult (const lac_contact_system *sys, const double *x,
                        double *y);
-/* ||K||_inf and ||C||_inf (max row sums). */
-void lac_system_norms (const lac_contact_system *sys, double *normK,
-                       double *normC);
+/* ||K||_inf (max row sum; K symmetric: lac_csc_diag_norm1).  An error
+ * only from Kop's norm. */
+int lac_system_norm_k (const lac_contact_system *sys, double *normK);
+/* ||C||_inf (max row sum). */
+int lac_system_norm_c (const lac_contact_system *sys, double *normC);
 /* d = G - C^T U (k). */
 void lac_system_gaps (const lac_contact_system *sys, const double *U,
                       double *d);
@@ -153,7 +157,8 @@ int lac_system_check_held (const lac_contact_system *sys, const char *active);
 /* The scale of each multiplier seen from K's diagonal,
  *   s_i = c_i^T diag(K)^{-1} c_i   (k; partly covered macro-elements
  * have small columns), which sets W_i = omega / s_i of the augmented
- * strategies; work: n doubles (diag(K)^{-1} on return). */
+ * strategies; work: n doubles (diag(K)^{-1} on return).  K, not Kop
+ * (the petsc strategy takes the same sums on its processes). */
 void lac_system_column_scales (const lac_contact_system *sys, double *work,
                                double *s);
 /* A numeric factorization of A with `chol` (lac_solver_refactor: the
