@@ -11,10 +11,14 @@
 #                    lambda_max, max_u equal to 1e-8 relative, and the
 #                    Taylor lambda = 25 to 1e-8; the summary reports the
 #                    solver's iterations and true residual (<= 1e-9);
-#   mpi              mpirun -n 1, -n 2 and -n 4 give the same U (nodes.csv)
-#                    and lambda (contact.csv) to 1e-8 of their largest
-#                    (patch tests, spheres, Hertz), only process 0 prints
-#                    the summary and writes the files, processes = N;
+#   mpi              mpirun -n 1, -n 2 and -n 4 give the same U and von
+#                    Mises stress (nodes.csv) and lambda (contact.csv) to
+#                    1e-8 of their largest (patch tests, spheres, Hertz),
+#                    only process 0 prints the summary and writes the
+#                    files, processes = N; mpi-post: on 2 and 4 processes
+#                    the 3D patch test's and spheres' stresses and errors
+#                    come from the processes' cells (the progress line),
+#                    the spheres' L2 and H1 errors those of -n 1 to 1e-8;
 #   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
@@ -182,11 +186,11 @@ if [ "$have_petsc" = 1 ]; then
           return
         fi
       done
-      petsc_same "mpi $name" "$C/$name.np2.out" "$C/$name.np1.out" lambda_min lambda_max max_u
+      petsc_same "mpi $name" "$C/$name.np2.out" "$C/$name.np1.out" lambda_min lambda_max max_u max_von_mises
       u="u_x u_y"
       head -1 "$C/$name.np1/nodes.csv" | grep -q u_z && u="$u u_z"
       for np in 2 4; do
-        petsc_field "mpi-u $name -n $np" "$C/$name.np$np/nodes.csv" "$C/$name.np1/nodes.csv" $u
+        petsc_field "mpi-u $name -n $np" "$C/$name.np$np/nodes.csv" "$C/$name.np1/nodes.csv" $u von_mises
         petsc_field "mpi-lambda $name -n $np" "$C/$name.np$np/contact.csv" "$C/$name.np1/contact.csv" lambda
       done
       n=$(grep -c '^dofs = ' "$C/$name.np2.out")
@@ -203,6 +207,16 @@ if [ "$have_petsc" = 1 ]; then
     petsc_mpi spheres-axi-quad8 chapters/09-spheres-rates/spheres-axi.scene --set element=quad8 --set level=1
     petsc_mpi spheres3d-hex20 chapters/09-spheres-rates/spheres3d.scene --set element=hex20
     petsc_mpi hertz-cylinder chapters/10-large-deformation/hertz-cylinder.scene
+    for name in taylor3d-hex8 spheres3d-hex20; do
+      for np in 2 4; do
+        if grep -q "post .*(on the $np processes' cells)" "$C/$name.np$np.err"; then
+          petsc_ok "mpi-post $name -n $np"
+        else
+          petsc_fail "mpi-post $name -n $np" "the stresses were not computed on the processes: $(grep 'post ' "$C/$name.np$np.err")"
+        fi
+      done
+    done
+    petsc_same "mpi-post errors" "$C/spheres3d-hex20.np4.out" "$C/spheres3d-hex20.np1.out" l2_err_u h1_err_u
 
     # ---- mpi-fail: a failure on one process ends them all -------------
     # petsc_fault NP RANK: the failure injected on process RANK of NP.

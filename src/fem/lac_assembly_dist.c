@@ -344,6 +344,25 @@ lac_dist_c (const lac_dist *d)
   return d->C;
 }
 
+const lac_mesh *
+lac_dist_mesh (const lac_dist *d)
+{
+  return d->cells ? d->m : NULL;
+}
+
+const lac_elastic *
+lac_dist_material (const lac_dist *d)
+{
+  return d->cells ? &d->mat : NULL;
+}
+
+void
+lac_dist_own_cells (const lac_dist *d, char *mine)
+{
+  for (size_t c = 0; d->cells && c < d->m->ncells; c++)
+    mine[c] = d->owner[c] == d->rank;
+}
+
 const int *
 lac_dist_row (const lac_dist *d)
 {
@@ -543,15 +562,17 @@ static int
 add_cells (lac_dist *d, Mat M, double s, double *ke)
 {
   PetscInt rows[NC_MAX];
+  lac_quad_cache qc;              /* the rules of each cell type, once */
   int status = injected (d);
+  memset (&qc, 0, sizeof qc);
   for (size_t c = 0; !status && c < d->m->ncells; c++)
     if (d->owner[c] == d->rank && d->mat.E[c] > 0.0)
       {
         int nc = cell_rows (d, c, rows);
         const lac_mesh *m = d->m;
         size_t bs = (size_t) d->bs;
-        if (s != 0 && (status = lac_assembly_cell_stiffness (m, &d->mat, c,
-                                                             ke)))
+        if (s != 0 && (status = lac_assembly_cell_stiffness_q (m, &d->mat, c,
+                                                               &qc, ke)))
           break;
         for (int a = 0; s != 0 && a < nc; a++)
           for (int b = 0; b < nc; b++)
@@ -568,6 +589,7 @@ add_cells (lac_dist *d, Mat M, double s, double *ke)
         if (e)
           status = lac_petsc_fail ((int) e, __func__, "MatSetValues");
       }
+  lac_quad_cache_free (&qc);
   return status;
 }
 

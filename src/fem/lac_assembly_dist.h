@@ -68,6 +68,12 @@ void lac_dist_free (lac_dist *d);
 void lac_dist_rows (const lac_dist *d, int *r0, int *r1);
 /* row[j], the PETSc row of dof j (NULL: j itself). */
 const int *lac_dist_row (const lac_dist *d);
+/* The mesh and material K was assembled from (the root's or this
+ * process's copy; NULL: K was given whole), and this process's cells:
+ * mine[c] = 1 for the cells it owns, 0 for the others (ncells). */
+const lac_mesh *lac_dist_mesh (const lac_dist *d);
+const lac_elastic *lac_dist_material (const lac_dist *d);
+void lac_dist_own_cells (const lac_dist *d, char *mine);
 /* The copy of C the contact terms were added from (NULL: none). */
 const lac_csc *lac_dist_c (const lac_dist *d);
 /* The root's C (n x k; others NULL) to every process: its pattern and

@@ -38,4 +38,15 @@ int lac_nodal_average (const lac_mesh *m, lac_model model, const double *E,
                        const void *law, const double *u, double *sigma,
                        double *vm);
 
+/* The two halves of lac_nodal_average, for cells shared out between
+ * processes (fem/lac_post_dist.h): lac_nodal_sum adds to sigma[a*ns + k]
+ * the stress of each cell at its node a and 1 to count[a] (the caller
+ * zeroes them; returns as lac_nodal_average); lac_nodal_mean divides by
+ * the counts of the sums of all the cells and sets vm (may be NULL). */
+int lac_nodal_sum (const lac_mesh *m, lac_model model, const double *E,
+                   const char *cells, lac_cell_stress *f, const void *law,
+                   const double *u, double *sigma, double *count);
+void lac_nodal_mean (const lac_mesh *m, lac_model model, const double *count,
+                     double *sigma, double *vm);
+
 #endif /* LAC_NODAL_H */

@@ -189,6 +189,17 @@ lac_post_stress_nodal (const lac_mesh *m, const lac_elastic *mat,
                                               stress_at, mat, u, sigma, vm);
 }
 
+/* lac_post_stress_sum: lac_post_stress_nodal's sums (lac_nodal_sum). */
+int
+lac_post_stress_sum (const lac_mesh *m, const lac_elastic *mat,
+                     const double *u, const char *cells, double *sigma,
+                     double *count)
+{
+  int status = check_args (m, mat, u);
+  return status ? status : lac_nodal_sum (m, mat->model, mat->E, cells,
+                                          stress_at, mat, u, sigma, count);
+}
+
 /* A quadrature rule of a cell type and its shape functions there
  * (N[p*nen + a], dN[(p*nen + a)*dim + k]): evaluated once per type, not
  * at every cell (lac_map_cell_at). */
@@ -228,25 +239,21 @@ rule_tables_make (const lac_refelem *re, int degree, rule_tables *t)
   return LAC_SUCCESS;
 }
 
-/* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,
- * with l2_exact = ||u||_0, h1_exact = |u|_1 (norms as in the file header:
- * weight 2 pi r and the hoop term in the axisymmetric model).
- *   [in]  m, model, u (dim*nnodes), exact(x, ctx, out[dim]), grad(x, ctx,
- *         out[dim*dim]) (grad may be NULL if h1 and h1_exact are NULL)
- *   [out] l2, h1, l2_exact, h1_exact (each may be NULL)
+/* lac_post_error_sums: the squares of lac_post_errors' four numbers,
+ * summed over the cells with cells[c] != 0 (cells NULL: all):
+ * sq = { ||u - u_h||_0^2, |u - u_h|_1^2, ||u||_0^2, |u|_1^2 } (the last
+ * two 0 and the H1 terms 0 when grad is NULL).
  *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
 int
-lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
-                 lac_field *exact, lac_field_grad *grad, void *ctx,
-                 double *l2, double *h1, double *l2_exact, double *h1_exact)
+lac_post_error_sums (const lac_mesh *m, lac_model model, const double *u,
+                     const char *cells, lac_field *exact,
+                     lac_field_grad *grad, void *ctx, double sq[4])
 {
   if (!m || !u || !exact)
     LAC_ERROR (LAC_EINVAL, "mesh, displacement or exact field is NULL");
   if (lac_model_dim (model) != m->dim)
     LAC_ERROR (LAC_EINVAL, "model %s needs a %dD mesh, the mesh is %dD",
                lac_model_name (model), lac_model_dim (model), m->dim);
-  if (!grad && (h1 || h1_exact))
-    LAC_ERROR (LAC_EINVAL, "H1 errors asked for but the gradient is NULL");
   int dim = m->dim, status = LAC_SUCCESS, axi = model == LAC_AXISYMMETRIC;
   double el2 = 0, eh1 = 0, nl2 = 0, nh1 = 0;
   double xe[LAC_MAX_NODES * 3], uc[LAC_MAX_NODES * 3], uh[3], gh[9], ue[3],
@@ -256,6 +263,8 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
   for (size_t c = 0; c < m->ncells; c++)
     {
       const lac_refelem *re = lac_refelem_get (m->type[c]);
+      if (cells && !cells[c])
+        continue;
       if (!re || re->dim != dim)
         {
           status = LAC_ERRMSG (LAC_EINVAL, "cell %zu is not a %dD cell", c,
@@ -310,15 +319,42 @@ lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
     }
   for (int k = 0; k < LAC_NELEM_TYPES; k++)
     rule_tables_clear (&tab[k]);
+  sq[0] = el2, sq[1] = eh1, sq[2] = nl2, sq[3] = nh1;
+  return status;
+}
+
+/* lac_post_errors: l2 = ||u - u_h||_0 and h1 = |u - u_h|_1 over all cells,
+ * with l2_exact = ||u||_0, h1_exact = |u|_1 (norms as in the file header:
+ * weight 2 pi r and the hoop term in the axisymmetric model).
+ *   [in]  m, model, u (dim*nnodes), exact(x, ctx, out[dim]), grad(x, ctx,
+ *         out[dim*dim]) (grad may be NULL if h1 and h1_exact are NULL)
+ *   [out] l2, h1, l2_exact, h1_exact (each may be NULL)
+ *   returns LAC_SUCCESS, LAC_EINVAL, LAC_ESING, LAC_ENOMEM */
+int
+lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
+                 lac_field *exact, lac_field_grad *grad, void *ctx,
+                 double *l2, double *h1, double *l2_exact, double *h1_exact)
+{
+  double sq[4];
+  if (!grad && (h1 || h1_exact))
+    LAC_ERROR (LAC_EINVAL, "H1 errors asked for but the gradient is NULL");
+  int status = lac_post_error_sums (m, model, u, NULL, exact, grad, ctx, sq);
   if (status)
     return status;
-  if (l2)
-    *l2 = sqrt (el2);
-  if (h1)
-    *h1 = sqrt (eh1);
-  if (l2_exact)
-    *l2_exact = sqrt (nl2);
-  if (h1_exact)
-    *h1_exact = sqrt (nh1);
+  lac_post_error_roots (sq, l2, h1, l2_exact, h1_exact);
   return LAC_SUCCESS;
+}
+
+void
+lac_post_error_roots (const double sq[4], double *l2, double *h1,
+                      double *l2_exact, double *h1_exact)
+{
+  if (l2)
+    *l2 = sqrt (sq[0]);
+  if (h1)
+    *h1 = sqrt (sq[1]);
+  if (l2_exact)
+    *l2_exact = sqrt (sq[2]);
+  if (h1_exact)
+    *h1_exact = sqrt (sq[3]);
 }

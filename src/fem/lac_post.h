@@ -34,4 +34,20 @@ int lac_post_errors (const lac_mesh *m, lac_model model, const double *u,
                      double *l2, double *h1, double *l2_exact,
                      double *h1_exact);
 
+/* The halves of the two above for cells shared out between processes
+ * (fem/lac_post_dist.h), over the cells with cells[c] != 0 (NULL: all):
+ * lac_post_stress_sum adds the sums of lac_nodal_sum to sigma and count
+ * (lac_nodal_mean finishes them); lac_post_error_sums gives the squares
+ * sq = { ||u - u_h||_0^2, |u - u_h|_1^2, ||u||_0^2, |u|_1^2 } (grad NULL:
+ * the H1 terms 0), whose square roots lac_post_error_roots takes once
+ * they are summed (outputs may be NULL). */
+int lac_post_stress_sum (const lac_mesh *m, const lac_elastic *mat,
+                         const double *u, const char *cells, double *sigma,
+                         double *count);
+int lac_post_error_sums (const lac_mesh *m, lac_model model, const double *u,
+                         const char *cells, lac_field *exact,
+                         lac_field_grad *grad, void *ctx, double sq[4]);
+void lac_post_error_roots (const double sq[4], double *l2, double *h1,
+                           double *l2_exact, double *h1_exact);
+
 #endif /* LAC_POST_H */

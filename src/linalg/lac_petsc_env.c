@@ -105,6 +105,13 @@ lac_petsc_bcast (void *buf, size_t bytes)
 }
 
 int
+lac_petsc_sum_to_root (double *buf, size_t n)
+{
+  (void) buf, (void) n;
+  return LAC_SUCCESS;
+}
+
+int
 lac_petsc_fail (int err, const char *func, const char *call)
 {
   return lac_error_set (LAC_EDEP, func, "PETSc: %s: error %d", call, err);
@@ -318,6 +325,23 @@ lac_petsc_bcast (void *buf, size_t bytes)
       size_t m = bytes - done < (1u << 30) ? bytes - done : (1u << 30);
       if (MPI_Bcast (p + done, (int) m, MPI_BYTE, 0, PETSC_COMM_WORLD))
         LAC_ERROR (LAC_EDEP, "MPI_Bcast of %zu bytes failed", bytes);
+      done += m;
+    }
+  return LAC_SUCCESS;
+}
+
+/* In pieces of at most 2^27 doubles (1 GB). */
+int
+lac_petsc_sum_to_root (double *buf, size_t n)
+{
+  int rank, size;
+  lac_petsc_rank (&rank, &size);
+  for (size_t done = 0; size > 1 && done < n;)
+    {
+      size_t m = n - done < (1u << 27) ? n - done : (1u << 27);
+      if (MPI_Reduce (rank ? buf + done : MPI_IN_PLACE, buf + done, (int) m,
+                      MPI_DOUBLE, MPI_SUM, 0, PETSC_COMM_WORLD))
+        LAC_ERROR (LAC_EDEP, "MPI_Reduce of %zu numbers failed", n);
       done += m;
     }
   return LAC_SUCCESS;

@@ -60,6 +60,7 @@ typedef enum
   LAC_PETSC_CMD_FREE,       /* destroy the strategy's objects             */
   LAC_PETSC_CMD_MEMORY,     /* add the peak memory to the root's          */
   LAC_PETSC_CMD_KMUL,       /* K_W x for the root's residuals             */
+  LAC_PETSC_CMD_POST,       /* stresses and errors of the own cells       */
   LAC_PETSC_CMD_QUIT        /* the root is done                           */
 } lac_petsc_cmd;
 
@@ -90,6 +91,9 @@ int lac_petsc_memory_reply (void);
 int lac_petsc_agree (int status);
 /* The root's `bytes` bytes at buf to every process (MPI_Bcast). */
 int lac_petsc_bcast (void *buf, size_t bytes);
+/* buf[n] of the root becomes the sum of every process's buf[n]
+ * (MPI_Reduce; the others' buf unchanged). */
+int lac_petsc_sum_to_root (double *buf, size_t n);
 /* LAC_EDEP (LAC_ENOMEM) with PETSc's message for the failed call `call`
  * of `func` (err: its PetscErrorCode). */
 int lac_petsc_fail (int err, const char *func, const char *call);

@@ -9,6 +9,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "fem/lac_post.h"
+#include "fem/lac_post_dist.h"
 #include "run/lac_run_reaction.h"
 #include "run/lac_run_scene.h"
 
@@ -329,10 +330,10 @@ reactions (const lac_run_post_in *in, lac_summary *sum)
 
 /* ---- the stage -------------------------------------------------------- */
 
-/* The exact displacement at the nodes and the errors in L2 and H1. */
+/* The exact displacement at the nodes. */
 static int
-exact_errors (const lac_run_post_in *in, const lac_exact *e,
-              lac_run_results *res)
+exact_nodes (const lac_run_post_in *in, const lac_exact *e,
+             lac_run_results *res)
 {
   const lac_mesh *m = in->mesh;
   size_t ndof = (size_t) m->dim * m->nnodes;
@@ -341,10 +342,38 @@ exact_errors (const lac_run_post_in *in, const lac_exact *e,
   for (size_t a = 0; a < m->nnodes; a++)
     lac_exact_u (m->x + a * (size_t) m->dim, (void *) e,
                  res->u_exact + a * (size_t) m->dim);
-  return lac_post_errors (m, in->model, in->u, lac_exact_u, lac_exact_grad,
-                          (void *) e, &res->err_l2, &res->err_h1,
-                          &res->norm_l2,
-                          &res->norm_h1);
+  return LAC_SUCCESS;
+}
+
+/* The nodal stresses and, with an exact solution (exact = 1), the errors
+ * in L2 and H1: on the processes that hold the cells when the solver
+ * assembled K there (fem/lac_post_dist.h), else here. */
+static int
+stresses_errors (const lac_run_post_in *in, const lac_exact *e, int exact,
+                 lac_run_results *res)
+{
+  const lac_mesh *m = in->mesh;
+  lac_strategy *st = in->sol->kst;
+  int status;
+  if (exact && (status = exact_nodes (in, e, res)))
+    return status;
+  if (st && lac_strategy_posts (st))
+    {
+      lac_post_request p = { in->u, exact ? e : NULL, res->sigma, res->vm,
+                             { 0, 0, 0, 0 } };
+      if ((status = lac_strategy_post (st, &p)))
+        return status;
+      res->err_l2 = p.err[0], res->err_h1 = p.err[1];
+      res->norm_l2 = p.err[2], res->norm_h1 = p.err[3];
+      return LAC_SUCCESS;
+    }
+  if ((status = lac_post_stress_nodal (m, &in->mat->elastic, in->u, NULL,
+                                       res->sigma, res->vm)))
+    return status;
+  return !exact ? LAC_SUCCESS
+         : lac_post_errors (m, in->model, in->u, lac_exact_u, lac_exact_grad,
+                            (void *) e, &res->err_l2, &res->err_h1,
+                            &res->norm_l2, &res->norm_h1);
 }
 
 static int
@@ -354,14 +383,9 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
   const lac_scene *sc = in->sc;
   lac_exact e;
   int status;
-  status = lac_post_stress_nodal (in->mesh, &in->mat->elastic, in->u, NULL,
-                                  res->sigma, res->vm);
-  if (status)
-    return status;
   lac_run_exact (sc, in->model, &e);
-  if (sc->exact.sec.line != 0 && (status = exact_errors (in, &e, res)))
-    return status;
-  if ((status = make_summary (in, res, &e)))
+  if ((status = stresses_errors (in, &e, sc->exact.sec.line != 0, res))
+      || (status = make_summary (in, res, &e)))
     return status;
   const lac_contact *c = in->setup->data.all;
   if (c && (status = lac_run_pairs_dropped (&in->setup->data,
@@ -379,12 +403,16 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
   if ((status = lac_run_solve_summary (in->sol, &res->summary))
       || (status = reactions (in, &res->summary)))
     return status;
+  char where[64] = "";
+  if (in->sol->kst && lac_strategy_posts (in->sol->kst))
+    snprintf (where, sizeof where, " (on the %d processes' cells)",
+              in->sol->processes);
   if (res->u_exact)
-    snprintf (progress, size, "stresses, errors vs %s: L2 %.3e, H1 %.3e",
+    snprintf (progress, size, "stresses, errors vs %s: L2 %.3e, H1 %.3e%s",
               lac_scene_exact_name (sc->exact.solution), res->err_l2,
-              res->err_h1);
+              res->err_h1, where);
   else
-    snprintf (progress, size, "stresses, von Mises");
+    snprintf (progress, size, "stresses, von Mises%s", where);
   return LAC_SUCCESS;
 }
 

@@ -20,6 +20,7 @@ lac_run_solution_clear (lac_run_solution *sol)
   lac_free (sol->u);
   lac_newton_free (sol->newton);
   lac_linear_model_clear (&sol->lin);
+  lac_strategy_free (sol->plain);
   memset (sol, 0, sizeof *sol);
 }
 
@@ -117,8 +118,13 @@ solve_plain_strategy (int strategy, lac_run_system *sys,
   else if (!status)
     snprintf (progress, size, "%s, rcond %.1e", lac_strategy_method (s),
               sol->rcond = c.rcond);
-  lac_strategy_free (s);
-  sol->kst = NULL;
+  if (!status && lac_strategy_posts (s))
+    sol->plain = s;             /* kept: stage 6 on the processes */
+  else
+    {
+      lac_strategy_free (s);
+      sol->kst = NULL;
+    }
   lac_csc_free (C);
   return status;
 }

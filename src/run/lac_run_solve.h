@@ -48,7 +48,12 @@ typedef struct lac_run_solution
   lac_stiffness_op kop;        /* K for the residuals when the strategy
                                   holds it (petsc): the system's K freed  */
   lac_strategy *kst;           /* borrowed: the strategy kop asks for K x
-                                  and ||K||_inf                            */
+                                  and ||K||_inf, and stage 6 for the
+                                  stresses on its processes (the newton's,
+                                  or `plain`)                              */
+  lac_strategy *plain;         /* owned: the strategy of a scene without
+                                  contact, kept for stage 6 when it holds
+                                  the cells (lac_strategy_posts)           */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.

@@ -24,7 +24,9 @@
  *           solve, the solution back to the root.
  *   kmul    x from the root, K_W x back: the root's residuals take
  *           K x = kappa K_W x - C W_old C^T x from it when it freed its K
- *           (run/lac_run_solve.c, drop_root_k).
+ *           (run/lac_run_solve.c, drop_root_k);
+ *   post    u from the root; the stresses and errors of the own cells
+ *           summed on the root (fem/lac_post_dist.h).
  *
  * A failure on one process is agreed on by all before the next
  * collective call (lac_petsc_agree): the root returns it with the message
@@ -67,6 +69,7 @@ const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 
 #include <petscksp.h>
 #include "fem/lac_assembly_dist.h"
+#include "fem/lac_post_dist.h"
 #include "linalg/lac_petsc_saddle.h"
 
 _Static_assert (sizeof (PetscInt) == sizeof (int), "lac_csc's int indices "
@@ -895,6 +898,23 @@ petsc_knorm (const void *w, double *norm)
   return LAC_SUCCESS;
 }
 
+/* ---- the stresses and errors on the processes ---------------------------- */
+
+/* The root: the processes' cells give p (fem/lac_post_dist.h). */
+static int
+petsc_post (void *w, lac_post_request *p)
+{
+  lac_petsc *s = w;
+  lac_petsc_command c = { .cmd = LAC_PETSC_CMD_POST };
+  int status;
+  if (!s->built || !s->cells)
+    LAC_ERROR (LAC_EINVAL, "petsc: the stresses on the processes need the "
+               "cells K was assembled from");
+  if ((status = lac_petsc_command_send (&c)))
+    return status;
+  return lac_dist_post (s->dist, p);
+}
+
 /* ---- the other processes ------------------------------------------------ */
 
 /* The others: the root's command, the same steps as the root's with
@@ -919,6 +939,8 @@ follow (lac_petsc *s, const lac_petsc_command *c)
       return lac_petsc_memory_reply ();
     case LAC_PETSC_CMD_KMUL:
       return step_kmul (s, NULL, NULL);
+    case LAC_PETSC_CMD_POST:
+      return lac_dist_post (s->dist, NULL);
     default:
       LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
     }
@@ -957,7 +979,7 @@ const lac_strategy_ops lac_petsc_ops = {
   .solve = petsc_solve, .get_counts = petsc_get_counts,
   .method = petsc_method, .set_coordinates = petsc_set_coordinates,
   .set_mesh = petsc_set_mesh, .kmul = petsc_kmul, .knorm = petsc_knorm,
-  .own_k = petsc_own_k
+  .own_k = petsc_own_k, .post = petsc_post
 };
 
 #endif /* LAC_HAVE_PETSC */

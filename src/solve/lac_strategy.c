@@ -275,6 +275,25 @@ lac_strategy_knorm (const lac_strategy *s, double *norm)
 }
 
 int
+lac_strategy_posts (const lac_strategy *s)
+{
+  lac_strategy_counts c;
+  if (!s->type->ops->post || !s->type->ops->own_k)
+    return 0;
+  lac_strategy_get_counts (s, &c);
+  return c.processes > 1 && s->type->ops->own_k (s->w, s->n);
+}
+
+int
+lac_strategy_post (lac_strategy *s, struct lac_post_request *p)
+{
+  if (!lac_strategy_posts (s))
+    LAC_ERROR (LAC_EINVAL, "the strategy %s holds no cells on several "
+               "processes", s->type->name);
+  return s->type->ops->post (s->w, p);
+}
+
+int
 lac_strategy_own_k (const lac_strategy *s, size_t n)
 {
   return s->type->ops->kmul && s->type->ops->knorm && s->type->ops->own_k

@@ -253,6 +253,11 @@ int lac_strategy_kmul (lac_strategy *s, size_t n, const double *x,
 /* ||K||_inf of the K of the last set, from the type's own copy (known on
  * the root once the set's matrices were made: an error before). */
 int lac_strategy_knorm (const lac_strategy *s, double *norm);
+/* 1 if the type computes the stresses and errors of a solution on the
+ * processes that hold the cells (petsc on more than one process, K from
+ * the cells); then lac_strategy_post does (fem/lac_post_dist.h). */
+int lac_strategy_posts (const lac_strategy *s);
+int lac_strategy_post (lac_strategy *s, struct lac_post_request *p);
 /* What solves (*): the strategy's name, or for petsc its Krylov method,
  * preconditioner and processes. */
 const char *lac_strategy_method (const lac_strategy *s);

@@ -40,6 +40,7 @@
 #include "linalg/lac_linalg.h"
 
 struct lac_dist_source;        /* fem/lac_assembly_dist.h */
+struct lac_post_request;       /* fem/lac_post_dist.h */
 
 /* K without its entries: what the residuals need of it when no process
  * holds it whole (the petsc strategy, whose processes hold its rows:
@@ -125,6 +126,9 @@ typedef struct lac_strategy_ops
   int (*kmul) (void *w, const double *x, double *y);
   int (*knorm) (const void *w, double *norm);
   int (*own_k) (const void *w, size_t n);
+  /* Optional, with own_k: the stresses and errors of the solution from
+   * the cells, on the processes that hold them (fem/lac_post_dist.h). */
+  int (*post) (void *w, struct lac_post_request *p);
 } lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
