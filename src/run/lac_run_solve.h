@@ -53,7 +53,9 @@ typedef struct lac_run_solution
                                   or `plain`)                              */
   lac_strategy *plain;         /* owned: the strategy of a scene without
                                   contact, kept for stage 6 when it holds
-                                  the cells (lac_strategy_posts)           */
+                                  the cells (lac_strategy_posts); the
+                                  system it was set with is gone, so only
+                                  _posts, _post and _free may be called  */
 } lac_run_solution;
 
 /* LAC_CONTINUE after an active-set iteration, LAC_SUCCESS when done.
