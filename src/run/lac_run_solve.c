@@ -382,7 +382,7 @@ lac_run_solve_k_from_cells (const lac_scene *sc, int strategy,
       return 0;                  /* the scene's solver; or an error */
     }
   t = lac_strategy_type_of (kind);
-  return t && t->ops && t->ops->own_k && sys->x && sys->coord_dim >= 2;
+  return t && t->ops && t->ops->own_k && sys->coord_dim >= 2;
 }
 
 int
