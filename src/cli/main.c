@@ -183,11 +183,12 @@ static const char *help_text =
   "\n"
   "MPI: mpirun -n N lac run SCENE runs on N processes, with the petsc\n"
   "strategy (auto takes it; a direct one asked for solves on process 0):\n"
-  "process 0 reads the scene, assembles (on one process), runs the active\n"
-  "set and alone prints and writes the files; the matrices and vectors of\n"
-  "the solves are distributed by rows over the N processes.  The petsc\n"
-  "strategy adds the summary lines processes, solver_iterations (Krylov,\n"
-  "all solves) and solver_residual (true relative residual of the last).\n"
+  "process 0 reads the scene and the mesh, pairs, runs the active set and\n"
+  "alone prints and writes the files; every process assembles the cells it\n"
+  "owns, solves its rows and computes the stresses and errors of its\n"
+  "cells.  The petsc strategy adds the summary lines processes,\n"
+  "solver_iterations (Krylov, all solves) and solver_residual (true\n"
+  "relative residual of the last).\n"
   "\n"
   "example: lac run chapters/01-problem/sphere-axi.scene --set level=1 \\\n"
   "           --set material.shell.E=3000\n";
@@ -422,8 +423,8 @@ print_start (const lac_scene *sc, const lac_run *r)
   lac_petsc_rank (&rank, &size);
   if (size > 1)
     fprintf (stderr, "lac: %d MPI processes: process 0 reads, pairs and "
-             "writes; the petsc strategy assembles and solves on all %d\n",
-             size, size);
+             "writes; the petsc strategy assembles, solves and computes the "
+             "stresses on all %d\n", size, size);
 }
 
 /* 1. read the scene; 2. run the stages, reporting each; 3. print the
