@@ -2,13 +2,14 @@
  *                          the program that reads the mesh, without K
  *                          (see lac_assembly_digest.h)     [LAC §4.3]
  *
- * 1. the entries: lac_pattern_count;
+ 1. the cells of bodies around each node (lac_pattern_node_cells) and
+ *    from them the entries (lac_pattern_count);
  * 2. every fixed dof has a cell of a body around its node (else the error
  *    of lac_dirichlet_column);
  * 3. for each node a with a nonzero Dirichlet value, in node order: its
  *    dim columns K(:, dim a + k), summed over the cells around a in
- *    their order, then for each fixed dof j of a in order the lift
- *    F -= K(:,j) g_j and g_j *= d_j (lac_dirichlet_column's steps);
+ *    their order, then lac_dirichlet_column on each of them in order
+ *    (the lift F -= K(:,j) g_j, g_j *= d_j on a fixed dof j);
  * 4. F(k) = d_k g_k on the fixed dofs (lac_dirichlet_apply's step 3).
  */
 #include "fem/lac_assembly_digest.h"
@@ -21,12 +22,14 @@
 
 /* The columns of one node: its neighbours nbr[0 .. nn) (slot[b]: the
  * place of node b among them, SIZE_MAX if none) and col, the entries
- * K(dim nbr[s] + i, dim a + k) at col[(dim s + i) dim + k]. */
+ * K(dim nbr[s] + i, dim a + k) at col[(dim s + i) dim + k]; Kc, the same
+ * as dim compressed columns whose rows are dofs. */
 typedef struct node_columns
 {
   size_t *cptr, *cidx;     /* the cells of bodies around each node       */
   size_t *slot, *nbr, nn;
   double *col, *Ke;
+  lac_csc *Kc;
   lac_quad_cache qc;
 } node_columns;
 
@@ -74,25 +77,26 @@ columns (const lac_mesh *m, const lac_elastic *mat, size_t a,
   return LAC_SUCCESS;
 }
 
-/* Step 3 for node a: F -= K(:,j) g_j, g_j *= d_j for its fixed dofs j. */
+/* Step 3 for node a: its columns, then lac_dirichlet_column on each. */
 static int
 lift_node (const lac_mesh *m, const lac_elastic *mat, size_t a,
            const char *fixed, double *g, double *F, node_columns *nc)
 {
   size_t d = (size_t) m->dim;
   int status = columns (m, mat, a, nc);
+  size_t nr = nc->nn * d;                     /* entries in each column */
+  for (size_t k = 0; k <= d; k++)
+    nc->Kc->p[k] = (int) (k * nr);
+  for (size_t k = 0; k < d; k++)
+    for (size_t s = 0; s < nc->nn; s++)
+      for (size_t i = 0; i < d; i++)
+        {
+          size_t q = k * nr + s * d + i;
+          nc->Kc->i[q] = (int) (d * nc->nbr[s] + i);
+          nc->Kc->x[q] = nc->col[(s * d + i) * d + k];
+        }
   for (size_t k = 0; !status && k < d; k++)
-    {
-      size_t j = d * a + k;
-      if (!fixed[j])
-        continue;
-      if (g[j] != 0.0)
-        for (size_t s = 0; s < nc->nn; s++)
-          for (size_t i = 0; i < d; i++)
-            F[d * nc->nbr[s] + i] -= nc->col[(s * d + i) * d + k] * g[j];
-      double kjj = nc->col[(nc->slot[a] * d + k) * d + k];
-      g[j] *= kjj > 0.0 ? kjj : 1.0;                     /* d_j g_j */
-    }
+    status = lac_dirichlet_column (nc->Kc, k, d * a + k, fixed, g, F);
   for (size_t s = 0; s < nc->nn; s++)
     nc->slot[nc->nbr[s]] = SIZE_MAX;
   return status;
@@ -130,7 +134,8 @@ alloc_columns (const lac_mesh *m, const char *fixed, const double *g,
   nc->col = lac_malloc (cap * d * d * sizeof *nc->col);
   nc->Ke = lac_malloc (LAC_MAX_NODES * 3 * LAC_MAX_NODES * 3
                        * sizeof *nc->Ke);
-  if (!nc->slot || !nc->nbr || !nc->col || !nc->Ke)
+  nc->Kc = lac_csc_alloc (d * m->nnodes, d, cap * d * d);
+  if (!nc->slot || !nc->nbr || !nc->col || !nc->Ke || !nc->Kc)
     LAC_ERROR (LAC_ENOMEM, "the lift of %zu nodes", m->nnodes);
   for (size_t a = 0; a <= m->nnodes; a++)
     nc->slot[a] = SIZE_MAX;
@@ -159,8 +164,8 @@ lac_assembly_digest (const lac_mesh *m, const lac_elastic *mat,
     }
   for (size_t c = 0; c < m->ncells; c++)
     cells[c] = mat->E[c] > 0.0;            /* the cells of elastic bodies */
-  if ((status = lac_pattern_count (m, cells, nnz))                   /* 1 */
-      || (status = lac_pattern_node_cells (m, cells, &nc.cptr, &nc.cidx))
+  if ((status = lac_pattern_node_cells (m, cells, &nc.cptr, &nc.cidx))
+      || (status = lac_pattern_count (m, nc.cptr, nc.cidx, nnz))    /* 1 */
       || (status = check_fixed (m, fixed, nc.cptr))                  /* 2 */
       || (status = alloc_columns (m, fixed, g, &nc)))
     goto done;
@@ -172,6 +177,7 @@ lac_assembly_digest (const lac_mesh *m, const lac_elastic *mat,
       F[k] = g[k];                                     /* F(k) = d_k g_k */
 done:
   lac_quad_cache_free (&nc.qc);
+  lac_csc_free (nc.Kc);
   lac_free (nc.Ke);
   lac_free (nc.col);
   lac_free (nc.nbr);

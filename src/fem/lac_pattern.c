@@ -61,8 +61,28 @@ cmp_size (const void *x, const void *y)
   return (a > b) - (a < b);
 }
 
-/* Node -> its neighbours (the nodes of its cells, itself included),
- * sorted; two passes with a marker per node. */
+/* The neighbours of node b (the nodes of the cells around it, given by
+ * ptr and idx, itself included) into out (NULL: only counted), in the
+ * order met; mark[]: SIZE_MAX or another node's number on entry, b on
+ * return for each neighbour.  Their number. */
+static size_t
+node_neighbours (const lac_mesh *m, const size_t *ptr, const size_t *idx,
+                 size_t b, size_t *mark, size_t *out)
+{
+  size_t deg = 0;
+  for (size_t q = ptr[b]; q < ptr[b + 1]; q++)
+    for (size_t r = m->ptr[idx[q]]; r < m->ptr[idx[q] + 1]; r++)
+      if (mark[m->conn[r]] != b)
+        {
+          mark[m->conn[r]] = b;
+          if (out)
+            out[deg] = (size_t) m->conn[r];
+          deg++;
+        }
+  return deg;
+}
+
+/* Node -> its neighbours, sorted; two passes with a marker per node. */
 static int
 neighbours (const lac_mesh *m, const graph *nc, graph *nb)
 {
@@ -80,17 +100,8 @@ neighbours (const lac_mesh *m, const graph *nc, graph *nb)
         mark[a] = SIZE_MAX;
       for (size_t b = 0; b < n; b++)
         {
-          size_t deg = 0;
-          for (size_t q = nc->ptr[b]; q < nc->ptr[b + 1]; q++)
-            for (size_t r = m->ptr[nc->idx[q]]; r < m->ptr[nc->idx[q] + 1];
-                 r++)
-              if (mark[m->conn[r]] != b)
-                {
-                  mark[m->conn[r]] = b;
-                  if (pass)
-                    nb->idx[nb->ptr[b] + deg] = (size_t) m->conn[r];
-                  deg++;
-                }
+          size_t deg = node_neighbours (m, nc->ptr, nc->idx, b, mark,
+                                        pass ? nb->idx + nb->ptr[b] : NULL);
           if (!pass)
             nb->ptr[b + 1] = nb->ptr[b] + deg;
           else
@@ -222,29 +233,19 @@ lac_pattern_node_cells (const lac_mesh *m, const char *cells, size_t **ptr,
 }
 
 int
-lac_pattern_count (const lac_mesh *m, const char *cells, size_t *nnz)
+lac_pattern_count (const lac_mesh *m, const size_t *ptr, const size_t *idx,
+                   size_t *nnz)
 {
-  graph nc = { NULL, NULL };
-  size_t d = (size_t) m->dim, *mark = NULL;
+  size_t d = (size_t) m->dim;
+  size_t *mark = lac_malloc ((m->nnodes + 1) * sizeof *mark);
   *nnz = 0;
-  if (node_cells (m, cells, &nc)
-      || !(mark = lac_malloc ((m->nnodes + 1) * sizeof *mark)))
-    {
-      graph_free (&nc);
-      LAC_ERROR (LAC_ENOMEM, "the pattern's count of %zu nodes", m->nnodes);
-    }
+  if (!mark)
+    LAC_ERROR (LAC_ENOMEM, "the pattern's count of %zu nodes", m->nnodes);
   for (size_t a = 0; a < m->nnodes; a++)
     mark[a] = SIZE_MAX;
-  for (size_t b = 0; b < m->nnodes; b++)       /* the neighbours of b */
-    for (size_t q = nc.ptr[b]; q < nc.ptr[b + 1]; q++)
-      for (size_t r = m->ptr[nc.idx[q]]; r < m->ptr[nc.idx[q] + 1]; r++)
-        if (mark[m->conn[r]] != b)
-          {
-            mark[m->conn[r]] = b;
-            *nnz += d * d;
-          }
+  for (size_t b = 0; b < m->nnodes; b++)
+    *nnz += d * d * node_neighbours (m, ptr, idx, b, mark, NULL);
   lac_free (mark);
-  graph_free (&nc);
   return LAC_SUCCESS;
 }
 

@@ -50,11 +50,12 @@ void lac_pattern_free (lac_pattern *p);               /* NULL allowed */
  * the caller).  LAC_SUCCESS or LAC_ENOMEM (nothing left). */
 int lac_pattern_node_cells (const lac_mesh *m, const char *cells,
                             size_t **ptr, size_t **idx);
-/* The number of entries of the pattern of those cells (dim^2 for every
- * pair of nodes that share one of them), without building it: time
- * about that of step 2, memory the node-to-cell list.  LAC_SUCCESS or
- * LAC_ENOMEM. */
-int lac_pattern_count (const lac_mesh *m, const char *cells, size_t *nnz);
+/* The number of entries of the pattern of the cells in those lists
+ * (dim^2 for every pair of nodes that share one of them), without
+ * building it: step 2's first pass, one marker per node.  LAC_SUCCESS
+ * or LAC_ENOMEM. */
+int lac_pattern_count (const lac_mesh *m, const size_t *ptr,
+                       const size_t *idx, size_t *nnz);
 
 /* K->x = 0. */
 void lac_pattern_zero (lac_pattern *p);

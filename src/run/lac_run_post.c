@@ -347,17 +347,17 @@ exact_nodes (const lac_run_post_in *in, const lac_exact *e,
 
 /* The nodal stresses and, with an exact solution (exact = 1), the errors
  * in L2 and H1: on the processes that hold the cells when the solver
- * assembled K there (fem/lac_post_dist.h), else here. */
+ * assembled K there (st: its strategy; fem/lac_post_dist.h), else here
+ * (st NULL). */
 static int
-stresses_errors (const lac_run_post_in *in, const lac_exact *e, int exact,
-                 lac_run_results *res)
+stresses_errors (const lac_run_post_in *in, lac_strategy *st,
+                 const lac_exact *e, int exact, lac_run_results *res)
 {
   const lac_mesh *m = in->mesh;
-  lac_strategy *st = in->sol->kst;
   int status;
   if (exact && (status = exact_nodes (in, e, res)))
     return status;
-  if (st && lac_strategy_posts (st))
+  if (st)
     {
       lac_post_request p = { in->u, exact ? e : NULL, res->sigma, res->vm,
                              { 0, 0, 0, 0 } };
@@ -381,10 +381,12 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
              char *progress, size_t size)
 {
   const lac_scene *sc = in->sc;
+  lac_strategy *st = in->sol->kst && lac_strategy_posts (in->sol->kst)
+                     ? in->sol->kst : NULL;     /* stage 6 on the processes */
   lac_exact e;
   int status;
   lac_run_exact (sc, in->model, &e);
-  if ((status = stresses_errors (in, &e, sc->exact.sec.line != 0, res))
+  if ((status = stresses_errors (in, st, &e, sc->exact.sec.line != 0, res))
       || (status = make_summary (in, res, &e)))
     return status;
   const lac_contact *c = in->setup->data.all;
@@ -404,7 +406,7 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
       || (status = reactions (in, &res->summary)))
     return status;
   char where[64] = "";
-  if (in->sol->kst && lac_strategy_posts (in->sol->kst))
+  if (st)
     snprintf (where, sizeof where, " (on the %d processes' cells)",
               in->sol->processes);
   if (res->u_exact)
