@@ -19,6 +19,10 @@
 #                    the 3D patch test's and spheres' stresses and errors
 #                    come from the processes' cells (the progress line),
 #                    the spheres' L2 and H1 errors those of -n 1 to 1e-8;
+#   mpi-graph        the unit test t512 (GAMG's graph without the weak
+#                    couplings of the contact nodes) on 2 and 3
+#                    processes: the contact nodes of the other processes'
+#                    columns;
 #   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
@@ -217,6 +221,17 @@ if [ "$have_petsc" = 1 ]; then
       done
     done
     petsc_same "mpi-post errors" "$C/spheres3d-hex20.np4.out" "$C/spheres3d-hex20.np1.out" l2_err_u h1_err_u
+
+    # ---- mpi-graph: the contact graph's ghost columns (t512 on 2 and 3) -
+    for np in 2 3; do
+      # shellcheck disable=SC2086
+      if env "$PETSC_ENV" $MPIRUN -n $np "$B/tests/t512-petsc-graph" \
+           > "$C/graph.np$np.out" 2>&1; then
+        petsc_ok "mpi-graph -n $np"
+      else
+        petsc_fail "mpi-graph -n $np" "$(grep FAIL "$C/graph.np$np.out" | head -2)"
+      fi
+    done
 
     # ---- mpi-fail: a failure on one process ends them all -------------
     # petsc_fault NP RANK: the failure injected on process RANK of NP.

@@ -11,6 +11,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
+#include "linalg/lac_petsc_graph.h"
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
@@ -239,9 +240,11 @@ create_alone (lac_petsc_saddle *sv)
   return LAC_SUCCESS;
 }
 
-/* projected: the multigrid of K (prefix elast_; threshold: on its finest
- * level, if >= 0), the solver of B^T B + D (prefix gram_: redundant LU),
- * CG on P K (no prefix). */
+/* projected: the multigrid of K (prefix elast_; threshold, or
+ * -lac_contact_threshold, if >= 0: on the couplings of the contact nodes
+ * of its finest level, lac_petsc_graph.h; on all those of the finest level
+ * where this PETSc has no hook for it), the solver of B^T B + D (prefix
+ * gram_: redundant LU), CG on P K (no prefix). */
 static int
 create_projected (lac_petsc_saddle *sv, double threshold)
 {
@@ -262,7 +265,14 @@ create_projected (lac_petsc_saddle *sv, double threshold)
   TRY (gamg_setup (sv->pg));
   TRY (PCSetFromOptions (sv->pg));
   TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
-  if (threshold >= 0 && !set)       /* after the options: they would copy */
+  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_contact_threshold", &th[0],
+                            NULL));
+  if (th[0] >= 0 && !set && lac_petsc_graph_available ())
+    {                               /* the contact nodes' couplings only */
+      if ((status = lac_petsc_graph_contact (sv->pg, sv->B, th[0])))
+        return status;
+    }
+  else if (th[0] >= 0 && !set)      /* after the options: they would copy */
     TRY (PCGAMGSetThreshold (sv->pg, th, 2));   /* th[0] to every level */
   if ((status = direct_solver (PETSC_COMM_WORLD, "gram_", PCREDUNDANT,
                               &sv->kg)))

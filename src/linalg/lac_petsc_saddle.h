@@ -60,11 +60,14 @@ typedef struct
 
 /* The solvers of K (and B: NULL for K alone) by `method`; K and B are
  * borrowed and keep their patterns (new values: _update).  threshold >=
- * 0: the multigrid of K (projected CG or fieldsplit) drops the
- * couplings of K's graph below it on the finest level before it
- * aggregates (PCGAMG's threshold, 0 on the coarser levels;
- * -elast_pc_gamg_threshold, -fieldsplit_u_pc_gamg_threshold still win);
- * < 0: PETSc's default.  Collective. */
+ * 0: the multigrid of K drops weak couplings of K's graph before it
+ * aggregates.  Projected CG: those below `threshold` at a contact node
+ * (a node with a row of B) on the finest level, every other coupling
+ * kept (lac_petsc_graph.h; -lac_contact_threshold sets it, < 0 none);
+ * where this PETSc has no hook for that, and for fieldsplit: all those
+ * below it on the finest level (PCGAMG's threshold, 0 on the coarser
+ * ones).  -elast_pc_gamg_threshold, -fieldsplit_u_pc_gamg_threshold
+ * still win.  < 0: PETSc's default.  Collective. */
 int lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
                              lac_saddle_mat B, double threshold,
                              lac_petsc_saddle **out);

@@ -27,11 +27,12 @@
  *      null space K_W is K: W only makes K_W positive definite for the
  *      multigrid (omega = LAC_PETSC_OMEGA, smaller than the augmented
  *      strategy's: a stiffer K_W is harder for the multigrid).  With
- *      contact, GAMG drops the couplings of K_W's graph below
- *      LAC_PETSC_GAMG_THRESHOLD of the diagonal on its finest level
- *      before it aggregates (PCGAMGSetThreshold; the coarser levels keep
- *      them all): on the 1M-dof patch test 30 CG iterations instead of
- *      72, the cube without contact 23 (chapter 13, section 1).
+ *      contact, GAMG's graph of K_W's finest level loses the couplings
+ *      of the contact nodes below LAC_PETSC_GAMG_THRESHOLD of the
+ *      diagonal before it aggregates (linalg/lac_petsc_graph.h; every
+ *      other coupling is kept): on the 1M-dof patch test 27 CG
+ *      iterations instead of 62, the cube without contact 22 (chapter
+ *      13, section 1).
  *   fieldsplit  GMRES on the whole of (*W), right preconditioned by the
  *      block factorization of PCFIELDSPLIT (Schur type, "upper"): K_W by
  *      one V-cycle of GAMG, the Schur complement S_W = C_A^T K_W^-1 C_A
@@ -102,9 +103,9 @@
 #include "solve/lac_system.h"
 
 #define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */
-/* GAMG's threshold on the finest level of K_W when there is contact
- * (-elast_pc_gamg_threshold; chapter 13: 0.07 and 0.12 too small and
- * too large on the patch test) */
+/* GAMG's threshold on the couplings of the contact nodes of K_W's finest
+ * level (-lac_contact_threshold; chapter 13: 0.05 and 0.3 too small and
+ * too large on the patch test, 0.08 to 0.2 alike) */
 #define LAC_PETSC_GAMG_THRESHOLD 0.1
 
 /* The processes other than the root: follow the root's commands until it
