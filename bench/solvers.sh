@@ -7,8 +7,8 @@
 #   sh bench/solvers.sh [BUILD_DIR] --out DIR --rows "P:N:SOLVER:NP[:R] ..."
 #                       [--reps R]
 #       only these rows again (e.g. taylor:28:petsc:2), each the run of
-#       median wall time among R (per row, or --reps; default 3), in place
-#       of the same rows
+#       median wall time among R (per row, or --reps; default 3; the rows
+#       take turns, one run each a round), in place of the same rows
 #       of DIR/solvers.csv; then the table and the charts from the whole
 #       CSV, the table's first line saying which rows are newer
 #
@@ -189,24 +189,42 @@ run () {
 }
 
 if [ -n "$ROWS" ]; then
-  # each row REPS times; the one of median wall time replaces the row of
-  # the full sweep
+  # each row REPS times, in rounds (every row once a round: a machine
+  # that slows down or speeds up during the call does so for every row
+  # alike); the run of median wall time replaces the row of the full sweep
   cp "$FULL" "$W/full.csv" || exit 1
+  rm -f "$W"/row*.csv
+  i=0 most=0
   for spec in $ROWS; do
-    IFS=: read -r p n s np reps <<EOS
+    i=$((i + 1))
+    echo "$HEAD" > "$W/row$i.csv"
+    reps=$(echo "$spec" | cut -d: -f5)
+    [ "${reps:-$REPS}" -gt $most ] && most=${reps:-$REPS}
+  done
+  r=0
+  while [ $r -lt $most ]; do
+    i=0
+    for spec in $ROWS; do
+      i=$((i + 1))
+      IFS=: read -r p n s np reps <<EOS
 $spec
 EOS
-    reps=${reps:-$REPS}
-    echo "$HEAD" > "$CSV"
-    r=0
-    while [ $r -lt "$reps" ]; do run "$p" "$n" "$s" "$np"; r=$((r + 1)); done
-    med=$(tail -n +2 "$CSV" | sort -t, -k7,7g | sed -n "$(( (reps + 1) / 2 ))p")
-    awk -F, -v OFS=, -v p="$p" -v n="$n" -v s="$s" -v np="$np" -v row="$med" \
-      '$1 == p && $2 == n && $5 == s && $6 == np { print row; next } { print }' \
+      [ $r -lt "${reps:-$REPS}" ] || continue
+      echo "$HEAD" > "$CSV"
+      run "$p" "$n" "$s" "$np"
+      tail -1 "$CSV" >> "$W/row$i.csv"
+    done
+    r=$((r + 1))
+  done
+  for f in "$W"/row*.csv; do
+    k=$(( $(wc -l < "$f") - 1 ))
+    med=$(tail -n +2 "$f" | sort -t, -k7,7g | sed -n "$(( (k + 1) / 2 ))p")
+    awk -F, -v OFS=, -v row="$med" 'BEGIN { split(row, m, ",") }
+      $1 == m[1] && $2 == m[2] && $5 == m[5] && $6 == m[6] { print row; next } { print }' \
       "$W/full.csv" > "$W/full.new" && mv "$W/full.new" "$W/full.csv"
   done
   FIRST=$(head -1 "$OUT/solvers.txt")
-  NOTE="$FIRST Rows re-measured $(date -u +%Y-%m-%d) (each the median wall time of its runs, P:N:SOLVER:NP:RUNS, default $REPS; load average $LOAD0 at the start, $(cut -d' ' -f1-3 /proc/loadavg) at the end): $ROWS."
+  NOTE="$FIRST Rows re-measured $(date -u +%Y-%m-%d) (each the median wall time of its runs, the rows taking turns, P:N:SOLVER:NP:RUNS, default $REPS; load average $LOAD0 at the start, $(cut -d' ' -f1-3 /proc/loadavg) at the end): $ROWS."
   cp "$W/full.csv" "$FULL" || exit 1
   CSV=$FULL
   TN= TD= CN= CD= TH= CH=

@@ -10,7 +10,7 @@
 #        1e-8, and the iterations grow by at most 2 while the dofs grow
 #        2.5 times;
 #   ex2  the 3D Taylor patch test at n = 10 (7236 dofs), -lac_omega 0.1,
-#        1, 10, 100, 1000: 28, 21, 52, 85, 235 iterations (within 15 %),
+#        1, 10, 100, 1000: 28, 21, 52, 85, 233 iterations (within 15 %),
 #        fewest at omega = 1, increasing from 1 on; lambda = -25 to 1e-9
 #        for every omega;
 #   ex3  the same with BoomerAMG (14) fewer iterations than GAMG (21);
@@ -91,8 +91,8 @@ if ! grep -q "built without PETSc" "$C/avail.err"; then
   # shellcheck disable=SC2086
   set -- $its
   sx_check "ex2 iterations against omega" \
-    "n == 5 && near(a, 28) && near(b, 21) && near(c, 52) && near(d, 85) && near(e, 235) && b < a && b < c && c < d && d < e" \
-    "iterations for omega 0.1 1 10 100 1000:$its (want 28 21 52 85 235 within 15 %, fewest at 1)" \
+    "n == 5 && near(a, 28) && near(b, 21) && near(c, 52) && near(d, 85) && near(e, 233) && b < a && b < c && c < d && d < e" \
+    "iterations for omega 0.1 1 10 100 1000:$its (want 28 21 52 85 233 within 15 %, fewest at 1)" \
     -v n="$#" -v a="${1:-0}" -v b="${2:-0}" -v c="${3:-0}" -v d="${4:-0}" -v e="${5:-0}"
 
   # ---- exercise 3: GAMG, BoomerAMG, fieldsplit ---------------------------

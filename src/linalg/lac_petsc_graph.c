@@ -10,6 +10,8 @@
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
 
+#define GROUP 4          /* nodes at most in a group of singletons       */
+
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 
@@ -34,6 +36,7 @@ lac_petsc_graph_available (void)
 typedef struct
 {
   PetscErrorCode (*graph) (PC, Mat, Mat *);   /* GAMG's own               */
+  PetscErrorCode (*coarsen) (PC, Mat *, PetscCoarsenData **);   /* same  */
   Mat B;                                      /* the constraints, borrowed */
   PetscReal threshold;
 } graph_ctx;
@@ -204,6 +207,200 @@ contact_graph (PC pc, Mat A, Mat *G)
   return drop_contact_couplings (c, bs, G);
 }
 
+/* ---- the singleton aggregates ------------------------------------------ */
+
+/* *s: the one node of aggregate r if it holds exactly one node of this
+ * process (my0 <= s < end), else -1. */
+static PetscErrorCode
+singleton (PetscCoarsenData *agg, PetscInt r, PetscInt my0, PetscInt end,
+           PetscInt *s)
+{
+  PetscInt size, gid;
+  PetscCDIntNd *pos;
+  *s = -1;
+  PetscCall (PetscCDSizeAt (agg, r, &size));
+  if (size != 1)
+    return 0;
+  PetscCall (PetscCDGetHeadPos (agg, r, &pos));
+  PetscCall (PetscCDIntNdGetID (pos, &gid));
+  if (gid >= my0 && gid < end)
+    *s = gid;
+  return 0;
+}
+
+/* Node gid (local) from its aggregate into aggregate r. */
+static PetscErrorCode
+move (PetscCoarsenData *agg, PetscInt *owner, PetscInt my0, PetscInt gid,
+      PetscInt r)
+{
+  PetscCall (PetscCDRemoveAll (agg, owner[gid - my0]));
+  PetscCall (PetscCDAppendID (agg, r, gid));
+  owner[gid - my0] = r;
+  return 0;
+}
+
+/* Aggregate r, the singleton of node s, takes the singletons within two
+ * couplings of s (through a node j of this process), up to GROUP nodes;
+ * nb: room for a row of G.  *members: the nodes it holds then. */
+static PetscErrorCode
+gather (Mat G, PetscCoarsenData *agg, PetscInt *owner, PetscInt my0,
+        PetscInt end, PetscInt r, PetscInt s, PetscInt *nb, PetscInt *members)
+{
+  PetscInt nc, nn;
+  const PetscInt *cols;
+  *members = 1;
+  PetscCall (MatGetRow (G, s, &nn, &cols, NULL));  /* one row at a time */
+  PetscCall (PetscArraycpy (nb, cols, nn));
+  PetscCall (MatRestoreRow (G, s, NULL, &cols, NULL));
+  for (PetscInt a = 0; a < nn && *members < GROUP; a++)
+    {
+      if (nb[a] < my0 || nb[a] >= end || nb[a] == s)
+        continue;
+      PetscCall (MatGetRow (G, nb[a], &nc, &cols, NULL));
+      for (PetscInt q = 0; q < nc && *members < GROUP; q++)
+        {
+          PetscInt k = cols[q], t, other;
+          if (k < my0 || k >= end || k == s || (t = owner[k - my0]) < 0
+              || t == r)
+            continue;
+          PetscCall (singleton (agg, t, my0, end, &other));
+          if (other == k)
+            {
+              PetscCall (move (agg, owner, my0, k, r));
+              (*members)++;
+            }
+        }
+      PetscCall (MatRestoreRow (G, nb[a], NULL, &cols, NULL));
+    }
+  return 0;
+}
+
+/* The singleton s (aggregate r) joins the aggregate of its strongest
+ * neighbour on this process that holds more than one node; *joined = 1
+ * if there was one. */
+static PetscErrorCode
+join (Mat G, PetscCoarsenData *agg, PetscInt *owner, PetscInt my0,
+      PetscInt end, PetscInt r, PetscInt s, int *joined)
+{
+  PetscInt nc, best = -1;
+  PetscReal strongest = 0;
+  const PetscInt *cols;
+  const PetscScalar *v;
+  PetscCall (MatGetRow (G, s, &nc, &cols, &v));
+  for (PetscInt q = 0; q < nc; q++)
+    {
+      PetscInt t, size;
+      if (cols[q] < my0 || cols[q] >= end || cols[q] == s
+          || (t = owner[cols[q] - my0]) < 0 || t == r)
+        continue;
+      PetscCall (PetscCDSizeAt (agg, t, &size));
+      if (size > 1 && (best < 0 || PetscAbsScalar (v[q]) > strongest))
+        best = t, strongest = PetscAbsScalar (v[q]);
+    }
+  PetscCall (MatRestoreRow (G, s, &nc, &cols, &v));
+  *joined = best >= 0;
+  return best >= 0 ? move (agg, owner, my0, s, best) : 0;
+}
+
+/* owner[i]: the aggregate (local root) of local node i, -1 if none here;
+ * *maxrow: the longest row of G. */
+static PetscErrorCode
+owners (Mat G, PetscCoarsenData *agg, PetscInt my0, PetscInt end,
+        PetscInt **owner, PetscInt *maxrow)
+{
+  PetscInt nloc = end - my0;
+  PetscCall (PetscMalloc1 (nloc, owner));
+  *maxrow = 0;
+  for (PetscInt i = 0; i < nloc; i++)
+    {
+      PetscInt nc;
+      (*owner)[i] = -1;
+      PetscCall (MatGetRow (G, my0 + i, &nc, NULL, NULL));
+      *maxrow = PetscMax (*maxrow, nc);
+      PetscCall (MatRestoreRow (G, my0 + i, NULL, NULL, NULL));
+    }
+  for (PetscInt r = 0; r < nloc; r++)
+    {
+      PetscCDIntNd *pos;
+      PetscCall (PetscCDGetHeadPos (agg, r, &pos));
+      while (pos)
+        {
+          PetscInt gid;
+          PetscCall (PetscCDIntNdGetID (pos, &gid));
+          if (gid >= my0 && gid < end)
+            (*owner)[gid - my0] = r;
+          PetscCall (PetscCDGetNextPos (agg, r, &pos));
+        }
+    }
+  return 0;
+}
+
+/* The singletons of agg (lists indexed by local root) grouped (gather),
+ * then those still alone joined to a neighbour's aggregate (join). */
+static PetscErrorCode
+group_singletons (Mat G, PetscCoarsenData *agg, int *grouped, int *joined)
+{
+  PetscInt my0, end, *owner, maxrow = 0, *nb, s, members;
+  int one = 0;
+  *grouped = *joined = 0;
+  PetscCall (MatGetOwnershipRange (G, &my0, &end));
+  PetscCall (owners (G, agg, my0, end, &owner, &maxrow));
+  PetscCall (PetscMalloc1 (maxrow, &nb));
+  for (PetscInt r = 0; r < end - my0; r++)
+    {
+      PetscCall (singleton (agg, r, my0, end, &s));
+      if (s < 0)
+        continue;
+      PetscCall (gather (G, agg, owner, my0, end, r, s, nb, &members));
+      *grouped += members > 1 ? (int) members : 0;
+    }
+  for (PetscInt r = 0; r < end - my0; r++)
+    {
+      PetscCall (singleton (agg, r, my0, end, &s));
+      if (s < 0)
+        continue;
+      PetscCall (join (G, agg, owner, my0, end, r, s, &one));
+      *joined += one;
+    }
+  PetscCall (PetscFree (nb));
+  return PetscFree (owner);
+}
+
+/* GAMG's coarsen: its own aggregates, then, on the finest level, the
+ * singletons grouped (the graph G is the one its aggregates were made
+ * from; PETSc's coarsen may replace *G). */
+static PetscErrorCode
+contact_coarsen (PC pc, Mat *G, PetscCoarsenData **agg)
+{
+  PC_GAMG *gamg = (PC_GAMG *) ((PC_MG *) pc->data)->innerctx;
+  PetscContainer box;
+  graph_ctx *c;
+  Mat G0 = *G;
+  int grouped, joined;
+  PetscCall (PetscObjectQuery ((PetscObject) pc, CONTEXT,
+                               (PetscObject *) &box));
+  PetscCheck (box, PetscObjectComm ((PetscObject) pc), PETSC_ERR_PLIB,
+              "the contact graph lost its context");
+  PetscCall (PetscContainerGetPointer (box, (void **) &c));
+  PetscCall (PetscObjectReference ((PetscObject) G0));
+  PetscCall (c->coarsen (pc, G, agg));
+  if (gamg->current_level == 0)
+    {
+      PetscCall (group_singletons (G0, *agg, &grouped, &joined));
+      PetscCall (PetscInfo (pc, "%d nodes of singleton aggregates grouped, "
+                            "%d joined a neighbour's\n", grouped, joined));
+    }
+  return MatDestroy (&G0);
+}
+
+int
+lac_petsc_graph_group (lac_graph_mat G, lac_graph_aggregates agg,
+                       int *grouped, int *joined)
+{
+  TRY (group_singletons (G, agg, grouped, joined));
+  return LAC_SUCCESS;
+}
+
 int
 lac_petsc_graph_contact (lac_graph_pc pc, lac_graph_mat B, double threshold)
 {
@@ -221,6 +418,7 @@ lac_petsc_graph_contact (lac_graph_pc pc, lac_graph_mat B, double threshold)
     return LAC_SUCCESS;
   TRY (PetscCalloc1 (1, &c));
   c->graph = gamg->ops->creategraph;
+  c->coarsen = gamg->ops->coarsen;
   c->B = B;
   c->threshold = threshold;
   TRY (PetscContainerCreate (PETSC_COMM_SELF, &box));
@@ -229,11 +427,21 @@ lac_petsc_graph_contact (lac_graph_pc pc, lac_graph_mat B, double threshold)
   TRY (PetscObjectCompose ((PetscObject) pc, CONTEXT, (PetscObject) box));
   TRY (PetscContainerDestroy (&box));
   gamg->ops->creategraph = contact_graph;
+  gamg->ops->coarsen = contact_coarsen;
   TRY (PCGAMGSetThreshold (pc, &zero, 1));
   return LAC_SUCCESS;
 }
 
 #else
+
+int
+lac_petsc_graph_group (lac_graph_mat G, lac_graph_aggregates agg,
+                       int *grouped, int *joined)
+{
+  (void) G, (void) agg, *grouped = *joined = 0;
+  LAC_ERROR (LAC_EDEP, "this PETSc (%d.%d) has no hook for the contact "
+             "graph", PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR);
+}
 
 int
 lac_petsc_graph_contact (lac_graph_pc pc, lac_graph_mat B, double threshold)

@@ -10,7 +10,12 @@
  * weak couplings 0-1, 2-3 and 3-4 (a contact node at one end): the
  * values of the kept ones are a_i, and the graph is symmetric.  Without
  * the hook (another PETSc than 3.18) the install fails with a message.
- * Runs on any number of processes (tests/cases-petsc.sh runs it on 2).
+ * Then the grouping of the singleton aggregates on a graph of eight
+ * nodes (one process): aggregates {0 1 2}, {3}, {4}, {5}, {6 7}; 3 and 5
+ * are two couplings apart (through 1), 4 has no single node near it and
+ * couples most strongly to 7: the result is {0 1 2}, {3 5}, {6 7 4}, two
+ * nodes grouped and one joined.  Runs on any number of processes
+ * (tests/cases-petsc.sh runs it on 2 and 3).
  */
 #include <math.h>
 #include "check.h"
@@ -21,6 +26,7 @@
 #ifdef LAC_HAVE_PETSC
 
 #include <petscksp.h>
+#include <petscmatcoarsen.h>
 
 #define NODES 6
 #define BS 3
@@ -128,6 +134,53 @@ check_graph (Mat G)
   check_true (sym, "the graph is symmetric");
 }
 
+/* The grouping of singletons (lac_petsc_graph_group), on this process
+ * alone. */
+static void
+check_group (void)
+{
+  static const int edge[][2] = { { 0, 1 }, { 1, 2 }, { 1, 3 }, { 1, 5 },
+                                 { 4, 6 }, { 4, 7 }, { 6, 7 } };
+  static const double g[] = { 0.9, 0.9, 0.5, 0.3, 0.2, 0.9, 0.8 };
+  static const int list[8] = { 0, 0, 0, 3, 4, 5, 6, 6 };   /* the roots */
+  static const int want[8] = { 3, 0, 0, 2, 0, 0, 3, 0 };   /* sizes after */
+  Mat G;
+  PetscCoarsenData *agg;
+  int grouped = -1, joined = -1;
+  MatCreateSeqAIJ (PETSC_COMM_SELF, 8, 8, 8, NULL, &G);
+  for (int i = 0; i < 8; i++)
+    MatSetValue (G, i, i, 1.0, INSERT_VALUES);
+  for (int e = 0; e < 7; e++)
+    {
+      MatSetValue (G, edge[e][0], edge[e][1], g[e], INSERT_VALUES);
+      MatSetValue (G, edge[e][1], edge[e][0], g[e], INSERT_VALUES);
+    }
+  MatAssemblyBegin (G, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd (G, MAT_FINAL_ASSEMBLY);
+  PetscCDCreate (8, &agg);
+  for (int i = 0; i < 8; i++)
+    PetscCDAppendID (agg, list[i], i);
+  check_status (lac_petsc_graph_group (G, agg, &grouped, &joined),
+                LAC_SUCCESS, "group the singletons");
+  check_true (grouped == 2 && joined == 1, "2 nodes grouped (%d), 1 joined "
+              "(%d)", grouped, joined);
+  for (int r = 0; r < 8; r++)
+    {
+      PetscInt size = -1;
+      PetscCDSizeAt (agg, r, &size);
+      check_true (size == want[r], "aggregate %d holds %d nodes, want %d", r,
+                  (int) size, want[r]);
+    }
+  PetscCDIntNd *pos;
+  PetscInt last = -1;
+  for (PetscCDGetHeadPos (agg, 6, &pos); pos; PetscCDGetNextPos (agg, 6, &pos))
+    PetscCDIntNdGetID (pos, &last);
+  check_true (last == 4, "node 4 joined aggregate 6 (its last node is %d)",
+              (int) last);
+  PetscCDDestroy (agg);
+  MatDestroy (&G);
+}
+
 int
 main (void)
 {
@@ -147,6 +200,7 @@ main (void)
                     "install the contact graph");
       check_true (PCGAMGCreateGraph (pc, K, &G) == 0, "the graph");
       check_graph (G);
+      check_group ();
     }
   else
     {
