@@ -1,5 +1,6 @@
-/* lac_petsc_graph.c -- the aggregation graph of GAMG with a threshold on
- *                      the couplings of the constrained nodes only
+/* lac_petsc_graph.c -- the aggregation of GAMG near the contact: the
+ *                      contact nodes' weak couplings dropped from its
+ *                      graph, its single-node aggregates grouped
  *                      (see lac_petsc_graph.h)
  */
 #include "linalg/lac_petsc_graph.h"
@@ -10,7 +11,7 @@
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
 
-#define GROUP 4          /* nodes at most in a group of singletons       */
+#define GROUP 4          /* nodes at most in a group of single nodes     */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
@@ -30,7 +31,7 @@ lac_petsc_graph_available (void)
 
 #if GRAPH_HOOK
 
-/* What the wrapper needs, composed on the PC under this name. */
+/* What the wrappers need, composed on the PC under this name. */
 #define CONTEXT "lac_contact_graph"
 
 typedef struct

@@ -27,6 +27,12 @@
 
 #include <petscksp.h>
 #include <petscmatcoarsen.h>
+#if PETSC_VERSION_MAJOR == 3 && PETSC_VERSION_MINOR == 18
+#include <petsc/private/pcgamgimpl.h>     /* the coarsening, below */
+#define HOOK 1
+#else
+#define HOOK 0
+#endif
 
 #define NODES 6
 #define BS 3
@@ -201,6 +207,15 @@ main (void)
       check_true (PCGAMGCreateGraph (pc, K, &G) == 0, "the graph");
       check_graph (G);
       check_group ();
+#if HOOK
+      {                        /* PETSc's coarsening frees the coarsener
+                                  its graph step made (and groups) */
+        PC_GAMG *gamg = (PC_GAMG *) ((PC_MG *) pc->data)->innerctx;
+        PetscCoarsenData *agg = NULL;
+        check_true (gamg->ops->coarsen (pc, &G, &agg) == 0, "the coarsening");
+        PetscCDDestroy (agg);
+      }
+#endif
     }
   else
     {
