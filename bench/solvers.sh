@@ -193,7 +193,7 @@ if [ -n "$ROWS" ]; then
   # that slows down or speeds up during the call does so for every row
   # alike); the run of median wall time replaces the row of the full sweep
   cp "$FULL" "$W/full.csv" || exit 1
-  rm -f "$W"/row*.csv
+  rm -f "$W"/row[0-9]*.csv
   i=0 most=0
   for spec in $ROWS; do
     i=$((i + 1))
@@ -216,7 +216,7 @@ EOS
     done
     r=$((r + 1))
   done
-  for f in "$W"/row*.csv; do
+  for f in "$W"/row[0-9]*.csv; do     # not rows.csv, the last run
     k=$(( $(wc -l < "$f") - 1 ))
     med=$(tail -n +2 "$f" | sort -t, -k7,7g | sed -n "$(( (k + 1) / 2 ))p")
     awk -F, -v OFS=, -v row="$med" 'BEGIN { split(row, m, ",") }
