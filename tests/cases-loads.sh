@@ -131,3 +131,104 @@ loads_bad same-group "--set|group 'upper_bottom'|defined in 'taylor-upper.geo' a
   $TWO --set "mesh.file=taylor-upper.geo $PWD/chapters/08-experiments/taylor2d.geo"
 loads_bad second-missing "--set|[mesh] file|tests/meshes/nothere.geo: cannot open" $TWO --set "mesh.file=taylor-upper.geo nothere.geo"
 loads_bad second-broken "--set|[mesh] file|garbage.msh: " $TWO --set "mesh.file=taylor-upper.geo garbage.msh"
+
+# 6. rollers whose face is not one flat face (tests/meshes/turned-*,
+# ring-rollers.*, quarter-ring.*).  A roller group over a corner gets a
+# condition per side there: the turned square and the turned cube (edges,
+# a vertex) are exact, u at every node and von Mises to 1e-10, in one
+# section and in one per side; the quarter ring's cuts and outer arc in
+# one group give Lame's ring, as three sections do.  A roller on an arc
+# leaves the rotation about its centre free: refused, naming it, on a
+# quarter of the circle, on the whole circle, on the circle in four
+# sections; four sections with two values where they meet: refused.
+#
+# loads_exact NAME SCENE ARGS...: u at every node of SCENE's run is the
+# exact one (ex: the strains along the turned axes; R: the turning), and
+# von Mises at every node is vm, to 1e-10
+loads_exact () {
+  name=$1 scene=$2
+  shift 2
+  if ! "$LAC" run "$scene" --quiet --out "$C/$name" "$@" > "$C/$name.out" 2> "$C/$name.err"; then
+    loads_fail "$name" "lac run failed: $(tail -1 "$C/$name.err")"
+    return
+  fi
+  if msg=$(awk -F, -v vm="$vm" -v ex="$ex" '
+    BEGIN { split(ex, e, " "); pi = atan2(0, -1)
+            c = cos(pi / 6); s = sin(pi / 6); c2 = cos(pi / 9); s2 = sin(pi / 9)
+            if (length(e) == 2) {                 # 30 degrees about z
+              R[1,1] = c; R[1,2] = -s; R[2,1] = s; R[2,2] = c; d = 2
+            } else {                              # then 20 degrees about x
+              R[1,1] = c; R[1,2] = -s; R[1,3] = 0
+              R[2,1] = c2 * s; R[2,2] = c2 * c; R[2,3] = -s2
+              R[3,1] = s2 * s; R[3,2] = s2 * c; R[3,3] = c2; d = 3 } }
+    FNR == 1 { next }
+    { n++; for (i = 1; i <= d; i++) { x[i] = $(1 + i); u[i] = $(4 + i) }
+      for (i = 1; i <= d; i++) { xi[i] = 0; for (j = 1; j <= d; j++) xi[i] += R[j,i] * x[j] }
+      for (i = 1; i <= d; i++) { w = 0; for (j = 1; j <= d; j++) w += R[i,j] * e[j] * xi[j]
+        err = u[i] - w; if (err < 0) err = -err; if (err > eu) eu = err
+        if (w < 0) w = -w; if (w > um) um = w }
+      err = $NF - vm; if (err < 0) err = -err; if (err > ev) ev = err }
+    END { if (n < 20 || eu > 1e-10 * um || ev > 1e-10 * vm) {
+            printf "%d nodes, max |u - exact| = %.3g (max |u| %.3g), max |von Mises - %.6g| = %.3g", n, eu, um, vm, ev
+            exit 1 } }' "$C/$name/nodes.csv" 2>&1); then
+    loads_ok "$name"
+  else
+    loads_fail "$name" "$msg"
+  fi
+}
+SQ=tests/meshes/turned-square.scene
+sed "s|^file = turned-square.geo|file = $PWD/tests/meshes/turned-square.geo|; s|^\[dirichlet held\]|[dirichlet left]|; s|^group = held|group = left\nnormal = 0\n\n[dirichlet bottom]\ngroup = bottom|" \
+  $SQ > "$C/square-two.scene"
+vm=10.535653752852738 ex="-1.3e-3 -1.43e-2"          # sqrt(111); plane strain
+for e in quad4 tri6 quad8; do
+  loads_exact "roller-corner-$e" $SQ --set element=$e
+  loads_exact "roller-corner-two-$e" "$C/square-two.scene" --set element=$e
+done
+CU=tests/meshes/turned-cube.scene
+sed "s|^file = turned-cube.geo|file = $PWD/tests/meshes/turned-cube.geo|; s|^\[dirichlet held\]|[dirichlet x0]|; s|^group = held|group = x0\nnormal = 0\n\n[dirichlet y0]\ngroup = y0\nnormal = 0\n\n[dirichlet z0]\ngroup = z0|" \
+  $CU > "$C/cube-three.scene"
+vm=17.320508075688775 ex="5e-3 -8e-3 -2.1e-2"         # sqrt(300)
+for e in hex8 tet4 hex20; do
+  loads_exact "roller-vertex-$e" $CU --set element=$e
+done
+loads_exact "roller-vertex-three-hex8" "$C/cube-three.scene"
+
+# the quarter ring: one section over a curve with corners = three sections
+# = Lame's ring (u_r(a) = 6e-3; level 1: 4.8e-6 from it)
+QR=tests/meshes/quarter-ring.scene
+sed "s|^file = quarter-ring.geo|file = $PWD/tests/meshes/quarter-ring.geo|; s|^\[dirichlet held\]|[dirichlet cut0]|; s|^group = held|group = cut0\nnormal = 0\n\n[dirichlet outer]\ngroup = outer\nnormal = 0\n\n[dirichlet cut1]\ngroup = cut1|" \
+  $QR > "$C/quarter-three.scene"
+if "$LAC" run $QR --set mesh.level=1 --quiet --out "$C/quarter-one" > "$C/quarter-one.out" 2> "$C/quarter-one.err" \
+   && "$LAC" run "$C/quarter-three.scene" --set mesh.level=1 --quiet --out "$C/quarter-three" > "$C/quarter-three.out" 2> "$C/quarter-three.err"; then
+  if msg=$(awk -F, -v u1="$(loads_value "$C/quarter-one.out" max_u)" '
+      FNR == 1 { next }
+      FILENAME ~ /one/ { a[FNR] = $5; b[FNR] = $6; n++; next }
+      { d = $5 - a[FNR]; if (d < 0) d = -d; if (d > e) e = d
+        d = $6 - b[FNR]; if (d < 0) d = -d; if (d > e) e = d }
+      END { r = (u1 - 6e-3) / 6e-3; if (r < 0) r = -r
+            if (n < 20 || e > 1e-10 * u1 || r > 1e-5) {
+              printf "max_u = %s (Lame 6e-3, relative %.3g), one section against three: %.3g", u1, r, e; exit 1 } }' \
+      "$C/quarter-one/nodes.csv" "$C/quarter-three/nodes.csv" 2>&1); then
+    loads_ok roller-arc-corners
+  else
+    loads_fail roller-arc-corners "$msg"
+  fi
+else
+  loads_fail roller-arc-corners "lac run failed: $(tail -1 "$C/quarter-one.err" "$C/quarter-three.err")"
+fi
+
+# a roller on arcs of the ring: the rotation about the centre is free
+RR=tests/meshes/ring-rollers.scene
+{ sed "s|^file = ring-rollers.geo|file = $PWD/tests/meshes/ring-rollers.geo|; /^\[dirichlet roller\]/,\$d" $RR
+  for k in 1 2 3 4; do printf '[dirichlet q%d]\ngroup = outer%d\nnormal = 0\n\n' $k $k; done
+  printf '[load twist]\ngroup = inner1\ntraction = -1 1\n'; } > "$C/ring-four.scene"
+FREE="body 'ring' is not fixed against rigid motion|free: rotation about (0, 0)|a roller lets a curved face slide along itself"
+for e in quad4 quad8; do
+  for l in 0 1; do
+    loads_bad "roller-quarter-arc-$e-$l" "ring-rollers.scene|$FREE" $RR --set element=$e --set mesh.level=$l
+    loads_bad "roller-four-arcs-$e-$l" "ring-four.scene|$FREE" "$C/ring-four.scene" --set element=$e --set mesh.level=$l
+  done
+  loads_bad "roller-circle-$e" "ring-rollers.scene|$FREE" $RR --set element=$e --set dirichlet.roller.group=outer
+done
+loads_bad roller-two-values "ring-four.scene:29:|[dirichlet q2] group = 'outer2'|u.n = 0.01|[dirichlet q1] (line 24) imposes 0 on the same face|corner rule" \
+  "$C/ring-four.scene" --set dirichlet.q2.normal=0.01

@@ -66,8 +66,8 @@
  * Corners.  A macro-element never straddles an edge or a corner of the
  * slave surface, where its normal jumps: in 3D a macro-element is one
  * facet of the slave group, cut; in 2D the chains of segments break where
- * the curve turns by more than LAC_MACRO_CORNER_DEG
- * (lac_macromesh_gather.h), and a piece of one segment has its cell cut.
+ * the curve turns by more than LAC_MESH_CORNER_DEG
+ * (fem/lac_mesh.h, lac_macromesh_gather.c), and a piece of one segment has its cell cut.
  *
  * Several groups.  lac_macromesh_build_set builds the macro-meshes of n
  * slave groups (the slave surfaces of n contact pairs) in one pass over

@@ -13,8 +13,8 @@
  * to have its cell cut at the segment's midpoint (step 3).  Chains break
  * at junctions, a node where other than two segments meet, and at
  * corners, a node where the slave curve turns by more than
- * LAC_MACRO_CORNER_DEG: a macro-element never straddles a corner, whose
- * node would be its interior node and mix two normals in one averaged
+ * LAC_MESH_CORNER_DEG (the corner rule of fem/lac_mesh.h): a
+ * macro-element never straddles a corner, whose node would be its interior node and mix two normals in one averaged
  * condition (a quad4 cell with two slave edges at a right angle).
  */
 #include "contact/lac_macromesh_gather.h"
@@ -85,7 +85,7 @@ mark_corners (const lac_mesh *m, const size_t *end, size_t *deg,
 {
   for (size_t v = 0; v < m->nnodes; v++)
     if (deg[v] == 2 && is_corner (m, end, inc[2 * v], inc[2 * v + 1], v,
-                                  LAC_MACRO_CORNER_DEG))
+                                  LAC_MESH_CORNER_DEG))
       deg[v] = 0;
 }
 

@@ -20,17 +20,12 @@ enum
   LAC_MACRO_GATHER    /* a seg2: gathered with its neighbours             */
 };
 
-/* A chain of slave segments breaks at a node where it turns by more than
- * this angle (degrees): a corner of the slave curve.  The polygon of a
- * smooth curve turns by 360 / N degrees per node, below this one from N =
- * 13 segments per circle on. */
-#define LAC_MACRO_CORNER_DEG 30.0
-
 /* The macro-elements before refinement, in the order of the facets of G
  * (a chain of segments where its first facet appears), appended to L
  * (lac_macro_list_init: room for G->n more facets); kind[e] is the
  * LAC_MACRO_* of facet e; corners = 1: chains break where they turn by
- * more than LAC_MACRO_CORNER_DEG (0: they do not).  LAC_ENOMEM. */
+ * more than LAC_MESH_CORNER_DEG (the corner rule of fem/lac_mesh.h; 0:
+ * they do not).  LAC_ENOMEM. */
 int lac_macromesh_start (const lac_mesh *m, const lac_group *G,
                          const unsigned char *kind, int corners,
                          lac_macro_list *L);

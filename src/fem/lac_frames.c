@@ -34,6 +34,8 @@ lac_frames_free (lac_frames *f)
     return;
   lac_free (f->of);
   lac_free (f->R);
+  lac_free (f->tilt);
+  lac_free (f->counted);
   lac_free (f);
 }
 
@@ -64,6 +66,30 @@ lac_frames_set (lac_frames *f, size_t a, const double *R)
   return LAC_SUCCESS;
 }
 
+int
+lac_frames_set_check (lac_frames *f, size_t a, double tilt, int counted)
+{
+  if (a >= f->nnodes)
+    LAC_ERROR (LAC_EINVAL, "node %zu out of range (%zu nodes)", a,
+               f->nnodes);
+  if (!f->tilt)
+    {
+      f->tilt = lac_calloc (f->nnodes + 1, sizeof *f->tilt);
+      f->counted = lac_malloc ((f->nnodes + 1) * sizeof *f->counted);
+      if (!f->tilt || !f->counted)
+        {
+          lac_free (f->tilt), lac_free (f->counted);
+          f->tilt = NULL, f->counted = NULL;
+          LAC_ERROR (LAC_ENOMEM, "tilts of %zu nodes", f->nnodes);
+        }
+      for (size_t b = 0; b < f->nnodes; b++)
+        f->counted[b] = 3;
+    }
+  f->tilt[a] = tilt;
+  f->counted[a] = counted;
+  return LAC_SUCCESS;
+}
+
 /* ---- query -------------------------------------------------------------- */
 
 const double *
@@ -71,6 +97,18 @@ lac_frames_of (const lac_frames *f, size_t a)
 {
   return f && a < f->nnodes && f->of[a] >= 0 ? f->R + 9 * (size_t) f->of[a]
                                              : NULL;
+}
+
+double
+lac_frames_tilt (const lac_frames *f, size_t a)
+{
+  return f && f->tilt && a < f->nnodes ? f->tilt[a] : 0;
+}
+
+int
+lac_frames_counted (const lac_frames *f, size_t a)
+{
+  return f && f->counted && a < f->nnodes ? f->counted[a] : 3;
 }
 
 void

@@ -1,6 +1,5 @@
-/* lac_frames_basis.c -- the frame of the conditions at a node, and the
- *                       nodal normals of a facet group (see lac_frames.h)
- *                                                        [LAC (4), (8)]
+/* lac_frames_basis.c -- the frame of the conditions at a node
+ *                       (see lac_frames.h)               [LAC (4), (8)]
  */
 #include "fem/lac_frames.h"
 
@@ -112,68 +111,4 @@ lac_frames_basis (int dim, size_t n, const double *d, const double *v,
   complete (dim, r, R);
   *rank = r;
   return LAC_SUCCESS;
-}
-
-/* ---- nodal normals ------------------------------------------------------- */
-
-static int
-cmp_node (const void *a, const void *b)
-{
-  size_t x = *(const size_t *) a, y = *(const size_t *) b;
-  return (x > y) - (x < y);
-}
-
-/* Add the unit normal of facet e of g at each of its nodes to n. */
-static int
-facet_normals (const lac_mesh *m, const lac_group *g, size_t e, double *n)
-{
-  int fn[LAC_MAX_FACE_NODES], dim = m->dim;
-  double xe[LAC_MAX_FACE_NODES * 3];
-  lac_elem_type ft;
-  lac_map mp;
-  int nf = lac_mesh_facet_nodes (m, g->cell[e], g->face[e], fn, &ft);
-  const lac_refelem *rf = nf > 0 ? lac_refelem_get (ft) : NULL;
-  if (!rf || rf->dim != dim - 1)
-    LAC_ERROR (LAC_EINVAL, "group '%s': facet %zu is not a facet of cell "
-               "%zu", g->name, e + 1, m->cell_tag[g->cell[e]]);
-  for (int a = 0; a < nf; a++)
-    for (int i = 0; i < dim; i++)
-      xe[a * dim + i] = m->x[(size_t) dim * (size_t) fn[a] + (size_t) i];
-  for (int a = 0; a < nf; a++)
-    {
-      size_t node = (size_t) fn[a];
-      const size_t *k = bsearch (&node, g->node, g->nnodes, sizeof node,
-                                 cmp_node);
-      if (lac_map_face (rf, dim, xe, rf->xi + a * rf->dim, &mp) || !k)
-        LAC_ERROR (LAC_ESING, "group '%s': the facet of cell %zu at node "
-                   "%zu is degenerate", g->name, m->cell_tag[g->cell[e]],
-                   m->node_tag[node]);
-      for (int i = 0; i < dim; i++)
-        n[3 * (size_t) (k - g->node) + (size_t) i] += mp.normal[i];
-    }
-  return LAC_SUCCESS;
-}
-
-int
-lac_frames_normals (const lac_mesh *m, const lac_group *g, double *n)
-{
-  int status = LAC_SUCCESS;
-  if (g->dim != m->dim - 1 || g->n == 0)
-    LAC_ERROR (LAC_EINVAL, "group '%s' has no facets: a normal needs a "
-               "group of boundary facets (dimension %d)", g->name,
-               m->dim - 1);
-  memset (n, 0, 3 * g->nnodes * sizeof *n);
-  for (size_t e = 0; e < g->n && !status; e++)
-    status = facet_normals (m, g, e, n);
-  for (size_t k = 0; k < g->nnodes && !status; k++)
-    {
-      double *nk = n + 3 * k, s = lac_vec_norm (3, nk);   /* of unit normals */
-      if (!(s > 1e-6))
-        LAC_ERROR (LAC_ESING, "group '%s': the normals of its facets at "
-                   "node %zu cancel (facets on both sides of a sheet?)",
-                   g->name, m->node_tag[g->node[k]]);
-      for (int i = 0; i < 3; i++)
-        nk[i] /= s;
-    }
-  return status;
 }

@@ -25,6 +25,15 @@
 #include <stddef.h>
 #include "fem/lac_spaces.h"
 
+/* The corner rule: a boundary curve or surface that turns by more than
+ * this angle (degrees) at a node has a corner (an edge) there; below it,
+ * it is the polygon of a smooth face, whose normal turns by 360 / N
+ * degrees per node of a circle cut into N facets: smooth from N = 13 on.
+ * The macro-mesh breaks its chains of slave segments at corners
+ * (contact/lac_macromesh_gather.h); a roller gets one condition per
+ * smooth piece of its face at a node (fem/lac_frames.h). */
+#define LAC_MESH_CORNER_DEG 30.0
+
 typedef struct lac_group
 {
   char *name;      /* owned                                              */

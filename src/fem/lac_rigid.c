@@ -85,13 +85,28 @@ describe_mode (lac_model model, int nm, const double *v, const double *ctr,
   }
 }
 
+/* v^T H v (nm x nm). */
+static double
+quadratic (int nm, const double *H, const double *v)
+{
+  double s = 0;
+  for (int i = 0; i < nm; i++)
+    for (int j = 0; j < nm; j++)
+      s += v[i] * H[i * nm + j] * v[j];
+  return s;
+}
+
 /* The free rigid motions of a body from the Gram matrix G of the modes
- * restricted to its fixed dofs: eigenvalues <= 1e-10 * max are free.
- * Describes them in buf, their coefficients in mode[]; returns their
- * number (-1: GSL failed, -2: GSL's allocations failed). */
+ * restricted to its fixed dofs and the allowance H of its rollers' tilts:
+ * an eigenvector v of G is free if its eigenvalue is <= 1e-10 * max, or
+ * <= v^T H v (*slide = 1: some free motion moves rollers on curved faces,
+ * v^T H v > 0).  Describes them in
+ * buf, their coefficients in mode[]; returns their number (-1: GSL
+ * failed, -2: GSL's allocations failed). */
 static int
-free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
-            char *buf, size_t size, double (*mode)[6])
+free_modes (lac_model model, int nm, double *G, const double *H,
+            const double *ctr, double L, char *buf, size_t size,
+            double (*mode)[6], int *slide)
 {
   gsl_matrix_view A = gsl_matrix_view_array (G, (size_t) nm, (size_t) nm);
   gsl_vector *ev = gsl_vector_alloc ((size_t) nm);
@@ -106,13 +121,15 @@ free_modes (lac_model model, int nm, double *G, const double *ctr, double L,
   else if (gsl_eigen_symmv (&A.matrix, ev, V, w))
     nfree = -1;
   lmax = nfree ? 0 : gsl_vector_max (ev);
+  *slide = 0;
   for (int k = 0; nfree >= 0 && k < nm; k++)
     {
-      double v[6];
-      if (lmax > 0 && gsl_vector_get (ev, (size_t) k) > 1e-10 * lmax)
-        continue;
+      double v[6] = { 0, 0, 0, 0, 0, 0 }, g = gsl_vector_get (ev, (size_t) k);
       for (int j = 0; j < nm; j++)
         v[j] = gsl_matrix_get (V, (size_t) j, (size_t) k);
+      if (lmax > 0 && g > 1e-10 * lmax && g > quadratic (nm, H, v))
+        continue;
+      *slide |= quadratic (nm, H, v) > 0;
       memcpy (mode[nfree], v, sizeof v);
       if (len + 8 < size)
         len += (size_t) snprintf (buf + len, size - len, nfree ? "; "
@@ -202,28 +219,50 @@ modes_along (lac_model model, int dim, const lac_frames *fr, size_t q,
     }
 }
 
-/* G_b += v v^T over the fixed dofs q of body b, v = the rigid modes at q
- * (36 entries per body, nm x nm used). */
+/* Node a's position in the frame of body b (centre, size). */
+static void
+body_x (const lac_mesh *m, size_t a, size_t b, const double *ctr, double *x)
+{
+  for (int i = 0; i < m->dim; i++)
+    x[i] = (m->x[a * (size_t) m->dim + (size_t) i] - ctr[4 * b + (size_t) i])
+           / ctr[4 * b + 3];
+}
+
+/* G_b += v v^T over the fixed dofs q of body b that the check counts
+ * (fem/lac_frames.h: not the rollers where a curved piece ends), v = the
+ * rigid modes at q; H_b += t_a sum_i v_i v_i^T over the nodes a with a
+ * tilt t_a, v_i = the modes at component i: the squared length of a
+ * motion there, times the squared sines of the angles by which the
+ * rollers' normals may miss the smooth face's.  36 entries per body, nm
+ * x nm used. */
 static void
 mode_gram (const lac_mesh *m, lac_model model, const char *fixed,
            const lac_frames *fr, const size_t *comp, const double *ctr,
-           int nm, double *G)
+           int nm, double *G, double *H)
 {
   int dim = m->dim;
-  size_t ndof = (size_t) dim * m->nnodes;
-  for (size_t q = 0; q < ndof; q++)
+  for (size_t a = 0; a < m->nnodes; a++)
     {
-      size_t a = q / (size_t) dim, b = comp[a];
-      double x[3] = { 0, 0, 0 }, v[6];
-      if (!fixed[q] || b == SIZE_MAX)
+      size_t b = comp[a];
+      double x[3] = { 0, 0, 0 }, v[6], t = lac_frames_tilt (fr, a);
+      if (b == SIZE_MAX)
         continue;
-      for (int i = 0; i < dim; i++)
-        x[i] = (m->x[a * (size_t) dim + (size_t) i] - ctr[4 * b + (size_t) i])
-               / ctr[4 * b + 3];
-      modes_along (model, dim, fr, q, x, v);
-      for (int i = 0; i < nm; i++)
-        for (int j = 0; j < nm; j++)
-          G[36 * b + (size_t) (i * nm + j)] += v[i] * v[j];
+      body_x (m, a, b, ctr, x);
+      for (int c = 0; c < dim; c++)
+        {
+          size_t q = a * (size_t) dim + (size_t) c;
+          int count = fixed[q] && c < lac_frames_counted (fr, a);
+          if (count)
+            modes_along (model, dim, fr, q, x, v);
+          for (int i = 0; count && i < nm; i++)
+            for (int j = 0; j < nm; j++)
+              G[36 * b + (size_t) (i * nm + j)] += v[i] * v[j];
+          if (t > 0)
+            rigid_modes (model, c, x, v);
+          for (int i = 0; t > 0 && i < nm; i++)
+            for (int j = 0; j < nm; j++)
+              H[36 * b + (size_t) (i * nm + j)] += t * v[i] * v[j];
+        }
     }
 }
 
@@ -240,10 +279,11 @@ lac_bodies_free (lac_bodies *b)
 }
 
 /* Each body's cell, group, frame and free motions from the Gram matrices
- * G (36 per body) and the frames ctr (4 per body). */
+ * G and the allowances H (36 per body) and the frames ctr (4 per
+ * body). */
 static int
 describe_bodies (lac_bodies *B, const lac_mesh *m, const size_t *cell0,
-                 double *G, const double *ctr)
+                 double *G, const double *H, const double *ctr)
 {
   for (size_t b = 0; b < B->n; b++)
     {
@@ -252,8 +292,9 @@ describe_bodies (lac_bodies *B, const lac_mesh *m, const size_t *cell0,
       y->group = m->body[cell0[b]];
       memcpy (y->ctr, ctr + 4 * b, 3 * sizeof (double));
       y->size = ctr[4 * b + 3];
-      y->nfree = free_modes (B->model, B->nm, G + 36 * b, y->ctr, y->size,
-                             y->desc, sizeof y->desc, y->mode);
+      y->nfree = free_modes (B->model, B->nm, G + 36 * b, H + 36 * b,
+                             y->ctr, y->size, y->desc, sizeof y->desc,
+                             y->mode, &y->slide);
       if (y->nfree == -2)
         LAC_ERROR (LAC_ENOMEM, "rigid motions of body %zu", b);
       if (y->nfree < 0)
@@ -270,7 +311,7 @@ lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
   size_t n = m->nnodes, *p = lac_malloc ((n ? n : 1) * sizeof *p);
   size_t *cell0 = lac_malloc ((n ? n : 1) * sizeof *cell0);
   lac_bodies *B = lac_calloc (1, sizeof *B);
-  double *ctr = NULL, *G = NULL;
+  double *ctr = NULL, *G = NULL, *H = NULL;
   int status = LAC_SUCCESS;
   *out = NULL;
   if (B)
@@ -285,16 +326,18 @@ lac_bodies_find (const lac_mesh *m, lac_model model, const char *fixed,
   B->n = find_bodies (m, p, B->node_body, cell0);
   ctr = lac_calloc (4 * B->n + 1, sizeof *ctr);
   G = lac_calloc (36 * B->n + 1, sizeof *G);
+  H = lac_calloc (36 * B->n + 1, sizeof *H);
   B->body = lac_calloc (B->n + 1, sizeof *B->body);
-  if (!ctr || !G || !B->body)
+  if (!ctr || !G || !H || !B->body)
     {
       status = LAC_ERRMSG (LAC_ENOMEM, "rigid motions of %zu bodies", B->n);
       goto done;
     }
   body_frames (m, B->node_body, B->n, ctr);
-  mode_gram (m, model, fixed, fr, B->node_body, ctr, B->nm, G);
-  status = describe_bodies (B, m, cell0, G, ctr);
+  mode_gram (m, model, fixed, fr, B->node_body, ctr, B->nm, G, H);
+  status = describe_bodies (B, m, cell0, G, H, ctr);
 done:
+  lac_free (H);
   lac_free (G);
   lac_free (ctr);
   lac_free (cell0);

@@ -7,10 +7,22 @@
  * 3D: three translations and three rotations) strain nothing, so the
  * stiffness of a body is singular unless its fixed dofs stop every one of
  * them.  Here, for every body, the rigid modes are restricted to its fixed
- * dofs and the Gram matrix of these restrictions is diagonalised (GSL):
+ * dofs and the Gram matrix G of these restrictions is diagonalised (GSL):
  * its null space is the set of motions the Dirichlet conditions leave
  * free, each described in words ("rotation about (0, 0)", "translation
  * along z").
+ *
+ * Rollers on curved faces (fem/lac_frames.h).  A roller lets its face
+ * slide along itself, but the check sees the facets' normals, which hold
+ * such a slide weakly (a ring on a roller on a quarter of its circle,
+ * through the chords at the ends of the arc).  So it asks about the smooth
+ * face: the axes of rollers where a curved piece ends are not counted in
+ * G, and the counted rollers' tilts t (how much the face turns within one
+ * facet) give H = sum t^2 M_a, M_a the Gram matrix of the modes at their
+ * node a (the squared length of a motion there).  An eigenvector c of G is
+ * free if its eigenvalue is below 1e-10 of the largest, or below c^T H c:
+ * held no better than normals off the smooth face's by one facet's turn
+ * could hold it.  H = 0 without curved rollers.
  *
  * Used twice by a run: a body that touches no contact surface must have
  * none (its stiffness would be singular: an error naming it and its free
@@ -40,6 +52,8 @@ typedef struct lac_body
   int group;              /* the body's physical group (index), -1: none   */
   double ctr[3], size;    /* centre and size: the frame of its modes       */
   int nfree;              /* rigid motions left free by its fixed dofs     */
+  int slide;              /* 1: some of them move rollers on curved faces
+                             (see above)                                   */
   double mode[6][6];      /* free motion j: coefficients mode[j][0..nm) of
                              the model's rigid modes in that frame         */
   char desc[LAC_RIGID_DESC];  /* "translation along z; rotation about x"   */

@@ -4,14 +4,20 @@
  *
  * Part of stage 4 (assemble) of a linear run.  A [dirichlet] section with
  * `normal = g` imposes u.n = g at every node of its facet group, n the
- * outward unit normal of the face at the node (the mean of the unit
- * normals of the group's facets there, fem/lac_frames.h): a roller for
- * g = 0, on any face, plane or curved.
+ * outward unit normal of the face at the node: a roller for g = 0, on any
+ * face, plane or curved.  At a corner or an edge of the face (where it
+ * turns by more than the corner rule's angle, fem/lac_mesh.h) the node
+ * gets one condition per smooth piece of the face, each along the mean of
+ * the unit normals of its facets there (fem/lac_frames.h,
+ * lac_frames_pieces); the facets of all the `normal` sections are split
+ * together, so that two sections that meet along a smooth face give their
+ * common node one condition (with one value, or an error naming both).
  *
  * Every condition of the scene at a node is a direction d and a value v,
  * d . u = v: ux = v is (e_x, v), clamp three (or two) of them, exact the
- * components of the exact solution, normal (n, g).  lac_run_conditions
- * lists them node by node, in the order of the sections.
+ * components of the exact solution, normal (n, g) per piece.
+ * lac_run_conditions lists them node by node, in the order of the
+ * sections (a piece two sections share: with the first).
  *
  * lac_run_rollers gives each node of a `normal` group a frame made from
  * ALL the conditions at the node (fem/lac_frames.h, lac_frames_basis: the
@@ -19,7 +25,8 @@
  * is an error naming both sections) and rewrites the Dirichlet data
  * there: the fixed dofs of such a node are the first axes of its frame,
  * with the values that satisfy every condition; dir->frames holds the
- * frames.  A node of a rigid plate ([load] plate = yes) may not have a
+ * frames, and the tilts of the rollers' pieces for the rigid-motion check
+ * (fem/lac_rigid.h: what a roller on a curved face lets slide).  A node of a rigid plate ([load] plate = yes) may not have a
  * frame (an error naming both sections).  The linear run (stage 4) and
  * the large-deformation run (run/lac_run_nonlinear.c, which keeps a
  * ramp flag per entry) call it alike.
@@ -40,6 +47,9 @@ typedef struct lac_run_condition
   size_t sec;
   double d[3];          /* a unit vector                                   */
   double v;
+  double tilt;          /* a roller: its piece's tilt and whether the    */
+  char end;             /* piece ends at the node (fem/lac_frames.h); 0
+                           for the others                                 */
 } lac_run_condition;
 
 typedef struct lac_run_conditions

@@ -154,6 +154,14 @@ body_on_contact (const lac_bodies *B, const lac_run_setup *setup,
   return 0;
 }
 
+/* Why rollers do not hold body b, if they are on a curved face. */
+static const char *
+slide_hint (const lac_bodies *B, size_t b)
+{
+  return B->body[b].slide ? ": a roller lets a curved face slide along "
+                            "itself" : "";
+}
+
 /* Every body that touches no contact surface must be fixed against rigid
  * motion (else K is singular, and a pivot message could not say why); the
  * free motions of those that touch one are N. */
@@ -175,15 +183,16 @@ check_bodies (const lac_scene *sc, const lac_mesh *m,
       else if (name)
         status = lac_error_set (LAC_ESING, sc->path, "stiffness is singular:"
                                 " body '%s' is not fixed against rigid "
-                                "motion (%s); add [dirichlet] conditions "
-                                "that prevent it", name, B->body[b].desc);
+                                "motion (%s%s); add [dirichlet] conditions "
+                                "that prevent it", name, B->body[b].desc,
+                                slide_hint (B, b));
       else
         status = lac_error_set (LAC_ESING, sc->path, "stiffness is singular:"
                                 " the cells around cell %zu are not fixed "
-                                "against rigid motion (%s); add [dirichlet] "
-                                "conditions that prevent it",
+                                "against rigid motion (%s%s); add "
+                                "[dirichlet] conditions that prevent it",
                                 m->cell_tag[B->body[b].cell0],
-                                B->body[b].desc);
+                                B->body[b].desc, slide_hint (B, b));
     }
   if (!status)
     status = lac_bodies_free_motions (B, m, held_by_contact, &sys->nfree,

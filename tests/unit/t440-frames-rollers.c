@@ -11,10 +11,18 @@
  *      then to_global gives v back.
  *   3. Nodal normals: the faces of a box turned by 30 degrees, and a
  *      facet group with no facet (refused).
- *   4. The rigid motions a roller leaves free: on the turned square, a
+ *   4. The pieces of a face (lac_frames_pieces): two sides of the turned
+ *      square meet at a corner, two pieces there; the outer arc of a
+ *      quarter ring, 6 chords: radial normals, the chords' at the ends
+ *      (which end the piece), tilts sin 15 and sin 7.5 degrees; the same
+ *      arc as two groups, one piece where they meet.
+ *   5. The rigid motions a roller leaves free: on the turned square, a
  *      roller on one side leaves one, the slide along that side; rollers
  *      on two sides none; the same fixed flags read along the axes would
- *      leave the slide along y instead.
+ *      leave the slide along y instead.  A roller on the quarter arc: its
+ *      chords' normals alone hold the rotation about the centre (6, 12,
+ *      24 chords); with what the check sees (the ends left out, the
+ *      tilts) it is free, about the centre.
  */
 #include <math.h>
 #include <stdio.h>
@@ -219,7 +227,7 @@ test_rotate (lac_elem_type type, const char *name)
   lac_mesh_free (m);
 }
 
-/* ---- 3. and 4.: a square turned by 30 degrees ---------------------------- */
+/* ---- 3. a square turned by 30 degrees: normals ------------------------- */
 
 static lac_mesh *
 turned_square (lac_elem_type type)
@@ -237,6 +245,28 @@ turned_square (lac_elem_type type)
   return m;
 }
 
+/* The normals of one facet group, one per node (a flat face: one piece
+ * at each node); NULL if some node has more than one piece. */
+static double *
+group_normals (const lac_mesh *m, const lac_group *g, int *status)
+{
+  lac_face_pieces P;
+  double *n = malloc (3 * g->nnodes * sizeof *n);
+  *status = lac_frames_pieces (m, 1, &g, &P);
+  for (size_t i = 0; !*status && i < g->nnodes; i++)
+    {
+      size_t a = g->node[i];
+      if (P.ptr[a + 1] != P.ptr[a] + 1)
+        *status = LAC_ESANITY;
+      else
+        memcpy (n + 3 * i, P.normal + 3 * P.ptr[a], 3 * sizeof *n);
+    }
+  lac_face_pieces_clear (&P);
+  if (*status)
+    free (n), n = NULL;
+  return n;
+}
+
 static void
 test_normals (void)
 {
@@ -244,25 +274,149 @@ test_normals (void)
   double c = cos (PI / 6), s = sin (PI / 6);
   const char *gn[4] = { "xmin", "xmax", "ymin", "ymax" };
   double want[4][2] = { { -c, -s }, { c, s }, { s, -c }, { -s, c } };
+  int status;
   for (int k = 0; k < 4; k++)
     {
       const lac_group *g = lac_mesh_group (m, gn[k]);
-      double *n = malloc (3 * g->nnodes * sizeof *n), e = 0;
-      check_status (lac_frames_normals (m, g, n), LAC_SUCCESS, "normals %s",
-                    gn[k]);
-      for (size_t i = 0; i < g->nnodes; i++)
+      double *n = group_normals (m, g, &status), e = 0;
+      check_status (status, LAC_SUCCESS, "normals %s", gn[k]);
+      for (size_t i = 0; n && i < g->nnodes; i++)
         e = fmax (e, hypot (n[3 * i] - want[k][0], n[3 * i + 1]
                             - want[k][1]));
       check_abs (e, 0, 1e-14, "outward normal of the turned %s", gn[k]);
       free (n);
     }
   const lac_group *body = lac_mesh_group (m, "body");
-  double nb[3];
-  check_status (lac_frames_normals (m, body, nb), LAC_EINVAL, "a cell "
+  lac_face_pieces P;
+  check_status (lac_frames_pieces (m, 1, &body, &P), LAC_EINVAL, "a cell "
                 "group has no normal");
   check_message ("facets", "the message says what is needed");
   lac_mesh_free (m);
 }
+
+/* ---- 4. the pieces of a face: corners, arcs, two groups ---------------- */
+
+/* The quarter annulus 1 < r < 2, 0 < theta < 90 degrees, from a box of
+ * n x n cells of `type` (x -> r, y -> theta): its "xmax" is the outer arc,
+ * a polygon of n chords (linear cells), "ymin" and "ymax" the cuts. */
+static lac_mesh *
+quarter_ring (lac_elem_type type, size_t n)
+{
+  size_t nb[2] = { n, n };
+  double L[2] = { 1, 1 };
+  lac_mesh *m = NULL;
+  lac_mesh_box (type, nb, L, 0.0, &m);
+  for (size_t a = 0; a < m->nnodes; a++)
+    {
+      double r = 1 + m->x[2 * a], t = m->x[2 * a + 1] * PI / 2;
+      m->x[2 * a] = r * cos (t);
+      m->x[2 * a + 1] = r * sin (t);
+    }
+  return m;
+}
+
+/* Group g's facets from k0 to k1 (excluded) as a group of their own, its
+ * nodes those of the facets (sorted). */
+static lac_group
+sub_group (const lac_mesh *m, const lac_group *g, size_t k0, size_t k1)
+{
+  lac_group h = { "part", 1, 0, k1 - k0, g->cell + k0, g->face + k0, 0,
+                  malloc (g->nnodes * sizeof (size_t)) };
+  for (size_t i = 0; i < g->nnodes; i++)
+    {
+      int fn[LAC_MAX_FACE_NODES], in = 0;
+      for (size_t e = k0; e < k1 && !in; e++)
+        {
+          int nf = lac_mesh_facet_nodes (m, g->cell[e], g->face[e], fn, NULL);
+          for (int q = 0; q < nf; q++)
+            in |= (size_t) fn[q] == g->node[i];
+        }
+      if (in)
+        h.node[h.nnodes++] = g->node[i];
+    }
+  return h;
+}
+
+/* The angle (degrees) of the pieces' normal at node a, and their count. */
+static size_t
+pieces_at (const lac_face_pieces *P, size_t a, double *deg)
+{
+  size_t p = P->ptr[a];
+  if (P->ptr[a + 1] > p)
+    *deg = atan2 (P->normal[3 * p + 1], P->normal[3 * p]) * 180 / PI;
+  return P->ptr[a + 1] - p;
+}
+
+static void
+test_pieces (void)
+{
+  /* the turned square's xmin and ymin as two groups: their corner node
+   * has two pieces (a right angle), each along one side's normal, both
+   * ending there; every other node one */
+  lac_mesh *m = turned_square (LAC_QUAD4);
+  const lac_group *g2[2] = { lac_mesh_group (m, "xmin"),
+                             lac_mesh_group (m, "ymin") };
+  lac_face_pieces P;
+  size_t two = 0, corner = 0;
+  check_status (lac_frames_pieces (m, 2, g2, &P), LAC_SUCCESS, "pieces");
+  for (size_t a = 0; a < m->nnodes; a++)
+    if (P.ptr[a + 1] - P.ptr[a] == 2)
+      two++, corner = P.ptr[a];
+  check_int ((long) two, 1, "one node with two pieces (the corner)");
+  check_abs (P.normal[3 * corner] * P.normal[3 * corner + 3]
+             + P.normal[3 * corner + 1] * P.normal[3 * corner + 4], 0, 1e-14,
+             "... at right angles");
+  check_true (P.end[corner] && P.end[corner + 1] && P.tilt[corner] == 0
+              && P.grp[P.gptr[corner]] == 0 && P.grp[P.gptr[corner + 1]] == 1,
+              "... each of one group, ending there, not tilted");
+  lac_face_pieces_clear (&P);
+  lac_mesh_free (m);
+
+  /* the outer arc of a quarter ring, 6 chords of 15 degrees: radial
+   * normals inside, the end nodes those of their chords (7.5 degrees in),
+   * ending there; tilts sin 15 inside, sin 7.5 at the ends */
+  m = quarter_ring (LAC_QUAD4, 6);
+  const lac_group *arc = lac_mesh_group (m, "xmax");
+  double deg = 0, e = 0, et = 0;
+  check_status (lac_frames_pieces (m, 1, &arc, &P), LAC_SUCCESS, "arc");
+  for (size_t i = 0; i < arc->nnodes; i++)
+    {
+      size_t a = arc->node[i], p = P.ptr[a];
+      double t = atan2 (m->x[2 * a + 1], m->x[2 * a]) * 180 / PI;
+      int end = t < 1e-9 || t > 90 - 1e-9;
+      double want = t < 1e-9 ? 7.5 : t > 90 - 1e-9 ? 82.5 : t;
+      check_int ((long) pieces_at (&P, a, &deg), 1, "one piece at %g", t);
+      e = fmax (e, fabs (deg - want));
+      et = fmax (et, fabs (P.tilt[p] - sin ((end ? 7.5 : 15) * PI / 180)));
+      check_int (P.end[p], end, "the arc ends at %g degrees: %d", t, end);
+    }
+  check_abs (e, 0, 1e-12, "normals: radial, the chords' at the ends");
+  check_abs (et, 0, 1e-14, "tilts: sin 15 degrees, sin 7.5 at the ends");
+  lac_face_pieces_clear (&P);
+
+  /* the arc as two groups of 3 chords: their common node (45 degrees)
+   * has one piece of both groups, radial, not an end */
+  lac_group h1 = sub_group (m, arc, 0, 3), h2 = sub_group (m, arc, 3, 6);
+  const lac_group *two_arcs[2] = { &h1, &h2 };
+  size_t shared = 0;
+  check_status (lac_frames_pieces (m, 2, two_arcs, &P), LAC_SUCCESS,
+                "two arcs");
+  for (size_t a = 0; a < m->nnodes; a++)
+    if (P.ptr[a + 1] > P.ptr[a] && P.gptr[P.ptr[a] + 1] - P.gptr[P.ptr[a]] == 2)
+      {
+        shared++;
+        check_int ((long) pieces_at (&P, a, &deg), 1, "one piece where the "
+                   "arcs meet");
+        check_abs (deg, 45, 1e-12, "... radial");
+        check_int (P.end[P.ptr[a]], 0, "... not an end");
+      }
+  check_int ((long) shared, 1, "one node shared by the two arcs");
+  lac_face_pieces_clear (&P);
+  free (h1.node), free (h2.node);
+  lac_mesh_free (m);
+}
+
+/* ---- 5. the rigid motions rollers leave free ------------------------- */
 
 /* Free rigid motions of the turned square with rollers on the groups
  * (their normal dofs fixed in frames), or the same flags along the axes. */
@@ -273,12 +427,12 @@ free_motions (const char *const *groups, int ngroups, int frames,
   lac_mesh *m = turned_square (LAC_QUAD4);
   lac_frames *f = lac_frames_alloc (2, m->nnodes);
   char *fixed = calloc (2 * m->nnodes, 1);
+  int status;
   for (int k = 0; k < ngroups; k++)
     {
       const lac_group *g = lac_mesh_group (m, groups[k]);
-      double *n = malloc (3 * g->nnodes * sizeof *n);
-      lac_frames_normals (m, g, n);
-      for (size_t i = 0; i < g->nnodes; i++)
+      double *n = group_normals (m, g, &status);
+      for (size_t i = 0; n && i < g->nnodes; i++)
         {
           double R[9] = { n[3 * i], -n[3 * i + 1], 0, n[3 * i + 1],
                           n[3 * i], 0, 0, 0, 1 };
@@ -302,6 +456,49 @@ free_motions (const char *const *groups, int ngroups, int frames,
   return nfree;
 }
 
+/* The quarter ring of quarter_ring (quad4, n chords) on a roller on its
+ * outer arc, the frames of its pieces; what the check sees (tilts, the
+ * chords' ends left out) set or not.  The free motions; the fixed point
+ * of the first, a rotation, in x. */
+static int
+arc_motions (size_t n, int check, double *x)
+{
+  lac_mesh *m = quarter_ring (LAC_QUAD4, n);
+  const lac_group *arc = lac_mesh_group (m, "xmax");
+  lac_frames *f = lac_frames_alloc (2, m->nnodes);
+  char *fixed = calloc (2 * m->nnodes, 1);
+  lac_face_pieces P;
+  lac_bodies *B = NULL;
+  lac_frames_pieces (m, 1, &arc, &P);
+  for (size_t i = 0; i < arc->nnodes; i++)
+    {
+      size_t a = arc->node[i], p = P.ptr[a];
+      const double *q = P.normal + 3 * p;
+      double R[9] = { q[0], -q[1], 0, q[1], q[0], 0, 0, 0, 1 };
+      lac_frames_set (f, a, R);
+      fixed[2 * a] = 1;
+      if (check)
+        lac_frames_set_check (f, a, P.end[p] ? 0 : P.tilt[p] * P.tilt[p],
+                              P.end[p] ? 0 : 1);
+    }
+  check_status (lac_bodies_find (m, LAC_PLANE_STRAIN, fixed, f, &B),
+                LAC_SUCCESS, "bodies of the quarter ring");
+  int nfree = B ? B->body[0].nfree : -1;
+  if (nfree > 0)          /* u = (v0 - v2 y, v1 + v2 x) in the body's frame */
+    {
+      const lac_body *y = &B->body[0];
+      const double *v = y->mode[0];
+      x[0] = y->ctr[0] - y->size * v[1] / v[2];
+      x[1] = y->ctr[1] + y->size * v[0] / v[2];
+    }
+  lac_bodies_free (B);
+  lac_face_pieces_clear (&P);
+  free (fixed);
+  lac_frames_free (f);
+  lac_mesh_free (m);
+  return nfree;
+}
+
 static void
 test_rigid (void)
 {
@@ -315,6 +512,17 @@ test_rigid (void)
              "free");
   check_int (free_motions (one, 1, 0, v), 1, "the same flags along x: one");
   check_abs (v[0], 0, 1e-10, "... the slide along y");
+  /* a roller on a quarter arc: the chords' ends hold the rotation about
+   * the centre, weakly; what the check sees frees it */
+  for (size_t n = 6; n <= 24; n *= 2)
+    {
+      check_int (arc_motions (n, 0, v), 0, "%zu chords, the chords' "
+                 "normals: the rotation held", n);
+      check_int (arc_motions (n, 1, v), 1, "%zu chords, the smooth arc: "
+                 "one motion free", n);
+      check_abs (hypot (v[0], v[1]), 0, 1e-12, "... the rotation about "
+                 "the centre (%g, %g)", v[0], v[1]);
+    }
 }
 
 int
@@ -325,6 +533,7 @@ main (void)
   test_rotate (LAC_QUAD8, "quad8");
   test_rotate (LAC_HEX8, "hex8");
   test_normals ();
+  test_pieces ();
   test_rigid ();
   lac_finalize ();
   return check_summary ();
