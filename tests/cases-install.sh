@@ -32,7 +32,7 @@
 B=${B:-build}
 I="$B/cases-install"
 rm -rf "$I"
-mkdir -p "$I/work"
+mkdir -p "$I/cc"
 P="$(pwd)/$I/prefix"                 # absolute: the paths of lac.pc
 mkdir -p "$P/share/man/man1"          # there before: uninstall keeps it
 
@@ -93,8 +93,8 @@ else
   msg=""
   cflags=$(ins_pc --cflags lac 2>&1) || msg="pkg-config --cflags lac: $cflags"
   for h in $(cd "$P/include/lac" && find . -name '*.h' | sed 's|^\./||' | sort); do
-    printf '#include "%s"\n' "$h" > "$I/work/h.c"
-    out=$(cc $cflags -Wall -Wextra -Werror -fsyntax-only "$I/work/h.c" 2>&1) ||
+    printf '#include "%s"\n' "$h" > "$I/cc/h.c"
+    out=$(cc $cflags -Wall -Wextra -Werror -fsyntax-only "$I/cc/h.c" 2>&1) ||
       msg="$msg
 $h alone: $(printf '%s\n' "$out" | head -3)"
   done
@@ -115,13 +115,13 @@ $d"
   # ---- install-ex01, install-ex08, install-static -------------------------
   # the compile line of chapter 01's head comment, run on the installed copy
   line=$(sed -n '1,/\*\//p' chapters/01-problem/example.c | grep -o 'cc example\.c .*lac)')
-  mkdir -p "$I/work/ex01" "$I/work/ex08"
-  cp "$EXD/01-problem/example.c" "$I/work/ex01/"
+  mkdir -p "$I/cc/ex01" "$I/cc/ex08"
+  cp "$EXD/01-problem/example.c" "$I/cc/ex01/"
   if [ "$line" != 'cc example.c $(pkg-config --cflags --libs lac)' ]; then
     ins_fail install-ex01 "the head comment of chapters/01-problem/example.c has '$line'"
-  elif ! out=$(cd "$I/work/ex01" && PKG_CONFIG_PATH="$P/lib/pkgconfig" sh -c "$line" 2>&1); then
+  elif ! out=$(cd "$I/cc/ex01" && PKG_CONFIG_PATH="$P/lib/pkgconfig" sh -c "$line" 2>&1); then
     ins_fail install-ex01 "$line: $out"
-  elif ! ins_run "$I/work/ex01/a.out" > "$I/ex01.out" 2> "$I/ex01.err"; then
+  elif ! ins_run "$I/cc/ex01/a.out" > "$I/ex01.out" 2> "$I/ex01.err"; then
     ins_fail install-ex01 "the program failed: $(head -3 "$I/ex01.err")"
   elif ! "$B/chapters/01-problem" > "$I/ex01.ref" 2> "$I/ex01.err" ||
        ! d=$(diff "$I/ex01.ref" "$I/ex01.out"); then
@@ -129,9 +129,9 @@ $d"
   else ins_ok install-ex01; fi
 
   if ! out=$(cc "$EXD/08-experiments/example.c" $(ins_pc --cflags --libs lac) \
-               -o "$I/work/ex08/prog" 2>&1); then
+               -o "$I/cc/ex08/prog" 2>&1); then
     ins_fail install-ex08 "cc: $out"
-  elif ! ins_run "$I/work/ex08/prog" "$EXD/08-experiments" > "$I/ex08.out" 2> "$I/ex08.err"; then
+  elif ! ins_run "$I/cc/ex08/prog" "$EXD/08-experiments" > "$I/ex08.out" 2> "$I/ex08.err"; then
     ins_fail install-ex08 "the program failed: $(head -3 "$I/ex08.err")"
   elif ! "$B/chapters/08-experiments" > "$I/ex08.ref" 2> "$I/ex08.err" ||
        ! d=$(diff "$I/ex08.ref" "$I/ex08.out"); then
@@ -141,11 +141,11 @@ $d"
   # liblac.a by name (-l:): -llac would take liblac.so
   libs=$(ins_pc --static --libs lac | sed 's/-llac /-l:liblac.a /')
   if ! out=$(cc "$EXD/01-problem/example.c" $(ins_pc --cflags lac) $libs \
-               -o "$I/work/ex01/static" 2>&1); then
+               -o "$I/cc/ex01/static" 2>&1); then
     ins_fail install-static "cc ... $libs: $out"
-  elif readelf -d "$I/work/ex01/static" | grep -q 'liblac\.so'; then
+  elif readelf -d "$I/cc/ex01/static" | grep -q 'liblac\.so'; then
     ins_fail install-static "the program linked with liblac.a needs liblac.so"
-  elif ! "$I/work/ex01/static" > "$I/static.out" 2> "$I/static.err" ||
+  elif ! "$I/cc/ex01/static" > "$I/static.out" 2> "$I/static.err" ||
        ! d=$(diff "$I/ex01.ref" "$I/static.out"); then
     ins_fail install-static "output (>) unlike $B/chapters/01-problem's (<): $d"
   else ins_ok install-static; fi
