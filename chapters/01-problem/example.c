@@ -1,7 +1,10 @@
 /* example.c -- chapter 01: one elastic body, the forms of (8)     [LAC §2]
  *
  * Build:        make build/chapters/01-problem   (plain `make` builds it
- *               too, with the library and every chapter's program)
+ *               too, with the library and every chapter's program);
+ *               outside the tree, against lac installed by make install
+ *               (README.md, "Using lac as a library"):
+ *                 cc example.c $(pkg-config --cflags --libs lac)
  * Sample runs:  build/chapters/01-problem                 plane strain,
  *                                                        quad8, CHOLMOD
  *               build/chapters/01-problem --dim 3        3D, hex20
