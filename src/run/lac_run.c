@@ -47,8 +47,8 @@ static int
 stage_mesh (lac_run *r)
 {
   return lac_run_mesh (r->scene, r->model, r->opts.strategy,
-                       r->opts.max_memory, &r->mesh, r->progress,
-                       sizeof r->progress);
+                       r->opts.infsup_solve, r->opts.max_memory, &r->mesh,
+                       r->progress, sizeof r->progress);
 }
 
 static int
