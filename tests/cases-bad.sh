@@ -234,6 +234,10 @@ rbad infsup-memory-multipliers "strips.scene|8802 nodes and 1099 multipliers (mo
 # nodes, exit status 0): refused with its line.
 rbad transfinite-huge "transfinite-huge.geo|line 16|Transfinite Curve {...} = 3e9|above the largest allowed value 2147483647" \
   run tests/bad/box.scene $KB --set mesh.file=transfinite-huge.geo
+# The same counts computed by the script (nx = 6e9 * 2^level; a mesh of
+# 4 nodes, exit status 0): evaluated and refused with their line.
+rbad transfinite-computed "transfinite-computed.geo|line 22|Transfinite Curve {...} = nx + 1|it computes to 6e+09, beyond 32-bit integers" \
+  run tests/bad/box.scene $KB --set mesh.file=transfinite-computed.geo
 
 # A size factor far below 1 on an unstructured mesh: gmsh's count of
 # segments on a curve overflowed (size = 1e-10 gave fewer cells than size
