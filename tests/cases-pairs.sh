@@ -370,5 +370,26 @@ names_bad comma 'lo,wer'
 names_bad quote '"lo"wer'
 names_bad blank 'lo wer'
 names_bad equals 'lo=wer'
+# One pair for both interfaces of the stacked blocks (the slave groups
+# joined, and the master groups): the middle block is slave and master of
+# one pair and, 5 mm thin, was paired through itself (the loop blamed a
+# load); refused, naming the pair and the body.
+cp "$PD/stacked2d.geo" "$PC/names/union.geo"
+printf 'Physical Curve("slaves") = {5, 9};\nPhysical Curve("masters") = {3, 7};\n' >> "$PC/names/union.geo"
+sed -e '/^\[contact lower\]/,$d' -e 's/stacked2d.geo/union.geo/' "$S2" > "$PC/names/union.scene"
+printf '[contact both]\nslave = slaves\nmaster = masters\n' >> "$PC/names/union.scene"
+pairs_bad own-body "union.scene:|[contact both] master = 'masters'|on one body 'middle'|its own [contact] section" \
+  "$PC/names/union.scene" --set mesh.numbers=t=5
+# A middle block 1e-6 mm thin: K singular to rounding; the message names
+# the layer (it said only: check the Dirichlet conditions and the inf-sup
+# condition).
+pairs_bad thin-layer "stacked2d.scene:|body 'middle' has cells 1.7e+07 times wider than thick|make the layer thicker|what the solver saw" \
+  "$S2" --set mesh.numbers=t=1e-6
+# Large deformation with an interference of 80 mm on each pair of 50 mm
+# blocks: the surfaces move apart by it, beyond the pairing's reach; the
+# message names the interference (it blamed a load that pulls a body off).
+pairs_bad interference-separates "[contact lower] interference = 80|no facet pair left|t delta = 80" \
+  "$ROT" --set scene.large_deformation=yes --set contact.lower.interference=80 \
+  --set contact.upper.interference=80
 pairs_bad hex20-pyramids "[contact corner] slave = 'block_inner'|pyramids|hex_cut = six" \
   "$PD/corner3d.scene" --set element=hex20 --set contact.corner.hex_cut=pyramids
