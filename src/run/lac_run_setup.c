@@ -111,7 +111,7 @@ check_roles (const lac_scene *sc, const lac_mesh *m)
   return status;
 }
 
-/* ---- one body on both sides of a pair ------------------------------------ */
+/* ---- one body on both sides of a pair ---------------------------------- */
 
 /* The root of node a in the union-find forest up (path halving). */
 static size_t
