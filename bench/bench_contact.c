@@ -65,7 +65,7 @@ typedef struct
 static lac_run *
 start (const args *a, int stop, lac_scene **sc)
 {
-  lac_run_opts o = { NULL, 1, 1, a->strategy, 0, NULL, 1 };
+  lac_run_opts o = { NULL, 1, 1, a->strategy, 0, NULL, 1, 0 };
   lac_run *r;
   if (lac_scene_read (a->scene, a->nset, a->set, sc)
       || !(r = lac_run_alloc (*sc, &o)))

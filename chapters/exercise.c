@@ -42,7 +42,7 @@ main (int argc, char **argv)
   lac_scene *sc = NULL;
   check_status (lac_scene_read (argv[1], argc - 2, (const char **) argv + 2,
                                 &sc), argv[1]);
-  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0, 0 };
   lac_run *r = lac_run_alloc (sc, &o);
   if (!r)
     check_status (LAC_ENOMEM, "lac_run_alloc");

@@ -212,7 +212,7 @@ main (int argc, char **argv)
   char solver_set[64];
   size_t nset = 0, ndraw = 0;
   draw dr[MAX_DRAW];
-  lac_run_opts opts = { NULL, 0, 0, 0, 0, NULL };
+  lac_run_opts opts = { NULL, 0, 0, 0, 0, NULL, 0, 0 };
   int quiet = 0;
   lac_render_opts o;
   lac_render_opts_init (&o);

@@ -160,7 +160,7 @@ LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
       break;
     default:
       status = lac_geo_check_text ("fuzz.geo", (const char *) data + 1,
-                                   size - 1);
+                                   size - 1, NULL);
       fuzz_check_message (status);
     }
   lac_error_clear ();

@@ -183,10 +183,70 @@ else
   rb_fail estimate-petsc-memory "petsc '$gp' GB, Cholesky '$gc' GB"
 fi
 
+# lac infsup is checked against what it factors (src/io/lac_mesh_gmsh_estimate.c):
+# the Cholesky factor of its norm matrix (its dense path), with the LU
+# factor of the saddle-point matrix on its sparse path; a run against its
+# strategy's solve.  tests/bad/strips.scene, two transfinite strips of
+# quad4 (the node counts of the estimate exact):
+ST=tests/bad/strips.scene
+# 15,048 dofs at --max-memory 150M: a run's Cholesky factor (0.129 GB)
+# fits, and so does lac infsup's dense path (0.137 GB), but not its sparse
+# path (0.186 GB): refused before the mesh is made.
+SA="--set mesh.numbers=nx=85,ny=43 --quiet"
+if "$LAC" run $ST $SA --max-memory 150M --strategy augmented --no-output > "$RB/strips-run.out" 2> "$RB/strips-run.err" \
+   && "$LAC" infsup $ST $SA --max-memory 150M > "$RB/strips-infsup.out" 2> "$RB/strips-infsup.err" \
+   && grep -q '^path = dense' "$RB/strips-infsup.out"; then
+  rb_ok infsup-memory-dense-fits
+else
+  rb_fail infsup-memory-dense-fits "$(tail -1 "$RB/strips-run.err") $(tail -1 "$RB/strips-infsup.err")"
+fi
+rbad infsup-memory-sparse "strips.geo|an estimated 7.5e+03 nodes|0.186 GB|lac infsup's Cholesky factor of the H1 Gram matrix and LU factor of the saddle-point matrix (its sparse path)|0.15 GB (--max-memory)" \
+  infsup $ST $SA --max-memory 150M --sparse
+# At 125M the run's Cholesky factor does not fit, and the strategy auto
+# takes petsc (0.119 GB; with PETSc); lac infsup factors all the same,
+# and its dense path (0.137 GB) is refused (it was estimated as the
+# iterative solve of a run: accepted, then killed on a large mesh).
+rbad infsup-memory-not-iterative "strips.geo|an estimated 7.5e+03 nodes|0.137 GB|lac infsup's Cholesky factor of the H1 Gram matrix (its dense path)|0.125 GB (--max-memory)" \
+  infsup $ST $SA --max-memory 125M
+if ! grep -qs LAC_HAVE_PETSC "$B"/config-petsc-*.mk; then
+  echo "     (lac without PETSc: the run at 125M is refused too, not checked)"
+elif env ASAN_OPTIONS="${ASAN_OPTIONS:-}${LAC_MPI_ASAN:-}" "$LAC" run $ST $SA --max-memory 125M --no-output \
+       > "$RB/strips-petsc.out" 2> "$RB/strips-petsc.err" \
+     && grep -q '^solver_iterations' "$RB/strips-petsc.out"; then
+  rb_ok infsup-memory-run-petsc
+else
+  rb_fail infsup-memory-run-petsc "the run at 125M: $(tail -1 "$RB/strips-petsc.err")"
+fi
+# A run is estimated with its strategy's factor in large deformation too
+# (saddle: an LU factor, twice a Cholesky factor's fill; petsc: none).
+rbad memory-large-saddle "strips.geo|0.152 GB of memory with a sparse LU factor" \
+  run $ST $SA $KB --set scene.large_deformation=yes --strategy saddle --max-memory 100M
+# (petsc starts MPI: its unwinding under make test-asan, as in cases-petsc.sh)
+env ASAN_OPTIONS="${ASAN_OPTIONS:-}${LAC_MPI_ASAN:-}" "$LAC" run $ST $SA $KB \
+  --set scene.large_deformation=yes --strategy petsc --max-memory 100M \
+  > "$RB/memory-large-petsc.out" 2> "$RB/memory-large-petsc.err"
+rc=$?
+if [ $rc -eq 1 ] && [ "$(wc -l < "$RB/memory-large-petsc.err")" -eq 1 ] \
+   && grep -q "strips.geo.*0.119 GB of memory with an iterative solve" "$RB/memory-large-petsc.err"; then
+  rb_ok bad-memory-large-petsc
+else
+  rb_fail bad-memory-large-petsc "exit $rc: $(head -3 "$RB/memory-large-petsc.err")"
+fi
+# 1099 multipliers, more than the dense path takes by default: the mesh
+# stage passes (dense path 0.143 GB), then, the multipliers known, the
+# sparse path (0.2 GB) is refused, and the message says that --dense
+# (0.182 GB with its k x k matrices) fits.
+rbad infsup-memory-multipliers "strips.scene|8802 nodes and 1099 multipliers (more than 1000: the sparse path; --dense fits)|0.2 GB|its sparse path|0.19 GB (--max-memory)" \
+  infsup $ST --set "mesh.numbers=nx=2200, ny=1" --quiet --max-memory 190M
+
 # A transfinite count gmsh would make 2 (3e9 nodes per curve: a mesh of 4
 # nodes, exit status 0): refused with its line.
 rbad transfinite-huge "transfinite-huge.geo|line 16|Transfinite Curve {...} = 3e9|above the largest allowed value 2147483647" \
   run tests/bad/box.scene $KB --set mesh.file=transfinite-huge.geo
+# The same counts computed by the script (nx = 6e9 * 2^level; a mesh of
+# 4 nodes, exit status 0): evaluated and refused with their line.
+rbad transfinite-computed "transfinite-computed.geo|line 22|Transfinite Curve {...} = nx + 1|it computes to 6e+09, beyond 32-bit integers" \
+  run tests/bad/box.scene $KB --set mesh.file=transfinite-computed.geo
 
 # A size factor far below 1 on an unstructured mesh: gmsh's count of
 # segments on a curve overflowed (size = 1e-10 gave fewer cells than size
@@ -208,6 +268,19 @@ if [ $rc -eq 2 ] && grep -q -- "--max-memory '12Q': not a decimal number.*expect
 else
   rb_fail bad-max-memory-usage "exit $rc: $(head -1 "$RB/mm-usage.err")"
 fi
+# A size beyond any address space (it became a limit of a few bytes when
+# cast to the kernel's 64 bits, and gmsh "failed to initialize"): refused
+# as a usage error, for lac run and lac infsup.
+for cmd in run infsup; do
+  "$LAC" $cmd tests/bad/box.scene --quiet --max-memory 99999999999999999999G > /dev/null 2> "$RB/mm-huge.err"
+  rc=$?
+  if [ $rc -eq 2 ] && [ "$(wc -l < "$RB/mm-huge.err")" -eq 1 ] \
+     && grep -q -- "--max-memory '99999999999999999999G': 1e+29 bytes, above the largest allowed size 1e+18 bytes" "$RB/mm-huge.err"; then
+    rb_ok "bad-max-memory-huge-$cmd"
+  else
+    rb_fail "bad-max-memory-huge-$cmd" "exit $rc: $(head -1 "$RB/mm-huge.err")"
+  fi
+done
 
 # ---- numbers: finite and in range ----------------------------------------
 rbad E-huge "E-huge.scene:12:|E = '1e308'|magnitude at most 1e+30" \

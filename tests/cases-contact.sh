@@ -96,6 +96,19 @@ contact_bad master-and-obstacle "[contact interface]|exactly one of master" \
   $T2 --set contact.interface.obstacle=graph
 contact_bad same-groups "master = 'upper_bottom'|must differ" \
   $T2 --set contact.interface.master=upper_bottom
+# An interference of 1e8 on the shrink fit of chapter 08 (rings of 10 to
+# 30 mm, the documented bound is 1e30): the loop solves to rounding but
+# does not stop, its gaps carrying the rounding of displacements of 1e8;
+# it converges (a later stopping test) or names the interference, never
+# "raise the iteration limit" alone.
+SF=chapters/08-experiments/shrink-fit.scene
+if "$LAC" run $SF --set contact.fit.interference=1e8 --quiet --no-output \
+     > "$C/sf-huge.out" 2> "$C/sf-huge.err"; then
+  contact_ok interference-huge
+else
+  contact_bad interference-huge "shrink-fit.scene|[contact fit] interference = 1e+08 is|times the size of its macro-elements|the stopping test" \
+    $SF --set contact.fit.interference=1e8
+fi
 
 # ---- comparison methods [LAC §4.2, §5.1] --------------------------------
 # Node-to-segment collocation fails the patch test with non-matching

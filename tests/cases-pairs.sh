@@ -180,6 +180,64 @@ else
   pairs_fail pairs-outputs "lac run failed: $(tail -1 "$PC/out.err")"
 fi
 
+# ---- read back: every digit of the summary, names a reader keeps ---------
+# With loads that are no round numbers, the clamped slab A and wall W of
+# blocks.scene balance the pairs they master with reaction.NAME to
+# rounding (1e-13 of the 1250 N scale) from the printed text alone: every
+# real of the summary has 17 significant digits.
+P4="--set load.D_top.pressure=25.1234567891 --set load.D_right.pressure=20.9876543211"
+P4="$P4 --set load.C_top.pressure=10.3141592653 --set load.C_right.pressure=24.2718281828"
+# shellcheck disable=SC2086
+if "$LAC" run "$PD/blocks.scene" $P4 --set output.reactions=yes --quiet --no-output \
+     > "$PC/digits.out" 2> "$PC/digits.err"; then
+  res=$(awk -F' = ' '{ n = split($2, c, " "); x[$1] = c[1]; y[$1] = c[2] }
+    END { a[1] = x["reaction.slab"] - x["contact_force.B_on_A"] - x["contact_force.C_on_A"]
+          a[2] = y["reaction.slab"] - y["contact_force.B_on_A"] - y["contact_force.C_on_A"]
+          a[3] = x["reaction.wall"] - x["contact_force.B_on_W"] - x["contact_force.D_on_W"]
+          a[4] = y["reaction.wall"] - y["contact_force.B_on_W"] - y["contact_force.D_on_W"]
+          m = ("reaction.slab" in x && "reaction.wall" in x && y["reaction.slab"] > 1000) ? 0 : 1
+          for (i = 1; i <= 4; i++) { v = a[i] < 0 ? -a[i] : a[i]; if (v > m) m = v }
+          printf "%.3e", m / 1250 }' "$PC/digits.out")
+  if awk -v r="$res" 'BEGIN { exit !(r != "" && r <= 1e-13) }'; then
+    pairs_ok pairs-summary-digits
+  else
+    pairs_fail pairs-summary-digits "largest imbalance of A and W / 1250 N = $res from the summary (want <= 1e-13): $(grep -E '^reaction' "$PC/digits.out" | tr '\n' ' ')"
+  fi
+else
+  pairs_fail pairs-summary-digits "lac run failed: $(tail -1 "$PC/digits.err")"
+fi
+# Names of the alphabet ('.', '-', '_') read back from contact.csv by a
+# CSV reader (Python's csv module) and from the summary's "key = value".
+mkdir -p "$PC/names"
+cp "$PD/stacked2d.geo" "$PC/names/"
+sed -e 's/^\[contact lower\]/[contact lo.wer-1]/' -e 's/^\[contact upper\]/[contact Up_2]/' \
+  "$PD/stacked2d.scene" > "$PC/names/names.scene"
+if ! command -v python3 > /dev/null 2>&1; then
+  echo "     (python3 not found: contact.csv not read back)"
+elif "$LAC" run "$PC/names/names.scene" --out "$PC/names/out" --quiet \
+     > "$PC/names/sum" 2> "$PC/names/err"; then
+  if msg=$(python3 - "$PC/names/out/contact.csv" "$PC/names/sum" <<'PYEOF' 2>&1
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+head = rows[0]
+assert head[-1] == "pair", head
+bad = [r for r in rows[1:] if len(r) != len(head)]
+assert not bad, "rows of %d fields: %s" % (len(head), bad[:1])
+names = set(r[-1] for r in rows[1:])
+assert names == {"lo.wer-1", "Up_2"}, names
+keys = [l.rstrip("\n").split(" = ") for l in open(sys.argv[2])]
+assert all(len(k) == 2 for k in keys), [k for k in keys if len(k) != 2]
+assert "contact_force.lo.wer-1" in dict(keys), "no contact_force.lo.wer-1"
+PYEOF
+      ); then
+    pairs_ok pairs-names-read-back
+  else
+    pairs_fail pairs-names-read-back "$msg"
+  fi
+else
+  pairs_fail pairs-names-read-back "lac run failed: $(tail -1 "$PC/names/err")"
+fi
+
 # the large-deformation loop over two pairs: Newton converges, each
 # interface carries the load (its normal force and its force vector)
 sed '/^\[exact\]/,$d' "$PD/stacked2d.scene" > "$PC/ld.scene"
@@ -300,5 +358,38 @@ pairs_bad second-pair "[contact upper]|no slave facet overlaps" \
   "$S2" --set contact.upper.master=lower_bottom
 pairs_bad pulled-off "(translation along y)|held by contact alone|active-set iteration" \
   "$S2" --set load.top.pressure=-25
+# a name outside the alphabet of names: refused at its header, not
+# written into contact.csv (a comma, a quote: one more field) or the
+# summary (a blank, an '=': another key)
+names_bad () {
+  sed "s/^\[contact lower\]/[contact $2]/" "$S2" > "$PC/names/bad.scene"
+  pairs_bad "name-$1" "bad.scene:46: [contact $2]: the name|letters, digits, '_', '-' and '.'" \
+    "$PC/names/bad.scene"
+}
+names_bad comma 'lo,wer'
+names_bad quote '"lo"wer'
+names_bad blank 'lo wer'
+names_bad equals 'lo=wer'
+# One pair for both interfaces of the stacked blocks (the slave groups
+# joined, and the master groups): the middle block is slave and master of
+# one pair and, 5 mm thin, was paired through itself (the loop blamed a
+# load); refused, naming the pair and the body.
+cp "$PD/stacked2d.geo" "$PC/names/union.geo"
+printf 'Physical Curve("slaves") = {5, 9};\nPhysical Curve("masters") = {3, 7};\n' >> "$PC/names/union.geo"
+sed -e '/^\[contact lower\]/,$d' -e 's/stacked2d.geo/union.geo/' "$S2" > "$PC/names/union.scene"
+printf '[contact both]\nslave = slaves\nmaster = masters\n' >> "$PC/names/union.scene"
+pairs_bad own-body "union.scene:|[contact both] master = 'masters'|on one body 'middle'|its own [contact] section" \
+  "$PC/names/union.scene" --set mesh.numbers=t=5
+# A middle block 1e-6 mm thin: K singular to rounding; the message names
+# the layer (it said only: check the Dirichlet conditions and the inf-sup
+# condition).
+pairs_bad thin-layer "stacked2d.scene:|body 'middle' has cells 1.7e+07 times wider than thick|make the layer thicker|what the solver saw" \
+  "$S2" --set mesh.numbers=t=1e-6
+# Large deformation with an interference of 80 mm on each pair of 50 mm
+# blocks: the surfaces move apart by it, beyond the pairing's reach; the
+# message names the interference (it blamed a load that pulls a body off).
+pairs_bad interference-separates "[contact lower] interference = 80|no facet pair left|t delta = 80" \
+  "$ROT" --set scene.large_deformation=yes --set contact.lower.interference=80 \
+  --set contact.upper.interference=80
 pairs_bad hex20-pyramids "[contact corner] slave = 'block_inner'|pyramids|hex_cut = six" \
   "$PD/corner3d.scene" --set element=hex20 --set contact.corner.hex_cut=pyramids

@@ -239,6 +239,8 @@ bad set-wrong-type run "--set|[material steel] E = 'abc'|expected a number" run 
 bad set-no-section run "--set|no section [material copper]" run $D/box.scene $K --set material.copper.E=1
 bad set-syntax run "--set|KEY=VALUE" run $D/box.scene $K --set level
 bad set-enum run "--set|solver = 'mumps'|cholmod" run $D/box.scene $K --set solver=mumps
+bad set-line-break run "--set|'scene.title=a...'|a line break" run $D/box.scene $K --set "scene.title=a
+title = b"
 bad solver usage "--solver|mumps" run $D/box.scene $K --solver mumps
 bad option usage "unknown option|--bogus" run $D/box.scene $K --bogus
 bad no-scene usage "no scene" run --quiet

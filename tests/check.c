@@ -104,7 +104,7 @@ lac_run *
 check_run_scene (const char *scene, int nset, const char **set,
                  lac_scene **sc)
 {
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   lac_run *r = NULL;
   *sc = NULL;
   int st = lac_scene_read (scene, nset, set, sc);

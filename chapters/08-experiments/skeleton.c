@@ -36,7 +36,7 @@ main (void)
   check_status (lac_scene_read ("chapters/08-experiments/taylor2d.scene", 1,
                                 set, &sc), "lac_scene_read");
   /* The whole pipeline of `lac run`, without output files. */
-  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0, 0 };
   lac_run *r = lac_run_alloc (sc, &o);
   if (!r)
     check_status (LAC_ENOMEM, "lac_run_alloc");

@@ -44,7 +44,7 @@ run_scene (const char *dir, const char *name, int nset, const char **set,
            lac_scene **sc)
 {
   char path[512];
-  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, LAC_STRATEGY_AUTO, 0, NULL, 0, 0 };
   lac_run *r = NULL;
   snprintf (path, sizeof path, "%s/%s", dir, name);
   check_status (lac_scene_read (path, nset, set, sc), path);

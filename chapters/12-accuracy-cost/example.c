@@ -64,7 +64,7 @@ run (const char *dir, const char *element, int level, int strategy)
   char path[512], s[2][64];
   const char *set[2] = { s[0], s[1] };
   lac_scene *sc = NULL;
-  lac_run_opts o = { NULL, 0, 1, strategy, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, strategy, 0, NULL, 0, 0 };
   lac_run *r = NULL;
   snprintf (path, sizeof path, "%s/manufactured2d.scene", dir);
   snprintf (s[0], sizeof s[0], "element=%s", element);

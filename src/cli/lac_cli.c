@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "base/lac_status.h"
+#include "io/lac_mesh_opts.h"
 
 void
 lac_cli_print_error (const char *msg)
@@ -75,8 +76,8 @@ lac_cli_option_value (int argc, char **argv, int *k, const char *name,
 }
 
 int
-lac_cli_bytes (const char *s, double min, double *bytes, char *why,
-               size_t size)
+lac_cli_bytes (const char *s, double min, double max, double *bytes,
+               char *why, size_t size)
 {
   static const char suffix[] = "kMGT";
   static const lac_number_spec positive = { 0, HUGE_VAL, 1, 0, 0 };
@@ -101,7 +102,25 @@ lac_cli_bytes (const char *s, double min, double *bytes, char *why,
   if (*bytes < min)
     return snprintf (why, size, "%.3g bytes, below the smallest allowed "
                      "size %.3g bytes", *bytes, min), 0;
+  if (*bytes > max)
+    return snprintf (why, size, "%.3g bytes, above the largest allowed "
+                     "size %.3g bytes", *bytes, max), 0;
   return 1;
+}
+
+int
+lac_cli_max_memory (const char *cmd, const char *s, double *bytes)
+{
+  char why[200], what[500];
+  if (lac_cli_bytes (s, LAC_MESH_RUN_BYTES_MIN, LAC_MESH_MEMORY_MAX, bytes,
+                     why, sizeof why))
+    return 1;
+  snprintf (what, sizeof what, "--max-memory '%.64s': %s; expected a size "
+            "such as 8G, 500M or 2e9, at least 100M (what a run of lac "
+            "needs before any mesh) and at most 1000000T (more than any "
+            "address space)", s, why);
+  lac_cli_usage_error (cmd, what, NULL);
+  return 0;
 }
 
 int

@@ -37,10 +37,17 @@ const char *lac_cli_option_value (int argc, char **argv, int *k,
                                   const char *name, int *missing);
 
 /* A size in bytes: a number with an optional suffix k, M, G or T (powers
- * of 1000, as the messages print GB), at least min bytes.  1 with *bytes,
- * or 0 with the reason in why (base/lac_number.h: which limit it broke). */
-int lac_cli_bytes (const char *s, double min, double *bytes, char *why,
-                   size_t size);
+ * of 1000, as the messages print GB), at least min and at most max bytes.
+ * 1 with *bytes, or 0 with the reason in why (base/lac_number.h: which
+ * limit it broke). */
+int lac_cli_bytes (const char *s, double min, double max, double *bytes,
+                   char *why, size_t size);
+
+/* The value of --max-memory (lac run, lac infsup): a size of
+ * lac_cli_bytes from LAC_MESH_RUN_BYTES_MIN to LAC_MESH_MEMORY_MAX
+ * (io/lac_mesh_opts.h).  1 with *bytes, or 0 after the usage error of
+ * command cmd (NULL: lac run). */
+int lac_cli_max_memory (const char *cmd, const char *s, double *bytes);
 
 /* A number option (base/lac_number.h, within spec).  1 with *x, or 0
  * after the usage line "lac: CMD: OPTION 'VALUE': REASON (try ...)". */

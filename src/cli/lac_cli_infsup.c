@@ -8,7 +8,8 @@
  *    Dirichlet dofs of the run eliminated; C = the run's LAC matrix;
  *    M = diag(h_i |T^m_i cap Gamma_C|) (lac_infsup.h);
  * 4. beta_h = sqrt(lambda_min(C^T A^-1 C, M)), printed as "name = value"
- *    lines (and, with --vector, the least stable multiplier pattern).
+ *    lines, every real with 17 significant digits (LAC_SUMMARY_REAL), and,
+ *    with --vector, the least stable multiplier pattern.
  * This file belongs to the command line (see lac_cli_infsup.h): it prints.
  */
 #include "cli/lac_cli.h"
@@ -20,7 +21,11 @@
 #include <string.h>
 #include "contact/lac_infsup.h"
 #include "base/lac_mem.h"
+#include "io/lac_mesh_child.h"
+#include "io/lac_mesh_opts.h"
 #include "run/lac_run.h"
+#include "run/lac_run_mesh.h"
+#include "run/lac_summary.h"
 #include "io/lac_scene.h"
 #include "base/lac_status.h"
 
@@ -50,6 +55,12 @@ const char lac_cli_infsup_help[] =
   "                    GSL (default for k <= 1000 multipliers)\n"
   "  --sparse          shift-invert Lanczos, one saddle-point solve per step\n"
   "                    (default above 1000 multipliers)\n"
+  "  --max-memory SIZE memory the run may need (8G, 500M, 2e9 bytes; default\n"
+  "                    80 % of the machine's): the mesh of a .geo is refused\n"
+  "                    before it is made, a mesh read once the multipliers\n"
+  "                    are known, if the estimate of what lac infsup factors\n"
+  "                    (the Cholesky factor of A, and on the sparse path the\n"
+  "                    LU factor of the saddle-point matrix) exceeds it\n"
   "  --vector          also print the eigenvector: one line\n"
   "                    'mu i macro h_i area_i mu_i' per multiplier\n"
   "  --quiet           no progress lines on stderr\n"
@@ -72,6 +83,7 @@ typedef struct args
   size_t nset;
   lac_infsup_path path;
   lac_infsup_norm norm;
+  double max_memory;           /* --max-memory; 0: the default      */
   int vector, quiet, help;
 } args;
 
@@ -85,6 +97,12 @@ parse (int argc, char **argv, args *a)
       int missing = 0;
       if ((v = lac_cli_option_value (argc, argv, &k, "--set", &missing)))
         a->set[a->nset++] = v;
+      else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
+                                          &missing)))
+        {
+          if (!lac_cli_max_memory ("infsup", v, &a->max_memory))
+            return LAC_CLI_USAGE;
+        }
       else if ((v = lac_cli_option_value (argc, argv, &k, "--norm", &missing)))
         {
           if (strcmp (v, "h1") && strcmp (v, "energy"))
@@ -119,19 +137,59 @@ parse (int argc, char **argv, args *a)
   return 0;
 }
 
-/* Stages mesh .. assemble, with one progress line each. */
+/* The memory the estimate needs (io/lac_mesh_opts.h): the factor of the
+ * norm matrix, and on the sparse path (k multipliers above
+ * LAC_INFSUP_DENSE_KMAX, or --sparse) that of the saddle-point matrix. */
 static int
-run_to_assemble (lac_run *r, int quiet)
+infsup_solve (const args *a, size_t k)
+{
+  int sparse = a->path == LAC_INFSUP_SPARSE
+               || (a->path == LAC_INFSUP_AUTO && k > LAC_INFSUP_DENSE_KMAX);
+  if (a->norm == LAC_INFSUP_NORM_ENERGY)
+    return sparse ? LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE
+                  : LAC_MESH_SOLVE_INFSUP_ENERGY;
+  return sparse ? LAC_MESH_SOLVE_INFSUP_SPARSE : LAC_MESH_SOLVE_INFSUP;
+}
+
+/* Once the multipliers are known (after the assembly): does the
+ * estimate on the mesh made fit in --max-memory?  (The mesh stage checked
+ * a .geo with the dense path, the smaller, unless --sparse.)  The dense
+ * path also holds S, its copy, M and the eigenvectors: 4 k x k. */
+static int
+check_memory (const lac_run *r, const args *a)
+{
+  size_t k = r->setup.data.all ? r->setup.data.all->k : 0;
+  int solve = infsup_solve (a, k);
+  double dense = 32.0 * (double) k * (double) k, limit = a->max_memory;
+  char what[96];
+  int sparse = solve == LAC_MESH_SOLVE_INFSUP_SPARSE
+               || solve == LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE;
+  int fits = a->path == LAC_INFSUP_AUTO && sparse
+             && lac_run_mesh_bytes (r->scene, r->mesh, infsup_solve (a, 0),
+                                    dense)
+                <= (limit > 0 ? limit : lac_mesh_default_memory ());
+  snprintf (what, sizeof what, "and %zu multipliers%s", k, fits
+            ? " (more than 1000: the sparse path; --dense fits)" : "");
+  return lac_run_mesh_check_solve (r->scene, r->mesh, solve,
+                                   sparse ? 0 : dense, what, limit);
+}
+
+/* Stages mesh .. assemble, with one progress line each; then the memory
+ * of the estimate checked on the mesh made. */
+static int
+run_to_assemble (lac_run *r, const args *a)
 {
   int status = LAC_CONTINUE;
   while (r->stage < LAC_STAGE_SOLVE && status == LAC_CONTINUE)
     {
       int stage = r->stage;
       status = lac_run_iterate (r);
-      if (!quiet && status == LAC_CONTINUE)
+      if (!a->quiet && status == LAC_CONTINUE)
         fprintf (stderr, "lac: [%d/%d] %-9s %s (%.2f s)\n", stage + 1,
                  LAC_STAGE_SOLVE + 1, lac_run_stage_name (stage),
                  r->progress, r->time[stage]);
+      if (status == LAC_CONTINUE && stage == LAC_STAGE_ASSEMBLE)
+        status = check_memory (r, a) ? LAC_EINVAL : LAC_CONTINUE;
     }
   return status == LAC_CONTINUE ? LAC_SUCCESS : status;
 }
@@ -178,27 +236,28 @@ estimate (lac_run *r, const args *a)
       if (c->crit[c->macro[i]] < cmin)                /* [LAC Def. 1] */
         cmin = c->crit[c->macro[i]], mcrit = c->macro[i];
     }
-  printf ("beta_h = %.10e\n", res->beta);
-  printf ("lambda_min = %.10e\n", res->lambda_min);
+  printf ("beta_h = " LAC_SUMMARY_REAL "\n", res->beta);
+  printf ("lambda_min = " LAC_SUMMARY_REAL "\n", res->lambda_min);
   if (isfinite (res->lambda_2))          /* none with one multiplier */
-    printf ("lambda_2 = %.10e\n", res->lambda_2);
+    printf ("lambda_2 = " LAC_SUMMARY_REAL "\n", res->lambda_2);
   printf ("multipliers = %zu\n", c->k);
   printf ("ndof = %zu\n", r->sys.ndof);
   printf ("fixed_dofs = %zu\n", nfixed);
-  printf ("h_max = %.6e\n", hmax);
-  printf ("h_min = %.6e\n", hmin);
-  printf ("criterion_min = %.6e (macro-element %zu)\n", cmin, mcrit);
+  printf ("h_max = " LAC_SUMMARY_REAL "\n", hmax);
+  printf ("h_min = " LAC_SUMMARY_REAL "\n", hmin);
+  printf ("criterion_min = " LAC_SUMMARY_REAL " (macro-element %zu)\n", cmin,
+          mcrit);
   printf ("norm = %s\n", energy ? "energy (A = K)" : "h1 (A = grad-grad + "
           "mass / ell^2 per component, ell = mesh diameter)");
   printf ("multiplier_norm = diag(h_i |T^m_i cap Gamma_C|)\n");
   printf ("path = %s\n", lac_infsup_path_name (res->path));
   printf ("iterations = %zu\n", res->iterations);
-  printf ("residual = %.3e\n", res->residual);
+  printf ("residual = " LAC_SUMMARY_REAL "\n", res->residual);
   printf ("least_stable = %zu (macro-element %zu)\n", res->imax,
           c->macro[res->imax]);
   for (size_t i = 0; i < c->k && a->vector; i++)
-    printf ("mu %zu %zu %.6e %.6e %+.6e\n", i, c->macro[i], h[i], c->area[i],
-            res->mu[i]);
+    printf ("mu %zu %zu " LAC_SUMMARY_REAL " " LAC_SUMMARY_REAL " %+.16e\n", i,
+            c->macro[i], h[i], c->area[i], res->mu[i]);
 done:
   lac_infsup_free (res);
   lac_csc_free (M);
@@ -214,7 +273,7 @@ lac_cli_infsup (int argc, char **argv)
   args a;
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL, 1 };
+  lac_run_opts ro = { NULL, 0, 1, 0, 0, NULL, 1, 0 };
   int ret, status;
   memset (&a, 0, sizeof a);
   if (!(a.set = lac_malloc ((size_t) (argc > 0 ? argc : 1) * sizeof *a.set)))
@@ -229,6 +288,10 @@ lac_cli_infsup (int argc, char **argv)
       lac_free (a.set);
       return ret;
     }
+  /* The mesh stage checks a .geo's mesh with the smaller dense path
+   * unless --sparse (the multipliers are not known yet). */
+  ro.max_memory = a.max_memory;
+  ro.infsup_solve = infsup_solve (&a, 0);
   /* 1. The scene: it must have multipliers. */
   ret = LAC_CLI_FAILURE;
   if ((status = lac_scene_read (a.scene, a.nset, a.set, &sc)))
@@ -245,7 +308,7 @@ lac_cli_infsup (int argc, char **argv)
   else if (!(r = lac_run_alloc (sc, &ro)))
     lac_cli_print_failure (sc->path, LAC_ENOMEM);
   /* 2.-4. The stages up to assemble, then the estimate. */
-  else if ((status = run_to_assemble (r, a.quiet))
+  else if ((status = run_to_assemble (r, &a))
            || (status = estimate (r, &a)))
     lac_cli_print_failure (sc->path, status);
   else

@@ -257,16 +257,8 @@ parse_run_args (int argc, char **argv, cmdline *c)
       else if ((v = lac_cli_option_value (argc, argv, &k, "--max-memory",
                                           &missing)))
         {
-          char why[200], what[400];
-          if (!lac_cli_bytes (v, LAC_MESH_RUN_BYTES_MIN, &c->max_memory,
-                              why, sizeof why))
-            {
-              snprintf (what, sizeof what, "--max-memory '%.64s': %s; "
-                        "expected a size such as 8G, 500M or 2e9, at least "
-                        "100M (what a run of lac needs before any mesh)", v,
-                        why);
-              return lac_cli_usage_error (NULL, what, NULL);
-            }
+          if (!lac_cli_max_memory (NULL, v, &c->max_memory))
+            return LAC_CLI_USAGE;
         }
       else if (missing)
         return lac_cli_usage_error (NULL, "missing value after", argv[k]);
@@ -442,7 +434,7 @@ cmd_run (const cmdline *c)
   lac_scene *sc = NULL;
   lac_run *r = NULL;
   lac_run_opts opts = { c->out, c->timings, c->no_output, c->strategy,
-                        c->max_memory, &stop_signal, 0 };
+                        c->max_memory, &stop_signal, 0, 0 };
   int status;
 
   /* 1. The scene, with the overrides. */

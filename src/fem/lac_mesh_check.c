@@ -410,6 +410,24 @@ check_degenerate (const lac_mesh *m)
   return LAC_SUCCESS;
 }
 
+/* lac_mesh_flattest: see lac_mesh_check.h. */
+double
+lac_mesh_flattest (const lac_mesh *m, size_t *cell, double *thick,
+                   double *diam)
+{
+  double best = 1;
+  *cell = 0, *thick = *diam = 0;
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      double measure, d, t;
+      cell_size (m, c, &measure, &d);
+      t = d > 0 ? measure / pow (d, m->dim - 1) : 0;
+      if (d > 0 && t / d < best)
+        best = t / d, *cell = c, *thick = t, *diam = d;
+    }
+  return best;
+}
+
 /* lac_mesh_check_topology: see lac_mesh_check.h. */
 int
 lac_mesh_check_topology (const lac_mesh *m)

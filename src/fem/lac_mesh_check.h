@@ -47,4 +47,13 @@ int lac_mesh_validate (const lac_mesh *m);
  * m must have passed lac_mesh_validate. */
 int lac_mesh_check_topology (const lac_mesh *m);
 
+/* The flattest cell of m (validated): the one of smallest thickness /
+ * diameter, its thickness the measure over diameter^(d-1) (the height of
+ * a sliver), from its straight-sided faces as above.  Returns that ratio
+ * (1 for a mesh without cells), the cell in *cell, its thickness and
+ * diameter in *thick and *diam.  A ratio a makes the stiffness of the
+ * cell's body ill-conditioned like 1/a^2. */
+double lac_mesh_flattest (const lac_mesh *m, size_t *cell, double *thick,
+                          double *diam);
+
 #endif /* LAC_MESH_CHECK_H */

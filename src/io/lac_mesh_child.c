@@ -77,13 +77,16 @@ address_space (void)
 }
 #endif
 
+/* The soft limit of resource: value, or the hard limit if lower (a value
+ * beyond 2^63, which rlim_t would not hold, is no limit of lac's). */
 static void
 set_limit (int resource, double value)
 {
   struct rlimit rl;
   if (getrlimit (resource, &rl) != 0)
     return;
-  if (value < (double) rl.rlim_max || rl.rlim_max == RLIM_INFINITY)
+  if (value < 0x1p63
+      && (value < (double) rl.rlim_max || rl.rlim_max == RLIM_INFINITY))
     rl.rlim_cur = (rlim_t) value;
   else
     rl.rlim_cur = rl.rlim_max;

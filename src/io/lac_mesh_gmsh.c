@@ -117,7 +117,7 @@ lac_mesh_read (const char *path, const lac_mesh_opts *opts, lac_mesh **out)
   if (kind == LAC_GMSH_MSH
       && (status = lac_msh_check (path, o.max_memory, &counts)))
     return status;
-  if (kind == LAC_GMSH_GEO && (status = lac_geo_check (path, o.max_memory)))
+  if (kind == LAC_GMSH_GEO && (status = lac_geo_check (path, &o)))
     return status;
   arg = (session_arg) { path, kind, &o };
   status = lac_mesh_child_run (kind == LAC_GMSH_GEO ? "mesh" : "read", path,

@@ -41,7 +41,12 @@
  *         + LU (umfpack; saddle): twice that,
  *         + dense LU: 8 n^2,
  *         + iterative (petsc): 36 r n + 200 n (PETSc's copy of K, the
- *              multigrid hierarchy, K + C W C^T, vectors).
+ *              multigrid hierarchy, K + C W C^T, vectors),
+ *         + lac infsup (no solve: the Cholesky factor of its norm matrix
+ *              A, f C with C the Cholesky term above, f = 1/4 for the H1
+ *              Gram matrix in 3D, else 1): f C + 512 n (the dense path,
+ *              A^-1 C by blocks), 3.5 f C (the sparse path, also the LU
+ *              factor of the saddle-point matrix).
  * The constants: lac run's peaks on tri6 and hex meshes (Cholesky, 3D:
  * 1.2 kB x nodes^(4/3) per node^(4/3) of hex8), and the 5.1 GB summed
  * over 2 processes of the 1M-dof 3D Taylor patch test with petsc.
@@ -56,6 +61,7 @@
 
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "contact/lac_infsup.h"
 #include "fem/lac_spaces.h"
 #include "io/lac_mesh_gmsh_cells.h"
 
@@ -278,6 +284,25 @@ row_nonzeros (int dim, cells k)
   return r[dim == 3][k.quad != 0][k.order < 2 ? 0 : k.serendipity ? 2 : 1];
 }
 
+/* What lac infsup holds besides K, chol being K's Cholesky term: the
+ * Cholesky factor of its norm matrix A -- K's with --norm energy; the H1
+ * Gram matrix has one block per component, whose factor measured 0.21
+ * of K's estimate in 3D (hex8, 9e4 and 2.1e5 dofs) and 0.9 in 2D
+ * (quad8, 2.8e5 dofs) -- and, on the dense path, two blocks of
+ * LAC_INFSUP_BLOCK columns for A^-1 C; on the sparse path the LU factor
+ * of the saddle-point matrix [A C; C^T 0], 2.5 times A's (measured 0.5 to
+ * 0.6 of K's estimate in 3D with the H1 norm). */
+static double
+infsup_bytes (int solve, int dim, double n, double chol)
+{
+  int energy = solve == LAC_MESH_SOLVE_INFSUP_ENERGY
+               || solve == LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE;
+  int sparse = solve == LAC_MESH_SOLVE_INFSUP_SPARSE
+               || solve == LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE;
+  double a = (energy || dim == 2 ? 1 : 0.25) * chol;
+  return sparse ? 3.5 * a : a + 2 * 8 * LAC_INFSUP_BLOCK * n;
+}
+
 /* lac_gmsh_run_bytes: see lac_mesh_gmsh_estimate.h. */
 double
 lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o)
@@ -296,6 +321,12 @@ lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o)
       break;
     case LAC_MESH_SOLVE_ITERATIVE:
       factor = 36 * r * n + 200 * n;
+      break;
+    case LAC_MESH_SOLVE_INFSUP:
+    case LAC_MESH_SOLVE_INFSUP_SPARSE:
+    case LAC_MESH_SOLVE_INFSUP_ENERGY:
+    case LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE:
+      factor = infsup_bytes (o->solve, dim, n, factor);
       break;
     default:
       break;
@@ -427,9 +458,22 @@ estimate_steps (lac_gmsh_reader *R, int dim, double *nodes, double *bytes,
   return status;
 }
 
-static const char *const solve_names[] = {
+static const char *const solve_names[LAC_MESH_NSOLVES] = {
   "a sparse Cholesky factor", "a sparse LU factor", "a dense LU factor",
-  "an iterative solve" };
+  "an iterative solve",
+  "lac infsup's Cholesky factor of the H1 Gram matrix (its dense path)",
+  "lac infsup's Cholesky factor of the H1 Gram matrix and LU factor of "
+  "the saddle-point matrix (its sparse path)",
+  "lac infsup's Cholesky factor of K (--norm energy, its dense path)",
+  "lac infsup's Cholesky factor of K and LU factor of the saddle-point "
+  "matrix (--norm energy, its sparse path)" };
+
+/* lac_gmsh_solve_name: see lac_mesh_gmsh_estimate.h. */
+const char *
+lac_gmsh_solve_name (int solve)
+{
+  return solve_names[solve >= 0 && solve < LAC_MESH_NSOLVES ? solve : 0];
+}
 
 /* The estimate and its check against the limit, for R->opts->solve. */
 static int
@@ -441,8 +485,6 @@ estimate_check (lac_gmsh_reader *R, int dim)
   int status = o->size > 0 && o->size < 1
                ? estimate_steps (R, dim, &nodes, &bytes, &early)
                : lac_gmsh_estimate (R, dim, &nodes, &bytes);
-  int s = o->solve >= 0 && o->solve <= LAC_MESH_SOLVE_ITERATIVE ? o->solve
-          : 0;
   if (status || o->max_memory <= 0 || bytes <= o->max_memory)
     return status;
   if (early > 0)
@@ -452,7 +494,8 @@ estimate_check (lac_gmsh_reader *R, int dim)
                    "%.2g nodes%s, which need about %.3g GB of memory with "
                    "%s, more than the limit of %.3g GB (--max-memory)",
                    R->path, o->level, o->size > 0 ? o->size : 1, nodes, at,
-                   bytes / 1e9, solve_names[s], o->max_memory / 1e9);
+                   bytes / 1e9, lac_gmsh_solve_name (o->solve),
+                   o->max_memory / 1e9);
 }
 
 /* lac_gmsh_estimate_check: see lac_mesh_gmsh_estimate.h. */

@@ -13,7 +13,8 @@
  * triangles and tetrahedra; then the memory a run of lac needs for them, by how it
  * will solve (lac_mesh_solve: a Cholesky or LU factor with its fill, a
  * dense matrix, or an iterative solve: the matrix, a multigrid hierarchy
- * and a few vectors) and by the cells (dofs per node, nonzeros per row).
+ * and a few vectors; or, for lac infsup, the factors of its eigenvalue
+ * problem) and by the cells (dofs per node, nonzeros per row).
  * Against the meshes gmsh makes: within 5 % for the structured blocks of
  * the chapters (the ring on block, the 3D Taylor patch test, the
  * spheres), within 1.5 for Delaunay tetrahedra once refined; the memory
@@ -35,6 +36,10 @@ int lac_gmsh_estimate (lac_gmsh_reader *R, int dim, double *nodes,
  * with o->element's cells (or o->recombine, o->order, o->serendipity)
  * solved as o->solve says. */
 double lac_gmsh_run_bytes (double nodes, int dim, const lac_mesh_opts *o);
+
+/* How a solve (lac_mesh_solve) is named in the messages, e.g. "a sparse
+ * Cholesky factor". */
+const char *lac_gmsh_solve_name (int solve);
 
 /* lac_gmsh_estimate, and an error (LAC_EINVAL, naming the file, level,
  * size, the nodes, the memory and how the run solves) when the bytes

@@ -26,15 +26,29 @@
  * smallest --max-memory (below it gmsh cannot even start). */
 #define LAC_MESH_RUN_BYTES_MIN 1e8
 
+/* The largest memory limit (--max-memory): 1e18 bytes, above the address
+ * space of any machine lac runs on (x86-64 maps at most 2^57 bytes) and
+ * within the 64 bits of the kernel's limits (setrlimit): a larger value,
+ * cast to them, became a limit of a few bytes, and gmsh "failed to
+ * initialize". */
+#define LAC_MESH_MEMORY_MAX 1e18
+
 /* How the run will solve, for the memory part of a .geo's size estimate
  * (lac_mesh_gmsh_estimate.h): a sparse Cholesky factor (cholmod, and the
  * strategies schur, augmented, split), a sparse LU (umfpack, saddle),
  * a dense LU, or no factorization (petsc: a sparse matrix, a multigrid
- * hierarchy and a few vectors). */
+ * hierarchy and a few vectors); or what `lac infsup` does instead of a
+ * solve (contact/lac_infsup.h): the Cholesky factor of its norm matrix A
+ * (the H1 Gram matrix, or K with --norm energy) and A^-1 C by blocks,
+ * the dense path; with the sparse path also the LU factor of the
+ * saddle-point matrix [A C; C^T 0]. */
 typedef enum
 {
   LAC_MESH_SOLVE_CHOLESKY, LAC_MESH_SOLVE_LU, LAC_MESH_SOLVE_DENSE,
-  LAC_MESH_SOLVE_ITERATIVE
+  LAC_MESH_SOLVE_ITERATIVE,
+  LAC_MESH_SOLVE_INFSUP, LAC_MESH_SOLVE_INFSUP_SPARSE,
+  LAC_MESH_SOLVE_INFSUP_ENERGY, LAC_MESH_SOLVE_INFSUP_ENERGY_SPARSE,
+  LAC_MESH_NSOLVES
 } lac_mesh_solve;
 
 /* Options for reading or meshing (.geo) through gmsh. */

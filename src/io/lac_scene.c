@@ -53,7 +53,8 @@ set_names (lac_scene *sc, const char *path)
 }
 
 /* The text of a scene (or of a --set) holds no byte a text file does not:
- * NUL, control characters, a carriage return alone, bytes not UTF-8. */
+ * NUL, control characters, a carriage return alone, bytes not UTF-8; a
+ * --set holds no line break either (a scene line cannot). */
 static int
 check_text (const char *path, const char *text, size_t len)
 {
@@ -80,6 +81,10 @@ check_sets (size_t nset, const char *const *set)
       const char *what;
       if (lac_text_check (set[k], strlen (set[k]), &what) < strlen (set[k]))
         return lac_error_set (LAC_EINVAL, "--set", "'%s': %s", set[k], what);
+      if (strpbrk (set[k], "\n\r"))     /* a value of one summary line */
+        return lac_error_set (LAC_EINVAL, "--set", "'%.*s...': a line break:"
+                              " a --set is one line of a scene",
+                              (int) strcspn (set[k], "\n\r"), set[k]);
     }
   return LAC_SUCCESS;
 }

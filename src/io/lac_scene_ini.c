@@ -592,13 +592,49 @@ heads_free (heads *H)
   lac_free (H->index);
 }
 
+/* The first character of a section NAME outside its alphabet, NULL if
+ * none.  The alphabet is ASCII letters, digits, '_', '-' and '.': a name
+ * becomes a key of the summary ("contact_force.NAME = ...") and a field
+ * of contact.csv, where a blank, an '=', a comma or a quote would change
+ * what a reader reads back. */
+static const char *
+name_bad_char (const char *name)
+{
+  for (; *name; name++)
+    if (!((*name >= 'a' && *name <= 'z') || (*name >= 'A' && *name <= 'Z')
+          || (*name >= '0' && *name <= '9') || strchr ("_-.", *name)))
+      return name;
+  return NULL;
+}
+
+/* [TYPE NAME] with a character outside the alphabet of names. */
+static int
+name_error (const lac_scene *sc, const raw_entry *h, const char *name,
+            const char *bad)
+{
+  char what[32];
+  unsigned char c = (unsigned char) *bad;
+  if (c >= 0x80)
+    snprintf (what, sizeof what, "a non-ASCII character");
+  else if (c == ' ')
+    snprintf (what, sizeof what, "a blank");
+  else
+    snprintf (what, sizeof what, "'%c'", c);
+  return lac_scene_where_error (sc->path, h->line, LAC_EINVAL, "[%s]: the "
+                                "name '%s' has %s (character %d): a section "
+                                "name is made of letters, digits, '_', '-' "
+                                "and '.' (it names summary lines and the "
+                                "pair column of contact.csv)", h->sec, name,
+                                what, (int) (bad - name) + 1);
+}
+
 /* Header k of r: a new section of sc. */
 static int
 build_header (lac_scene *sc, const raw *r, heads *H, size_t k)
 {
   const raw_entry *h = &r->h[k];
   char buf[512], list[256];
-  const char *name;
+  const char *name, *bad;
   int kind = lac_scene_split_section (h->sec, buf, sizeof buf, &name);
   size_t first = heads_find (H, r, h->sec);
   if (kind < 0)
@@ -614,6 +650,8 @@ build_header (lac_scene *sc, const raw *r, heads *H, size_t k)
   if (!lac_scene_sections[kind].named && name[0])
     return lac_scene_where_error (sc->path, h->line, LAC_EINVAL, "[%s]: [%s] "
                                   "takes no name", h->sec, buf);
+  if ((bad = name_bad_char (name)))
+    return name_error (sc, h, name, bad);
   if (first != k)
     return lac_scene_where_error (sc->path, h->line, LAC_EINVAL, "[%s]: "
                                   "section given twice (first at line %d)",

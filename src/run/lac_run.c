@@ -15,6 +15,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_scene_query.h"
+#include "run/lac_run_cause.h"
 #include "run/lac_run_mesh.h"
 #include "run/lac_run_output.h"
 #include "linalg/lac_petsc_env.h"
@@ -47,8 +48,8 @@ static int
 stage_mesh (lac_run *r)
 {
   return lac_run_mesh (r->scene, r->model, r->opts.strategy,
-                       r->opts.max_memory, &r->mesh, r->progress,
-                       sizeof r->progress);
+                       r->opts.infsup_solve, r->opts.max_memory, &r->mesh,
+                       r->progress, sizeof r->progress);
 }
 
 static int
@@ -98,27 +99,35 @@ stage_assemble (lac_run *r)
                                      sizeof r->progress);
 }
 
+/* The solve; a failure said with its cause where one is known
+ * (lac_run_cause.h). */
 static int
 stage_solve (lac_run *r)
 {
+  int status;
   if (!large (r))
     {
       lac_strategy_context ctx = auto_context (r);
-      int status = lac_run_solve (r->scene, r->opts.strategy, &ctx,
-                                  &r->setup, &r->sys, &r->sol, r->progress,
-                                  sizeof r->progress);
+      status = lac_run_solve (r->scene, r->opts.strategy, &ctx, &r->setup,
+                              &r->sys, &r->sol, r->progress,
+                              sizeof r->progress);
       if (!status)
         {
           lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
           lac_frames_to_global (r->sys.dir->frames, r->sol.u);  /* u = T u~ */
         }
-      return status;
     }
-  if (!r->sol.u && !(r->sol.u = lac_malloc (r->sys.ndof * sizeof *r->sol.u)))
+  else if (!r->sol.u
+           && !(r->sol.u = lac_malloc (r->sys.ndof * sizeof *r->sol.u)))
     LAC_ERROR (LAC_ENOMEM, "displacement of %zu dofs", r->sys.ndof);
-  return lac_run_nl_solve (r->scene, r->opts.strategy, r->mesh, &r->mat,
-                           &r->setup, &r->sys,
-                           &r->nl, r->sol.u, r->progress, sizeof r->progress);
+  else
+    status = lac_run_nl_solve (r->scene, r->opts.strategy, r->mesh, &r->mat,
+                               &r->setup, &r->sys, &r->nl, r->sol.u,
+                               r->progress, sizeof r->progress);
+  if (status == LAC_SUCCESS || status == LAC_CONTINUE)
+    return status;
+  return lac_run_cause (r->scene, r->mesh, &r->setup, r->sol.newton,
+                        large (r) ? &r->nl : NULL, status);
 }
 
 /* What stages 6 and 7 read of the earlier ones. */

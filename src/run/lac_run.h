@@ -77,6 +77,12 @@ typedef struct lac_run_opts
                             that reads r->sys.K (lac infsup); else it is
                             not kept when the solver assembles K from the
                             cells itself (lac_run_system_stiffness)      */
+  int infsup_solve;      /* 0: the mesh guard (max_memory) estimates the
+                            solve of the strategy; lac infsup, which runs
+                            the stages up to assemble and then solves an
+                            eigenvalue problem instead: the
+                            LAC_MESH_SOLVE_INFSUP... of that problem
+                            (io/lac_mesh_opts.h)                          */
 } lac_run_opts;
 
 #define LAC_RUN_MAX_EFFECTS 8

@@ -318,27 +318,18 @@ summary (lac_model model, const lac_run_setup *st, const lac_contact *c,
         pmax = fmax (pmax, -nw->lambda[c->macro[i]]);
       }
   contact_axis (model, st, c, nw, rc, &axis, &sign);
-  if ((status = lac_summary_add (sum, "contact_force", "%.10e",
+  if ((status = lac_summary_add (sum, "contact_force", LAC_SUMMARY_REAL,
                                  sign * rc->resultant[axis]))
       || (status = lac_summary_add (sum, "contact_axis", "%s%s",
                                     sign < 0 ? "-" : "+",
                                     ax[model == LAC_AXISYMMETRIC][axis]))
-      || (status = lac_summary_add (sum, "contact_area", "%.10e", area))
-      || (status = lac_summary_add (sum, "max_contact_pressure", "%.10e",
+      || (status = lac_summary_add (sum, "contact_area", LAC_SUMMARY_REAL,
+                                    area))
+      || (status = lac_summary_add (sum, "max_contact_pressure",
+                                    LAC_SUMMARY_REAL,
                                     pmax)))
     return status;
   return lac_summary_add (sum, "active_macro_elements", "%zu", nact);
-}
-
-/* "x y" or "x y z": a vector of the summary, with every digit (17
- * significant: the equilibrium of a body is checked on their sums). */
-static void
-vector_text (const double *v, int dim, char *buf, size_t size)
-{
-  if (dim == 3)
-    snprintf (buf, size, "%.16e %.16e %.16e", v[0], v[1], v[2]);
-  else
-    snprintf (buf, size, "%.16e %.16e", v[0], v[1]);
 }
 
 /* "what.name = value". */
@@ -366,7 +357,7 @@ summary_pair (const lac_scene *sc, lac_model model, const lac_run_setup *st,
   const char *name = sc->contact[p].sec.name;
   size_t nact = 0;
   double area = 0, fn = 0, pmax = 0;
-  char v[120];
+  char key[300];
   int status;
   for (size_t i = st->data.col[p]; i < st->data.col[p + 1]; i++)
     {
@@ -378,13 +369,15 @@ summary_pair (const lac_scene *sc, lac_model model, const lac_run_setup *st,
       area += c->area[i];
       pmax = fmax (pmax, -lam);
     }
-  vector_text (rc->pair_force + 3 * p, lac_model_dim (model), v, sizeof v);
-  if ((status = pair_line (sum, "contact_force", name, "%s", v))
-      || (status = pair_line (sum, "contact_normal_force", name, "%.10e",
-                              fn))
-      || (status = pair_line (sum, "contact_area", name, "%.10e", area))
-      || (status = pair_line (sum, "max_contact_pressure", name, "%.10e",
-                              pmax)))
+  snprintf (key, sizeof key, "contact_force.%s", name);
+  if ((status = lac_summary_add_vector (sum, key, rc->pair_force + 3 * p,
+                                        lac_model_dim (model)))
+      || (status = pair_line (sum, "contact_normal_force", name,
+                              LAC_SUMMARY_REAL, fn))
+      || (status = pair_line (sum, "contact_area", name, LAC_SUMMARY_REAL,
+                              area))
+      || (status = pair_line (sum, "max_contact_pressure", name,
+                              LAC_SUMMARY_REAL, pmax)))
     return status;
   return pair_line (sum, "active_macro_elements", name, "%zu", nact);
 }
@@ -395,11 +388,8 @@ summary_pairs (const lac_scene *sc, lac_model model, const lac_run_setup *st,
                const lac_contact *c, const lac_newton *nw,
                const lac_run_contact *rc, lac_summary *sum)
 {
-  char v[120];
-  int status;
-  vector_text (rc->resultant, lac_model_dim (model), v, sizeof v);
-  if ((status = lac_summary_add (sum, "contact_resultant", "%s", v)))
-    return status;
+  int status = lac_summary_add_vector (sum, "contact_resultant",
+                                       rc->resultant, lac_model_dim (model));
   for (size_t p = 0; p < st->npairs && !status; p++)
     status = summary_pair (sc, model, st, c, nw, rc, p, sum);
   return status;
@@ -449,5 +439,5 @@ lac_run_pairs_dropped (const lac_contact_set_data *d, const lac_newton *nw,
     return LAC_SUCCESS;
   if ((status = lac_summary_add (sum, "pairs_dropped", "%zu", nfail)))
     return status;
-  return lac_summary_add (sum, "area_dropped", "%.10e", lost);
+  return lac_summary_add (sum, "area_dropped", LAC_SUMMARY_REAL, lost);
 }

@@ -164,9 +164,11 @@ lac_run_mesh_auto (const lac_scene *sc, int strategy)
 
 /* How the solve stage will solve (for the memory a .geo's mesh needs):
  * what the type of the strategy factorizes (the strategy asked for, else
- * the scene's; auto: a Cholesky factor, schur or split, else_iterative
- * petsc if lac has it, and on N > 1 MPI processes petsc), the solver of
- * a run without contact or of the large-deformation loop. */
+ * the scene's, in small strain and large deformation alike: the
+ * strategies factorize with their own solver); auto: on N > 1 MPI
+ * processes petsc, else a dense factor with [scene] solver = dense, else
+ * the scene's solver without contact or in large deformation, else a
+ * Cholesky factor (schur or split), else_iterative petsc if lac has it. */
 static lac_mesh_solve
 solve_kind (const lac_scene *sc, int strategy, int *else_iterative)
 {
@@ -177,24 +179,26 @@ solve_kind (const lac_scene *sc, int strategy, int *else_iterative)
               : LAC_STRATEGY_AUTO;
   const lac_strategy_type *t = lac_strategy_type_of (strategy ? strategy
                                                      : scene);
-  int large = sc->scene.large_deformation, solver = sc->scene.solver;
+  int solver = sc->scene.solver;
   int rank, size, autorun = lac_run_mesh_auto (sc, strategy);
   lac_petsc_rank (&rank, &size);
   *else_iterative = autorun && lac_petsc_available ();
-  if ((t && t->factor == LAC_FACTOR_NONE && !large) || (autorun && size > 1))
+  if (t)
+    return by_factor[t->factor];
+  if (autorun && size > 1)
     return LAC_MESH_SOLVE_ITERATIVE;
-  if (solver == LAC_SOLVER_DENSE || (t && t->factor == LAC_FACTOR_DENSE))
+  if (solver == LAC_SOLVER_DENSE)
     return LAC_MESH_SOLVE_DENSE;
-  if (large || (!sc->ncontact && !strategy))
+  if (sc->scene.large_deformation || !sc->ncontact)
     return solver == LAC_SOLVER_CHOLMOD ? LAC_MESH_SOLVE_CHOLESKY
                                         : LAC_MESH_SOLVE_LU;
-  return t ? by_factor[t->factor] : LAC_MESH_SOLVE_CHOLESKY;
+  return LAC_MESH_SOLVE_CHOLESKY;
 }
 
 int
 lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
-              double max_memory, lac_mesh **mesh, char *progress,
-              size_t size)
+              int infsup_solve, double max_memory, lac_mesh **mesh,
+              char *progress, size_t size)
 {
   lac_mesh_opts o;
   char msg[700];
@@ -211,7 +215,8 @@ lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
   o.flip_inverted = sc->mesh.inverted == 0;
   o.max_memory = max_memory;
   o.element = sc->scene.element;
-  o.solve = solve_kind (sc, strategy, &o.else_iterative);
+  o.solve = infsup_solve ? infsup_solve
+            : (int) solve_kind (sc, strategy, &o.else_iterative);
   size_t gend[LAC_SCENE_MAX_MESHES];
   *mesh = NULL;
   for (int k = 0; k < sc->mesh.nfiles; k++)
@@ -257,17 +262,44 @@ lac_run_mesh (const lac_scene *sc, lac_model model, int strategy,
   return LAC_SUCCESS;
 }
 
-/* lac_run_mesh_factor_fits: see lac_run_mesh.h (the bytes of
+/* lac_run_mesh_bytes: see lac_run_mesh.h (the estimate of
  * src/io/lac_mesh_gmsh_estimate.c, for the cells of the mesh made). */
-int
-lac_run_mesh_factor_fits (const lac_scene *sc, const lac_mesh *m,
-                          double max_memory)
+double
+lac_run_mesh_bytes (const lac_scene *sc, const lac_mesh *m, int solve,
+                    double extra)
 {
   lac_mesh_opts o;
   memset (&o, 0, sizeof o);
   o.element = m->ncells ? (int) m->type[0] : sc->scene.element;
-  o.solve = LAC_MESH_SOLVE_CHOLESKY;
+  o.solve = solve;
+  return lac_gmsh_run_bytes ((double) m->nnodes, m->dim, &o) + extra;
+}
+
+/* lac_run_mesh_factor_fits: see lac_run_mesh.h. */
+int
+lac_run_mesh_factor_fits (const lac_scene *sc, const lac_mesh *m,
+                          double max_memory)
+{
   if (max_memory <= 0)
     max_memory = lac_mesh_default_memory ();
-  return lac_gmsh_run_bytes ((double) m->nnodes, m->dim, &o) <= max_memory;
+  return lac_run_mesh_bytes (sc, m, LAC_MESH_SOLVE_CHOLESKY, 0)
+         <= max_memory;
+}
+
+/* lac_run_mesh_check_solve: see lac_run_mesh.h. */
+int
+lac_run_mesh_check_solve (const lac_scene *sc, const lac_mesh *m,
+                          int solve, double extra, const char *what,
+                          double max_memory)
+{
+  double bytes = lac_run_mesh_bytes (sc, m, solve, extra);
+  if (max_memory <= 0)
+    max_memory = lac_mesh_default_memory ();
+  if (bytes <= max_memory)
+    return LAC_SUCCESS;
+  return lac_error_place (LAC_EINVAL, sc->path, "the mesh's %zu nodes%s%s "
+                          "need about %.3g GB of memory with %s, more than "
+                          "the limit of %.3g GB (--max-memory)", m->nnodes,
+                          what[0] ? " " : "", what, bytes / 1e9,
+                          lac_gmsh_solve_name (solve), max_memory / 1e9);
 }

@@ -203,16 +203,18 @@ summary (const ctx *r, const lac_newton *s, const lac_exact *e, double l2lam,
                                     lac_newton_nactive (s)))
       || (status = lac_summary_add (sum, "newton_iterations", "%zu",
                                     s->nhist))
-      || (status = lac_summary_add (sum, "lambda_min", "%.10e", lmin))
-      || (status = lac_summary_add (sum, "lambda_max", "%.10e", lmax)))
+      || (status = lac_summary_add (sum, "lambda_min", LAC_SUMMARY_REAL, lmin))
+      || (status = lac_summary_add (sum, "lambda_max", LAC_SUMMARY_REAL,
+                                    lmax)))
     return status;
   if (e->kind == LAC_EXACT_NONE)
     return LAC_SUCCESS;
-  if ((status = lac_summary_add (sum, "max_rel_err_lambda", "%.3e",
+  if ((status = lac_summary_add (sum, "max_rel_err_lambda", LAC_SUMMARY_REAL,
                                  lref > 0 ? elam / lref : elam))
-      || (status = lac_summary_add (sum, "l2_err_lambda", "%.10e", l2lam)))
+      || (status = lac_summary_add (sum, "l2_err_lambda", LAC_SUMMARY_REAL,
+                                    l2lam)))
     return status;
-  return lac_summary_add (sum, "max_rel_err_sigma", "%.3e",
+  return lac_summary_add (sum, "max_rel_err_sigma", LAC_SUMMARY_REAL,
                           sigma_error (r, e));
 }
 
@@ -225,12 +227,13 @@ summary_radial (const ctx *r, const lac_exact *e, lac_summary *sum)
   if (e->kind == LAC_EXACT_NONE || e->nr == 0)
     return LAC_SUCCESS;
   int bs = r->mesh->body[st->macro[0]->cell[0]];       /* slave body  */
-  if ((status = lac_summary_add (sum, "max_rel_err_sigma_rr_slave", "%.3e",
+  if ((status = lac_summary_add (sum, "max_rel_err_sigma_rr_slave",
+                                 LAC_SUMMARY_REAL,
                                  sigma_rr_error (r, e, bs)))
       || st->master[0].n == 0)                          /* rigid master */
     return status;
   int bm = r->mesh->body[st->master[0].cell[0]];       /* master body */
-  return lac_summary_add (sum, "max_rel_err_sigma_rr_master", "%.3e",
+  return lac_summary_add (sum, "max_rel_err_sigma_rr_master", LAC_SUMMARY_REAL,
                           sigma_rr_error (r, e, bm));
 }
 

@@ -62,9 +62,11 @@ summary_maxima (const lac_run_post_in *in, lac_run_results *r)
       umax = fmax (umax, sqrt (s));
       vmax = fmax (vmax, r->vm[a]);
     }
-  if ((status = lac_summary_add (&r->summary, "max_u", "%.10e", umax)))
+  if ((status = lac_summary_add (&r->summary, "max_u", LAC_SUMMARY_REAL,
+                                 umax)))
     return status;
-  return lac_summary_add (&r->summary, "max_von_mises", "%.10e", vmax);
+  return lac_summary_add (&r->summary, "max_von_mises", LAC_SUMMARY_REAL,
+                          vmax);
 }
 
 /* ---- the summary of a linear run -------------------------------------- */
@@ -134,15 +136,15 @@ summary_exact (const lac_run_post_in *in, lac_run_results *r,
   int status = lac_summary_add (sum, "exact", "%s",
                                     lac_scene_exact_name (x->solution));
   if (!status)
-    status = lac_summary_add (sum, "l2_err_u", "%.10e", r->err_l2);
+    status = lac_summary_add (sum, "l2_err_u", LAC_SUMMARY_REAL, r->err_l2);
   if (!status)
-    status = lac_summary_add (sum, "h1_err_u", "%.10e", r->err_h1);
+    status = lac_summary_add (sum, "h1_err_u", LAC_SUMMARY_REAL, r->err_h1);
   if (!status)
-    status = lac_summary_add (sum, "rel_l2_err_u", "%.10e", r->norm_l2 > 0
-                                  ? r->err_l2 / r->norm_l2 : 0.0);
+    status = lac_summary_add (sum, "rel_l2_err_u", LAC_SUMMARY_REAL,
+                              r->norm_l2 > 0 ? r->err_l2 / r->norm_l2 : 0.0);
   if (!status)
-    status = lac_summary_add (sum, "rel_h1_err_u", "%.10e", r->norm_h1 > 0
-                                  ? r->err_h1 / r->norm_h1 : 0.0);
+    status = lac_summary_add (sum, "rel_h1_err_u", LAC_SUMMARY_REAL,
+                              r->norm_h1 > 0 ? r->err_h1 / r->norm_h1 : 0.0);
   for (int k = 0; k < 2 && !status && e->nr > 0; k++)   /* radial only */
     {
       double uh, ue;
@@ -150,13 +152,13 @@ summary_exact (const lac_run_post_in *in, lac_run_results *r,
       if (!radial_mean (in, r, e, R0[k], &uh, &ue))
         continue;
       snprintf (key, sizeof key, "u_r_%s", side[k]);
-      status = lac_summary_add (sum, key, "%.10e", uh);
+      status = lac_summary_add (sum, key, LAC_SUMMARY_REAL, uh);
       snprintf (key, sizeof key, "u_r_%s_exact", side[k]);
       if (!status)
-        status = lac_summary_add (sum, key, "%.10e", ue);
+        status = lac_summary_add (sum, key, LAC_SUMMARY_REAL, ue);
       snprintf (key, sizeof key, "rel_err_u_r_%s", side[k]);
       if (!status)
-        status = lac_summary_add (sum, key, "%.10e", ue != 0
+        status = lac_summary_add (sum, key, LAC_SUMMARY_REAL, ue != 0
                                       ? fabs (uh - ue) / fabs (ue)
                                       : fabs (uh));
     }
@@ -175,10 +177,10 @@ make_summary (const lac_run_post_in *in, lac_run_results *r,
   for (size_t k = 0; k < sys->ndof; k++)
     work += sys->F[k] * in->u[k];                /* l(u_h) = F . u */
   if ((status = summary_head (in, sum))
-      || (status = lac_summary_add (sum, "h", "%.10e", mesh_size (m)))
+      || (status = lac_summary_add (sum, "h", LAC_SUMMARY_REAL, mesh_size (m)))
       || (status = lac_summary_add (sum, "fixed_dofs", "%zu", sys->nfixed))
       || (status = lac_summary_add (sum, "nnz_K", "%zu", sys->nnz))
-      || (status = lac_summary_add (sum, "load_work", "%.10e", work))
+      || (status = lac_summary_add (sum, "load_work", LAC_SUMMARY_REAL, work))
       || (status = summary_maxima (in, r)))
     return status;
   return r->u_exact ? summary_exact (in, r, e) : LAC_SUCCESS;
@@ -209,7 +211,7 @@ nl_pair (const lac_run_post_in *in, const lac_newton *s, size_t p,
   const char *name = in->sc->contact[p].sec.name;
   double fn = 0, f[3] = { 0, 0, 0 };
   size_t nact = 0;
-  char v[120];
+  char v[300];
   int dim = in->mesh->dim, status = LAC_SUCCESS;
   for (size_t i = d->col[p]; c && i < d->col[p + 1]; i++)
     {
@@ -222,11 +224,10 @@ nl_pair (const lac_run_post_in *in, const lac_newton *s, size_t p,
                                          in->setup->set.offset[p],
                                          s->lambda, f)))
     return status;
-  snprintf (v, sizeof v, dim == 3 ? "%.16e %.16e %.16e" : "%.16e %.16e",
-            f[0], f[1], f[2]);
-  if ((status = pair_key (sum, "contact_force", name, v)))
+  snprintf (v, sizeof v, "contact_force.%s", name);
+  if ((status = lac_summary_add_vector (sum, v, f, dim)))
     return status;
-  snprintf (v, sizeof v, "%.10e", fn);
+  snprintf (v, sizeof v, LAC_SUMMARY_REAL, fn);
   if ((status = pair_key (sum, "contact_normal_force", name, v)))
     return status;
   snprintf (v, sizeof v, "%zu", nact);
@@ -278,11 +279,12 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
         {
           char key[32];
           snprintf (key, sizeof key, "monitor_u%s", ax[k]);
-          status = lac_summary_add (sum, key, "%.10e",
+          status = lac_summary_add (sum, key, LAC_SUMMARY_REAL,
                                         nl->step[nl->nfactor - 1].um[k]);
         }
       if (!status)
-        status = lac_summary_add (sum, "monitor_extreme", "%.10e", ext);
+        status = lac_summary_add (sum, "monitor_extreme", LAC_SUMMARY_REAL,
+                                  ext);
       if (status)
         return status;
     }
@@ -296,10 +298,11 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       || (status = lac_summary_add (sum, "multipliers", "%zu", q->solver.k))
       || (status = lac_summary_add (sum, "active", "%zu",
                                     q->solver.nactive))
-      || (status = lac_summary_add (sum, "lambda_min", "%.10e",
+      || (status = lac_summary_add (sum, "lambda_min", LAC_SUMMARY_REAL,
                                         q->lambda_min)))
     return status;
-  if ((status = lac_summary_add (sum, "contact_force", "%.10e", q->force)))
+  if ((status = lac_summary_add (sum, "contact_force", LAC_SUMMARY_REAL,
+                                 q->force)))
     return status;
   return in->setup->npairs > 1 ? nl_pairs (in, s, sum) : LAC_SUCCESS;
 }

@@ -170,12 +170,7 @@ add_lines (const lac_run_reaction_in *in, const double *R, lac_summary *sum)
       char key[160];
       const double *Rk = R + 3 * k;
       snprintf (key, sizeof key, "reaction.%s", sc->dirichlet[k].sec.name);
-      if (in->mesh->dim == 3)
-        status = lac_summary_add (sum, key, "%.10e %.10e %.10e", Rk[0] + 0.0,
-                                  Rk[1] + 0.0, Rk[2] + 0.0);
-      else
-        status = lac_summary_add (sum, key, "%.10e %.10e", Rk[0] + 0.0,
-                                  Rk[1] + 0.0);
+      status = lac_summary_add_vector (sum, key, Rk, in->mesh->dim);
     }
   return status;
 }

@@ -111,6 +111,92 @@ check_roles (const lac_scene *sc, const lac_mesh *m)
   return status;
 }
 
+/* ---- one body on both sides of a pair ---------------------------------- */
+
+/* The root of node a in the union-find forest up (path halving). */
+static size_t
+root (size_t *up, size_t a)
+{
+  while (up[a] != a)
+    a = up[a] = up[up[a]];
+  return a;
+}
+
+/* up: the nodes joined through the cells, so that two nodes of one body
+ * (a connected component of the mesh, as in fem/lac_rigid.h) have one
+ * root. */
+static void
+join_bodies (const lac_mesh *m, size_t *up)
+{
+  for (size_t a = 0; a < m->nnodes; a++)
+    up[a] = a;
+  for (size_t c = 0; c < m->ncells; c++)
+    for (size_t q = m->ptr[c] + 1; q < m->ptr[c + 1]; q++)
+      {
+        size_t r0 = root (up, (size_t) m->conn[m->ptr[c]]);
+        size_t r1 = root (up, (size_t) m->conn[q]);
+        if (r0 != r1)
+          up[r1] = r0;
+      }
+}
+
+/* The root of the body of cell c. */
+static size_t
+body_of (const lac_mesh *m, size_t *up, size_t c)
+{
+  return root (up, (size_t) m->conn[m->ptr[c]]);
+}
+
+/* A pair whose slave and master groups hold facets of one body: a body
+ * thinner than a facet whose two faces are slave and master of one pair
+ * (two interfaces joined into one group each) is paired through itself
+ * or through its neighbour, a gap as deep as it is thin that no
+ * displacement closes; the loop then ends blaming a load. */
+static int
+check_bodies (const lac_scene *sc, const lac_mesh *m)
+{
+  size_t *up = lac_malloc ((m->nnodes + 1) * sizeof *up);
+  size_t *side = lac_malloc ((m->nnodes + 1) * sizeof *side);
+  int status = up && side ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "the bodies of %zu nodes",
+                             m->nnodes);
+  if (!status)
+    join_bodies (m, up);
+  for (size_t p = 0; !status && p < sc->ncontact; p++)
+    {
+      const lac_scene_contact *c = &sc->contact[p];
+      const lac_group *gs = lac_mesh_group (m, c->slave);
+      const lac_group *gm = c->master ? lac_mesh_group (m, c->master) : NULL;
+      for (size_t a = 0; gm && a < m->nnodes; a++)
+        side[a] = SIZE_MAX;                   /* root -> a slave facet */
+      for (size_t e = 0; gm && e < gs->n; e++)
+        side[body_of (m, up, gs->cell[e])] = e;
+      for (size_t e = 0; gm && e < gm->n && !status; e++)
+        {
+          size_t f = side[body_of (m, up, gm->cell[e])];
+          int b = m->body[gm->cell[e]];
+          if (f == SIZE_MAX)
+            continue;
+          status = lac_scene_error (sc, &c->sec, "master", LAC_EINVAL,
+                                    "its facet of cell %zu (face %d) and the"
+                                    " slave facet of cell %zu (face %d) are "
+                                    "on one body%s%s%s: a pair's slave and "
+                                    "master must be different bodies, or "
+                                    "the body is paired through its own "
+                                    "thickness; give each interface its own"
+                                    " [contact] section",
+                                    m->cell_tag[gm->cell[e]], gm->face[e],
+                                    m->cell_tag[gs->cell[f]], gs->face[f],
+                                    b >= 0 ? " '" : "",
+                                    b >= 0 ? m->group[b].name : "",
+                                    b >= 0 ? "'" : "");
+        }
+    }
+  lac_free (up);
+  lac_free (side);
+  return status;
+}
+
 /* ---- the macro-meshes ---------------------------------------------------- */
 
 /* The pair whose slave group a message about macro-meshes names (the
@@ -300,6 +386,7 @@ lac_run_setup_build (const lac_scene *sc, int large, lac_mesh **mesh,
         return LAC_EINVAL;
     }
   if ((status = check_roles (sc, *mesh))
+      || (status = check_bodies (sc, *mesh))
       || (status = setup_alloc (sc->ncontact, s)))
     return status;
   t0 = lac_seconds ();

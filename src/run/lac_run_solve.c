@@ -287,7 +287,7 @@ lac_run_solve_summary (const lac_run_solution *sol, lac_summary *sum)
       || (status = lac_summary_add (sum, "solver_iterations", "%d",
                                     sol->krylov_iterations)))
     return status;
-  return lac_summary_add (sum, "solver_residual", "%.3e",
+  return lac_summary_add (sum, "solver_residual", LAC_SUMMARY_REAL,
                           sol->krylov_residual);
 }
 

@@ -31,6 +31,18 @@ lac_summary_add (lac_summary *s, const char *key, const char *fmt, ...)
   return LAC_SUCCESS;
 }
 
+int
+lac_summary_add_vector (lac_summary *s, const char *key, const double *v,
+                        int dim)
+{
+  if (dim == 3)                                   /* -0 + 0 = +0 */
+    return lac_summary_add (s, key, LAC_SUMMARY_REAL " " LAC_SUMMARY_REAL " "
+                            LAC_SUMMARY_REAL, v[0] + 0.0, v[1] + 0.0,
+                            v[2] + 0.0);
+  return lac_summary_add (s, key, LAC_SUMMARY_REAL " " LAC_SUMMARY_REAL,
+                          v[0] + 0.0, v[1] + 0.0);
+}
+
 const char *
 lac_summary_get (const lac_summary *s, const char *key)
 {

@@ -177,6 +177,15 @@ test_geo (void)
     "Printf(\"Transfinite Curve{1} = 3e9;\");",
     "Transfinite Surface{1} = {1, 2, 3, 4};",
     "Transfinite Curve{1} = n;", "MyTransfinite Curve{1} = 1;",
+    /* computed counts lac cannot tell, or fine ones */
+    "n = 3e9; If (x > 1) n = 3; EndIf\nTransfinite Curve{1} = n;",
+    "n = 3e9; For i In {1:2} n = n / 2; EndFor Transfinite Curve{1} = n;",
+    "DefineConstant[ n = {3e9, Name \"n\"} ];\nTransfinite Curve{1} = n;",
+    "n = 3e9; n += 1; Transfinite Curve{1} = n;",
+    "n = 3e9; Transfinite Curve{1} = n / 1e9 + 1;",
+    "L = 50; t = 5; m = t < L ? 2 : 3e9; Transfinite Curve{1} = m + 1;",
+    "n[] = {3e9}; Transfinite Curve{1} = n[0];",
+    "n = 3e9; Transfinite Curve{1} = Exists(n) ? 3 : n;",
   };
   static const char *const bad[][2] = {
     { "x = 1;\nTransfinite Curve{1, 3} = 3e9;", "line 2: Transfinite Curve "
@@ -185,9 +194,19 @@ test_geo (void)
       " {...} = 1: below the smallest allowed value 2" },
     { "Transfinite Curve{ {1} } = 10.5;", "= 10.5: not an integer" },
     { "Transfinite Curve{1} = 1e400;", "beyond the range of a double" },
+    /* computed: gmsh makes a count beyond 32 bits 2 without a word */
+    { "n = 3e9;\nTransfinite Curve{1, 3} = 2 * n + 1;", "line 2: Transfinite "
+      "Curve {...} = 2 * n + 1: it computes to 6e+09, beyond 32-bit" },
+    { "a = 2; b = a ^ 40;\nTransfinite Curve{1} = Floor(b) Using Bump 2;",
+      "= Floor(b): it computes to 1.09951e+12" },
+    { "z = 0; m = 1 / z; Transfinite Curve{1} = m;", "= m: it computes to "
+      "inf, not a finite number" },
+    { "L = 50; t = 60; m = t < L ? 2 : 3e9; Transfinite Curve{1} = m + 1;",
+      "= m + 1: it computes to 3e+09" },
   };
   for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
-    check_status (lac_geo_check_text ("t.geo", good[i], strlen (good[i])),
+    check_status (lac_geo_check_text ("t.geo", good[i], strlen (good[i]),
+                                      NULL),
                   LAC_SUCCESS, "geo '%s'", good[i]);
   /* A text that ends inside a count, without a NUL after it (found by
    * fuzz_numbers: read past the end, seen under AddressSanitizer). */
@@ -197,7 +216,7 @@ test_geo (void)
     if (t)
       {
         memcpy (t, cut, sizeof cut - 1);
-        check_status (lac_geo_check_text ("t.geo", t, sizeof cut - 1),
+        check_status (lac_geo_check_text ("t.geo", t, sizeof cut - 1, NULL),
                       LAC_SUCCESS, "geo cut inside 'Using'");
         free (t);
       }
@@ -205,10 +224,37 @@ test_geo (void)
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
     {
       check_status (lac_geo_check_text ("t.geo", bad[i][0],
-                                        strlen (bad[i][0])), LAC_EINVAL,
+                                        strlen (bad[i][0]), NULL), LAC_EINVAL,
                     "geo '%s'", bad[i][0]);
       check_message (bad[i][1], "geo '%s'", bad[i][0]);
     }
+  /* The scene's numbers: `level` and [mesh] numbers, which a default
+   * under If (!Exists(...)) does not replace; parentheses too deep to
+   * follow are left to gmsh (no stack overflow). */
+  {
+    static const char geo[] = "If (!Exists(n)) n = 10; EndIf\n"
+                              "Transfinite Curve{1} = n * 2^level + 1;";
+    lac_mesh_opts o = { 0 };
+    char *deep = malloc (20001);
+    o.level = 3;
+    o.numbers = "n=20";
+    check_status (lac_geo_check_text ("t.geo", geo, strlen (geo), &o),
+                  LAC_SUCCESS, "geo n=20, level 3");
+    o.numbers = "n=3e8";
+    check_status (lac_geo_check_text ("t.geo", geo, strlen (geo), &o),
+                  LAC_EINVAL, "geo n=3e8, level 3");
+    check_message ("= n * 2^level + 1: it computes to 2.4e+09", "n=3e8");
+    check_status (lac_geo_check_text ("t.geo", geo, strlen (geo), NULL),
+                  LAC_SUCCESS, "geo without the scene's n");
+    if (deep)
+      {
+        memcpy (deep, "Transfinite Curve{1} = ", 23);
+        memset (deep + 23, '(', 20000 - 23);
+        check_status (lac_geo_check_text ("t.geo", deep, 20000, NULL),
+                      LAC_SUCCESS, "geo with 19977 parentheses");
+        free (deep);
+      }
+  }
 }
 
 int

@@ -46,7 +46,7 @@ static lac_run *
 run (const char *file, const char *text, const char *path, size_t nset,
      const char *const *set, int *st, lac_scene **sc)
 {
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   lac_run *r = NULL;
   *st = file ? lac_scene_read (file, nset, set, sc)
              : lac_scene_read_string (text, path, nset, set, sc);

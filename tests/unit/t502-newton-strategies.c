@@ -32,7 +32,7 @@ static lac_run *
 run (const char *scene, size_t nset, const char *const *set, int strategy,
      lac_scene **sc, int *st)
 {
-  lac_run_opts o = { NULL, 0, 1, strategy, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, strategy, 0, NULL, 0, 0 };
   lac_run *r = NULL;
   *st = lac_scene_read (scene, nset, set, sc);
   if (!*st && !(r = lac_run_alloc (*sc, &o)))

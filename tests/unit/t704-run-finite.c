@@ -24,7 +24,7 @@ static const char *box =
 static lac_run *
 until_post (const char *text, const char *path, lac_scene **sc)
 {
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   lac_run *r;
   int st = text ? lac_scene_read_string (text, path, 0, NULL, sc)
                 : lac_scene_read (path, 0, NULL, sc);

@@ -43,7 +43,7 @@ run (const char *scene, const char *element, int level)
   const char *set[2] = { s1, s2 };
   lac_scene *sc = NULL;
   lac_run *r = NULL;
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   res x = { NAN, NAN, NAN, NAN, NAN };
   snprintf (s1, sizeof s1, "element=%s", element);
   snprintf (s2, sizeof s2, "level=%d", level);
