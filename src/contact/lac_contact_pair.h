@@ -91,7 +91,10 @@ int lac_contact_pair_facing (const lac_contact_pair *p, const double *x,
  * paired again with the nodes at x and `reach` added to the pairing
  * distance (the nodes moved by at most reach / 2 since c was made: a
  * penetration is at most that deep): u->count of them penetrate the
- * master by more than tol times their size, u->depth the deepest. */
+ * master by more than tol times their size, u->depth the deepest.
+ * Node-to-segment: the slave nodes without a column, projected onto the
+ * master at x (their slots do not depend on x; the size of a node is its
+ * share of the slave surface). */
 int lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
                                 const lac_contact *c, double reach,
                                 double tol, lac_contact_uncovered *u);
