@@ -344,6 +344,14 @@ fi
 rbad contrast "contrast.scene|stiffness is singular|every body is held against rigid motion|E from 1e-05 to 1e+20" \
   run tests/bad/contrast.scene $KB
 
+# ---- contact: what the model cannot hold (bad-input.md, section 13) -------
+rbad fit-chords "fit-chords.scene:33:|[contact fit] interference|0.312 of delta|interference_tolerance|quadratic cells" \
+  run tests/bad/fit-chords.scene $KB
+rbad cylinders-sliding "cylinders-sliding.scene:36:|[contact c]|slides macro-element|sliding_tolerance|large_deformation = yes" \
+  run tests/bad/cylinders-sliding.scene $KB
+rbad nts-overhang "nts-overhang.scene|slave node|misses the master surface|node-to-segment cannot hold it" \
+  run tests/bad/nts-overhang.scene $KB
+
 # ---- scene text ----------------------------------------------------------
 rbad nul-byte "nul-byte.scene:19:|a NUL byte" run tests/bad/nul-byte.scene $KB
 rbad cr-only "cr-only.scene:1:|a carriage return not followed by a line feed" \

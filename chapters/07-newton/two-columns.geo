@@ -8,8 +8,10 @@
 // column B at all (chapter 07, no silent penetration).
 //
 // Physical groups: base, columns (surfaces); base_bottom, base_top,
-// columns_bottom (the two bottoms), columns_top (the two tops),
-// a_corner, b_corner (the top-left corner of each column).
+// columns_bottom (the two bottoms), a_bottom, b_bottom (each bottom
+// alone: one contact pair per column, two-columns-pairs.scene),
+// columns_top (the two tops), a_corner, b_corner (the top-left corner of
+// each column).
 If (!Exists(level))
   level = 0;
 EndIf
@@ -46,6 +48,8 @@ Physical Surface("columns") = {2, 3};
 Physical Curve("base_bottom") = {1};
 Physical Curve("base_top") = {3};
 Physical Curve("columns_bottom") = {5, 9};
+Physical Curve("a_bottom") = {5};
+Physical Curve("b_bottom") = {9};
 Physical Curve("columns_top") = {7, 11};
 Physical Point("a_corner") = {8};
 Physical Point("b_corner") = {12};

@@ -20,17 +20,20 @@ moved (const lac_mesh *m, const double *x)
   return cur;
 }
 
-/* Pairing of the slave facets S with the master (on the mesh `cur`). */
+/* Pairing of the slave facets S with the master (on the mesh `cur`),
+ * with the options po and `more` reach. */
 static int
 pair_facets (const lac_contact_pair *p, const lac_mesh *cur,
              const lac_pairing_facets *S, const lac_pairing_opts *po,
-             lac_pairing **P)
+             double more, lac_pairing **P)
 {
+  lac_pairing_opts o = *po;
   if (!p->master)
     return lac_obstacle_pairing (S, p->obstacle, po->degree, P);
   lac_pairing_facets Mf = *p->master;
   Mf.mesh = cur;
-  return lac_pairing_build (S, &Mf, po, P);
+  o.dist_abs += more;
+  return lac_pairing_build (S, &Mf, &o, P);
 }
 
 int
@@ -41,7 +44,51 @@ lac_contact_pair_pairing (const lac_contact_pair *p, const double *x,
   const lac_macro *M = p->M;
   lac_pairing_facets S = { &cur, M->ptr[M->n], M->cell, M->face };
   *P = NULL;
-  return pair_facets (p, &cur, &S, &p->popts, P);
+  return pair_facets (p, &cur, &S, &p->popts, p->widened, P);
+}
+
+/* The diagonal of the bounding box of the nodes of m at x. */
+static double
+diagonal (const lac_mesh *m)
+{
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 }, d = 0;
+  for (size_t a = 0; a < m->nnodes; a++)
+    for (int i = 0; i < m->dim; i++)
+      {
+        double v = m->x[a * (size_t) m->dim + (size_t) i];
+        lo[i] = a ? fmin (lo[i], v) : v;
+        hi[i] = a ? fmax (hi[i], v) : v;
+      }
+  for (int i = 0; i < m->dim; i++)
+    d += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  return sqrt (d);
+}
+
+int
+lac_contact_pair_facing (const lac_contact_pair *p, const double *x,
+                         int *facing)
+{
+  enum { NPROBE = 64 };
+  lac_mesh cur = moved (p->mesh, x);
+  const lac_macro *M = p->M;
+  size_t nf = M->ptr[M->n], n = nf < NPROBE ? nf : NPROBE, cell[NPROBE];
+  int face[NPROBE];
+  lac_pairing_opts po = p->popts;
+  lac_pairing *P = NULL;
+  *facing = !p->master;                   /* an obstacle faces everything */
+  if (!p->master || nf == 0)
+    return LAC_SUCCESS;
+  for (size_t j = 0; j < n; j++)          /* spread over the surface */
+    {
+      cell[j] = M->cell[j * nf / n];
+      face[j] = M->face[j * nf / n];
+    }
+  lac_pairing_facets S = { &cur, n, cell, face };
+  po.allow_empty = 1;
+  int status = pair_facets (p, &cur, &S, &po, diagonal (&cur), &P);
+  *facing = !status && P->npairs > 0;
+  lac_pairing_free (P);
+  return status;
 }
 
 int
@@ -54,6 +101,8 @@ lac_contact_pair_contact (const lac_contact_pair *p, const double *x,
   double eps = p->epsilon > 0 ? p->epsilon : LAC_EPSILON_DEFAULT;
   int status;
   *c = NULL;
+  if (p->master && P->npairs == 0)
+    return LAC_SUCCESS;      /* nothing in reach (popts.allow_*): no column */
   if (p->master)
     {
       Mf = *p->master;
@@ -149,6 +198,50 @@ mean_gap (const lac_mesh *cur, const lac_pairing_facets *S,
   return w > 0 ? wg / w : 0.0;
 }
 
+/* The deepest of u and a slot of depth `depth`, size h, at xc. */
+static void
+deeper (lac_contact_uncovered *u, double depth, double h, size_t slot,
+        int paired, const double *xc)
+{
+  if (depth > 0 && (u->depth <= 0 || depth / h > u->depth / u->h))
+    {
+      u->depth = depth;
+      u->h = h;
+      u->macro = slot;
+      u->paired = paired;
+      memcpy (u->x, xc, sizeof u->x);
+    }
+}
+
+/* Node-to-segment: its slots are the slave nodes, in an order that does
+ * not depend on x (lac_nts.c).  The nodes without a multiplier in c,
+ * projected onto the master at x with `reach` more: their gaps. */
+static int
+nts_uncovered (const lac_contact_pair *p, const double *x,
+               const lac_contact *c, double reach, double tol,
+               lac_contact_uncovered *u)
+{
+  lac_contact_pair q = *p;
+  lac_pairing *P = NULL;
+  lac_contact *cx = NULL;
+  q.widened += reach;
+  q.popts.allow_empty = 1;
+  int status = lac_contact_pair_build (&q, x, &P, &cx);
+  for (size_t i = 0; !status && cx && i < cx->k; i++)
+    {
+      size_t m = cx->macro[i];
+      if (c && m < c->nmacro && c->mult[m] >= 0)
+        continue;                                /* it has a multiplier */
+      double depth = -cx->G[i] / cx->area[i];    /* G: w (g - delta) */
+      if (depth > tol * cx->size[i])
+        u->count++;
+      deeper (u, depth, cx->size[i], m, 0, cx->xpt + 3 * i);
+    }
+  lac_contact_free (cx);
+  lac_pairing_free (P);
+  return status;
+}
+
 int
 lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
                             const lac_contact *c, double reach, double tol,
@@ -161,12 +254,13 @@ lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
   size_t *of = NULL;
   int status;
   memset (u, 0, sizeof *u);
+  if (p->nts)
+    return nts_uncovered (p, x, c, reach, tol, u);
   if ((status = uncovered_facets (p->M, c, &S, &of)))
     return status;
   po.allow_empty = 1;
-  po.dist_abs += reach;
   if (S.n > 0)
-    status = pair_facets (p, &cur, &S, &po, &P);
+    status = pair_facets (p, &cur, &S, &po, p->widened + reach, &P);
   for (size_t j = 0; !status && P && j < S.n;)
     {
       size_t m = of[j], j1 = j;
@@ -176,14 +270,7 @@ lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
       double depth = p->offset - mean_gap (&cur, &S, P, j, j1, xc);
       if (depth > tol * h)
         u->count++;
-      if (depth > 0 && (u->depth <= 0 || depth / h > u->depth / u->h))
-        {
-          u->depth = depth;
-          u->h = h;
-          u->macro = m;
-          u->paired = c && c->covered[m] > 0;
-          memcpy (u->x, xc, sizeof xc);
-        }
+      deeper (u, depth, h, m, c && c->covered[m] > 0, xc);
       j = j1;
     }
   lac_pairing_free (P);

@@ -19,7 +19,8 @@
  * with the nodes where the solution put them, and measures how deep each
  * one is inside the master (its mean normal gap over its paired part).
  * The caller decides (solve/lac_newton.h): pair again with a longer reach
- * (popts.dist_abs), or stop with an error naming the macro-element.
+ * (`widened`, kept apart from the pair's own reach popts.dist_abs), or
+ * stop with an error naming the macro-element.
  *
  * An interference fit (offset = delta, a shrink fit drawn with matching
  * surfaces) takes delta from every gap, in the contact data
@@ -44,9 +45,14 @@ typedef struct lac_contact_pair
   const lac_obstacle *obstacle;     /* the rigid master when master = NULL */
   double epsilon;                   /* [LAC Def. 1]                        */
   int nts;                          /* 1: node-to-segment (lac_contact.h)  */
-  lac_pairing_opts popts;           /* of lac_pairing_build                */
+  lac_pairing_opts popts;           /* of lac_pairing_build: the pair's own
+                                       reach is popts.dist_abs             */
   double offset;                    /* the interference delta: the gaps are
                                        g0 - delta (lac_contact_set_offset) */
+  double widened;                   /* the reach a loop added to the pair's
+                                       own (solve/lac_newton.h: widen): it
+                                       pairs within popts.dist_abs +
+                                       widened; 0 until a loop widens     */
 } lac_contact_pair;
 
 /* The deepest penetration of a macro-element without a multiplier. */
@@ -73,11 +79,22 @@ int lac_contact_pair_pairing (const lac_contact_pair *p, const double *x,
 int lac_contact_pair_contact (const lac_contact_pair *p, const double *x,
                               const lac_pairing *P, lac_contact **c);
 
+/* Whether the pair's surfaces face each other anywhere, however far
+ * apart (*facing = 1): up to 64 slave facets spread over its surface,
+ * paired with the nodes at x (NULL: the mesh's) within the size of the
+ * mesh.  Tells a pair whose surfaces start apart from one whose groups
+ * can never touch (contact/lac_contact_set.h). */
+int lac_contact_pair_facing (const lac_contact_pair *p, const double *x,
+                             int *facing);
+
 /* The macro-elements of p->M that have no column in c (all if c is NULL),
  * paired again with the nodes at x and `reach` added to the pairing
  * distance (the nodes moved by at most reach / 2 since c was made: a
  * penetration is at most that deep): u->count of them penetrate the
- * master by more than tol times their size, u->depth the deepest. */
+ * master by more than tol times their size, u->depth the deepest.
+ * Node-to-segment: the slave nodes without a column, projected onto the
+ * master at x (their slots do not depend on x; the size of a node is its
+ * share of the slave surface). */
 int lac_contact_pair_uncovered (const lac_contact_pair *p, const double *x,
                                 const lac_contact *c, double reach,
                                 double tol, lac_contact_uncovered *u);

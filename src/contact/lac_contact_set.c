@@ -103,14 +103,56 @@ pair_error (size_t p, lac_contact_set_data *d, int status)
   return status;
 }
 
+/* Does pairing P of pair p give it anything to constrain? */
+static int
+has_pairs (const lac_contact_pair *p, const lac_pairing *P)
+{
+  return !p->master || (P && P->npairs > 0);    /* an obstacle: always */
+}
+
+/* Pair p found nothing within its reach (with allow_apart): an error
+ * (its pairing's own) unless the pairing may be empty anyway, or the
+ * pair's surfaces face each other farther away (they start apart). */
+static int
+check_apart (const lac_contact_set *s, const double *x, size_t p, int any,
+             lac_contact_set_data *d)
+{
+  int facing = 0, status;
+  if (s->pair[p].popts.allow_empty)
+    return LAC_SUCCESS;
+  if (any && (status = lac_contact_pair_facing (&s->pair[p], x, &facing)))
+    return pair_error (p, d, status);
+  if (any && facing)
+    return LAC_SUCCESS;
+  lac_pairing *P = NULL;          /* again, for the message of its pairing */
+  status = lac_contact_pair_pairing (&s->pair[p], x, &P);
+  lac_pairing_free (P);
+  return pair_error (p, d, status ? status
+                     : LAC_ERRMSG (LAC_ESANITY, "contact pair %zu: no pair, "
+                                   "then pairs", p));
+}
+
+/* With several pairs, a pair whose surfaces start apart (nothing within
+ * its reach, but they face each other farther away) is paired to
+ * nothing, as the far part of one pair's surface is: the loop pairs it
+ * again when the solution closes the gap (solve/lac_newton.h).  All of
+ * them apart, or a pair whose surfaces never face: its pairing's error. */
 int
 lac_contact_set_pairing (const lac_contact_set *s, const double *x,
                          lac_contact_set_data *d)
 {
-  int status = data_alloc (s, d);
+  int status = data_alloc (s, d), any = 0;
   for (size_t p = 0; p < s->n && !status; p++)
-    if ((status = lac_contact_pair_pairing (&s->pair[p], x, &d->P[p])))
-      return pair_error (p, d, status);
+    {
+      lac_contact_pair q = s->pair[p];
+      q.popts.allow_apart = s->n > 1;
+      if ((status = lac_contact_pair_pairing (&q, x, &d->P[p])))
+        return pair_error (p, d, status);
+      any |= has_pairs (&q, d->P[p]);
+    }
+  for (size_t p = 0; p < s->n && !status; p++)
+    if (!has_pairs (&s->pair[p], d->P[p]))
+      status = check_apart (s, x, p, any, d);
   return status;
 }
 
@@ -234,8 +276,6 @@ lac_contact_set_uncovered (const lac_contact_set *s, const double *x,
     {
       lac_contact_uncovered up;
       int status;
-      if (s->pair[p].nts)
-        continue;                      /* node-to-segment: not checked */
       if ((status = lac_contact_pair_uncovered (&s->pair[p], x,
                                                 d->n ? d->c[p] : NULL, reach,
                                                 tol, &up)))

@@ -72,7 +72,14 @@ void lac_contact_set_data_clear (lac_contact_set_data *d);
 /* compute */
 
 /* The pairings of every pair with the nodes at x (NULL: the mesh's),
- * into d (whatever it held is freed first). */
+ * into d (whatever it held is freed first).  With several pairs, a pair
+ * that has nothing within its reach is paired to nothing (P->npairs = 0,
+ * no column) when its surfaces face each other farther away
+ * (lac_contact_pair_facing) and some other pair has something in reach:
+ * its surfaces start apart, and the loop pairs it again when the
+ * solution closes the gap, as it does for the far part of one pair's
+ * surface.  Otherwise (every pair apart, surfaces that never face) the
+ * error of its pairing. */
 int lac_contact_set_pairing (const lac_contact_set *s, const double *x,
                              lac_contact_set_data *d);
 /* The contact data of every pair from the pairings of d (made at the same

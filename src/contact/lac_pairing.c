@@ -402,7 +402,8 @@ empty_error (const lac_pairing_search *W, const lac_pairing *P)
  *   [in]  opts           options, NULL for the defaults
  *   [out] out            the pairing, to free with lac_pairing_free
  *   returns LAC_SUCCESS; LAC_EINVAL (empty list, bad facet, no pair at all
- *           unless opts->allow_empty); LAC_ESING (degenerate facet);
+ *           unless opts->allow_empty, or opts->allow_apart and nothing
+ *           within reach); LAC_ESING (degenerate facet);
  *           LAC_ENOMEM
  */
 int
@@ -441,7 +442,8 @@ lac_pairing_build (const lac_pairing_facets *slave,
     goto done;
   if ((status = make_result (&W, &R, &P)))                       /* step 3 */
     goto done;
-  if (P->npairs == 0 && !o.allow_empty)
+  if (P->npairs == 0 && !o.allow_empty
+      && !(o.allow_apart && W.nfacing == 0 && P->nfail == 0))
     {
       status = empty_error (&W, P);
       lac_pairing_free (P);

@@ -45,6 +45,11 @@ typedef struct lac_pairing_opts
                         master facets the bucket grid puts near it        */
   int allow_empty;   /* 0: no pair at all is an error (LAC_EINVAL);
                         1: an empty pairing is a valid result             */
+  int allow_apart;   /* 1: no pair because nothing lies within the reach
+                        (no facet pair faced away or failed its
+                        projection) is a valid, empty result: the
+                        surfaces start apart (one pair of several,
+                        contact/lac_contact_set.h)                       */
 } lac_pairing_opts;
 
 #endif /* LAC_PAIRING_TYPES_H */

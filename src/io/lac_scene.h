@@ -122,6 +122,13 @@
  *     interference         delta >= 0: a shrink fit drawn with matching
  *                          surfaces, every gap of the pair is g0 - delta
  *                          (contact/lac_contact.h)               0
+ *     interference_tolerance  the largest mean gap of a macro-element
+ *                          without delta, over delta, accepted (the
+ *                          chords of the meshes; run/lac_run_interference.h)
+ *                          (0 in the struct when not given)      0.1
+ *     sliding_tolerance    the largest sliding of a contact zone over its
+ *                          macro-element's size accepted in small strain
+ *                          (run/lac_run_sliding.h) (0 when not given) 0.5
  *     hex_cut              auto | pyramids | six: the cut of a hexahedron
  *                          under a slave face (contact/lac_refine.h)  auto
  *   [exact]                analytic solution for errors and `exact` data

@@ -171,6 +171,15 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
   double interference;  /* delta >= 0 taken from every gap: a shrink fit
                            drawn with matching surfaces (length, 0)       */
+  double interference_tolerance; /* > 0: the largest mean gap of a
+                           macro-element without delta, over delta, a run
+                           accepts; 0: not given (0.1,
+                           run/lac_run_interference.h)                   */
+  double sliding_tolerance; /* > 0: the largest tangential displacement
+                           of a contact zone relative to its master, over
+                           its macro-element's size, a small-strain run
+                           accepts; 0: not given (0.5,
+                           run/lac_run_sliding.h)                         */
   int hex_cut;          /* the cut of a hexahedron under a slave face:
                            0 auto (hex8 pyramids, hex20 six), 1 pyramids,
                            2 six (LAC_MACRO_HEX_*, contact/lac_refine.h)  */

@@ -3,7 +3,10 @@
  */
 #include "run/lac_run_plate.h"
 
+#include <stdint.h>
+#include <stdio.h>
 #include <string.h>
+#include <gsl/gsl_eigen.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "io/lac_scene_query.h"
@@ -151,5 +154,157 @@ lac_run_plate_tie (const lac_scene *sc, const lac_mesh *m,
     status = condense (m, map, T, F, dir, t);
   lac_free (map);
   lac_free (in);
+  return status;
+}
+
+/* ---- the rigid motions a plate forbids ---------------------------------- */
+
+/* H += d d^T over the plates' nodes in body b, d_f = N_f(a) - N_f(a0)
+ * (a0 the first node of the plate in b), N the nf free motions of b. */
+static void
+plate_gram (const lac_scene *sc, const lac_mesh *m, const lac_bodies *B,
+            size_t b, const double *N, int nf, double *H)
+{
+  size_t ndof = (size_t) m->dim * m->nnodes, dim = (size_t) m->dim;
+  for (size_t k = 0; k < sc->nload; k++)
+    {
+      const lac_group *g = sc->load[k].plate ? lac_mesh_group
+                           (m, sc->load[k].group) : NULL;
+      size_t a0 = SIZE_MAX;
+      for (size_t q = 0; g && q < g->nnodes; q++)
+        {
+          size_t a = g->node[q];
+          if (B->node_body[a] != b)
+            continue;
+          if (a0 == SIZE_MAX)
+            a0 = a;
+          for (size_t i = 0; i < dim && a != a0; i++)
+            for (int f = 0; f < nf; f++)
+              for (int e = 0; e < nf; e++)
+                H[f * nf + e] += (N[f * ndof + a * dim + i]
+                                  - N[f * ndof + a0 * dim + i])
+                                 * (N[e * ndof + a * dim + i]
+                                    - N[e * ndof + a0 * dim + i]);
+        }
+    }
+}
+
+/* The words of body b's free motions, "free: ...; ..." as fem/lac_rigid.c
+ * writes them (the part in parentheses of each of `what`). */
+static void
+describe (const lac_bodies *B, const lac_mesh *m, size_t b, char **what,
+          size_t nf)
+{
+  lac_body *y = &B->body[b];
+  const char *name = lac_bodies_name (B, m, b);
+  size_t len = 0, skip = name ? strlen ("body '") + strlen (name)
+                                + strlen ("' (") : 0;
+  y->desc[0] = '\0';
+  for (size_t j = 0; j < nf && len < sizeof y->desc; j++)
+    {
+      const char *w = name ? what[j] + skip : strstr (what[j], " (") + 2;
+      int n = snprintf (y->desc + len, sizeof y->desc - len, "%s%.*s",
+                        j ? "; " : "free: ", (int) strlen (w) - 1, w);
+      len += n > 0 ? (size_t) n : 0;
+    }
+}
+
+/* Body b's free motions less those its plates forbid (H: their Gram
+ * matrix of plate_gram, nf x nf): the null space of H. */
+static int
+restrict_body (lac_bodies *B, size_t b, double *H, int nf)
+{
+  gsl_matrix_view A = gsl_matrix_view_array (H, (size_t) nf, (size_t) nf);
+  gsl_vector *ev = gsl_vector_alloc ((size_t) nf);
+  gsl_matrix *V = gsl_matrix_alloc ((size_t) nf, (size_t) nf);
+  gsl_eigen_symmv_workspace *w = gsl_eigen_symmv_alloc ((size_t) nf);
+  lac_body *y = &B->body[b];
+  double mode[6][6];
+  int kept = 0, status = ev && V && w ? LAC_SUCCESS
+             : LAC_ERRMSG (LAC_ENOMEM, "rigid motions under the plates");
+  if (!status && gsl_eigen_symmv (&A.matrix, ev, V, w))
+    status = LAC_ERRMSG (LAC_EDEP, "rigid motions under the plates: GSL's "
+                         "eigensolver failed");
+  for (int j = 0; !status && j < nf; j++)
+    if (gsl_vector_get (ev, (size_t) j) <= 1e-10)    /* moves no plate */
+      {
+        for (int k = 0; k < 6; k++)
+          {
+            mode[kept][k] = 0;
+            for (int f = 0; f < nf; f++)
+              mode[kept][k] += gsl_matrix_get (V, (size_t) f, (size_t) j)
+                               * y->mode[f][k];
+          }
+        kept++;
+      }
+  if (!status)
+    {
+      memcpy (y->mode, mode, sizeof mode);
+      y->nfree = kept;
+    }
+  gsl_eigen_symmv_free (w);
+  gsl_matrix_free (V);
+  gsl_vector_free (ev);
+  return status;
+}
+
+/* Free the n words of lac_bodies_free_motions. */
+static void
+free_words (char **what, size_t n)
+{
+  for (size_t j = 0; what && j < n; j++)
+    lac_free (what[j]);
+  lac_free (what);
+}
+
+/* Body b with its plates' constraint: its modes, then their words. */
+static int
+plate_body (const lac_scene *sc, const lac_mesh *m, lac_bodies *B, size_t b,
+            char *which)
+{
+  size_t nf = 0;
+  double *N = NULL, H[36] = { 0 };
+  char **what = NULL;
+  int status;
+  which[b] = 1;                   /* this body's motions only */
+  status = lac_bodies_free_motions (B, m, which, &nf, &N, &what);
+  free_words (what, nf);
+  what = NULL;
+  if (!status && nf > 0)
+    {
+      plate_gram (sc, m, B, b, N, (int) nf, H);
+      status = restrict_body (B, b, H, (int) nf);
+    }
+  lac_free (N);
+  N = NULL;
+  if (!status && B->body[b].nfree > 0
+      && !(status = lac_bodies_free_motions (B, m, which, &nf, &N, &what)))
+    describe (B, m, b, what, nf);
+  which[b] = 0;
+  free_words (what, nf);
+  lac_free (N);
+  return status;
+}
+
+int
+lac_run_plate_motions (const lac_scene *sc, const lac_mesh *m,
+                       lac_bodies *B)
+{
+  char *which = lac_calloc (B->n + 1, 1), *plated = lac_calloc (B->n + 1, 1);
+  int status = which && plated ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "rigid motions under the plates");
+  for (size_t k = 0; !status && k < sc->nload; k++)
+    {
+      const lac_group *g = sc->load[k].plate ? lac_mesh_group
+                           (m, sc->load[k].group) : NULL;
+      for (size_t q = 0; g && q < g->nnodes; q++)
+        if (B->node_body[g->node[q]] < B->n)
+          plated[B->node_body[g->node[q]]] = 1;
+    }
+  for (size_t b = 0; !status && b < B->n; b++)
+    if (plated[b] && B->body[b].nfree > 0)
+      status = plate_body (sc, m, B, b, which);
+  lac_free (which);
+  lac_free (plated);
   return status;
 }

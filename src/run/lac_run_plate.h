@@ -16,6 +16,8 @@
  * they take the plate's displacement.  A component that a [dirichlet]
  * fixes at some node of the group is fixed for the whole plate (a
  * symmetry plane through it).  The group may not touch a contact surface.
+ * The plate forbids the rotations of its body: the rigid-motion check of
+ * stage 4 knows it (lac_run_plate_motions).
  *
  * Ownership: the ties are owned by the struct (lac_run_plate_clear).
  */
@@ -24,6 +26,7 @@
 
 #include <stddef.h>
 #include "fem/lac_assembly.h"
+#include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
 #include "linalg/lac_linalg.h"
 #include "run/lac_run_setup.h"
@@ -41,6 +44,15 @@ typedef struct lac_run_ties
 int lac_run_plate_tie (const lac_scene *sc, const lac_mesh *m,
                        const lac_run_setup *setup, lac_triplet *T, double *F,
                        lac_dirichlet *dir, lac_run_ties *ties);
+/* The rigid motions the plates forbid, taken from the bodies' free
+ * motions (fem/lac_rigid.h, made before the plates are tied): a plate
+ * moves its nodes by one translation, so a free motion of a body is kept
+ * only as far as it moves every plate's nodes in the body alike (a body
+ * held in x by a roller at one node and in y by contact, with a plate on
+ * its top: its rotation is no free motion).  The modes of each body with
+ * a plate are made again, and so are their words (B->body[b].desc). */
+int lac_run_plate_motions (const lac_scene *sc, const lac_mesh *m,
+                           lac_bodies *B);
 /* u of every tied dof = u of its plate dof. */
 void lac_run_plate_untie (const lac_run_ties *ties, double *u);
 void lac_run_plate_clear (lac_run_ties *ties);

@@ -12,6 +12,7 @@
 #include "fem/lac_post_dist.h"
 #include "run/lac_run_reaction.h"
 #include "run/lac_run_scene.h"
+#include "run/lac_run_sliding.h"
 
 void
 lac_run_results_clear (lac_run_results *res)
@@ -307,6 +308,16 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
   return in->setup->npairs > 1 ? nl_pairs (in, s, sum) : LAC_SUCCESS;
 }
 
+/* interference_gap: the largest mean gap of a macro-element without the
+ * interference, over the interference (run/lac_run_interference.h). */
+static int
+fit_summary (const lac_run_post_in *in, lac_summary *sum)
+{
+  const lac_run_fit *f = &in->sys->fit;
+  return f->measured ? lac_summary_add (sum, "interference_gap", "%.10e",
+                                        f->ratio) : LAC_SUCCESS;
+}
+
 /* ---- the reactions of the Dirichlet sections ------------------------- */
 
 /* With [output] reactions = yes, "reaction.NAME" lines
@@ -320,7 +331,7 @@ reactions (const lac_run_post_in *in, lac_summary *sum)
                          : in->sol ? in->sol->newton : NULL;
   lac_run_reaction_in r = { in->sc, in->model, in->mesh, in->mat,
                             in->nl != NULL, in->sys->F, in->u, NULL, NULL,
-                            in->setup->on_contact };
+                            in->setup->on_contact, &in->sys->ties };
   if (!in->sc->output.reactions)
     return LAC_SUCCESS;
   if (in->setup->npairs && nw)
@@ -405,7 +416,13 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
                                            in->setup, c, in->sol->newton,
                                            &res->contact, &res->summary)))
     return status;
-  if ((status = lac_run_solve_summary (in->sol, &res->summary))
+  double sliding;                   /* the small sliding of the pairing */
+  if (c && (status = lac_run_sliding_check (sc, in->mesh, in->sys->bodies,
+                                            in->setup, in->sol->newton,
+                                            in->u, &sliding)))
+    return status;
+  if ((status = fit_summary (in, &res->summary))
+      || (status = lac_run_solve_summary (in->sol, &res->summary))
       || (status = reactions (in, &res->summary)))
     return status;
   char where[64] = "";
@@ -429,6 +446,7 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
   if ((status = lac_hyper_cauchy_nodal (in->mesh, &in->mat->hyper, in->u,
                                         NULL, res->sigma, res->vm))
       || (status = nl_summary (in, res))
+      || (status = fit_summary (in, &res->summary))
       || (status = lac_run_strategy_summary (in->nl->ls->loop->strategy,
                                              &res->summary))
       || (status = reactions (in, &res->summary)))

@@ -132,6 +132,76 @@ split (int dim, const lac_run_condition *c, size_t n, const double *ra,
   return LAC_SUCCESS;
 }
 
+/* ---- rigid plates: their nodes as one --------------------------------- */
+
+/* The conditions of node a (in cs) moved to node owner[a], in the order
+ * of the sections, into out (a new list). */
+static int
+move_conditions (const lac_run_conditions *cs, const size_t *owner,
+                 lac_run_conditions *out)
+{
+  size_t n = cs->nnodes, tot = cs->ptr[n], *fill;
+  out->nnodes = n;
+  out->ptr = lac_calloc (n + 1, sizeof *out->ptr);
+  out->c = lac_malloc ((tot + 1) * sizeof *out->c);
+  fill = lac_malloc ((n + 1) * sizeof *fill);
+  if (!out->ptr || !out->c || !fill)
+    {
+      lac_free (fill);
+      LAC_ERROR (LAC_ENOMEM, "reactions of the rigid plates");
+    }
+  for (size_t a = 0; a < n; a++)
+    out->ptr[owner[a] + 1] += cs->ptr[a + 1] - cs->ptr[a];
+  for (size_t a = 0; a < n; a++)
+    out->ptr[a + 1] += out->ptr[a];
+  for (size_t a = 0; a < n; a++)
+    fill[a] = out->ptr[a];
+  for (size_t a = 0; a < n; a++)
+    for (size_t j = cs->ptr[a]; j < cs->ptr[a + 1]; j++)
+      {                                  /* insertion: by section, stable */
+        size_t o = owner[a], k = fill[o]++;
+        while (k > out->ptr[o] && out->c[k - 1].sec > cs->c[j].sec)
+          {
+            out->c[k] = out->c[k - 1];
+            k--;
+          }
+        out->c[k] = cs->c[j];
+      }
+  lac_free (fill);
+  return LAC_SUCCESS;
+}
+
+/* Each tied node's residual and conditions moved to its plate node. */
+static int
+fold_plates (const lac_mesh *m, const lac_run_ties *t, double *r,
+             lac_run_conditions *cs)
+{
+  size_t dim = (size_t) m->dim, *owner;
+  lac_run_conditions moved = { 0, NULL, NULL };
+  if (!t || t->n == 0)
+    return LAC_SUCCESS;
+  if (!(owner = lac_malloc ((m->nnodes + 1) * sizeof *owner)))
+    LAC_ERROR (LAC_ENOMEM, "reactions of the rigid plates");
+  for (size_t a = 0; a < m->nnodes; a++)
+    owner[a] = a;
+  for (size_t k = 0; k < t->n; k++)
+    {
+      owner[t->dof[k] / dim] = t->to[k] / dim;
+      r[t->to[k]] += r[t->dof[k]];          /* r_P = sum over the plate */
+      r[t->dof[k]] = 0;
+    }
+  int status = move_conditions (cs, owner, &moved);
+  lac_free (owner);
+  if (status)
+    {
+      lac_run_conditions_clear (&moved);
+      return status;
+    }
+  lac_run_conditions_clear (cs);
+  *cs = moved;
+  return LAC_SUCCESS;
+}
+
 /* Split r at every fixed node (the room for its largest list first). */
 static int
 split_all (const lac_mesh *m, const lac_run_conditions *cs, const double *r,
@@ -194,10 +264,14 @@ lac_run_reactions (const lac_run_reaction_in *in, lac_summary *sum)
       fixed[a] = cs.ptr[a + 1] > cs.ptr[a];
       contact |= fixed[a] && in->on_contact && in->on_contact[a];
     }
+  for (size_t k = 0; !status && in->ties && k < in->ties->n; k++)
+    fixed[in->ties->dof[k] / (size_t) m->dim] = 1;  /* the plates' nodes */
   if (!status)
     status = internal_force (in, fixed, r);
   if (!status && contact && in->set && in->lambda)
     status = contact_force (in, r);
+  if (!status)
+    status = fold_plates (m, in->ties, r, &cs);
   if (!status)
     status = split_all (m, &cs, r, R);
   if (!status)

@@ -28,6 +28,13 @@
  * revolution: the 2 pi r of the integrals; Rr sums radial nodal forces,
  * not a resultant).  Sum over the sections plus the loads plus the
  * contact forces on the fixed nodes: zero.
+ *
+ * A rigid plate (run/lac_run_plate.h) moves as one: a condition at any
+ * node of its group holds the whole plate.  So the residuals of its
+ * nodes are summed at its plate node, r_P = sum over the group of
+ * (f_int - F)_a (the plate's equilibrium, which the solve made zero along
+ * its free components), and split among the conditions of all the
+ * group's nodes, in the order of the sections.
  */
 #ifndef LAC_RUN_REACTION_H
 #define LAC_RUN_REACTION_H
@@ -35,6 +42,7 @@
 #include "contact/lac_contact_set.h"
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
+#include "run/lac_run_plate.h"
 #include "run/lac_summary.h"
 
 typedef struct lac_run_reaction_in
@@ -50,6 +58,7 @@ typedef struct lac_run_reaction_in
                                       the last pairing), or NULL          */
   const double *lambda;            /* per slot of the set, or NULL        */
   const char *on_contact;          /* nnodes flags, or NULL               */
+  const lac_run_ties *ties;        /* the rigid plates (linear), or NULL  */
 } lac_run_reaction_in;
 
 /* "reaction.NAME" lines for the [dirichlet] sections, in their order. */

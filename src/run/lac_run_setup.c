@@ -272,7 +272,7 @@ make_pair (const lac_scene *sc, const lac_mesh *m, size_t p,
                                     ? &s->master[p] : NULL, &s->obstacle[p],
                                     c->epsilon > 0 ? c->epsilon
                                     : LAC_EPSILON_DEFAULT, c->method == 2,
-                                    { 0 }, c->interference };  /* g0 - delta */
+                                    { 0 }, c->interference, 0 };  /* g0 - delta */
   lac_pairing_opts_init (&s->pair[p].popts);
   s->pair[p].popts.dist_abs = c->gap_bound;
 }
@@ -347,8 +347,14 @@ report (const lac_scene *sc, const lac_run_setup *s, int large,
     snprintf (progress + n, size - (size_t) n, "pairing at every Newton "
               "iteration");
   else
-    snprintf (progress + n, size - (size_t) n, "%zu facet pairs%s", npairs,
-              nfail ? " (some dropped: projection failed)" : "");
+    n += snprintf (progress + n, size - (size_t) n, "%zu facet pairs%s",
+                   npairs, nfail ? " (some dropped: projection failed)" : "");
+  for (size_t p = 0; !large && p < s->npairs; p++)   /* apart (set.h) */
+    if (sc->contact[p].master && s->data.P[p]->npairs == 0
+        && n >= 0 && (size_t) n < size)
+      n += snprintf (progress + n, size - (size_t) n, "; [contact %s] has "
+                     "nothing within reach (paired again if the solution "
+                     "closes the gap)", sc->contact[p].sec.name);
 }
 
 /* The arrays of n pairs. */

@@ -173,6 +173,8 @@ check_bodies (const lac_scene *sc, const lac_mesh *m,
   char *held_by_contact = lac_calloc (B->n + 1, 1);
   int status = held_by_contact ? LAC_SUCCESS
                : lac_error_set (LAC_ENOMEM, sc->path, "checking the bodies");
+  if (!status && !sc->scene.large_deformation)     /* rigid plates */
+    status = lac_run_plate_motions (sc, m, sys->bodies);
   for (size_t b = 0; !status && b < B->n; b++)
     {
       const char *name = lac_bodies_name (B, m, b);
@@ -235,11 +237,41 @@ contact_matrices (const lac_scene *sc, lac_run_setup *setup,
                                 ? "epsilon" : NULL, status);
   lac_contact *all = setup->data.all;    /* each pair's gaps g0 - delta */
   sys->contact = all;
+  if ((status = lac_run_interference_check (sc, &setup->set, &setup->data,
+                                            &sys->fit)))
+    return status;                 /* before the Dirichlet values move in */
   if (all && (status = lac_frames_rotate_rows (sys->dir->frames,
                                                &all->C)))  /* T^T C */
     return status;
   return lac_contact_apply_dirichlet (all, sys->dir->n, sys->dir->dof,
                                       sys->dir->val);
+}
+
+/* Large deformation: the fits measured on contact data of the reference
+ * shape made for it alone (the loop makes its own at every iteration,
+ * where nothing in reach is no error: here neither). */
+static int
+fits_large (const lac_scene *sc, lac_run_setup *setup, lac_run_system *sys)
+{
+  lac_contact_set_data d = { 0 };
+  int status, any = 0;
+  for (size_t p = 0; p < sc->ncontact; p++)
+    any |= sc->contact[p].interference > 0;
+  if (!any)
+    return LAC_SUCCESS;
+  for (size_t p = 0; p < setup->npairs; p++)
+    setup->pair[p].popts.allow_empty = 1;
+  status = lac_contact_set_build (&setup->set, NULL, &d);
+  for (size_t p = 0; p < setup->npairs; p++)
+    setup->pair[p].popts.allow_empty = 0;
+  if (status)
+    status = lac_scene_error (sc, &sc->contact[d.failed < sc->ncontact
+                                               ? d.failed : 0].sec,
+                              NULL, status, "%s", lac_error_message ());
+  else
+    status = lac_run_interference_check (sc, &setup->set, &d, &sys->fit);
+  lac_contact_set_data_clear (&d);
+  return status;
 }
 
 /* ---- the stage -------------------------------------------------------- */
@@ -324,6 +356,8 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
       snprintf (progress, size, "%zu dofs, loads and Dirichlet data (K_T: "
                 "at every Newton iteration)", sys->ndof);
+      status = fits_large (sc, setup, sys);
+      lac_run_interference_warning (sc, &sys->fit, progress, size);
       goto done;
     }
   if (plates
@@ -362,6 +396,7 @@ lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
   if (sys->ties.n || sys->K)
     {
       system_progress (sys, progress, size);  /* made with the plates */
+      lac_run_interference_warning (sc, &sys->fit, progress, size);
       return LAC_SUCCESS;
     }
   if (from_cells && !sys->dir->frames && !sc->output.matrix)
@@ -381,5 +416,6 @@ lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
                               to rollers' frames */
     sys->cells = (lac_dist_source) { m, &mat->elastic, sys->fixed };
   system_progress (sys, progress, size);
+  lac_run_interference_warning (sc, &sys->fit, progress, size);
   return LAC_SUCCESS;
 }

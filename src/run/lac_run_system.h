@@ -8,7 +8,10 @@
  *      for a linear scene with contact, admissibility [LAC Def. 1], C and
  *      the mean gaps G [LAC (16)-(18)] of every pair (less the pair's
  *      interference), C turned to the nodal frames of rollers (T^T C),
- *      the Dirichlet values moved into G: into the set-up's contact data
+ *      the Dirichlet values moved into G (an interference measured
+ *      against the chords of the meshes first, run/lac_run_interference.h;
+ *      large deformation: on contact data made for it alone): into the
+ *      set-up's contact data
  *      (setup->data, its `all` the columns of every pair,
  *      contact/lac_contact_set.h), which the loop replaces when it pairs
  *      again; the bodies and the rigid motions their Dirichlet conditions
@@ -28,6 +31,7 @@
 #include "fem/lac_assembly_dist.h"
 #include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
+#include "run/lac_run_interference.h"
 #include "run/lac_run_material.h"
 #include "run/lac_run_plate.h"
 #include "run/lac_run_setup.h"
@@ -61,6 +65,8 @@ typedef struct lac_run_system
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
   int k_by_solver;         /* 1: K = NULL because the solver assembles it
                               from the cells (lac_run_system_stiffness) */
+  lac_run_fit fit;         /* the pairs' interferences against the chords
+                              of their meshes (run/lac_run_interference.h) */
 } lac_run_system;
 
 /* Everything but K (with rigid plates: also K, which their condensation

@@ -133,8 +133,8 @@ typedef struct lac_contact_model_type
                      double *lambda, int *its, double *res);
   /* The macro-elements without a column at U that penetrate the master by
    * more than tol h_m (contact/lac_contact_pair.h; u->macro is the slot),
-   * looked for as deep as the nodes moved since the pairing that left
-   * them out. */
+   * looked for as deep as the two sides can have moved into each other
+   * since the reference shape, where nothing penetrates (2 max |U|). */
   int (*uncovered) (void *self, const double *U, double tol,
                     lac_contact_uncovered *u);
   /* Pair again with `reach` (a length) added to the pairing distance;

@@ -106,8 +106,29 @@ uncovered (void *self, const double *U, double tol, lac_contact_uncovered *u)
       umax = fmax (umax, fabs (lm->x[j]));
       lm->x[j] += m->x[j];                          /* x = X + U */
     }
-  return lac_contact_set_uncovered (lm->set, lm->x, lm->data, 2 * umax,
-                                    tol, u);
+  int status = lac_contact_set_uncovered (lm->set, lm->x, lm->data,
+                                          2 * umax, tol, u);
+  lm->miss = *u;
+  return status;
+}
+
+/* Node-to-segment, a slave node inside the master that no reach gives a
+ * multiplier: its projection along its normal misses the master facets
+ * in the reference shape (the loop's message speaks of macro-elements
+ * and epsilon, which this method has not). */
+static int
+nts_missed (const lac_linear_model *lm)
+{
+  const lac_contact_uncovered *u = &lm->miss;
+  const lac_contact *c = lm->data->all;
+  size_t node = c && u->macro < c->nmacro ? c->inode[u->macro] : 0;
+  const lac_mesh *m = lm->set->pair[0].mesh;
+  LAC_ERROR (LAC_EADMISS, "slave node %zu at (%.6g, %.6g, %.6g) has no "
+             "node-to-segment multiplier (its projection along its normal "
+             "misses the master surface in the reference shape) and passes "
+             "%.3g into the master: node-to-segment cannot hold it; use "
+             "method = lac, or a master surface that extends under it",
+             m->node_tag[node], u->x[0], u->x[1], u->x[2], u->depth);
 }
 
 /* The system's C and G, and the maps, from the contact data. */
@@ -134,7 +155,17 @@ new_contact (const lac_linear_model *lm, lac_contact *all)
                                                         lm->dir->val);
 }
 
-/* The pairs made again on the reference shape with `reach` more. */
+/* The widened reach of every pair of s: w. */
+static void
+set_widened (lac_contact_set *s, double w)
+{
+  for (size_t p = 0; p < s->n; p++)
+    s->pair[p].widened = w;
+}
+
+/* The pairs made again on the reference shape with `reach` more than
+ * their own: the largest reach asked, not the sum (2 max |U| + depth is
+ * measured from the reference shape, each time). */
 static int
 widen (void *self, const double *U, double reach, size_t *more)
 {
@@ -146,18 +177,20 @@ widen (void *self, const double *U, double reach, size_t *more)
   if (!lm->set)
     return LAC_SUCCESS;
   size_t k0 = lm->data->all->k;
-  for (size_t p = 0; p < lm->set->n; p++)
-    lm->set->pair[p].popts.dist_abs += reach;
+  double w0 = lm->set->pair[0].widened;
+  set_widened (lm->set, fmax (w0, reach));
   if ((status = lac_contact_set_build (lm->set, NULL, &nd))
       || (nd.all && (status = new_contact (lm, nd.all))))
     {
       lac_contact_set_data_clear (&nd);
+      set_widened (lm->set, w0);
       return status;
     }
   if (!nd.all || nd.all->k <= k0)
     {
       lac_contact_set_data_clear (&nd);             /* nothing gained */
-      return LAC_SUCCESS;
+      set_widened (lm->set, w0);
+      return lm->set->pair[0].nts ? nts_missed (lm) : LAC_SUCCESS;
     }
   *more = nd.all->k - k0;
   lac_contact_set_data_clear (lm->data);
@@ -210,7 +243,8 @@ lac_linear_model_init_set (lac_linear_model *lm,
   int status = init (lm, sys, E, data->all->nmacro, m);   /* nts: nodes */
   if (status)
     return status;
-  lm->set = set->pair[0].nts ? NULL : set;  /* node-to-segment: not checked */
+  lm->set = set;
+  set_widened (set, 0);       /* a new loop: from the pairs' own reach */
   lm->data = data;
   lm->dir = dir;
   m->dim = set->pair[0].mesh->dim;

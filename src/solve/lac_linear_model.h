@@ -19,8 +19,13 @@
  * by side, and the loop can ask which macro-elements without a multiplier
  * the solution pushed into the master (uncovered) and have the pairs made
  * again with a longer reach (widen: the caller's contact data are
- * replaced).  The node-to-segment method of comparison (its slots are the
- * slave nodes) is not checked.
+ * replaced; the pairs' `widened` is the largest reach asked, their own
+ * reach, popts.dist_abs, stays as it is).  A new model starts from the
+ * pairs' own reach (their `widened` set to 0).  The node-to-segment
+ * method of comparison is checked the same way, node by node (its slots
+ * are the slave nodes); a node that no reach gives a multiplier (its
+ * projection misses the master in the reference shape) is an error of
+ * widen that names it.
  *
  * Ownership: the system, the set and the Dirichlet data are borrowed;
  * with a set, *data is the caller's, replaced (the old one cleared) by
@@ -44,6 +49,7 @@ typedef struct lac_linear_model
   const lac_dirichlet *dir;   /* its frames turn a new contact's C, its
                                  values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
+  lac_contact_uncovered miss; /* what uncovered found last                 */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
 } lac_linear_model;
 

@@ -94,7 +94,8 @@ typedef struct lac_nl_problem
   const char *const *N_what;     /* nfree descriptions, or NULL            */
   /* or several pairs: their set (contact/lac_contact_set.h; the four
    * fields of one pair above are then not read); the model pairs copies
-   * of them, with the pairing options of lac_nl_opts, and takes their
+   * of them, with the pairing options of lac_nl_opts plus each pair's own
+   * reach (its popts.dist_abs, the scene's gap_bound), and takes their
    * offsets as the interferences at t = 1, t delta at load factor t) */
   const lac_contact_set *set;
 } lac_nl_problem;
@@ -171,8 +172,6 @@ typedef struct lac_nl
   double *kgap;          /* owned, nmacro: d(U) before the increments       */
   lac_csc *C0;           /* owned: n x 0, the C of no contact               */
   double fref;           /* r_0 (0: not yet made for this load factor)      */
-  double moved;          /* max |x - x_before| of the last pairing: how far
-                            a node went since the pairing before it       */
   lac_contact_system sys;       /* the frozen system of the last linearize */
   lac_contact_tangent *tangent; /* owned: H and B of the last step         */
   double *delta;         /* owned, npair: the interference of pair q at
