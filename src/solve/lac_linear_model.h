@@ -22,6 +22,18 @@
  * replaced).  The node-to-segment method of comparison (its slots are the
  * slave nodes) is not checked.
  *
+ * Load steps (run/lac_run_steps.h): from one loop to the next the caller
+ * changes F and the Dirichlet values in place; K, C and the pairing stay,
+ * so that the strategy keeps its factorization.  The Dirichlet part of
+ * the mean gaps,
+ *
+ *   G = G0 - C_D^T g        (C_D: the rows of C at the Dirichlet dofs,
+ *                            g: their values; then C_D is zeroed),
+ *
+ * is made again from the values of the moment (lac_linear_model_dirichlet)
+ * out of G0 and C_D, which the model keeps (lac_linear_model_keep_lift)
+ * for its contact data and for every new one (widen).
+ *
  * Ownership: the system, the set and the Dirichlet data are borrowed;
  * with a set, *data is the caller's, replaced (the old one cleared) by
  * widen.
@@ -32,6 +44,21 @@
 #include "contact/lac_contact_set.h"
 #include "fem/lac_assembly.h"
 #include "solve/lac_contact_model.h"
+
+/* An entry of C_D: C(dof, col) = x. */
+typedef struct lac_linear_lift_entry
+{
+  size_t col, dof;
+  double x;
+} lac_linear_lift_entry;
+
+/* The Dirichlet part of the mean gaps of one contact data (load steps). */
+typedef struct lac_linear_lift
+{
+  double *G0;                 /* owned, k: G without the Dirichlet values  */
+  size_t n, cap;
+  lac_linear_lift_entry *e;   /* owned, n: C_D column by column            */
+} lac_linear_lift;
 
 typedef struct lac_linear_model
 {
@@ -44,6 +71,8 @@ typedef struct lac_linear_model
   const lac_dirichlet *dir;   /* its frames turn a new contact's C, its
                                  values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
+  lac_linear_lift lift;       /* owned, load steps: G0 and C_D (k.G0 NULL:
+                                 not kept)                                */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
 } lac_linear_model;
 
@@ -63,5 +92,13 @@ int lac_linear_model_init_set (lac_linear_model *lm,
                                const lac_dirichlet *dir, double E,
                                lac_contact_model *m);
 void lac_linear_model_clear (lac_linear_model *lm);
+/* Load steps, after init_set on contact data whose Dirichlet values were
+ * NOT moved into G yet (run/lac_run_system.h): G0 and C_D kept, then the
+ * values of dir moved in (C_D zeroed), as for every new contact data of
+ * widen from now on. */
+int lac_linear_model_keep_lift (lac_linear_model *lm);
+/* G = G0 - C_D^T g for the values g of dir now (later entries of a dof
+ * win), the arithmetic of lac_contact_apply_dirichlet. */
+void lac_linear_model_dirichlet (lac_linear_model *lm);
 
 #endif /* LAC_LINEAR_MODEL_H */
