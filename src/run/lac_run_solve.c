@@ -249,13 +249,13 @@ contact_start (const lac_scene *sc, int strategy,
       || (status = lac_linear_model_init_set (&sol->lin, &sol->cs,
                                               &setup->set, &setup->data,
                                               sys->dir, young_min (sc),
-                                              &model))
-      || (sys->curves          /* load steps: the Dirichlet part of G */
-          && (status = lac_linear_model_keep_lift (&sol->lin))))
+                                              &model)))
     {
       lac_strategy_free (st);
       return status;
     }
+  if (sys->curves)             /* load steps: the Dirichlet part of G */
+    lac_linear_model_keep_lift (&sol->lin, &sys->lift);
   lac_newton_opts_init (&o);
   o.kind = sol->strategy;
   o.maxit = c->max_iterations;

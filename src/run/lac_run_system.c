@@ -17,6 +17,7 @@ lac_run_system_clear (lac_run_system *sys)
   lac_csc_free (sys->K);
   lac_csc_free (sys->K0);
   lac_run_curves_free (sys->curves);
+  lac_linear_lift_clear (&sys->lift);
   lac_free (sys->F);
   lac_free (sys->b);
   lac_dirichlet_free (sys->dir);
@@ -258,8 +259,8 @@ contact_matrices (const lac_scene *sc, lac_run_setup *setup,
   if (all && (status = lac_frames_rotate_rows (sys->dir->frames,
                                                &all->C)))  /* T^T C */
     return status;
-  if (sys->curves)           /* load steps: the linear model does it, and */
-    return LAC_SUCCESS;      /* again at every step (lac_linear_model.h) */
+  if (sys->curves)           /* load steps: G0 and C_D kept for the steps */
+    return lac_linear_lift_record (sys->dir, all, &sys->lift);
   return lac_contact_apply_dirichlet (all, sys->dir->n, sys->dir->dof,
                                       sys->dir->val);
 }

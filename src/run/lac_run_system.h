@@ -18,9 +18,9 @@
  *      solve (solve/lac_system.h).  Rigid plates ([load] plate = yes)
  *      condensed into K and F (run/lac_run_plate.h).  A small-strain
  *      scene with [steps]: also F and b of each load curve
- *      (run/lac_run_curves.h), and the Dirichlet values are left out of
- *      G, for the linear model to move in at every step
- *      (solve/lac_linear_model.h).
+ *      (run/lac_run_curves.h), and G0 and C_D of the mean gaps kept
+ *      before the Dirichlet values are moved in, for the linear model to
+ *      move the values of every step in (solve/lac_linear_model.h).
  */
 #ifndef LAC_RUN_SYSTEM_H
 #define LAC_RUN_SYSTEM_H
@@ -36,6 +36,7 @@
 #include "run/lac_run_material.h"
 #include "run/lac_run_plate.h"
 #include "run/lac_run_setup.h"
+#include "solve/lac_linear_model.h"
 
 typedef struct lac_run_system
 {
@@ -69,6 +70,9 @@ typedef struct lac_run_system
   lac_run_curves *curves;  /* owned, small strain with [steps]: F, b and
                               the Dirichlet values by load curve
                               (run/lac_run_curves.h); NULL otherwise    */
+  lac_linear_lift lift;    /* owned, with curves: G0 and C_D of the contact
+                              data, for the linear model to move the
+                              values of each step in (taken by stage 5) */
 } lac_run_system;
 
 /* Everything but K (with rigid plates: also K, which their condensation

@@ -124,19 +124,19 @@ take_contact (lac_linear_model *lm)
 
 /* ---- load steps: the Dirichlet part of G ------------------------------ */
 
-static void
-lift_clear (lac_linear_lift *l)
+void
+lac_linear_lift_clear (lac_linear_lift *l)
 {
   lac_free (l->G0);
   lac_free (l->e);
   memset (l, 0, sizeof *l);
 }
 
-/* G0 = G of `all` and C_D, its entries in the rows of the Dirichlet dofs
- * (before lac_contact_apply_dirichlet zeroes them), into *l. */
+/* G0 = G of `all` and C_D, its entries in the rows of the Dirichlet dofs,
+ * into *l (before lac_contact_apply_dirichlet zeroes them). */
 static int
-lift_record (const lac_dirichlet *dir, const lac_contact *all,
-             lac_linear_lift *l)
+lift_keep (const lac_dirichlet *dir, const lac_contact *all,
+           lac_linear_lift *l)
 {
   const lac_csc *C = all->C;
   char *fixed = lac_calloc (C->nrow + 1, 1);
@@ -161,24 +161,27 @@ lift_record (const lac_dirichlet *dir, const lac_contact *all,
   if (!status)
     memcpy (l->G0, all->G, all->k * sizeof *l->G0);
   else
-    lift_clear (l);
+    lac_linear_lift_clear (l);
   lac_free (fixed);
   return status;
 }
 
 int
-lac_linear_model_keep_lift (lac_linear_model *lm)
+lac_linear_lift_record (const lac_dirichlet *dir, lac_contact *all,
+                        lac_linear_lift *l)
 {
-  lac_contact *all = lm->data ? lm->data->all : NULL;
-  int status;
-  if (!all || !lm->dir)
-    LAC_ERROR (LAC_EINVAL, "load steps of the linear model need the "
-               "contact data of a set and the Dirichlet data");
-  lift_clear (&lm->lift);
-  if ((status = lift_record (lm->dir, all, &lm->lift)))
-    return status;
-  return lac_contact_apply_dirichlet (all, lm->dir->n, lm->dir->dof,
-                                      lm->dir->val);
+  int status = lift_keep (dir, all, l);
+  return status ? status : lac_contact_apply_dirichlet (all, dir->n,
+                                                        dir->dof, dir->val);
+}
+
+void
+lac_linear_model_keep_lift (lac_linear_model *lm, lac_linear_lift *l)
+{
+  lac_linear_lift_clear (&lm->lift);
+  lm->lift = *l;
+  memset (l, 0, sizeof *l);
+  lac_linear_model_dirichlet (lm);
 }
 
 void
@@ -207,7 +210,7 @@ new_contact (const lac_linear_model *lm, lac_contact *all,
 {
   int status = lac_frames_rotate_rows (lm->dir->frames, &all->C);
   if (!status && lm->lift.G0)
-    status = lift_record (lm->dir, all, l);
+    return lac_linear_lift_record (lm->dir, all, l);
   return status ? status : lac_contact_apply_dirichlet (all, lm->dir->n,
                                                         lm->dir->dof,
                                                         lm->dir->val);
@@ -231,13 +234,13 @@ widen (void *self, const double *U, double reach, size_t *more)
   if ((status = lac_contact_set_build (lm->set, NULL, &nd))
       || (nd.all && (status = new_contact (lm, nd.all, &l))))
     {
-      lift_clear (&l);
+      lac_linear_lift_clear (&l);
       lac_contact_set_data_clear (&nd);
       return status;
     }
   if (!nd.all || nd.all->k <= k0)
     {
-      lift_clear (&l);
+      lac_linear_lift_clear (&l);
       lac_contact_set_data_clear (&nd);             /* nothing gained */
       return LAC_SUCCESS;
     }
@@ -246,7 +249,7 @@ widen (void *self, const double *U, double reach, size_t *more)
   *lm->data = nd;
   if (l.G0)
     {
-      lift_clear (&lm->lift);
+      lac_linear_lift_clear (&lm->lift);
       lm->lift = l;
     }
   lm->news = LAC_MODEL_NEW_C;
@@ -308,7 +311,7 @@ lac_linear_model_init_set (lac_linear_model *lm,
 void
 lac_linear_model_clear (lac_linear_model *lm)
 {
-  lift_clear (&lm->lift);
+  lac_linear_lift_clear (&lm->lift);
   lac_free (lm->d);
   lac_free (lm->r);
   lac_free (lm->x);

@@ -31,8 +31,9 @@
  *                            g: their values; then C_D is zeroed),
  *
  * is made again from the values of the moment (lac_linear_model_dirichlet)
- * out of G0 and C_D, which the model keeps (lac_linear_model_keep_lift)
- * for its contact data and for every new one (widen).
+ * out of G0 and C_D, kept when the values were first moved in
+ * (lac_linear_lift_record, by the caller), then by the model for every
+ * new contact data (widen).
  *
  * Ownership: the system, the set and the Dirichlet data are borrowed;
  * with a set, *data is the caller's, replaced (the old one cleared) by
@@ -71,7 +72,7 @@ typedef struct lac_linear_model
   const lac_dirichlet *dir;   /* its frames turn a new contact's C, its
                                  values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
-  lac_linear_lift lift;       /* owned, load steps: G0 and C_D (k.G0 NULL:
+  lac_linear_lift lift;       /* owned, load steps: G0 and C_D (G0 NULL:
                                  not kept)                                */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
 } lac_linear_model;
@@ -92,11 +93,16 @@ int lac_linear_model_init_set (lac_linear_model *lm,
                                const lac_dirichlet *dir, double E,
                                lac_contact_model *m);
 void lac_linear_model_clear (lac_linear_model *lm);
-/* Load steps, after init_set on contact data whose Dirichlet values were
- * NOT moved into G yet (run/lac_run_system.h): G0 and C_D kept, then the
- * values of dir moved in (C_D zeroed), as for every new contact data of
- * widen from now on. */
-int lac_linear_model_keep_lift (lac_linear_model *lm);
+/* Load steps: the Dirichlet values of dir moved into the mean gaps of
+ * `all` (lac_contact_apply_dirichlet, C_D zeroed), G0 and C_D kept first
+ * in *l (new; lac_linear_lift_clear). */
+int lac_linear_lift_record (const lac_dirichlet *dir, lac_contact *all,
+                            lac_linear_lift *l);
+void lac_linear_lift_clear (lac_linear_lift *l);
+/* After init_set: *l (recorded on the model's contact data) moved into the
+ * model (l emptied), G made from the values of dir now; every new contact
+ * data of widen keeps its own from then on. */
+void lac_linear_model_keep_lift (lac_linear_model *lm, lac_linear_lift *l);
 /* G = G0 - C_D^T g for the values g of dir now (later entries of a dof
  * win), the arithmetic of lac_contact_apply_dirichlet. */
 void lac_linear_model_dirichlet (lac_linear_model *lm);
