@@ -101,7 +101,8 @@ two_curves (const lac_scene *sc, const lac_mesh *m, size_t first, size_t d,
   return lac_scene_error (sc, &sc->dirichlet[d].sec, NULL, LAC_EINVAL,
                           "node %zu has non-zero values from [dirichlet %s] "
                           "and from this section on different load curves "
-                          "(curve or ramp)%s", m->node_tag[a],
+                          "(curve or ramp)%s",
+                          m->node_tag ? m->node_tag[a] : a + 1,
                           sc->dirichlet[first].sec.name, frame ? ": a node "
                           "with a frame (normal = ...) follows one curve"
                           : "");

@@ -73,7 +73,7 @@ record_step (const lac_run_system *sys, const lac_contact *c,
                               .nactive = lac_newton_nactive (nw),
                               .seconds = lac_seconds () - st->start };
   q->imposed = lac_run_curves_factor (sys->curves, st->imposed_curve, t)
-               * st->log.imposed_ref;
+               * st->log.imposed_ref + 0.0;        /* 0, not -0, at f = 0 */
   lac_run_steplog_monitor (&st->log, sys->dir->frames, sol->u, dim, q->um);
   for (size_t i = 0; c && i < c->k; i++)
     q->force += nw->lambda[c->macro[i]] * c->area[i];
