@@ -91,7 +91,8 @@ static int
 separated (const lac_scene *sc, const lac_run_nl *nl, int *status)
 {
   const lac_contact_set_data *d = &nl->model->data;
-  double t = nl->next < nl->nfactor ? nl->factor[nl->next] : 1;
+  double t = nl->log.next < nl->log.nfactor ? nl->log.factor[nl->log.next]
+                                            : 1;
   char cause[600];
   for (size_t p = 0; d->P && p < d->n && p < sc->ncontact; p++)
     {
