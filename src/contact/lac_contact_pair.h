@@ -47,6 +47,9 @@ typedef struct lac_contact_pair
   lac_pairing_opts popts;           /* of lac_pairing_build                */
   double offset;                    /* the interference delta: the gaps are
                                        g0 - delta (lac_contact_set_offset) */
+  int tangential;                   /* 1: the tangential columns of friction
+                                       too (lac_tangential.h)              */
+  double friction;                  /* and the friction coefficient mu     */
 } lac_contact_pair;
 
 /* The deepest penetration of a macro-element without a multiplier. */

@@ -135,6 +135,7 @@ static const key_spec contact_keys[] = {
   STR (lac_scene_contact, rules),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
   NUM (lac_scene_contact, interference, 0, HUGE_VAL, 0, "a length >= 0"),
+  NUM (lac_scene_contact, friction, 0, HUGE_VAL, 0, "a number >= 0"),
   ENUM (lac_scene_contact, hex_cut, hex_cut_names),
 };
 static const char *const tangent_names[] =            /* lac_nonlinear.h */

@@ -171,6 +171,8 @@ typedef struct lac_scene_contact         /* [contact NAME] */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
   double interference;  /* delta >= 0 taken from every gap: a shrink fit
                            drawn with matching surfaces (length, 0)       */
+  double friction;      /* Coulomb's coefficient mu >= 0 (0: frictionless,
+                           the default)                                    */
   int hex_cut;          /* the cut of a hexahedron under a slave face:
                            0 auto (hex8 pyramids, hex20 six), 1 pyramids,
                            2 six (LAC_MACRO_HEX_*, contact/lac_refine.h)  */

@@ -214,8 +214,20 @@ contact_kind (const lac_scene *sc, int strategy,
   const lac_scene_contact *c = &sc->contact[sc->contact_loop];
   lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
                                                 : c->strategy);
-  return lac_strategy_choose_in (want, sys->ndof, setup->data.all->k,
-                                 sys->nfree, ctx);
+  lac_strategy_kind kind = lac_strategy_choose_in (want, sys->ndof,
+                                                   setup->data.all->k,
+                                                   sys->nfree, ctx);
+  if (!lac_scene_friction (sc) || kind == LAC_NSTRATEGIES
+      || lac_strategy_solves_rows (kind))
+    return kind;
+  if (want == LAC_STRATEGY_AUTO)     /* friction: a type that solves its */
+    return sys->nfree ? LAC_STRATEGY_SADDLE : LAC_STRATEGY_SCHUR;
+  lac_error_set (LAC_EINVAL, __func__, "the strategy %s does not solve the "
+                 "equations of friction (its slip makes the system "
+                 "unsymmetric): take dense, schur (every body held by its "
+                 "Dirichlet conditions) or saddle",
+                 lac_strategy_table[kind].name);
+  return LAC_NSTRATEGIES;
 }
 
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy

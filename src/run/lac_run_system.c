@@ -226,8 +226,8 @@ contact_matrices (const lac_scene *sc, lac_run_setup *setup,
                                 ? "epsilon" : NULL, status);
   lac_contact *all = setup->data.all;    /* each pair's gaps g0 - delta */
   sys->contact = all;
-  if (all && (status = lac_frames_rotate_rows (sys->dir->frames,
-                                               &all->C)))  /* T^T C */
+  if (all && (status = lac_contact_to_frames (all, sys->dir->frames)))
+                                                             /* T^T C */
     return status;
   return lac_contact_apply_dirichlet (all, sys->dir->n, sys->dir->dof,
                                       sys->dir->val);

@@ -22,6 +22,11 @@
  * replaced).  The node-to-segment method of comparison (its slots are the
  * slave nodes) is not checked.
  *
+ * With friction (the contact data of the set has tangential columns,
+ * contact/lac_tangential.h) the model's ntan is theirs, evaluate gives
+ * the tangential columns and jumps too, and linearize a system whose
+ * columns are [c_n c_t] of every macro-element side by side.
+ *
  * Ownership: the system, the set and the Dirichlet data are borrowed;
  * with a set, *data is the caller's, replaced (the old one cleared) by
  * widen.
@@ -45,6 +50,12 @@ typedef struct lac_linear_model
                                  values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
+  /* Coulomb friction (the contact data has tangential columns): */
+  lac_csc *Call;              /* owned: [c_n c_t] of every column, side by
+                                 side (lac_contact_rows of lac_system.h)  */
+  double *Gall;               /* owned: zero, k (1 + ntan)                */
+  double *slip;               /* owned, k ntan: Ct^T U + sfix at U        */
+  lac_contact_system sys_rows; /* sys with Call: what linearize gives     */
 } lac_linear_model;
 
 /* A model over sys (C, G: one multiplier per column; E: the reference
