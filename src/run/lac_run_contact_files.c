@@ -192,6 +192,40 @@ facet_slots (const lac_run_setup *st, int *mac, int *pair)
         }
 }
 
+/* Friction: lambda_t and the slip (the mean tangential jump of the last
+ * converged step per unit measure) of every facet's macro-element, ntan
+ * components each in the tangent frame of contact/lac_tangential.h (NAN
+ * without a multiplier). */
+static int
+friction_vtu (const lac_run_contact_data *d, size_t n, const int *mac,
+              lac_vtu *v)
+{
+  const lac_contact *c = d->contact;
+  size_t nt = (size_t) c->ntan;
+  double *lt = lac_malloc ((n * nt + 1) * sizeof *lt);
+  double *sl = lac_malloc ((n * nt + 1) * sizeof *sl);
+  int status = lt && sl ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "contact.vtu friction fields");
+  for (size_t j = 0; !status && j < n; j++)
+    for (size_t b = 0; b < nt; b++)
+      {
+        size_t m = (size_t) (mac[j] >= 0 ? mac[j] : 0);
+        long i = mac[j] >= 0 ? c->mult[m] : -1;
+        lt[j * nt + b] = i >= 0 ? d->newton->lambda_t[m * nt + b] : NAN;
+        sl[j * nt + b] = i >= 0 && c->area[i] > 0
+                         ? d->newton->slip_conv[m * nt + b] / c->area[i] : NAN;
+      }
+  if (!status)
+    status = lac_vtu_f64 (v, LAC_VTU_CELL_DATA, "lambda_t", (int) nt, lt,
+                          (int) nt, 0);
+  if (!status)
+    status = lac_vtu_f64 (v, LAC_VTU_CELL_DATA, "slip", (int) nt, sl,
+                          (int) nt, 0);
+  lac_free (lt);
+  lac_free (sl);
+  return status;
+}
+
 static int
 surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
 {
@@ -236,6 +270,8 @@ surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
     status = lac_vtu_i32 (v, sec, "status", st);
   if (!status)
     status = lac_vtu_i32 (v, LAC_VTU_CELL_DATA, "pair", pair);
+  if (!status && c->Ct && !nts)
+    status = friction_vtu (d, n, mac, v);
   lac_free (u), lac_free (lam), lac_free (gap), lac_free (st), lac_free (mac);
   lac_free (pair), lac_free (fmac);
   return status;

@@ -15,6 +15,7 @@
 #include "solve/lac_newton.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
@@ -42,7 +43,8 @@ static int push_record (lac_newton *s, const lac_newton_record *r);
 static char friction_want (lac_newton *s, size_t i, double lmax);
 static double friction_lmax (const lac_newton *s);
 static size_t friction_turns (lac_newton *s);
-static int friction_solve (lac_newton *s, lac_newton_record *rec);
+static int friction_solve (lac_newton *s, const lac_contact_system *sys,
+                           lac_newton_record *rec);
 static void friction_converged (lac_newton *s);
 
 /* 1 if rule r is on. */
@@ -138,7 +140,7 @@ step (lac_newton *s, double eta, lac_newton_record *rec)
   for (size_t j = 0; lagged && j < s->n; j++)     /* the factor of an older */
     w->x[j] = p->fixed && p->fixed[j] ? sys->F[j] : 0.0; /* tangent: GMRES */
   if (!lagged && s->ntan)
-    status = friction_solve (s, rec);             /* [Alg. 1, line 21] */
+    status = friction_solve (s, sys, rec);        /* [Alg. 1, line 21] */
   else if (!lagged)
     status = solve_frozen (s, rec);               /* [Alg. 1, line 21] */
   rec->factored = !lagged;
@@ -698,17 +700,49 @@ friction_turns (lac_newton *s)
   return turns;
 }
 
+/* The bodies held by contact alone must be held by the normal
+ * multipliers in contact and the tangential ones that stick: where every
+ * macro-element that touches a body slips, friction cannot stop it, and
+ * there is no static solution. */
+static int
+friction_held (const lac_newton *s, const lac_contact_system *sys)
+{
+  const lac_model_point *p = &s->pt;
+  size_t q = 1 + (size_t) s->ntan, nslip = 0;
+  char *held = s->w->ffree;              /* reused: set again by the caller */
+  for (size_t i = 0; i < p->k; i++)
+    {
+      int st = s->active[lac_model_slot (p, i)];
+      nslip += st == LAC_FRICTION_SLIP;
+      for (size_t b = 0; b < q; b++)
+        held[i * q + b] = b == 0 ? st != LAC_FRICTION_INACTIVE
+                                 : st == LAC_FRICTION_STICK;
+    }
+  if (sys->nfree == 0 || nslip == 0 || !lac_system_check_held (sys, held))
+    return LAC_SUCCESS;
+  char msg[400];
+  snprintf (msg, sizeof msg, "%s", lac_error_message ());
+  LAC_ERROR (LAC_ESING, "no static solution with friction: %s; friction "
+             "holds it only where the contact sticks, and every "
+             "macro-element in contact with it slips (%zu): the tangential "
+             "load exceeds mu times the normal force", msg, nslip);
+}
+
 /* Step 4 with friction: the equations of every column's slot from its
  * status (lac_friction_rows), solved by the strategy (solve_rows); lambda
  * into w->klam (normal) and s->lambda_t. */
 static int
-friction_solve (lac_newton *s, lac_newton_record *rec)
+friction_solve (lac_newton *s, const lac_contact_system *sys,
+                lac_newton_record *rec)
 {
   const lac_model_point *p = &s->pt;
   lac_newton_work *w = s->w;
   size_t nt = (size_t) s->ntan, q = 1 + nt;
   double lmax = friction_lmax (s);
+  int status = friction_held (s, sys);
   (void) rec;
+  if (status)
+    return status;
   for (size_t i = 0; i < p->k; i++)
     {
       size_t m = lac_model_slot (p, i);
@@ -733,7 +767,7 @@ friction_solve (lac_newton *s, lac_newton_record *rec)
         }
     }
   lac_contact_rows R = { (int) q, w->fP, w->fQ, w->fr, w->ffree };
-  int status = lac_strategy_solve_rows (s->strategy, &R, w->x, w->fl);
+  status = lac_strategy_solve_rows (s->strategy, &R, w->x, w->fl);
   for (size_t i = 0; !status && i < p->k; i++)
     {
       size_t m = lac_model_slot (p, i);
