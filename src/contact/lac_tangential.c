@@ -11,9 +11,10 @@
 void
 lac_tangential_reference (const double *nbar, double *ref)
 {
+  double len = fabs (nbar[0]) + fabs (nbar[1]) + fabs (nbar[2]);
   int best = 0;
-  for (int c = 1; c < 3; c++)
-    if (fabs (nbar[c]) < fabs (nbar[best]))
+  for (int c = 1; c < 3; c++)               /* ties (to rounding): x, y, z */
+    if (fabs (nbar[c]) < fabs (nbar[best]) - 1e-8 * len)
       best = c;
   ref[0] = ref[1] = ref[2] = 0;
   ref[best] = 1;

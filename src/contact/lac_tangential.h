@@ -21,8 +21,10 @@
  *     degrees: on a slave face whose outward normal is -y, t = +x;
  *   3D (ntan = 2): a frame fixed per macro-element, carried to every
  *     point: e_m, the coordinate axis least aligned with the mean normal
- *     of T^m, t_1 = the unit projection of e_m on the tangent plane of the
- *     point, t_2 = nu x t_1.
+ *     of T^m (x before y before z), t_1 = the unit projection of e_m on
+ *     the tangent plane of the point, t_2 = nu x t_1 (t_1, t_2, nu a
+ *     right-handed frame): on a slave face of normal -z, t_1 = x and
+ *     t_2 = -y.
  * The frame turns with nu: on a curved slave the tangent at the edge of
  * the contact zone differs from the one at its centre by x/R, so that a
  * normal approach also moves the mean tangential jump (chapter 15
@@ -53,7 +55,8 @@ int lac_tangential_build (lac_contact *c, const lac_mesh *mesh,
 void lac_tangential_frame (int dim, const double *nu, const double *ref,
                            double *t);
 /* e_m of a macro-element whose normals sum to nbar: the coordinate axis
- * least aligned with it. */
+ * least aligned with it, x before y before z where they tie (within
+ * 1e-8 of |nbar|: a face normal to z has t_1 = x, t_2 = y). */
 void lac_tangential_reference (const double *nbar, double *ref);
 
 #endif /* LAC_TANGENTIAL_H */

@@ -464,7 +464,7 @@ exact_needs (const char *need, const char *key)
 static int
 finish_exact (lac_scene *sc)
 {
-  static const char *const keys[] = { "a", "b", "p", "E", "nu" };
+  static const char *const keys[] = { "a", "b", "p", "E", "nu", "tau" };
   lac_scene_exact *x = &sc->exact;
   lac_model model = (lac_model) sc->scene.model;
   char list[256];
@@ -475,7 +475,7 @@ finish_exact (lac_scene *sc)
   if ((status = require (sc, &x->sec, "solution", list)))
     return status;
   const char *need = lac_exact_table[x->solution].params;
-  for (int k = 0; k < 5; k++)
+  for (int k = 0; k < 6; k++)
     if (exact_needs (need, keys[k])
         && (status = require (sc, &x->sec, keys[k], "a number")))
       return status;

@@ -144,7 +144,7 @@ typedef struct lac_scene_exact           /* [exact] */
 {
   lac_scene_section sec;
   int solution;         /* lac_exact_kind: index in lac_exact_table */
-  double a, b, p, E, nu;
+  double a, b, p, E, nu, tau;
 } lac_scene_exact;
 
 typedef struct lac_scene_contact         /* [contact NAME] */
