@@ -16,6 +16,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
@@ -46,6 +47,8 @@ static size_t friction_turns (lac_newton *s);
 static int friction_solve (lac_newton *s, const lac_contact_system *sys,
                            lac_newton_record *rec);
 static void friction_converged (lac_newton *s);
+static void friction_held_start (lac_newton *s,
+                                 const lac_contact_system *sys);
 
 /* 1 if rule r is on. */
 static int
@@ -510,6 +513,9 @@ gather (lac_newton *s, const lac_contact_system *sys, lac_newton_record *rec)
       s->held_start = lac_rule_held_start (sys, p->k, p->d, w->pair, w->kact);
       s->restarted = 1;
     }
+  else if (w->it == 0 && p->k > 0 && sys->nfree > 0 && s->ntan
+           && rule (s, LAC_RULE_HELD_START))
+    friction_held_start (s, sys);
   rec->nactive = 0;
   for (size_t i = 0; i < p->k; i++)
     rec->nactive += w->kact[i] != 0;
@@ -788,4 +794,52 @@ friction_converged (lac_newton *s)
   for (size_t i = 0; i < p->k; i++)
     for (size_t b = 0; b < nt; b++)
       s->slip_conv[lac_model_slot (p, i) * nt + b] = p->slip[i * nt + b];
+}
+
+static int
+cmp_gap (const void *a, const void *b)
+{
+  const double *x = a, *y = b;                 /* pairs (gap, column) */
+  return x[0] < y[0] ? -1 : x[0] > y[0] ? 1 : 0;
+}
+
+/* The held start with friction (lac_newton_rules.h): when the first
+ * statuses do not hold the bodies held by contact alone, the columns of
+ * the m smallest gaps stick, m = 1, 2, 4, ... until the normal and
+ * tangential multipliers of the sticking ones hold them. */
+static void
+friction_held_start (lac_newton *s, const lac_contact_system *sys)
+{
+  const lac_model_point *p = &s->pt;
+  lac_newton_work *w = s->w;
+  size_t k = p->k, q = 1 + (size_t) s->ntan, m = 1;
+  char *held = w->ffree;                 /* reused: set again by the solve */
+  for (size_t i = 0; i < k * q; i++)
+    held[i] = w->kact[i / q] != LAC_FRICTION_INACTIVE
+              && (i % q == 0 || w->kact[i / q] == LAC_FRICTION_STICK);
+  if (!lac_system_check_held (sys, held))
+    return;
+  lac_error_clear ();
+  for (size_t i = 0; i < k; i++)
+    {
+      w->pair[2 * i] = p->d[i];
+      w->pair[2 * i + 1] = (double) i;
+    }
+  qsort (w->pair, k, 2 * sizeof *w->pair, cmp_gap);
+  for (;; m = 2 * m < k ? 2 * m : k)
+    {
+      for (size_t j = 0; j < m; j++)
+        {
+          size_t i = (size_t) w->pair[2 * j + 1];
+          w->kact[i] = LAC_FRICTION_STICK;
+          s->active[lac_model_slot (p, i)] = LAC_FRICTION_STICK;
+          memset (held + i * q, 1, q);
+        }
+      int ok = !lac_system_check_held (sys, held);
+      lac_error_clear ();
+      if (ok || m == k)
+        break;
+    }
+  s->held_start = m;
+  s->restarted = 1;
 }

@@ -1,4 +1,4 @@
-/* t480: the frictional patch tests and the stick limit of a block
+/* t475: the frictional patch tests and the stick limit of a block
  *                            [LAC (16)-(18) with friction; solve/lac_friction.h]
  *
  * 1. Full stick (tests/friction/patch2d-stick.scene, patch3d-stick.scene):
