@@ -76,7 +76,7 @@ else fric_fail friction-csv-3d "$(tail -1 "$FC/stick3.err")"
 fi
 
 # ---- no static solution: refused, earlier outputs intact -----------------------
-P=tests/friction/block-pull.scene
+P=chapters/15-friction/block-pull.scene
 if "$LAC" run "$P" --out "$FC/pull" --quiet > /dev/null 2>&1; then
   cp "$FC/pull/summary.txt" "$FC/pull.keep"
   if "$LAC" run "$P" --set "load.top.traction=3.1 -10" --out "$FC/pull" \
@@ -104,7 +104,7 @@ fric_bad () {
 fric_bad friction-negative "friction = .-1.: expected a number >= 0" "$S" \
   --set contact.interface.friction=-1
 fric_bad friction-nan "friction" "$S" --set contact.interface.friction=nan
-fric_bad friction-large "friction is a small-strain law" tests/friction/block-pull.scene \
+fric_bad friction-large "friction is a small-strain law" chapters/15-friction/block-pull.scene \
   --set scene.large_deformation=yes
 fric_bad friction-nts "not with nts" "$S" --set contact.interface.method=nts
 fric_bad friction-strategy "take dense, schur .* or saddle" "$S" \

@@ -134,7 +134,7 @@ pull (void)
   const char *ok[] = { "load.top.traction=2.5 -10" };
   const char *off[] = { "load.top.traction=3.1 -10" };
   lac_scene *sc = NULL;
-  lac_run *r = check_run_scene (F "block-pull.scene", 1, ok, &sc);
+  lac_run *r = check_run_scene ("chapters/15-friction/block-pull.scene", 1, ok, &sc);
   if (r)
     {
       const char *v = lac_run_summary_get (r, "friction_force");
@@ -144,7 +144,7 @@ pull (void)
     }
   lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
   sc = NULL;
-  int st = lac_scene_read (F "block-pull.scene", 1, off, &sc);
+  int st = lac_scene_read ("chapters/15-friction/block-pull.scene", 1, off, &sc);
   lac_run *r2 = st ? NULL : lac_run_alloc (sc, &o);
   if (r2)
     st = lac_run_all (r2);
