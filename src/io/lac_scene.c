@@ -153,8 +153,8 @@ section_free (lac_scene_section *s)
   for (int k = 0; k < sp->nkeys; k++)
     {
       lac_free (s->key_raw[k]);
-      if (sp->keys[k].type == K_STR)
-        lac_free (*(char **) ((char *) s + sp->keys[k].off));
+      if (sp->keys[k].type == K_STR || sp->keys[k].type == K_LIST)
+        lac_free (*(void **) ((char *) s + sp->keys[k].off));
     }
   lac_free (s->name);
 }

@@ -71,6 +71,10 @@
  *     ramp                 yes | no: with [steps], the values grow with
  *                          the load factor t (yes) or are imposed whole
  *                          from the first step (no)   yes
+ *     curve                t0 f0 t1 f1 ...: with [steps], small strain:
+ *                          the values times f(t), linear between the
+ *                          pairs (t increasing), constant beyond the ends
+ *                          (lac_scene_factor)          f = t or 1 (ramp)
  *   [load NAME]            exactly one of pressure, traction, force,
  *                          exact, total_force, point_force:
  *     group                boundary group (pressure, traction,
@@ -90,6 +94,7 @@
  *                          sigma(u) n (or its tangential part, for a
  *                          contact side) or the body force -div sigma(u)
  *                          of the [exact] solution (manufactured solutions)
+ *     curve                as for [dirichlet]: the load times f(t)  f = t
  *   [contact NAME]         frictionless unilateral contact by the LAC
  *                          method: one section per contact pair
  *                          (contact/lac_contact_set.h)
@@ -131,14 +136,21 @@
  *                          strain, 3d with uz = 0: cylinder a < r < b)
  *     a b p E nu           inner and outer radius, inner pressure, Young's
  *                          modulus, Poisson's ratio   (all required)
- *   [steps]                load steps of a large_deformation scene: the
- *                          load factor t goes to `start` in one step (if
- *                          start > 0), then to 1 in n equal steps; loads
- *                          and ramped Dirichlet values are t times theirs
+ *   [steps]                load steps: the load factor t goes to `start`
+ *                          in one step (if start > 0), then to `end` in n
+ *                          equal steps; loads and ramped Dirichlet values
+ *                          are t times theirs (large deformation), or each
+ *                          section's value times its f(t) (small strain,
+ *                          with [contact]: one loop of Algorithm 1 per
+ *                          step, run/lac_run_steps.h)
  *     n                    number of equal steps >= 1          1
- *     start                load factor of the first step in [0, 1)   0
- *     tol                  Newton tolerance > 0 (residual, gaps)  1e-8
- *     maxit                Newton iterations per step, 1..1000    25
+ *     start                load factor of the first step, in [0, end)   0
+ *     end                  load factor of the last step > 0 (large
+ *                          deformation: 1)                     1
+ *     tol                  Newton tolerance > 0 (residual, gaps; large
+ *                          deformation only)                   1e-8
+ *     maxit                Newton iterations per step, 1..1000 (large
+ *                          deformation only)                   25
  *     monitor              node group (a physical point): its displacement
  *                          at every step goes to the curve CSV  (none)
  *     curve                file name of the per-step CSV    curve.csv
@@ -146,7 +158,8 @@
  *                          the last, listed in steps.pvd (0: none)   0
  *     tangent              consistent | frozen: the Newton step with the
  *                          derivatives of the contact terms, or without
- *                          (frozen geometry)                  consistent
+ *                          (frozen geometry; large deformation only)
+ *                                                             consistent
  *   [output]
  *     vtu                  yes | no: solution.vtu (and contact.vtu)  yes
  *     csv                  yes | no: nodes.csv        yes

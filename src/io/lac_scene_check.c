@@ -624,8 +624,92 @@ check_curve (lac_scene *sc)
   return LAC_SUCCESS;
 }
 
+/* A load curve t0 f0 t1 f1 ... of section s: pairs, the times
+ * increasing (the numbers are finite: lac_scene_ini.c). */
+static int
+check_load_curve (lac_scene *sc, lac_scene_section *s, const double *c,
+                  int n)
+{
+  if (n % 2)
+    return lac_scene_error (sc, s, "curve", LAC_EINVAL, "expected pairs "
+                            "t f: %d number%s given", n, n == 1 ? "" : "s");
+  for (int k = 2; k < n; k += 2)
+    if (!(c[k] > c[k - 2]))
+      return lac_scene_error (sc, s, "curve", LAC_EINVAL, "the times of a "
+                              "curve must increase: t = %g (pair %d) after "
+                              "t = %g", c[k], k / 2 + 1, c[k - 2]);
+  if (sc->steps.sec.line == 0)
+    return lac_scene_error (sc, s, "curve", LAC_EINVAL, "a load curve is a "
+                            "function of the load factor of [steps]: give "
+                            "[steps]");
+  if (sc->scene.large_deformation)
+    return lac_scene_error (sc, s, "curve", LAC_EINVAL, "with "
+                            "large_deformation the loads and ramped values "
+                            "grow as the load factor t; load curves are for "
+                            "small-strain scenes");
+  return LAC_SUCCESS;
+}
+
+/* The curves of the [load] and [dirichlet] sections; with a curve, ramp
+ * says nothing. */
+static int
+finish_curves (lac_scene *sc)
+{
+  int status = LAC_SUCCESS;
+  for (size_t k = 0; k < sc->nload && !status; k++)
+    if (sc->load[k].curve)
+      status = check_load_curve (sc, &sc->load[k].sec, sc->load[k].curve,
+                                 sc->load[k].ncurve);
+  for (size_t k = 0; k < sc->ndirichlet && !status; k++)
+    {
+      lac_scene_dirichlet *d = &sc->dirichlet[k];
+      if (d->curve && given (&d->sec, "ramp"))
+        return lac_scene_error (sc, &d->sec, "ramp", LAC_EINVAL, "give "
+                                "either ramp or curve, not both (a curve "
+                                "gives the values at every load factor)");
+      if (d->curve)
+        status = check_load_curve (sc, &d->sec, d->curve, d->ncurve);
+    }
+  return status;
+}
+
+/* [steps]: the load factors, start < end (large deformation: end = 1);
+ * in small strain the keys of the Newton loop of large deformation do
+ * not apply, and load steps need contact (without it the displacement
+ * is linear in the loads: nothing depends on the path). */
+static int
+finish_steps (lac_scene *sc)
+{
+  static const char *const nl_keys[] = { "tol", "maxit", "tangent" };
+  lac_scene_steps *st = &sc->steps;
+  if (st->sec.line == 0)
+    return LAC_SUCCESS;
+  if (check_curve (sc))
+    return LAC_EINVAL;
+  if (sc->scene.large_deformation && st->end != 1)
+    return lac_scene_error (sc, &st->sec, "end", LAC_EINVAL, "with "
+                            "large_deformation the load factor ends at 1");
+  if (!(st->start < st->end))
+    return lac_scene_error (sc, &st->sec, "start", LAC_EINVAL, "expected a "
+                            "load factor below end = %g", st->end);
+  if (sc->scene.large_deformation)
+    return LAC_SUCCESS;
+  for (int q = 0; q < 3; q++)
+    if (given (&st->sec, nl_keys[q]))
+      return lac_scene_error (sc, &st->sec, nl_keys[q], LAC_EINVAL, "a key "
+                              "of the Newton loop of large_deformation; "
+                              "the loop of a small-strain scene stops by "
+                              "[contact] max_iterations");
+  if (sc->ncontact == 0)
+    return lac_scene_error (sc, &st->sec, NULL, LAC_EINVAL, "load steps of "
+                            "a small-strain scene need [contact]: without "
+                            "it the displacement is linear in the loads "
+                            "(scale them)");
+  return LAC_SUCCESS;
+}
+
 /* The keys of the large-deformation run (lac_nonlinear.h) and the keys
- * that need it: law = neo_hookean and [steps]; [exact] (small-strain
+ * that need it: law = neo_hookean; [exact] (small-strain
  * solutions) and the comparison contact methods do not go with it. */
 static int
 finish_nonlinear (lac_scene *sc)
@@ -636,13 +720,8 @@ finish_nonlinear (lac_scene *sc)
       return lac_scene_error (sc, &sc->material[k].sec, "law", LAC_EINVAL,
                               "needs [scene] large_deformation = yes (a "
                               "finite-strain law)");
-  if (!m->large_deformation && sc->steps.sec.line != 0)
-    return lac_scene_error (sc, &sc->steps.sec, NULL, LAC_EINVAL, "load "
-                            "steps need [scene] large_deformation = yes");
   if (!m->large_deformation)
     return LAC_SUCCESS;
-  if (check_curve (sc))
-    return LAC_EINVAL;
   if (sc->exact.sec.line != 0)
     return lac_scene_error (sc, &sc->exact.sec, NULL, LAC_EINVAL, "the "
                             "exact solutions are small-strain solutions; "
@@ -681,5 +760,7 @@ lac_scene_finish (lac_scene *sc)
       return status;
   if (sc->ncontact && (status = finish_contact_loop (sc)))
     return status;
-  return finish_nonlinear (sc);
+  if ((status = finish_nonlinear (sc)) || (status = finish_steps (sc)))
+    return status;
+  return finish_curves (sc);
 }

@@ -379,7 +379,8 @@ parse_bool (const char *s, int *b)
 static int
 positive (const key_spec *ks)
 {
-  return ks->type != K_VEC && ks->lo == 0 && (ks->open & 1);
+  return ks->type != K_VEC && ks->type != K_LIST && ks->lo == 0
+         && (ks->open & 1);
 }
 
 /* |x| <= LAC_SCENE_NUM_MAX, and x >= 1 / LAC_SCENE_NUM_MAX for a value
@@ -425,7 +426,8 @@ store_number (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
       return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: %s",
                               ks->expect, why);
     }
-  if (ks->type != K_VEC && !lac_number_check (*x, &range, why, sizeof why))
+  if (ks->type != K_VEC && ks->type != K_LIST
+      && !lac_number_check (*x, &range, why, sizeof why))
     return lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: %s",
                             ks->expect, why);
   if (ks->type != K_INT && !in_scale (ks, *x))
@@ -486,6 +488,56 @@ store_vec (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
   return LAC_SUCCESS;
 }
 
+/* Number k (0-based) of a list, the token tok: a finite double within
+ * LAC_SCENE_NUM_MAX; a message that names it otherwise. */
+static int
+list_number (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
+             const char *tok, size_t k, double *x)
+{
+  char why[160];
+  if (!lac_number_parse (tok, NULL, x, why, sizeof why))
+    return isinf (*x) ? out_of_scale (sc, s, ks, *x, why)
+           : lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s: "
+                              "number %zu, '%.40s': %s", ks->expect, k + 1,
+                              tok, why);
+  return in_scale (ks, *x) ? LAC_SUCCESS : out_of_scale (sc, s, ks, *x, NULL);
+}
+
+/* A list of numbers (K_LIST) into an owned array: blanks or commas
+ * between them, each a number as store_number reads one; what the list
+ * means (pairs, order) is checked with the rest (lac_scene_check.c). */
+static int
+store_list (lac_scene *sc, lac_scene_section *s, const key_spec *ks,
+            const char *val)
+{
+  double **v = (double **) ((char *) s + ks->off);
+  int *n = (int *) ((char *) s + ks->off_n), status = LAC_SUCCESS;
+  char *buf = lac_strdup (val), *tok, *save = NULL;
+  size_t cap = 0, len = 0;
+  double *x = NULL;
+  if (!buf)
+    LAC_ERROR (LAC_ENOMEM, "out of memory");
+  for (tok = strtok_r (buf, " \t,", &save); tok && !status;
+       tok = strtok_r (NULL, " \t,", &save))
+    if (len >= INT_MAX || lac_grow (&x, len + 1, &cap, sizeof *x, 8))
+      status = LAC_ERRMSG (LAC_ENOMEM, "a list of %zu numbers", len + 1);
+    else
+      status = list_number (sc, s, ks, tok, len, &x[len]), len++;
+  lac_free (buf);
+  if (!status && len == 0)
+    status = lac_scene_error (sc, s, ks->name, LAC_EINVAL, "expected %s",
+                              ks->expect);
+  if (status)
+    {
+      lac_free (x);
+      return status;
+    }
+  lac_free (*v);              /* given twice (a --set): the last one */
+  *v = x;
+  *n = (int) len;
+  return LAC_SUCCESS;
+}
+
 /* Convert the value of key k of section s and store it.  */
 static int
 store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
@@ -525,6 +577,8 @@ store_value (lac_scene *sc, lac_scene_section *s, int k, const char *val)
       return store_enum (sc, s, ks, val);
     case K_VEC:
       return store_vec (sc, s, ks, val);
+    case K_LIST:
+      return store_list (sc, s, ks, val);
     }
   LAC_ERROR (LAC_ESANITY, "key type %d", (int) ks->type);
 }

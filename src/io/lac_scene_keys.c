@@ -53,6 +53,8 @@ const lac_scene_element_spec lac_scene_elements[LAC_SCENE_NELEMENTS] = {
   { #f, K_ENUM, F (T, f), 0, names, sizeof names[0], 0, 0, 0, NULL }
 #define VEC(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
                        "2 or 3 numbers" }
+#define LIST(T, f, n) { #f, K_LIST, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
+                        "pairs of numbers t f" }
 #define VEC12(T, f, n) { #f, K_VEC, F (T, f), F (T, n), NULL, 0, 0, 0, 0, \
                          "1 or 2 numbers" }
 
@@ -90,6 +92,7 @@ static const key_spec dirichlet_keys[] = {
   BOOL (lac_scene_dirichlet, exact),
   NUM (lac_scene_dirichlet, normal, -HUGE_VAL, HUGE_VAL, 0, "a number"),
   BOOL (lac_scene_dirichlet, ramp),
+  LIST (lac_scene_dirichlet, curve, ncurve),
 };
 static const char *const load_exact_names[] =
   { "none", "traction", "tangential", "force", NULL };
@@ -102,6 +105,7 @@ static const key_spec load_keys[] = {
   VEC (lac_scene_load, total_force, ntotal_force),
   BOOL (lac_scene_load, plate),
   VEC (lac_scene_load, point_force, npoint_force),
+  LIST (lac_scene_load, curve, ncurve),
 };
 static const key_spec exact_keys[] = {
   { "solution", K_ENUM, F (lac_scene_exact, solution), 0,    /* lac_exact.h */
@@ -143,7 +147,8 @@ static const char *const tangent_names[] =            /* lac_nonlinear.h */
   { "consistent", "frozen", NULL };
 static const key_spec steps_keys[] = {
   INT (lac_scene_steps, n, 1, 100000, "an integer in 1..100000"),
-  NUM (lac_scene_steps, start, 0, 1, 2, "a number in [0, 1)"),
+  NUM (lac_scene_steps, start, 0, HUGE_VAL, 0, "a number >= 0"),
+  NUM (lac_scene_steps, end, 0, HUGE_VAL, 1, "a number > 0"),
   NUM (lac_scene_steps, tol, 0, HUGE_VAL, 1, "a number > 0"),
   INT (lac_scene_steps, maxit, 1, 1000, "an integer in 1..1000"),
   STR (lac_scene_steps, monitor),
@@ -240,6 +245,7 @@ lac_scene_section_defaults (int kind, lac_scene_section *s)
       {
         lac_scene_steps *t = (lac_scene_steps *) s;
         t->n = 1;
+        t->end = 1;
         t->tol = LAC_NL_TOL;
         t->maxit = LAC_NL_MAXIT;
         break;

@@ -1,7 +1,8 @@
 /* lac_scene_keys.h -- the sections and keys a scene file may hold
  *
  * A table describes every section and every key: its name, its type
- * (text, number, integer, boolean, enum, vector), the field of the
+ * (text, number, integer, boolean, enum, vector, list of numbers: an
+ * owned array), the field of the
  * section's struct (lac_scene_types.h) that stores it, its allowed range
  * and the words of a message about a wrong value.  The reading steps
  * (lac_scene_ini.c: typed values; lac_scene_check.c: defaults, required
@@ -18,14 +19,14 @@
 #include "fem/lac_spaces.h"
 #include "io/lac_scene_types.h"
 
-typedef enum { K_STR, K_NUM, K_INT, K_BOOL, K_ENUM, K_VEC } key_type;
+typedef enum { K_STR, K_NUM, K_INT, K_BOOL, K_ENUM, K_VEC, K_LIST } key_type;
 
 typedef struct key_spec
 {
   const char *name;
   key_type type;
   size_t off;                  /* value field in the section struct       */
-  size_t off_n;                /* K_VEC: its int count field              */
+  size_t off_n;                /* K_VEC, K_LIST: its int count field      */
   const char *const *enums;    /* K_ENUM: names, ending with NULL, ...    */
   size_t stride;               /* ... `stride` bytes apart                */
   double lo, hi;               /* K_NUM, K_INT: allowed range             */

@@ -105,3 +105,20 @@ lac_scene_component (lac_model model, const char *key)
       return c;
   return -1;
 }
+
+double
+lac_scene_factor (const double *curve, int ncurve, int ramp, double t)
+{
+  int n = ncurve / 2, k = 1;
+  if (!curve || n < 1)
+    return ramp ? t : 1.0;
+  if (t <= curve[0])
+    return curve[1];
+  if (t >= curve[2 * (n - 1)])
+    return curve[2 * (n - 1) + 1];
+  while (curve[2 * k] < t)           /* t in [t_{k-1}, t_k] */
+    k++;
+  double t0 = curve[2 * k - 2], f0 = curve[2 * k - 1];
+  double t1 = curve[2 * k], f1 = curve[2 * k + 1];
+  return f0 + (f1 - f0) * (t - t0) / (t1 - t0);
+}

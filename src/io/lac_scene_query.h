@@ -45,4 +45,11 @@ int lac_scene_friction (const lac_scene *sc);
  * "uz", ...), or -1 if the key does not apply to the model. */
 int lac_scene_component (lac_model model, const char *key);
 
+/* The factor f(t) of a [load] or [dirichlet] section at the load factor
+ * t of [steps]: its curve t0 f0 t1 f1 ... (ncurve numbers, the times
+ * increasing), linear between two pairs and constant beyond the ends;
+ * without a curve (NULL), t if ramp, else 1. */
+double lac_scene_factor (const double *curve, int ncurve, int ramp,
+                         double t);
+
 #endif /* LAC_SCENE_QUERY_H */

@@ -109,6 +109,9 @@ typedef struct lac_scene_dirichlet       /* [dirichlet NAME] */
   double normal;                    /* LAC_BC_NORMAL: the value of u.n   */
   int clamp, exact, symmetry;       /* raw key values (table storage)  */
   int ramp;             /* 1: values times the load factor ([steps])   */
+  double *curve;        /* owned, ncurve numbers t0 f0 t1 f1 ...: the
+                           values times f(t) ([steps]); NULL: the ramp   */
+  int ncurve;
 } lac_scene_dirichlet;
 
 typedef enum
@@ -138,6 +141,9 @@ typedef struct lac_scene_load            /* [load NAME] */
                            plate (translation), the force on the plate   */
   int exact;                        /* 0 none, 1 traction, 2 tangential,
                                        3 force (table storage)          */
+  double *curve;        /* owned, ncurve numbers t0 f0 t1 f1 ...: the load
+                           times f(t) ([steps]); NULL: times t          */
+  int ncurve;
 } lac_scene_load;
 
 typedef struct lac_scene_exact           /* [exact] */
@@ -183,6 +189,7 @@ typedef struct lac_scene_steps           /* [steps] */
   lac_scene_section sec;
   int n;                /* equal load steps (after the start step)        */
   double start;         /* load factor of a first step, 0: none            */
+  double end;           /* load factor of the last step (1)                */
   double tol;           /* Newton tolerance (lac_nl_opts.tol)              */
   int maxit;            /* Newton iterations per step                      */
   char *monitor;        /* owned, NULL: node group followed step by step   */

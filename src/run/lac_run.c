@@ -98,15 +98,26 @@ stage_assemble (lac_run *r)
                                      sizeof r->progress);
 }
 
+/* A small-strain scene with [steps]: one loop of Algorithm 1 per load
+ * step (run/lac_run_steps.h). */
+static int
+small_steps (const lac_run *r)
+{
+  return !large (r) && r->scene->steps.sec.line != 0;
+}
+
 static int
 stage_solve (lac_run *r)
 {
   if (!large (r))
     {
       lac_strategy_context ctx = auto_context (r);
-      int status = lac_run_solve (r->scene, r->opts.strategy, &ctx,
-                                  &r->setup, &r->sys, &r->sol, r->progress,
-                                  sizeof r->progress);
+      int status = small_steps (r)
+        ? lac_run_steps_solve (r->scene, r->opts.strategy, &ctx, r->mesh,
+                               &r->setup, &r->sys, &r->sol, &r->steps,
+                               r->progress, sizeof r->progress)
+        : lac_run_solve (r->scene, r->opts.strategy, &ctx, &r->setup,
+                         &r->sys, &r->sol, r->progress, sizeof r->progress);
       if (!status)
         {
           lac_run_plate_untie (&r->sys.ties, r->sol.u);  /* rigid plates */
@@ -127,7 +138,9 @@ post_in (const lac_run *r)
 {
   lac_run_post_in in = { r->scene, r->model, r->mesh, &r->mat, &r->setup,
                          &r->sys, r->sol.u, large (r) ? NULL : &r->sol,
-                         large (r) ? &r->nl : NULL, r->effects_text };
+                         large (r) ? &r->nl : NULL,
+                         small_steps (r) ? &r->steps : NULL,
+                         r->effects_text };
   return in;
 }
 
@@ -267,6 +280,8 @@ list_effects (lac_run *r)
     {
       r->effects[r->neffects++] = "small strain";
       r->effects[r->neffects++] = "linear elastic material";
+      if (sc->steps.sec.line && (sc->steps.n > 1 || sc->steps.start > 0))
+        r->effects[r->neffects++] = "load steps";
     }
   for (size_t k = 0; k < r->neffects; k++)
     snprintf (r->effects_text + strlen (r->effects_text),
@@ -312,6 +327,7 @@ lac_run_free (lac_run *r)
   lac_output_batch_free (r->batch);      /* unpublished: removed */
   lac_run_results_clear (&r->res);
   lac_run_nl_clear (&r->nl);
+  lac_run_steps_clear (&r->steps);
   lac_run_solution_clear (&r->sol);
   lac_run_system_clear (&r->sys);
   lac_run_material_clear (&r->mat);

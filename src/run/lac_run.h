@@ -12,6 +12,8 @@
  *   5 solve     scene, system                  -> solution (lac_run_solve.h)
  *               large deformation: + mesh, material, setup -> load steps
  *                                                    (lac_run_nonlinear.h)
+ *               small strain with [steps]: + mesh   -> load steps
+ *                                                    (lac_run_steps.h)
  *   6 post      all of the above               -> results  (lac_run_post.h)
  *   7 output    all of the above, directory    -> files    (lac_run_output.h)
  *
@@ -23,7 +25,8 @@
  *     fprintf (stderr, "%s\n", r->progress);
  *
  * The solve stage returns LAC_CONTINUE after each active-set iteration
- * (linear scenes with contact) or each load step (large deformation),
+ * (linear scenes with contact, with [steps] of every load step) or each
+ * Newton iteration (large deformation),
  * with r->progress about it.  A scene without [contact] runs no search
  * and no active set; a scene without large_deformation no Newton loop: a
  * run simulates the effects the scene asks for and lists them
@@ -49,6 +52,7 @@
 #include "run/lac_run_post.h"
 #include "run/lac_run_setup.h"
 #include "run/lac_run_solve.h"
+#include "run/lac_run_steps.h"
 #include "run/lac_run_system.h"
 #include "run/lac_summary.h"
 
@@ -96,6 +100,7 @@ typedef struct lac_run
   lac_run_system sys;       /* 4                                         */
   lac_run_solution sol;     /* 5: U (both kinds), the active set         */
   lac_run_nl nl;            /* 5, large deformation: the load steps      */
+  lac_run_steps steps;      /* 5, small strain with [steps]: the steps   */
   lac_run_results res;      /* 6: stresses, errors, the summary          */
   int hold;                 /* lac_run_hold_files was called           */
   lac_output_batch *batch;  /* 7, held: the files, written, not yet

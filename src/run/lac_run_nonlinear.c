@@ -2,11 +2,8 @@
  *                        steps (see lac_run_nonlinear.h)
  *                                             [LAC §4.5, Alg. 1; §5.4]
  *
- * The solve stage keeps a copy of the displacement of each step that gets
- * a step_NNN.vtu (only those, only when [steps] vtu_every = K > 0: (n / K)
- * * dofs numbers), so that the output stage can write them through the
- * same batch as the other files: a run that fails at step 40 leaves the
- * files of an earlier run untouched.
+ * The records of the steps, and the displacements of those that get a
+ * step_NNN.vtu, in run/lac_run_steplog.h.
  */
 #include "run/lac_run_nonlinear.h"
 
@@ -27,11 +24,7 @@ lac_run_nl_clear (lac_run_nl *nl)
   lac_free (nl->ramp);
   lac_loadstep_free (nl->ls);
   lac_nl_free (nl->model);
-  lac_free (nl->factor);
-  lac_free (nl->step);
-  lac_free (nl->mult);
-  lac_free (nl->kept);
-  lac_free (nl->ukept);
+  lac_run_steplog_clear (&nl->log);
   memset (nl, 0, sizeof *nl);
 }
 
@@ -116,8 +109,8 @@ nl_dirichlet (const lac_scene *sc, lac_model model, const lac_mesh *m,
         if (bc->fixed[c])
           {
             status = lac_dirichlet_add_group (nl->dir, m, g, c, bc->value[c]);
-            if (bc->ramp && bc->value[c] != 0 && nl->imposed_ref == 0)
-              nl->imposed_ref = bc->value[c];
+            if (bc->ramp && bc->value[c] != 0 && nl->log.imposed_ref == 0)
+              nl->log.imposed_ref = bc->value[c];
           }
       char *p = lac_realloc (nl->ramp, nl->dir->n ? nl->dir->n : 1);
       if (!p)
@@ -125,70 +118,10 @@ nl_dirichlet (const lac_scene *sc, lac_model model, const lac_mesh *m,
       nl->ramp = p;
       memset (nl->ramp + n0, bc->ramp ? 1 : 0, nl->dir->n - n0);
       if (bc->kind == LAC_BC_NORMAL && bc->ramp && bc->normal != 0
-          && nl->imposed_ref == 0)
-        nl->imposed_ref = bc->normal;
+          && nl->log.imposed_ref == 0)
+        nl->log.imposed_ref = bc->normal;
     }
   return status ? status : nl_rollers (sc, model, m, nl);
-}
-
-/* The load factors: `start` (if > 0), then n equal steps to 1. */
-static int
-nl_factors (const lac_scene_steps *st, lac_run_nl *nl)
-{
-  int n = st->n > 0 ? st->n : 1;
-  double t0 = st->start > 0 ? st->start : 0.0;
-  nl->nfactor = (size_t) n + (t0 > 0);
-  nl->factor = lac_malloc (nl->nfactor * sizeof *nl->factor);
-  nl->step = lac_calloc (nl->nfactor, sizeof *nl->step);
-  if (!nl->factor || !nl->step)
-    LAC_ERROR (LAC_ENOMEM, "%zu load steps", nl->nfactor);
-  size_t j = 0;
-  if (t0 > 0)
-    nl->factor[j++] = t0;
-  for (int k = 1; k <= n; k++)
-    nl->factor[j++] = k == n ? 1.0 : t0 + (1 - t0) * (double) k / n;
-  return LAC_SUCCESS;
-}
-
-int
-lac_run_nl_step_file (size_t j, size_t n, int K)
-{
-  return K > 0 && ((j + 1) % (size_t) K == 0 || j + 1 == n);
-}
-
-/* Room for the displacements of the step files before the last one. */
-static int
-nl_kept_alloc (int K, size_t ndof, lac_run_nl *nl)
-{
-  size_t n = 0;
-  for (size_t j = 0; j + 1 < nl->nfactor; j++)
-    n += (size_t) lac_run_nl_step_file (j, nl->nfactor, K);
-  if (n == 0)
-    return LAC_SUCCESS;
-  nl->kept = lac_malloc (n * sizeof *nl->kept);
-  nl->ukept = lac_malloc (n * ndof * sizeof *nl->ukept);
-  if (!nl->kept || !nl->ukept)
-    LAC_ERROR (LAC_ENOMEM, "displacements of %zu step files", n);
-  return LAC_SUCCESS;
-}
-
-/* The node of the [steps] monitor group. */
-static int
-nl_monitor (const lac_scene *sc, const lac_mesh *m, lac_run_nl *nl)
-{
-  const lac_scene_steps *st = &sc->steps;
-  nl->monitor = SIZE_MAX;
-  if (!st->monitor)
-    return LAC_SUCCESS;
-  const lac_group *g = lac_mesh_group (m, st->monitor);
-  if (!g || g->nnodes == 0)
-    return lac_scene_error (sc, &st->sec, "monitor", LAC_EINVAL,
-                            "%s in mesh '%s' (a physical point is best)",
-                            g ? "the group has no node"
-                              : "no physical group of that name",
-                            sc->mesh.file);
-  nl->monitor = g->node[0];
-  return LAC_SUCCESS;
 }
 
 /* The problem of solve/lac_nonlinear.h and its workspace. */
@@ -232,11 +165,8 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
           const lac_run_system *sys, lac_run_nl *nl)
 {
   int status;
-  size_t ndof = (size_t) m->dim * m->nnodes;
-  if ((status = nl_dirichlet (sc, mat->hyper.model, m, nl)) || (status = nl_factors (&sc->steps,
-                                                                   nl))
-      || (status = nl_monitor (sc, m, nl))
-      || (status = nl_kept_alloc (sc->steps.vtu_every, ndof, nl)))
+  if ((status = nl_dirichlet (sc, mat->hyper.model, m, nl))
+      || (status = lac_run_steplog_init (&nl->log, sc, m, 1.0)))
     return status;
   lac_nl_problem *p = &nl->prob;
   *p = (lac_nl_problem) { .mesh = m, .mat = &mat->hyper, .F = sys->F,
@@ -268,78 +198,14 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
 
 /* ---- one load step per call --------------------------------------------- */
 
-static int
-push_mult (lac_run_nl *nl, lac_run_nl_mult **q)
-{
-  if (lac_grow (&nl->mult, nl->nmult + 1, &nl->capmult, sizeof *nl->mult,
-                256))
-    LAC_ERROR (LAC_ENOMEM, "multiplier records");
-  *q = &nl->mult[nl->nmult++];
-  memset (*q, 0, sizeof **q);
-  return LAC_SUCCESS;
-}
-
-/* Append the multipliers of the converged step to the records: value,
- * mean gap, status and the centroid of T^m cap Gamma_C (current
- * coordinates). */
-static int
-record_mults (lac_run_nl *nl, const lac_run_setup *st, int step)
-{
-  const lac_nl *s = nl->model;
-  const lac_newton *loop = nl->ls->loop;
-  const lac_contact *c = s->contact;
-  int dim = s->cur.dim, nodes[LAC_MAX_FACE_NODES], status;
-  lac_map mp;
-  for (size_t i = 0; c && i < c->k; i++)
-    {
-      lac_run_nl_mult *q = NULL;
-      size_t m = c->macro[i], pr = lac_contact_set_pair_of (&st->set, m);
-      const lac_macro *M = st->macro[pr];
-      const lac_pairing *P = s->data.P[pr];
-      size_t ml = m - st->set.offset[pr];        /* in its pair */
-      double wsum = 0;
-      if ((status = push_mult (nl, &q)))
-        return status;
-      q->step = step;
-      q->macro = m;
-      q->lambda = loop->lambda[m];
-      q->gap = c->area[i] > 0 ? loop->d[m] / c->area[i] : 0.0;
-      q->covered = c->area[i];
-      q->active = loop->active[m];
-      for (size_t j = M->ptr[ml]; j < M->ptr[ml + 1]; j++)  /* centroid */
-        for (size_t p = P->ptr[j]; p < P->ptr[j + 1]; p++)
-          {
-            int nn = lac_contact_facet_eval (&s->cur, M->cell[j], M->face[j],
-                                             P->xs + p * (size_t) (dim - 1),
-                                             nodes, &mp);
-            if (nn < 0)
-              return -nn;
-            wsum += P->w[p];
-            for (int k = 0; k < dim; k++)
-              q->x[k] += P->w[p] * mp.x[k];
-          }
-      for (int k = 0; k < dim && wsum > 0; k++)
-        q->x[k] /= wsum;
-    }
-  return LAC_SUCCESS;
-}
-
 static void
 record_step (lac_run_nl *nl, size_t j, int dim)
 {
   const lac_newton *s = nl->ls->loop;
-  lac_run_nl_step *q = &nl->step[j];
+  lac_run_step_record *q = &nl->log.step[j];
   q->solver = nl->ls->steps[nl->ls->nsteps - 1];
-  q->imposed = q->solver.t * nl->imposed_ref;
-  const double *R = nl->monitor != SIZE_MAX
-                    ? lac_frames_of (nl->dir->frames, nl->monitor) : NULL;
-  for (int k = 0; k < dim && nl->monitor != SIZE_MAX; k++)
-    {
-      const double *U = s->U + nl->monitor * (size_t) dim;
-      q->um[k] = R ? 0 : U[k];
-      for (int i = 0; R && i < dim; i++)       /* in the axes: R U~ */
-        q->um[k] += R[3 * k + i] * U[i];
-    }
+  q->imposed = q->solver.t * nl->log.imposed_ref;
+  lac_run_steplog_monitor (&nl->log, nl->dir->frames, s->U, dim, q->um);
   q->force = lac_nl_contact_force (nl->model, s->lambda);
   q->lambda_min = 0;
   for (size_t m = 0; m < s->nslot; m++)
@@ -350,10 +216,10 @@ static void
 report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
              char *progress, size_t size)
 {
-  const lac_run_nl_step *q = &nl->step[j];
+  const lac_run_step_record *q = &nl->log.step[j];
   const lac_nl_step *h = &q->solver;
   char mon[80] = "", cut[80] = "";
-  if (nl->monitor != SIZE_MAX)
+  if (nl->log.monitor != SIZE_MAX)
     snprintf (mon, sizeof mon, ", %s %s = %.4f", sc->steps.monitor,
               dim == 2 ? "u_y" : "u_z", q->um[dim - 1]);
   if (h->cuts)
@@ -362,7 +228,7 @@ report_step (const lac_scene *sc, const lac_run_nl *nl, size_t j, int dim,
   snprintf (progress, size, "step %zu/%zu: t = %.4f (imposed %.3f), %d "
             "Newton iteration%s%s, residual %.1e, %zu/%zu active%s; "
             "assembly %.1f s, pairing %.1f s, factorization %.1f s, solves "
-            "%.1f s, step %.1f s", j + 1, nl->nfactor, h->t, q->imposed,
+            "%.1f s, step %.1f s", j + 1, nl->log.nfactor, h->t, q->imposed,
             h->iters, h->iters == 1 ? "" : "s", cut, h->residual, h->nactive,
             h->k, mon, h->time_assemble, h->time_pairing, h->time_factor,
             h->time_solve - h->time_factor, h->seconds);
@@ -383,7 +249,7 @@ report_iter (const lac_run_nl *nl, size_t j, char *progress, size_t size)
               r->factored ? " (K_T factored)" : "");
   snprintf (progress, size, "step %zu/%zu iteration %d: residual %.1e, %zu "
             "status%s changed, %zu/%zu active%s, %.2f s%s", j + 1,
-            nl->nfactor, nl->ls->iters, r->residual, r->nchanged,
+            nl->log.nfactor, nl->ls->iters, r->residual, r->nchanged,
             r->nchanged == 1 ? "" : "es", r->nactive, r->k, gm, r->seconds,
             cut);
 }
@@ -394,18 +260,17 @@ step_done (const lac_scene *sc, const lac_mesh *m, const lac_run_setup *setup,
            lac_run_nl *nl, size_t j, char *progress, size_t size)
 {
   size_t ndof = (size_t) m->dim * m->nnodes;
+  const lac_nl *s = nl->model;
+  double *u;
   int status;
   record_step (nl, j, m->dim);
-  if ((status = record_mults (nl, setup, (int) j + 1)))
+  if ((status = lac_run_steplog_mults (&nl->log, &s->cur, setup, s->data.P,
+                                       s->contact, nl->ls->loop,
+                                       (int) j + 1)))
     return status;
-  if (j + 1 < nl->nfactor
-      && lac_run_nl_step_file (j, nl->nfactor, sc->steps.vtu_every))
-    {
-      nl->kept[nl->nkept] = j;                  /* room: nl_kept_alloc */
-      memcpy (nl->ukept + nl->nkept * ndof, nl->ls->loop->U,
-              ndof * sizeof *nl->ukept);
-      lac_frames_to_global (nl->dir->frames, nl->ukept + nl->nkept++ * ndof);
-    }
+  if ((u = lac_run_steplog_keep (&nl->log, j, sc->steps.vtu_every,
+                                 nl->ls->loop->U, ndof)))
+    lac_frames_to_global (nl->dir->frames, u);
   report_step (sc, nl, j, m->dim, progress, size);
   return LAC_SUCCESS;
 }
@@ -421,10 +286,10 @@ lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
   if (!nl->ls && (status = nl_setup (sc, strategy, m, mat, setup, sys,
                                       nl)))
     return status;
-  j = nl->next;
+  j = nl->log.next;
   if (!nl->in_step)
     {
-      if ((status = lac_loadstep_begin (nl->ls, nl->factor[j])))
+      if ((status = lac_loadstep_begin (nl->ls, nl->log.factor[j])))
         return status;
       nl->in_step = 1;
       nl->cuts_seen = 0;
@@ -442,12 +307,12 @@ lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
       char msg[600];
       snprintf (msg, sizeof msg, "%s", lac_error_message ());
       return lac_error_set (status, sc->path, "load step %zu of %zu "
-                            "(load factor %g): %s", j + 1, nl->nfactor,
-                            nl->factor[j], msg);
+                            "(load factor %g): %s", j + 1, nl->log.nfactor,
+                            nl->log.factor[j], msg);
     }
   if ((status = step_done (sc, m, setup, nl, j, progress, size)))
     return status;
-  if (++nl->next < nl->nfactor)
+  if (++nl->log.next < nl->log.nfactor)
     return LAC_CONTINUE;
   memcpy (u, nl->ls->loop->U, ndof * sizeof *u);
   lac_frames_to_global (nl->dir->frames, u);    /* u = T u~ (rollers) */

@@ -9,7 +9,7 @@
  *      alone, N).
  * Out: the displacement at every load step, the records of the steps and
  *      of every multiplier at every step, the displacements of the steps
- *      that get a step_NNN.vtu.
+ *      that get a step_NNN.vtu (run/lac_run_steplog.h).
  * The load factors: [steps] n equal steps to 1, after a first step to
  * `start` if given; one call per step (LAC_CONTINUE until the last), each
  * the generalized Newton loop of [LAC Alg. 1] (solve/lac_nonlinear.h,
@@ -24,34 +24,10 @@
 #include "io/lac_scene.h"
 #include "run/lac_run_material.h"
 #include "run/lac_run_setup.h"
+#include "run/lac_run_steplog.h"
 #include "run/lac_run_system.h"
 #include "solve/lac_loadstep.h"
 #include "solve/lac_nonlinear.h"
-
-/* One converged load step, as written to the curve. */
-typedef struct lac_run_nl_step
-{
-  lac_nl_step solver;   /* the solver's record of it: load factor t,
-                           iterations, cuts, sub-steps, residual,
-                           multipliers, times                             */
-  double imposed;       /* t * the reference imposed value                */
-  double um[3];         /* displacement of the monitor node               */
-  double force;         /* sum of lambda |T^m cap Gamma_C| (<= 0)          */
-  double lambda_min;    /* the largest pressure (most negative lambda)     */
-} lac_run_nl_step;
-
-/* Every multiplier at the end of a step (contact_steps.csv). */
-typedef struct lac_run_nl_mult
-{
-  int step;
-  size_t macro;
-  double x[3];          /* centroid of T^m cap Gamma_C, current coords    */
-  double lambda, gap;   /* multiplier, mean gap d / |T^m cap Gamma_C|     */
-  double covered;       /* |T^m cap Gamma_C| on the deformed surface (2 pi
-                           r weighted if axisymmetric): lambda covered is
-                           the normal force of the macro-element         */
-  char active;
-} lac_run_nl_mult;
 
 typedef struct lac_run_nl
 {
@@ -62,18 +38,11 @@ typedef struct lac_run_nl
   lac_nl *model;              /* owned: the large-deformation model       */
   lac_loadstep *ls;           /* owned: the load steps and the loop of
                                  Algorithm 1 (U, lambda, records)         */
-  double *factor;             /* owned, nfactor load factors              */
-  size_t nfactor, next;
+  lac_run_steplog log;        /* the load factors and the records of the
+                                 steps (imposed_ref: the first non-zero
+                                 ramped value)                            */
   int in_step;                /* a load step is under way                 */
   int cuts_seen;              /* its cuts already reported                */
-  size_t monitor;             /* node, SIZE_MAX: none                     */
-  double imposed_ref;         /* first non-zero ramped value (t = 1)      */
-  lac_run_nl_step *step;      /* owned, nfactor                           */
-  size_t nmult, capmult;
-  lac_run_nl_mult *mult;      /* owned                                    */
-  size_t nkept;               /* steps before the last with a step file   */
-  size_t *kept;               /* owned, their indices j (0-based)         */
-  double *ukept;              /* owned, nkept * ndof displacements        */
 } lac_run_nl;
 
 /* strategy: asked for on the command line (0: the scene's [contact]
@@ -90,7 +59,5 @@ int lac_run_nl_solve (const lac_scene *sc, int strategy, const lac_mesh *m,
                       const lac_run_system *sys, lac_run_nl *nl, double *u,
                       char *progress, size_t size);
 void lac_run_nl_clear (lac_run_nl *nl);
-/* 1 if step j (0-based) of n gets a step_NNN.vtu: every K-th, the last. */
-int lac_run_nl_step_file (size_t j, size_t n, int K);
 
 #endif /* LAC_RUN_NONLINEAR_H */

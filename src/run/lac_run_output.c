@@ -6,6 +6,7 @@
 #include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "fem/lac_post.h"
 #include "io/lac_output.h"
 #include "io/lac_output_batch.h"
 #include "io/lac_vtu.h"
@@ -66,10 +67,18 @@ write_summary (const lac_run_output_in *in, lac_output_batch *b)
               : LAC_ENOMEM;
 }
 
+/* The records of the load steps: large deformation, or small strain
+ * with [steps]. */
+static const lac_run_steplog *
+steplog (const lac_run_output_in *in)
+{
+  return in->post.nl ? &in->post.nl->log : &in->post.steps->log;
+}
+
 static int
 write_curve (const lac_run_output_in *in, const char *path)
 {
-  const lac_run_nl *nl = in->post.nl;
+  const lac_run_steplog *nl = steplog (in);
   int dim = in->post.mesh->dim;
   FILE *f;
   int status = lac_file_create (path, "w", &f);
@@ -81,7 +90,7 @@ write_curve (const lac_run_output_in *in, const char *path)
   fprintf (f, "0,0,0,0,0%s,0,0,0,0,0,0,0\n", dim == 3 ? ",0" : "");
   for (size_t j = 0; j < nl->nfactor; j++)
     {
-      const lac_run_nl_step *q = &nl->step[j];
+      const lac_run_step_record *q = &nl->step[j];
       const lac_nl_step *h = &q->solver;
       fprintf (f, "%zu,%.10e,%.10e", j + 1, h->t, q->imposed);
       for (int k = 0; k < dim; k++)
@@ -96,7 +105,7 @@ write_curve (const lac_run_output_in *in, const char *path)
 static int
 write_mults (const lac_run_output_in *in, const char *path, int last_only)
 {
-  const lac_run_nl *nl = in->post.nl;
+  const lac_run_steplog *nl = steplog (in);
   FILE *f;
   int status = lac_file_create (path, "w", &f);
   if (status)
@@ -105,7 +114,7 @@ write_mults (const lac_run_output_in *in, const char *path, int last_only)
            last_only ? "" : "step,");
   for (size_t q = 0; q < nl->nmult; q++)
     {
-      const lac_run_nl_mult *u = &nl->mult[q];
+      const lac_run_mult_record *u = &nl->mult[q];
       if (last_only && u->step != (int) nl->nfactor)
         continue;
       if (!last_only)
@@ -139,7 +148,7 @@ write_step_vtu (const lac_run_output_in *in, lac_output_batch *b, size_t j,
 static int
 write_pvd (const lac_run_output_in *in, const char *path)
 {
-  const lac_run_nl *nl = in->post.nl;
+  const lac_run_steplog *nl = steplog (in);
   FILE *f;
   int status = lac_file_create (path, "w", &f);
   if (status)
@@ -147,7 +156,7 @@ write_pvd (const lac_run_output_in *in, const char *path)
   lac_vtu_xml_head (f, "Collection", "0.1", "");
   fprintf (f, "  <Collection>\n");
   for (size_t j = 0; j < nl->nfactor; j++)
-    if (lac_run_nl_step_file (j, nl->nfactor, in->post.sc->steps.vtu_every))
+    if (lac_run_steplog_file (j, nl->nfactor, in->post.sc->steps.vtu_every))
       fprintf (f, "    <DataSet timestep=\"%.10g\" group=\"\" part=\"0\" "
                "file=\"step_%03zu.vtu\"/>\n", nl->step[j].solver.t,
                j + 1);
@@ -155,12 +164,25 @@ write_pvd (const lac_run_output_in *in, const char *path)
   return lac_file_close (f, path);
 }
 
+/* The stresses of the displacement u of a kept step, as in stage post:
+ * Cauchy's (large deformation) or the linear ones. */
+static int
+step_stresses (const lac_run_output_in *in, const double *u, double *sigma,
+               double *vm)
+{
+  const lac_run_post_in *p = &in->post;
+  return p->nl ? lac_hyper_cauchy_nodal (p->mesh, &p->mat->hyper, u, NULL,
+                                         sigma, vm)
+         : lac_post_stress_nodal (p->mesh, &p->mat->elastic, u, NULL, sigma,
+                                  vm);
+}
+
 /* The step files ([steps] vtu_every) and steps.pvd; stresses of the kept
- * steps as in stage post (lac_hyper_cauchy_nodal). */
+ * steps as in stage post. */
 static int
 write_steps (const lac_run_output_in *in, lac_output_batch *b)
 {
-  const lac_run_nl *nl = in->post.nl;
+  const lac_run_steplog *nl = steplog (in);
   const lac_mesh *m = in->post.mesh;
   size_t nn = m->nnodes, ndof = (size_t) m->dim * nn;
   int ns = lac_model_nstress (in->post.model);
@@ -172,8 +194,7 @@ write_steps (const lac_run_output_in *in, lac_output_batch *b)
   for (size_t q = 0; q < nl->nkept && !status; q++)
     {
       const double *u = nl->ukept + q * ndof;
-      if (!(status = lac_hyper_cauchy_nodal (m, &in->post.mat->hyper, u,
-                                             NULL, sigma, vm)))
+      if (!(status = step_stresses (in, u, sigma, vm)))
         status = write_step_vtu (in, b, nl->kept[q], u, sigma, vm);
     }
   if (!status)
@@ -189,12 +210,38 @@ write_steps (const lac_run_output_in *in, lac_output_batch *b)
 
 /* ---- the stage -------------------------------------------------------- */
 
+/* A small-strain run with [steps]: the curve, contact_steps.csv, the step
+ * files; their names in list. */
+static int
+linear_steps (const lac_run_output_in *in, lac_output_batch *b, char *list,
+              size_t size)
+{
+  const lac_scene *sc = in->post.sc;
+  const char *curve = sc->steps.curve ? sc->steps.curve : "curve.csv";
+  const char *path;
+  char nsteps[64] = "";
+  int status = LAC_SUCCESS;
+  if (!(path = lac_output_batch_add (b, curve))
+      || (status = write_curve (in, path))
+      || !(path = lac_output_batch_add (b, "contact_steps.csv"))
+      || (status = write_mults (in, path, 0)))
+    return status ? status : LAC_ENOMEM;
+  if (sc->steps.vtu_every > 0 && (status = write_steps (in, b)))
+    return status;
+  if (sc->steps.vtu_every > 0)
+    snprintf (nsteps, sizeof nsteps, "%zu step_NNN.vtu, steps.pvd, ",
+              steplog (in)->nkept + 1);
+  snprintf (list, size, "%s, contact_steps.csv, %s", curve, nsteps);
+  return LAC_SUCCESS;
+}
+
 static int
 output_linear (const lac_run_output_in *in, lac_output_batch *b,
                char *progress, size_t size)
 {
   const lac_scene_output *o = &in->post.sc->output;
   const char *path = "";
+  char steps[128] = "";
   int contact = in->post.setup->data.all != NULL;
   int status = write_fields (in, b);
   if (!status && contact)
@@ -203,12 +250,14 @@ output_linear (const lac_run_output_in *in, lac_output_batch *b,
       && (!(path = lac_output_batch_add (b, "K.mtx"))
           || (status = lac_csc_write_mm (in->post.sys->K0, path))))
     return status ? status : LAC_ENOMEM;
+  if (!status && in->post.steps)
+    status = linear_steps (in, b, steps, sizeof steps);
   if (!status && !(status = write_summary (in, b)))
-    snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
+    snprintf (progress, size, "%s/: %s%s%s%s%s%ssummary.txt", in->dir,
               o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
               o->csv && contact ? "contact.csv, " : "",
               o->vtu && contact ? "contact.vtu, " : "",
-              o->matrix ? "K.mtx, " : "");
+              o->matrix ? "K.mtx, " : "", steps);
   return status;
 }
 
@@ -238,7 +287,7 @@ output_nonlinear (const lac_run_output_in *in, lac_output_batch *b,
   if (status || (status = write_summary (in, b)))
     return status;
   snprintf (nsteps, sizeof nsteps, "%zu step_NNN.vtu, steps.pvd, ",
-            in->post.nl->nkept + 1);
+            steplog (in)->nkept + 1);
   snprintf (progress, size, "%s/: %s%s%s%s%ssummary.txt", in->dir,
             o->vtu ? "solution.vtu, " : "", o->csv ? "nodes.csv, " : "",
             curve, macro ? ", contact.csv, contact_steps.csv, " : ", ",

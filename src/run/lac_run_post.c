@@ -246,8 +246,8 @@ nl_pairs (const lac_run_post_in *in, const lac_newton *s, lac_summary *sum)
 static int
 nl_summary (const lac_run_post_in *in, lac_run_results *r)
 {
-  const lac_run_nl *nl = in->nl;
-  const lac_newton *s = nl->ls->loop;
+  const lac_run_steplog *nl = &in->nl->log;
+  const lac_newton *s = in->nl->ls->loop;
   const lac_mesh *m = in->mesh;
   lac_summary *sum = &r->summary;
   int dim = m->dim, itmax = 0, ncut = 0, status;
@@ -267,29 +267,12 @@ nl_summary (const lac_run_post_in *in, lac_run_results *r)
       || (status = lac_summary_add (sum, "cut_steps", "%d", ncut))
       || (status = summary_maxima (in, r)))
     return status;
-  if (nl->monitor != SIZE_MAX)
-    {
-      const char *ax[3] = { "x", "y", "z" };
-      double ext = 0;
-      for (size_t j = 0; j < nl->nfactor; j++)
-        if (fabs (nl->step[j].um[dim - 1]) > fabs (ext))
-          ext = nl->step[j].um[dim - 1];
-      for (int k = 0; k < dim && !status; k++)
-        {
-          char key[32];
-          snprintf (key, sizeof key, "monitor_u%s", ax[k]);
-          status = lac_summary_add (sum, key, "%.10e",
-                                        nl->step[nl->nfactor - 1].um[k]);
-        }
-      if (!status)
-        status = lac_summary_add (sum, "monitor_extreme", "%.10e", ext);
-      if (status)
-        return status;
-    }
+  if ((status = lac_run_steplog_summary (nl, dim, sum)))
+    return status;
   if (!in->setup->npairs)
     return LAC_SUCCESS;
-  const lac_run_nl_step *q = &nl->step[nl->nfactor - 1];
-  if ((status = lac_run_pairs_dropped (&nl->model->data, s, sum)))
+  const lac_run_step_record *q = &nl->step[nl->nfactor - 1];
+  if ((status = lac_run_pairs_dropped (&in->nl->model->data, s, sum)))
     return status;
   if ((status = lac_summary_add (sum, "macro_elements", "%zu",
                                  lac_contact_set_nslot (&in->setup->set)))
@@ -403,6 +386,10 @@ post_linear (const lac_run_post_in *in, lac_run_results *res,
                                            &res->contact, &res->summary)))
     return status;
   if ((status = lac_run_solve_summary (in->sol, &res->summary))
+      || (in->steps && (status = lac_run_steps_summary (in->steps,
+                                                        in->sol->newton,
+                                                        in->mesh->dim,
+                                                        &res->summary)))
       || (status = reactions (in, &res->summary)))
     return status;
   char where[64] = "";
@@ -432,7 +419,7 @@ post_nonlinear (const lac_run_post_in *in, lac_run_results *res,
     return status;
   snprintf (progress, size, "Cauchy stresses, von Mises; %zu Newton "
             "iterations in %zu load steps", in->nl->ls->loop->nhist,
-            in->nl->nfactor);
+            in->nl->log.nfactor);
   return LAC_SUCCESS;
 }
 

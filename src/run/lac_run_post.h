@@ -24,6 +24,7 @@
 #include "run/lac_run_nonlinear.h"
 #include "run/lac_run_setup.h"
 #include "run/lac_run_solve.h"
+#include "run/lac_run_steps.h"
 #include "run/lac_run_system.h"
 #include "run/lac_summary.h"
 
@@ -50,6 +51,7 @@ typedef struct lac_run_post_in
   const double *u;                 /* ndof: the displacement              */
   const lac_run_solution *sol;     /* linear scenes, else NULL            */
   const lac_run_nl *nl;            /* large deformation, else NULL        */
+  const lac_run_steps *steps;      /* small strain with [steps], else NULL */
   const char *effects;             /* "plane strain, small strain, ..."   */
 } lac_run_post_in;
 

@@ -266,6 +266,8 @@ contact_start (const lac_scene *sc, int strategy,
       lac_strategy_free (st);
       return status;
     }
+  if (sys->curves)             /* load steps: the Dirichlet part of G */
+    lac_linear_model_keep_lift (&sol->lin, &sys->lift);
   lac_newton_opts_init (&o);
   o.kind = sol->strategy;
   o.maxit = c->max_iterations;
@@ -326,8 +328,9 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
     {
       char msg[600];
       lac_run_inner_message (msg, sizeof msg);
-      return lac_error_set (status, sc->path, "active-set iteration %zu: "
-                            "%s", nw->nhist + 1, msg);
+      return lac_error_set (status, sc->path, "%sactive-set iteration "
+                            "%zu: %s", sol->step,
+                            lac_newton_iterations (nw) + 1, msg);
     }
   krylov_counts (nw->strategy, sol);
   if (status == LAC_SUCCESS)
@@ -337,8 +340,10 @@ contact_iterate (const lac_scene *sc, const lac_run_setup *setup,
       snprintf (progress, size, "%s%s%s%s, active set: %zu iteration%s, "
                 "%zu of %zu multipliers active%s",
                 lac_strategy_method (nw->strategy), sol->why ? " (" : "",
-                sol->why ? sol->why : "", sol->why ? ")" : "", nw->nhist,
-                nw->nhist > 1 ? "s" : "", lac_newton_nactive (nw),
+                sol->why ? sol->why : "", sol->why ? ")" : "",
+                lac_newton_iterations (nw),
+                lac_newton_iterations (nw) > 1 ? "s" : "",
+                lac_newton_nactive (nw),
                 setup->data.all->k, sol->krylov && h ? "; last solve: "
                 : "");
       if (sol->krylov && h)

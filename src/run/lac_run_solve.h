@@ -51,6 +51,8 @@ typedef struct lac_run_solution
                                   and ||K||_inf, and stage 6 for the
                                   stresses on its processes (the newton's,
                                   or `plain`)                              */
+  char step[96];               /* "load step k of n (...): " before the
+                                  message of a failed loop, or ""         */
   lac_strategy *plain;         /* owned: the strategy of a scene without
                                   contact, kept for stage 6 when it holds
                                   the cells (lac_strategy_posts); the

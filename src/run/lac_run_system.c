@@ -16,6 +16,8 @@ lac_run_system_clear (lac_run_system *sys)
 {
   lac_csc_free (sys->K);
   lac_csc_free (sys->K0);
+  lac_run_curves_free (sys->curves);
+  lac_linear_lift_clear (&sys->lift);
   lac_free (sys->F);
   lac_free (sys->b);
   lac_dirichlet_free (sys->dir);
@@ -71,50 +73,78 @@ total_force (const lac_mesh *m, lac_model model, const lac_group *g,
   return lac_assembly_traction (m, model, g, const_field, &c, F);
 }
 
+/* F += the load of section k. */
+static int
+add_load (const lac_scene *sc, size_t k, lac_model model, const lac_mesh *m,
+          double *F)
+{
+  const lac_scene_load *l = &sc->load[k];
+  const lac_group *g = l->group ? lac_mesh_group (m, l->group) : NULL;
+  const_ctx c = { m->dim, { l->vec[0], l->vec[1], l->vec[2] } };
+  int status = LAC_SUCCESS;
+  lac_exact e;
+  lac_run_exact (sc, model, &e);
+  if (l->kind == LAC_LOAD_EXACT_TRACTION)
+    status = lac_assembly_traction_n (m, model, g, lac_exact_traction, &e,
+                                      F);
+  else if (l->kind == LAC_LOAD_EXACT_TANGENTIAL)
+    status = lac_assembly_traction_n (m, model, g,
+                                      lac_exact_traction_tangential, &e, F);
+  else if (l->kind == LAC_LOAD_EXACT_FORCE)
+    status = lac_assembly_volume_force (m, model, g, lac_exact_force, &e,
+                                        F);
+  else if (l->kind == LAC_LOAD_TOTAL)
+    status = total_force (m, model, g, l->vec, F);
+  else if (l->kind == LAC_LOAD_POINT)
+    for (int i = 0; i < m->dim; i++)                   /* one node */
+      F[g->node[0] * (size_t) m->dim + (size_t) i] += l->vec[i];
+  else if (l->kind == LAC_LOAD_PRESSURE)
+    status = lac_assembly_pressure (m, model, g, l->pressure, F);
+  else if (l->kind == LAC_LOAD_TRACTION)
+    status = lac_assembly_traction (m, model, g, const_field, &c, F);
+  else
+    status = lac_assembly_volume_force (m, model, g, const_field, &c, F);
+  if (status)
+    {
+      char msg[600];
+      lac_run_inner_message (msg, sizeof msg);
+      return lac_scene_error (sc, &l->sec, NULL, status, "%s", msg);
+    }
+  return LAC_SUCCESS;
+}
+
 static int
 add_loads (const lac_scene *sc, lac_model model, const lac_mesh *m,
            double *F)
 {
   int status = LAC_SUCCESS;
   for (size_t k = 0; k < sc->nload && !status; k++)
-    {
-      const lac_scene_load *l = &sc->load[k];
-      const lac_group *g = l->group ? lac_mesh_group (m, l->group) : NULL;
-      const_ctx c = { m->dim, { l->vec[0], l->vec[1], l->vec[2] } };
-      lac_exact e;
-      lac_run_exact (sc, model, &e);
-      if (l->kind == LAC_LOAD_EXACT_TRACTION)
-        status = lac_assembly_traction_n (m, model, g,
-                                          lac_exact_traction, &e, F);
-      else if (l->kind == LAC_LOAD_EXACT_TANGENTIAL)
-        status = lac_assembly_traction_n (m, model, g,
-                                          lac_exact_traction_tangential, &e,
-                                          F);
-      else if (l->kind == LAC_LOAD_EXACT_FORCE)
-        status = lac_assembly_volume_force (m, model, g,
-                                            lac_exact_force, &e, F);
-      else if (l->kind == LAC_LOAD_TOTAL)
-        status = total_force (m, model, g, l->vec, F);
-      else if (l->kind == LAC_LOAD_POINT)
-        for (int i = 0; i < m->dim; i++)               /* one node */
-          F[g->node[0] * (size_t) m->dim + (size_t) i] += l->vec[i];
-      else if (l->kind == LAC_LOAD_PRESSURE)
-        status = lac_assembly_pressure (m, model, g, l->pressure,
-                                        F);
-      else if (l->kind == LAC_LOAD_TRACTION)
-        status = lac_assembly_traction (m, model, g, const_field, &c,
-                                        F);
-      else
-        status = lac_assembly_volume_force (m, model, g,
-                                            const_field, &c, F);
-      if (status)
-        {
-          char msg[600];
-          lac_run_inner_message (msg, sizeof msg);
-          return lac_scene_error (sc, &l->sec, NULL, status, "%s", msg);
-        }
-    }
+    status = add_load (sc, k, model, m, F);
   return status;
+}
+
+/* ---- load steps of a small-strain scene ------------------------------- */
+
+/* [steps] in a small-strain scene: the loads by curve
+ * (run/lac_run_curves.h). */
+static int
+small_steps (const lac_scene *sc)
+{
+  return !sc->scene.large_deformation && sc->steps.sec.line != 0;
+}
+
+/* The curves, F_c of each, the curve of each Dirichlet entry. */
+static int
+curves_build (const lac_scene *sc, lac_model model, const lac_mesh *m,
+              lac_run_system *sys)
+{
+  lac_run_curves *cv = lac_run_curves_alloc (sc, sys->ndof);
+  int status = cv ? LAC_SUCCESS : LAC_ENOMEM;
+  sys->curves = cv;
+  for (size_t k = 0; k < sc->nload && !status; k++)
+    status = add_load (sc, k, model, m, cv->F + cv->of_load[k] * cv->ndof);
+  return status ? status : lac_run_curves_entries (sc, model, m, sys->dir,
+                                                   cv);
 }
 
 static int
@@ -229,6 +259,8 @@ contact_matrices (const lac_scene *sc, lac_run_setup *setup,
   if (all && (status = lac_contact_to_frames (all, sys->dir->frames)))
                                                              /* T^T C */
     return status;
+  if (sys->curves)           /* load steps: G0 and C_D kept for the steps */
+    return lac_linear_lift_record (sys->dir, all, &sys->lift);
   return lac_contact_apply_dirichlet (all, sys->dir->n, sys->dir->dof,
                                       sys->dir->val);
 }
@@ -258,7 +290,10 @@ eliminate (const lac_scene *sc, lac_run_system *sys)
   if (sc->output.matrix && !(sys->K0 = lac_csc_copy (sys->K)))
     LAC_ERROR (LAC_ENOMEM, "copy of K");
   memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
-  if ((status = lac_frames_rotate_matrix (sys->dir->frames, sys->K)))
+  if ((status = lac_frames_rotate_matrix (sys->dir->frames, sys->K))
+      || (sys->curves                     /* load steps: b of each curve */
+          && (status = lac_run_curves_lift (sys->curves, sys->K,
+                                            sys->dir))))
     return status;
   lac_frames_to_local (sys->dir->frames, sys->b);
   return lac_dirichlet_apply (sys->dir, sys->K, sys->b);
@@ -307,6 +342,7 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
       || (status = add_dirichlet (sc, model, m, sys->dir))
       || (status = find_bodies (sc, model, m, setup, sys))
       || (status = count_fixed (sys))
+      || (small_steps (sc) && (status = curves_build (sc, model, m, sys)))
       || (sc->ncontact && !large                           /* C, G (else: */
           && (status = contact_matrices (sc, setup, sys))))
     goto done;                                       /* per Newton it.) */
@@ -318,9 +354,13 @@ lac_run_system_build (const lac_scene *sc, lac_model model,
       goto done;
     }
   if (plates
-      && ((status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
-                                       &sys->ties))
-          || (!(sys->K = lac_csc_from_triplet (T)) && (status = LAC_ENOMEM))
+      && (status = lac_run_plate_tie (sc, m, setup, T, sys->F, sys->dir,
+                                      &sys->ties)))
+    goto done;
+  if (plates && sys->curves)
+    lac_run_curves_tie (sys->curves, &sys->ties);       /* P^T F_c */
+  if (plates
+      && ((!(sys->K = lac_csc_from_triplet (T)) && (status = LAC_ENOMEM))
           || (status = eliminate (sc, sys))))
     goto done;
 done:
@@ -359,7 +399,10 @@ lac_run_system_stiffness (const lac_scene *sc, const lac_mesh *m,
     {                                   /* b and the entries: no K */
       memcpy (sys->b, sys->F, sys->ndof * sizeof *sys->b);
       if ((status = lac_assembly_digest (m, &mat->elastic, sys->dir, sys->b,
-                                         &sys->nnz)))
+                                         &sys->nnz))
+          || (sys->curves                 /* load steps: b of each curve */
+              && (status = lac_run_curves_digest (sys->curves, m,
+                                                  &mat->elastic, sys->dir))))
         return status;
       sys->k_by_solver = 1;
     }

@@ -16,7 +16,11 @@
  *      surface and is not fixed is an error naming it and its free motion;
  *      the free motions of bodies held by contact alone are N, for the
  *      solve (solve/lac_system.h).  Rigid plates ([load] plate = yes)
- *      condensed into K and F (run/lac_run_plate.h).
+ *      condensed into K and F (run/lac_run_plate.h).  A small-strain
+ *      scene with [steps]: also F and b of each load curve
+ *      (run/lac_run_curves.h), and G0 and C_D of the mean gaps kept
+ *      before the Dirichlet values are moved in, for the linear model to
+ *      move the values of every step in (solve/lac_linear_model.h).
  */
 #ifndef LAC_RUN_SYSTEM_H
 #define LAC_RUN_SYSTEM_H
@@ -28,9 +32,11 @@
 #include "fem/lac_assembly_dist.h"
 #include "fem/lac_rigid.h"
 #include "io/lac_scene.h"
+#include "run/lac_run_curves.h"
 #include "run/lac_run_material.h"
 #include "run/lac_run_plate.h"
 #include "run/lac_run_setup.h"
+#include "solve/lac_linear_model.h"
 
 typedef struct lac_run_system
 {
@@ -61,6 +67,12 @@ typedef struct lac_run_system
   char *fixed;             /* owned, ndof: the fixed dofs (cells.fixed)  */
   int k_by_solver;         /* 1: K = NULL because the solver assembles it
                               from the cells (lac_run_system_stiffness) */
+  lac_run_curves *curves;  /* owned, small strain with [steps]: F, b and
+                              the Dirichlet values by load curve
+                              (run/lac_run_curves.h); NULL otherwise    */
+  lac_linear_lift lift;    /* owned, with curves: G0 and C_D of the contact
+                              data, for the linear model to move the
+                              values of each step in (taken by stage 5) */
 } lac_run_system;
 
 /* Everything but K (with rigid plates: also K, which their condensation

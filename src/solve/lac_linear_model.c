@@ -184,13 +184,95 @@ take_contact (lac_linear_model *lm)
   return c->Ct ? take_friction (lm, c) : LAC_SUCCESS;
 }
 
+/* ---- load steps: the Dirichlet part of G ------------------------------ */
+
+void
+lac_linear_lift_clear (lac_linear_lift *l)
+{
+  lac_free (l->G0);
+  lac_free (l->e);
+  memset (l, 0, sizeof *l);
+}
+
+/* G0 = G of `all` and C_D, its entries in the rows of the Dirichlet dofs,
+ * into *l (before lac_contact_apply_dirichlet zeroes them). */
+static int
+lift_keep (const lac_dirichlet *dir, const lac_contact *all,
+           lac_linear_lift *l)
+{
+  const lac_csc *C = all->C;
+  char *fixed = lac_calloc (C->nrow + 1, 1);
+  int status = LAC_SUCCESS;
+  memset (l, 0, sizeof *l);
+  if (!fixed || !(l->G0 = lac_malloc ((all->k + 1) * sizeof *l->G0)))
+    status = LAC_ERRMSG (LAC_ENOMEM, "mean gaps of %zu multipliers",
+                         all->k);
+  for (size_t t = 0; !status && t < dir->n; t++)
+    if (dir->dof[t] < C->nrow)
+      fixed[dir->dof[t]] = 1;
+  for (size_t i = 0; !status && i < C->ncol; i++)
+    for (int p = C->p[i]; !status && p < C->p[i + 1]; p++)
+      if (fixed[C->i[p]])
+        {
+          if (lac_grow (&l->e, l->n + 1, &l->cap, sizeof *l->e, 64))
+            status = LAC_ERRMSG (LAC_ENOMEM, "Dirichlet rows of C");
+          else
+            l->e[l->n++] = (lac_linear_lift_entry) { i, (size_t) C->i[p],
+                                                     C->x[p] };
+        }
+  if (!status)
+    memcpy (l->G0, all->G, all->k * sizeof *l->G0);
+  else
+    lac_linear_lift_clear (l);
+  lac_free (fixed);
+  return status;
+}
+
+int
+lac_linear_lift_record (const lac_dirichlet *dir, lac_contact *all,
+                        lac_linear_lift *l)
+{
+  int status = lift_keep (dir, all, l);
+  return status ? status : lac_contact_apply_dirichlet (all, dir->n,
+                                                        dir->dof, dir->val);
+}
+
+void
+lac_linear_model_keep_lift (lac_linear_model *lm, lac_linear_lift *l)
+{
+  lac_linear_lift_clear (&lm->lift);
+  lm->lift = *l;
+  memset (l, 0, sizeof *l);
+  lac_linear_model_dirichlet (lm);
+}
+
+void
+lac_linear_model_dirichlet (lac_linear_model *lm)
+{
+  const lac_linear_lift *l = &lm->lift;
+  const lac_dirichlet *dir = lm->dir;
+  double *g = lm->x, *G;                /* the values, by dof (scratch) */
+  if (!l->G0 || !lm->data || !lm->data->all)
+    return;
+  G = lm->data->all->G;
+  for (size_t t = 0; t < dir->n; t++)
+    g[dir->dof[t]] = dir->val[t];       /* later entries win */
+  memcpy (G, l->G0, lm->data->all->k * sizeof *G);
+  for (size_t j = 0; j < l->n; j++)     /* G_i -= C(dof, i) g_dof */
+    G[l->e[j].col] -= l->e[j].x * g[l->e[j].dof];
+}
+
 /* A new concatenation of the contact data of every pair, as the caller's
  * was made: C turned to the nodal frames of rollers (T^T C, fem/lac_frames.h),
- * then the Dirichlet values moved into G. */
+ * then the Dirichlet values moved into G (with load steps, G0 and C_D
+ * kept first, in *l). */
 static int
-new_contact (const lac_linear_model *lm, lac_contact *all)
+new_contact (const lac_linear_model *lm, lac_contact *all,
+             lac_linear_lift *l)
 {
   int status = lac_contact_to_frames (all, lm->dir->frames);
+  if (!status && lm->lift.G0)
+    return lac_linear_lift_record (lm->dir, all, l);
   return status ? status : lac_contact_apply_dirichlet (all, lm->dir->n,
                                                         lm->dir->dof,
                                                         lm->dir->val);
@@ -202,6 +284,7 @@ widen (void *self, const double *U, double reach, size_t *more)
 {
   lac_linear_model *lm = self;
   lac_contact_set_data nd = { 0 };
+  lac_linear_lift l = { 0 };
   int status;
   (void) U;
   *more = 0;
@@ -211,19 +294,26 @@ widen (void *self, const double *U, double reach, size_t *more)
   for (size_t p = 0; p < lm->set->n; p++)
     lm->set->pair[p].popts.dist_abs += reach;
   if ((status = lac_contact_set_build (lm->set, NULL, &nd))
-      || (nd.all && (status = new_contact (lm, nd.all))))
+      || (nd.all && (status = new_contact (lm, nd.all, &l))))
     {
+      lac_linear_lift_clear (&l);
       lac_contact_set_data_clear (&nd);
       return status;
     }
   if (!nd.all || nd.all->k <= k0)
     {
+      lac_linear_lift_clear (&l);
       lac_contact_set_data_clear (&nd);             /* nothing gained */
       return LAC_SUCCESS;
     }
   *more = nd.all->k - k0;
   lac_contact_set_data_clear (lm->data);
   *lm->data = nd;
+  if (l.G0)
+    {
+      lac_linear_lift_clear (&lm->lift);
+      lm->lift = l;
+    }
   lm->news = LAC_MODEL_NEW_C;
   return take_contact (lm);
 }
@@ -282,6 +372,7 @@ lac_linear_model_init_set (lac_linear_model *lm,
 void
 lac_linear_model_clear (lac_linear_model *lm)
 {
+  lac_linear_lift_clear (&lm->lift);
   lac_free (lm->d);
   lac_free (lm->r);
   lac_free (lm->x);

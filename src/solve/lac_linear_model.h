@@ -27,6 +27,19 @@
  * the tangential columns and jumps too, and linearize a system whose
  * columns are [c_n c_t] of every macro-element side by side.
  *
+ * Load steps (run/lac_run_steps.h): from one loop to the next the caller
+ * changes F and the Dirichlet values in place; K, C and the pairing stay,
+ * so that the strategy keeps its factorization.  The Dirichlet part of
+ * the mean gaps,
+ *
+ *   G = G0 - C_D^T g        (C_D: the rows of C at the Dirichlet dofs,
+ *                            g: their values; then C_D is zeroed),
+ *
+ * is made again from the values of the moment (lac_linear_model_dirichlet)
+ * out of G0 and C_D, kept when the values were first moved in
+ * (lac_linear_lift_record, by the caller), then by the model for every
+ * new contact data (widen).
+ *
  * Ownership: the system, the set and the Dirichlet data are borrowed;
  * with a set, *data is the caller's, replaced (the old one cleared) by
  * widen.
@@ -37,6 +50,21 @@
 #include "contact/lac_contact_set.h"
 #include "fem/lac_assembly.h"
 #include "solve/lac_contact_model.h"
+
+/* An entry of C_D: C(dof, col) = x. */
+typedef struct lac_linear_lift_entry
+{
+  size_t col, dof;
+  double x;
+} lac_linear_lift_entry;
+
+/* The Dirichlet part of the mean gaps of one contact data (load steps). */
+typedef struct lac_linear_lift
+{
+  double *G0;                 /* owned, k: G without the Dirichlet values  */
+  size_t n, cap;
+  lac_linear_lift_entry *e;   /* owned, n: C_D column by column            */
+} lac_linear_lift;
 
 typedef struct lac_linear_model
 {
@@ -49,6 +77,8 @@ typedef struct lac_linear_model
   const lac_dirichlet *dir;   /* its frames turn a new contact's C, its
                                  values are moved into its G              */
   int news;                   /* what linearize reports next (LAC_MODEL_*) */
+  lac_linear_lift lift;       /* owned, load steps: G0 and C_D (G0 NULL:
+                                 not kept)                                */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
   /* Coulomb friction (the contact data has tangential columns): */
   lac_csc *Call;              /* owned: [c_n c_t] of every column, side by
@@ -74,5 +104,18 @@ int lac_linear_model_init_set (lac_linear_model *lm,
                                const lac_dirichlet *dir, double E,
                                lac_contact_model *m);
 void lac_linear_model_clear (lac_linear_model *lm);
+/* Load steps: the Dirichlet values of dir moved into the mean gaps of
+ * `all` (lac_contact_apply_dirichlet, C_D zeroed), G0 and C_D kept first
+ * in *l (new; lac_linear_lift_clear). */
+int lac_linear_lift_record (const lac_dirichlet *dir, lac_contact *all,
+                            lac_linear_lift *l);
+void lac_linear_lift_clear (lac_linear_lift *l);
+/* After init_set: *l (recorded on the model's contact data) moved into the
+ * model (l emptied), G made from the values of dir now; every new contact
+ * data of widen keeps its own from then on. */
+void lac_linear_model_keep_lift (lac_linear_model *lm, lac_linear_lift *l);
+/* G = G0 - C_D^T g for the values g of dir now (later entries of a dof
+ * win), the arithmetic of lac_contact_apply_dirichlet. */
+void lac_linear_model_dirichlet (lac_linear_model *lm);
 
 #endif /* LAC_LINEAR_MODEL_H */
