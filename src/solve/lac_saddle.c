@@ -209,11 +209,36 @@ saddle_solve (void *w, const char *active, const double *f, const double *g,
 
 /* ---- the equations of a contact law (friction) ---------------------------- */
 
-/* The entries of row j of a law's equations (lac_contact_rows), scaled:
- * -P C^T on the displacements, Q on the multipliers of its group. */
+/* The scale Dr_j of row j of a law's equations: 1 / its largest entry
+ * once the columns are scaled by D (P C^T D on the displacements, Q D on
+ * the multipliers).  A row of Q alone (the slip of friction: lambda_t + mu
+ * e lambda_n = 0) would otherwise carry entries D_j^2, far from the
+ * others, and look singular to the solver's condition test. */
+static double
+rows_scale (const lac_saddle *s, const lac_contact_rows *R, size_t j)
+{
+  const lac_csc *C = s->sys->C;
+  const double *D = s->D;
+  size_t n = s->n, q = (size_t) R->q, g = j / q;
+  double m = 0;
+  for (size_t b = 0; b < q; b++)
+    {
+      size_t i = g * q + b;
+      double pj = fabs (R->P[j * q + b]), qj = fabs (R->Q[j * q + b]);
+      for (int p = C->p[i]; pj != 0 && p < C->p[i + 1]; p++)
+        m = fmax (m, pj * fabs (C->x[p] * D[C->i[p]]));
+      if (R->free[i])
+        m = fmax (m, qj * D[n + i]);
+    }
+  return m > 0 ? 1 / m : 1.0;
+}
+
+/* The entries of row j of a law's equations (lac_contact_rows), scaled by
+ * Dr_j and the columns' D: -P C^T on the displacements, Q on the
+ * multipliers of its group. */
 static int
 rows_row (const lac_saddle *s, const lac_contact_rows *R, size_t j,
-          lac_triplet *T)
+          double dr, lac_triplet *T)
 {
   const lac_csc *C = s->sys->C;
   const double *D = s->D;
@@ -225,15 +250,15 @@ rows_row (const lac_saddle *s, const lac_contact_rows *R, size_t j,
       double pj = R->P[j * q + b], qj = R->Q[j * q + b];
       for (int p = C->p[i]; !status && pj != 0 && p < C->p[i + 1]; p++)
         status = lac_triplet_add (T, n + j, (size_t) C->i[p],
-                                  -D[n + j] * pj * C->x[p] * D[C->i[p]]);
+                                  -dr * pj * C->x[p] * D[C->i[p]]);
       if (!status && qj != 0 && R->free[i])
-        status = lac_triplet_add (T, n + j, n + i, D[n + j] * qj * D[n + i]);
+        status = lac_triplet_add (T, n + j, n + i, dr * qj * D[n + i]);
     }
   return status;
 }
 
-/* D A D of a law's equations: K, -C on the free multipliers, their rows;
- * lambda_j = 0 for the others. */
+/* [D; Dr] A D of a law's equations: K, -C on the free multipliers, their
+ * rows; lambda_j = 0 for the others. */
 static lac_csc *
 rows_matrix (const lac_saddle *s, const lac_contact_rows *R)
 {
@@ -260,7 +285,7 @@ rows_matrix (const lac_saddle *s, const lac_contact_rows *R)
         status = lac_triplet_add (T, (size_t) C->i[p], n + i,
                                   -D[C->i[p]] * C->x[p] * D[n + i]);
       if (!status)
-        status = rows_row (s, R, i, T);
+        status = rows_row (s, R, i, s->rows_for[2 * k * q + i], T);
     }
   if (!status)
     A = lac_csc_from_triplet (T);
@@ -278,11 +303,13 @@ rows_factorize (lac_saddle *s, const lac_contact_rows *R)
       && !memcmp (s->rows_for + kq, R->Q, kq * sizeof *R->Q)
       && !memcmp (s->factored_for, R->free, k))
     return LAC_SUCCESS;
-  if (!s->rows_for && !(s->rows_for = lac_malloc (2 * kq * sizeof
-                                                  *s->rows_for + 1)))
+  if (!s->rows_for && !(s->rows_for = lac_malloc ((2 * kq + k + 1)
+                                                  * sizeof *s->rows_for)))
     LAC_ERROR (LAC_ENOMEM, "equations of %zu multipliers", k);
   s->have_factor = 0;
   saddle_scaling (s, R->free);
+  for (size_t j = 0; j < k; j++)                 /* the rows' scales Dr */
+    s->rows_for[2 * kq + j] = R->free[j] ? rows_scale (s, R, j) : 1.0;
   lac_csc *A = rows_matrix (s, R);
   if (!A)
     return LAC_ENOMEM;
@@ -311,12 +338,13 @@ saddle_solve_rows (void *w, const lac_contact_rows *R, const double *f,
   int status = rows_factorize (s, R);
   if (status)
     return status;
+  const double *Dr = s->rows_for + 2 * k * (size_t) R->q;
   f = f ? f : s->sys->F;
   r = r ? r : R->r;
-  for (size_t j = 0; j < n; j++)                        /* D [F; r] */
+  for (size_t j = 0; j < n; j++)                        /* [D F; Dr r] */
     rhs[j] = D[j] * f[j];
   for (size_t i = 0; i < k; i++)
-    rhs[n + i] = R->free[i] ? D[n + i] * r[i] : 0.0;
+    rhs[n + i] = R->free[i] ? Dr[i] * r[i] : 0.0;
   if ((status = lac_solver_solve (s->solver, rhs, sol)))
     return status;
   for (size_t j = 0; j < n; j++)
