@@ -196,9 +196,11 @@ static const char *
 auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
           size_t k, size_t nfree, const lac_strategy_context *ctx)
 {
-  if (want != LAC_STRATEGY_AUTO
-      || kind == lac_strategy_choose (want, n, k, nfree))
+  lac_strategy_kind by_size = lac_strategy_choose (want, n, k, nfree);
+  if (want != LAC_STRATEGY_AUTO || kind == by_size)
     return NULL;
+  if (kind == LAC_STRATEGY_SADDLE && !lac_strategy_solves_rows (by_size))
+    return "auto: friction on a body held by contact alone";
   return ctx->processes > 1 ? "auto: more than one MPI process"
          : "auto: a Cholesky factor would not fit in --max-memory";
 }
@@ -217,17 +219,10 @@ contact_kind (const lac_scene *sc, int strategy,
   lac_strategy_kind kind = lac_strategy_choose_in (want, sys->ndof,
                                                    setup->data.all->k,
                                                    sys->nfree, ctx);
-  if (!lac_scene_friction (sc) || kind == LAC_NSTRATEGIES
-      || lac_strategy_solves_rows (kind))
-    return kind;
-  if (want == LAC_STRATEGY_AUTO)     /* friction: a type that solves its */
-    return sys->nfree ? LAC_STRATEGY_SADDLE : LAC_STRATEGY_SCHUR;
-  lac_error_set (LAC_EINVAL, __func__, "the strategy %s does not solve the "
-                 "equations of friction (its slip makes the system "
-                 "unsymmetric): take dense, schur (every body held by its "
-                 "Dirichlet conditions) or saddle",
-                 lac_strategy_table[kind].name);
-  return LAC_NSTRATEGIES;
+  if (want == LAC_STRATEGY_AUTO && lac_scene_friction (sc)
+      && kind != LAC_NSTRATEGIES && !lac_strategy_solves_rows (kind))
+    kind = LAC_STRATEGY_SADDLE;    /* friction: a direct solve of its rows */
+  return kind;
 }
 
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy

@@ -26,6 +26,7 @@
 #include "solve/lac_friction.h"
 #include "solve/lac_newton_check.h"
 #include "solve/lac_newton_internal.h"
+#include "solve/lac_rows.h"
 
 static int evaluate (lac_newton *s, lac_newton_record *rec);
 static size_t update_status (lac_newton *s, lac_newton_record *rec);
@@ -44,8 +45,7 @@ static int push_record (lac_newton *s, const lac_newton_record *r);
 static char friction_want (lac_newton *s, size_t i, double lmax);
 static double friction_lmax (const lac_newton *s);
 static size_t friction_turns (lac_newton *s);
-static int friction_solve (lac_newton *s, const lac_contact_system *sys,
-                           lac_newton_record *rec);
+static int friction_solve (lac_newton *s, const lac_contact_system *sys);
 static void friction_converged (lac_newton *s);
 static void friction_held_start (lac_newton *s,
                                  const lac_contact_system *sys);
@@ -143,11 +143,17 @@ step (lac_newton *s, double eta, lac_newton_record *rec)
   for (size_t j = 0; lagged && j < s->n; j++)     /* the factor of an older */
     w->x[j] = p->fixed && p->fixed[j] ? sys->F[j] : 0.0; /* tangent: GMRES */
   if (!lagged && s->ntan)
-    status = friction_solve (s, sys, rec);        /* [Alg. 1, line 21] */
+    status = friction_solve (s, sys);             /* [Alg. 1, line 21] */
   else if (!lagged)
     status = solve_frozen (s, rec);               /* [Alg. 1, line 21] */
   rec->factored = !lagged;
   double tf = count (s, &c0, rec), t1 = lac_seconds ();
+  if (s->ntan && w->rows_its > 0)       /* friction by GMRES (lac_rows.h) */
+    {
+      rec->krylov_iterations = w->rows_its;
+      rec->backward_error = w->rows_berr;
+      w->rows_its = 0;
+    }
   s->time_frozen += t1 - t0 - tf;
   if (!status && consistent)
     {
@@ -735,18 +741,17 @@ friction_held (const lac_newton *s, const lac_contact_system *sys)
 }
 
 /* Step 4 with friction: the equations of every column's slot from its
- * status (lac_friction_rows), solved by the strategy (solve_rows); lambda
+ * status (lac_friction_rows), solved by the strategy (solve_rows), or by
+ * GMRES preconditioned by its symmetric solve (solve/lac_rows.h); lambda
  * into w->klam (normal) and s->lambda_t. */
 static int
-friction_solve (lac_newton *s, const lac_contact_system *sys,
-                lac_newton_record *rec)
+friction_solve (lac_newton *s, const lac_contact_system *sys)
 {
   const lac_model_point *p = &s->pt;
   lac_newton_work *w = s->w;
   size_t nt = (size_t) s->ntan, q = 1 + nt;
   double lmax = friction_lmax (s);
   int status = friction_held (s, sys);
-  (void) rec;
   if (status)
     return status;
   for (size_t i = 0; i < p->k; i++)
@@ -773,7 +778,11 @@ friction_solve (lac_newton *s, const lac_contact_system *sys,
         }
     }
   lac_contact_rows R = { (int) q, w->fP, w->fQ, w->fr, w->ffree };
-  status = lac_strategy_solve_rows (s->strategy, &R, w->x, w->fl);
+  if (lac_strategy_solves_rows (lac_strategy_kind_of (s->strategy)))
+    status = lac_strategy_solve_rows (s->strategy, &R, w->x, w->fl);
+  else                  /* GMRES, preconditioned by the symmetric solve */
+    status = lac_rows_gmres (s->strategy, sys, &R, w->x, w->fl,
+                             &w->rows_its, &w->rows_berr);
   for (size_t i = 0; !status && i < p->k; i++)
     {
       size_t m = lac_model_slot (p, i);

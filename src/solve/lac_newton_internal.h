@@ -47,6 +47,8 @@ struct lac_newton_work
   double *fP, *fQ;       /* nslot q q: the rows' coefficients              */
   double *fr;            /* nslot q: their right-hand sides                */
   double *dir_new;       /* nslot ntan: the slip directions of the rule    */
+  int rows_its;          /* GMRES iterations of the last solve by lac_rows */
+  double rows_berr;      /* and its backward error                         */
   /* the rules' own state (solve/lac_newton_rules.h) */
   lac_cycle_guard guard;
   lac_line_search ls;

@@ -232,6 +232,20 @@ schur_solve (void *w, const char *active, const double *f, const double *g,
 
 /* ---- the equations of a contact law (friction) ---------------------------- */
 
+/* min |U_ii| / max |U_ii| of an LU factorization (0: singular). */
+static double
+pivot_ratio (const gsl_matrix *LU)
+{
+  double lo = HUGE_VAL, hi = 0;
+  for (size_t i = 0; i < LU->size1; i++)
+    {
+      double u = fabs (gsl_matrix_get (LU, i, i));
+      lo = fmin (lo, u);
+      hi = fmax (hi, u);
+    }
+  return hi > 0 ? lo / hi : 0.0;
+}
+
 /* The free multipliers of R by a dense LU of
  *   M(j, i) = Q(j, i) - sum_b P(j, b) S(g q + b, i)    (j, i free, j in group g)
  * with b(j) = r_j + sum_b P(j, b) c_{g q + b}^T K^-1 f in lambda on entry
@@ -264,7 +278,7 @@ rows_multipliers (lac_schur *s, const lac_contact_rows *R, double *lambda)
         }
     }
   if (!status && m && (gsl_linalg_LU_decomp (M, perm, &sign)
-                       || fabs (gsl_linalg_LU_det (M, sign)) == 0))
+                       || pivot_ratio (M) < 1e-14))
     status = LAC_ERRMSG (LAC_ESING, "the Schur complement of the %zu "
                          "multipliers of the contact law is singular", m);
   if (!status && m)
