@@ -124,3 +124,80 @@ for st in augmented split; do
   else fric_fail "friction-$st" "$(tail -1 "$FC/$st.err") $(grep friction_force "$FC/$st.out")"
   fi
 done
+
+# ---- Cattaneo-Mindlin (chapter 15, cattaneo2d.scene) ----------------------------
+# quad8 at levels 1, 2, 3 and Q / (mu P) = 0.3, 0.6, 0.9: the half-width c
+# of the stick zone within 1 % of Cattaneo's at level 3, the L2 error of
+# the tangential traction smaller at level 3 than at level 1, at most 10
+# iterations per load step (chapters/15-friction/cattaneo.sh prints them).
+CM=chapters/15-friction
+for r in 0.3 0.6 0.9; do
+  Q=$(awk -v r="$r" 'BEGIN { printf "%.10g", r * 0.3 * 700 }')
+  line=""
+  for L in 1 2 3; do
+    d="$FC/cm-$L-$r"
+    if "$LAC" run "$CM/cattaneo2d.scene" --set level=$L \
+         --set "load.pull.point_force=$Q 0" --quiet --out "$d" \
+         > /dev/null 2> "$d.err"; then
+      line="$line $(python3 "$CM/cattaneo.py" "$d" "$r")"
+    else line="$line failed"
+    fi
+  done
+  # fields per level: macros c/a exact error% L2 iters
+  if echo "$line" | awk '{ exit !(NF == 18 && $16 + 0 < 1 && $16 + 0 > -1 \
+       && $17 < $5 && $6 <= 10 && $12 <= 10 && $18 <= 10) }'; then
+    fric_ok "cattaneo-$r"
+  else fric_fail "cattaneo-$r" "levels 1 2 3: $line"
+  fi
+done
+
+# ---- the path: monotone Q in 1 or 10 steps; unloading ---------------------------
+# Cattaneo's state does not depend on how Q grows at fixed P: P in one step,
+# then Q in one step or in ten, the same multipliers to 1e-6 of the largest.
+# Q back to 0 (Mindlin-Deresiewicz): a tangential traction remains, and the
+# displacement of the cylinder at a given Q is larger unloading than loading.
+if "$LAC" run "$CM/cattaneo2d.scene" --set level=1 --quiet --out "$FC/cm-1step" \
+     > /dev/null 2>&1 \
+   && "$LAC" run "$CM/cattaneo2d.scene" --set level=1 --set steps.n=11 \
+        --set steps.end=11 --set "load.pull.curve=0 0 1 0 11 1" --quiet \
+        --out "$FC/cm-10steps" > /dev/null 2>&1 \
+   && paste -d, "$FC/cm-1step/contact.csv" "$FC/cm-10steps/contact.csv" | awk -F, '
+        NR == 1 { n = NF / 2; for (k = 1; k <= n; k++) c[$k] = k; next }
+        $(c["multiplier"]) != "" {
+          for (j = 0; j < 2; j++) {
+            a = $(c[j ? "lambda_t" : "lambda"]); b = $(c[j ? "lambda_t" : "lambda"] + n)
+            d = a - b; d = d < 0 ? -d : d; if (d > m) m = d
+            a = a < 0 ? -a : a; if (a > big) big = a } }
+        END { exit !(big > 0 && m <= 1e-6 * big) }'; then
+  fric_ok cattaneo-path
+else fric_fail cattaneo-path "P then Q in 1 and in 10 steps differ"
+fi
+if "$LAC" run "$CM/cattaneo2d.scene" --set level=1 --set steps.n=30 \
+     --set steps.end=3 --set "load.pull.curve=0 0 1 0 2 1 3 0" \
+     --set steps.monitor=corner --quiet --out "$FC/cm-unload" > /dev/null 2>&1 \
+   && awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+        $(c["multiplier"]) != "" { t = $(c["lambda_t"]); t = t < 0 ? -t : t
+                                   if (t > m) m = t }
+        END { exit !(m > 10) }' "$FC/cm-unload/contact.csv" \
+   && awk -F, 'NR > 1 { t = $2 + 0; u[sprintf ("%.4f", t)] = $4 }
+        END { up = u["1.5000"]; down = u["2.5000"]
+              exit !(up != "" && down != "" && down > up) }' \
+        "$FC/cm-unload/curve.csv"; then
+  fric_ok cattaneo-unloading
+else fric_fail cattaneo-unloading "no residual traction or no hysteresis (contact.csv, curve.csv of $FC/cm-unload)"
+fi
+
+# ---- the push-out of a shrink fit (axisymmetric) ------------------------------
+# Pulled far, the whole fit slips: the axial force is mu times the normal
+# force, to rounding.
+if "$LAC" run "$CM/pushout.scene" --quiet --no-output > "$FC/pushout.out" \
+     2> "$FC/pushout.err" \
+   && awk -v n="$(sed -n 's/^contact_normal_force = //p' "$FC/pushout.out")" \
+          -v f="$(sed -n 's/^friction_force = //p' "$FC/pushout.out")" \
+          -v s="$(sed -n 's/^slip_macro_elements = //p' "$FC/pushout.out")" \
+          -v k="$(sed -n 's/^active_macro_elements = //p' "$FC/pushout.out")" \
+          'BEGIN { split (f, v, " "); r = v[2] / n - 0.2; r = r < 0 ? -r : r
+                   exit !(s == k && s > 0 && r <= 1e-12) }'; then
+  fric_ok pushout-full-slip
+else fric_fail pushout-full-slip "$(tail -1 "$FC/pushout.err") $(grep -E 'normal_force|friction_force|slip_' "$FC/pushout.out" | tr '\n' ' ')"
+fi

@@ -425,21 +425,28 @@ count_line (lac_summary *sum, const char *what, const char *name, size_t n)
 
 /* Friction's lines of pair p, its columns i0 .. i1 - 1 (name: the
  * pair's, or NULL for the one pair of a scene): the tangential force (a
- * vector) and the macro-elements that stick, slip and are open. */
+ * vector) and the macro-elements that stick, slip and are open; for the
+ * one pair, its normal force sum lambda_i |T^m_i cap Gamma_C| too (several
+ * pairs have it already, contact_normal_force.NAME). */
 static int
 summary_friction (lac_model model, const lac_contact *c, const lac_newton *nw,
                   const lac_run_contact *rc, size_t p, size_t i0, size_t i1,
                   const char *name, lac_summary *sum)
 {
   size_t n[3] = { 0, 0, 0 };
+  double fn = 0;
   char v[120];
   int status;
   for (size_t i = i0; i < i1; i++)
     {
       int st = nw->active[c->macro[i]];
       n[st >= 0 && st <= 2 ? st : 0]++;
+      fn += nw->lambda[c->macro[i]] * c->area[i];
     }
   vector_text (rc->pair_tforce + 3 * p, lac_model_dim (model), v, sizeof v);
+  if (!name && (status = lac_summary_add (sum, "contact_normal_force",
+                                          "%.17g", fn)))
+    return status;
   if ((status = name ? pair_line (sum, "friction_force", name, "%s", v)
                      : lac_summary_add (sum, "friction_force", "%s", v))
       || (status = count_line (sum, "stick_macro_elements", name, n[1]))
