@@ -30,6 +30,7 @@ cyl[] = BooleanFragments{ Surface{5}; Delete; }{ Surface{6}; Delete; };
 Rectangle(4) = {-2 * R, -2 * R, 0, 4 * R, 2 * R};
 
 arc[] = Curve In BoundingBox{-R - e, -e, -e, R + e, R + e, e};
+arc[] -= {Curve In BoundingBox{-R - e, R - e, -e, R + e, R + e, e}};
 top[] = Curve In BoundingBox{-R - e, 1.5 * R - e, -e, R + e, 1.5 * R + e, e};
 face[] = Curve In BoundingBox{-2 * R - e, -e, -e, 2 * R + e, e, e};
 bottom[] = Curve In BoundingBox{-2 * R - e, -2 * R - e, -e, 2 * R + e,

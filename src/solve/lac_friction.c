@@ -30,7 +30,8 @@ norm (int n, const double *v)
 }
 
 int
-lac_friction_status (const lac_friction_slot *x, int first, double *dir)
+lac_friction_status (const lac_friction_slot *x, int first, int current,
+                     double *dir)
 {
   double xi[2], b;
   if (first)                               /* [Alg. 1, lines 2-8] */
@@ -42,7 +43,10 @@ lac_friction_status (const lac_friction_slot *x, int first, double *dir)
     return LAC_FRICTION_INACTIVE;          /* lambda_n + rho d >= 0 */
   b = bound_and_xi (x, xi);
   double nx = norm (x->ntan, xi);
-  if (nx <= b * (1 + LAC_ROUNDING) || nx == 0)
+  int tie = current != LAC_FRICTION_INACTIVE
+            && fabs (nx - b) <= LAC_FRICTION_TIE * b;
+  if (nx == 0 || (tie ? current == LAC_FRICTION_STICK
+                      : nx <= b * (1 + LAC_ROUNDING)))
     return LAC_FRICTION_STICK;             /* |xi| <= b */
   for (int k = 0; k < x->ntan; k++)
     dir[k] = xi[k] / nx;                   /* e = xi / |xi| */

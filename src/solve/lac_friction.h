@@ -65,6 +65,9 @@ enum
 
 #define LAC_FRICTION_TURN 1e-8   /* a turn of the slip direction (rad) that
                                     counts as a change of status (3D)    */
+#define LAC_FRICTION_TIE 1e-10   /* |xi| within this of b (relative): at the
+                                    limit, stick and slip both hold; the
+                                    status stays what it was             */
 
 /* One macro-element at the evaluation. */
 typedef struct lac_friction_slot
@@ -82,8 +85,12 @@ typedef struct lac_friction_slot
 } lac_friction_slot;
 
 /* Step 2: the status of the macro-element (first: the first iteration of
- * a run, d <= 0 sticks); *dir (ntan) the slip direction e when SLIP. */
-int lac_friction_status (const lac_friction_slot *x, int first, double *dir);
+ * a run, d <= 0 sticks; current: its status now); *dir (ntan) the slip
+ * direction e when SLIP.  A macro-element exactly at the limit (|xi| = b
+ * to LAC_FRICTION_TIE: |lambda_t| = b and no slip) satisfies both laws;
+ * it keeps its status, else rounding would flip it for ever. */
+int lac_friction_status (const lac_friction_slot *x, int first, int current,
+                         double *dir);
 
 /* Step 4: the q x q blocks P, Q (row after row) and r (q) of the
  * macro-element's equations for status st at the iterate x (dir: e of

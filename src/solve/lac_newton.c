@@ -686,7 +686,8 @@ friction_want (lac_newton *s, size_t i, double lmax)
   size_t m = lac_model_slot (&s->pt, i), nt = (size_t) s->ntan;
   double ds[2];
   lac_friction_slot x = friction_slot (s, i, lmax, ds);
-  return (char) lac_friction_status (&x, s->first, s->w->dir_new + m * nt);
+  return (char) lac_friction_status (&x, s->first, s->active[m],
+                                     s->w->dir_new + m * nt);
 }
 
 /* The slots that slip on in a direction turned by more than
