@@ -606,6 +606,17 @@ fi
 say "fig13 ($(since "$t") s)"
 fi
 
+# ---- Figure 15 (chapter 15): Cattaneo-Mindlin, partial slip -------------
+if want 15; then
+t=$(date +%s)
+LC=3; [ $QUICK = 1 ] && LC=0
+FIG="$OUT/fig15-cattaneo-traction.png" \
+  sh chapters/15-friction/cattaneo.sh "$B" "$LC" "0.3 0.6 0.9" \
+  > "$W/cattaneo.txt" 2> "$W/cattaneo.err" \
+  || fail "chapters/15-friction/cattaneo.sh: $(tail -1 "$W/cattaneo.err")"
+say "fig15 ($(since "$t") s)"
+fi
+
 # ---- the accuracy-cost study (chapter 12) ----------------------------------
 if [ $BENCH = 1 ]; then
   t=$(date +%s)

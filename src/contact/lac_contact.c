@@ -60,6 +60,9 @@ lac_contact_free (lac_contact *c)
   lac_free (c->lost);
   lac_free (c->xpt);
   lac_free (c->npt);
+  lac_csc_free (c->Ct);
+  lac_free (c->sfix);
+  lac_free (c->mu);
   lac_free (c);
 }
 
@@ -119,9 +122,25 @@ lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
           c->G[i] -= C->x[p] * g[C->i[p]];      /* G_i -= C(dof,i) value */
           C->x[p] = 0;                          /* row of a fixed dof */
         }
+  for (size_t i = 0; c->Ct && i < c->Ct->ncol; i++)     /* friction */
+    for (int p = c->Ct->p[i]; p < c->Ct->p[i + 1]; p++)
+      if (fixed[c->Ct->i[p]])
+        {
+          c->sfix[i] += c->Ct->x[p] * g[c->Ct->i[p]];
+          c->Ct->x[p] = 0;
+        }
   lac_free (fixed);
   lac_free (g);
   return LAC_SUCCESS;
+}
+
+int
+lac_contact_to_frames (lac_contact *c, const lac_frames *f)
+{
+  int status = lac_frames_rotate_rows (f, &c->C);
+  if (!status && c->Ct)
+    status = lac_frames_rotate_rows (f, &c->Ct);
+  return status;
 }
 
 int

@@ -41,6 +41,7 @@
 #include "contact/lac_contact_facet.h"
 #include "contact/lac_contact_types.h"
 #include "contact/lac_macromesh.h"
+#include "fem/lac_frames.h"
 #include "fem/lac_material.h"
 #include "contact/lac_pairing.h"
 
@@ -78,9 +79,14 @@ int lac_contact_build_nts (const lac_mesh *mesh, lac_model model,
                            lac_contact **out);
 
 /* Dirichlet data on contact dofs: G_i -= C(dof,i) value for every fixed
- * dof, then the row of C is zeroed (the fixed value moves into the gap). */
+ * dof, then the row of C is zeroed (the fixed value moves into the gap);
+ * with friction, sfix_j += Ct(dof,j) value and the row of Ct is zeroed. */
 int lac_contact_apply_dirichlet (lac_contact *c, size_t n, const size_t *dof,
                                  const double *val);
+
+/* The rows of C (and Ct, with friction) turned to the nodal frames of
+ * rollers: T^T C (fem/lac_frames.h; f NULL: nothing to do). */
+int lac_contact_to_frames (lac_contact *c, const lac_frames *f);
 
 /* An interference fit drawn with matching surfaces (a shrink fit): the
  * gap of every point is g0 - delta (delta > 0 an overlap, < 0 a

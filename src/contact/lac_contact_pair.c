@@ -9,6 +9,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "contact/lac_contact_facet.h"
+#include "contact/lac_tangential.h"
 
 /* The mesh with its nodes at x: a shallow copy (x borrowed). */
 static lac_mesh
@@ -119,6 +120,9 @@ lac_contact_pair_contact (const lac_contact_pair *p, const double *x,
     }
   if (!status && p->offset != 0)
     status = lac_contact_set_offset (*c, p->offset);   /* g0 - delta */
+  if (!status && p->tangential && *c)                  /* friction */
+    status = lac_tangential_build (*c, &cur, p->model, M, P,
+                                   p->master ? &Mf : NULL, p->friction);
   return status;
 }
 

@@ -53,6 +53,9 @@ typedef struct lac_contact_pair
                                        own (solve/lac_newton.h: widen): it
                                        pairs within popts.dist_abs +
                                        widened; 0 until a loop widens     */
+  int tangential;                   /* 1: the tangential columns of friction
+                                       too (lac_tangential.h)              */
+  double friction;                  /* and the friction coefficient mu     */
 } lac_contact_pair;
 
 /* The deepest penetration of a macro-element without a multiplier. */

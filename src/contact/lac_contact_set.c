@@ -198,6 +198,52 @@ cat_columns (const lac_contact_set *s, size_t p, const lac_contact *c,
   memcpy (all->C->x + nnz0, C->x, (size_t) C->p[c->k] * sizeof *C->x);
 }
 
+/* Pair p's tangential columns (friction) into all, from multiplier
+ * col0 (entries from nnz0). */
+static void
+cat_tangential (const lac_contact *c, size_t col0, int nnz0,
+                lac_contact *all)
+{
+  const lac_csc *T = c->Ct;
+  size_t nt = (size_t) all->ntan, j0 = col0 * nt;
+  for (size_t j = 0; j < c->k * nt; j++)
+    {
+      all->Ct->p[j0 + j + 1] = nnz0 + T->p[j + 1];
+      all->sfix[j0 + j] = c->sfix[j];
+    }
+  for (size_t i = 0; i < c->k; i++)
+    all->mu[col0 + i] = c->mu[i];
+  memcpy (all->Ct->i + nnz0, T->i, (size_t) T->p[c->k * nt] * sizeof *T->i);
+  memcpy (all->Ct->x + nnz0, T->x, (size_t) T->p[c->k * nt] * sizeof *T->x);
+}
+
+/* all->Ct, sfix, mu of the pairs (every pair has them, or none). */
+static int
+concatenate_tangential (const lac_contact_set *s, lac_contact_set_data *d)
+{
+  lac_contact *all = d->all;
+  size_t nnz = 0, nt = 0;
+  for (size_t p = 0; p < s->n; p++)
+    if (d->c[p] && d->c[p]->Ct)
+      {
+        nt = (size_t) d->c[p]->ntan;
+        nnz += (size_t) d->c[p]->Ct->p[d->c[p]->Ct->ncol];
+      }
+  if (nt == 0)
+    return LAC_SUCCESS;
+  all->ntan = (int) nt;
+  all->Ct = lac_csc_alloc (all->C->nrow, all->k * nt, nnz ? nnz : 1);
+  all->sfix = lac_calloc (all->k * nt, sizeof *all->sfix);
+  all->mu = lac_calloc (all->k, sizeof *all->mu);
+  if (!all->Ct || !all->sfix || !all->mu)
+    LAC_ERROR (LAC_ENOMEM, "tangential columns of %zu multipliers", all->k);
+  all->Ct->p[0] = 0;
+  for (size_t p = 0; p < s->n; p++)
+    if (d->c[p])
+      cat_tangential (d->c[p], d->col[p], all->Ct->p[d->col[p] * nt], all);
+  return LAC_SUCCESS;
+}
+
 /* all = the contact data of the n > 1 pairs side by side. */
 static int
 concatenate (const lac_contact_set *s, lac_contact_set_data *d)
@@ -229,7 +275,7 @@ concatenate (const lac_contact_set *s, lac_contact_set_data *d)
         cat_columns (s, p, d->c[p], d->col[p], all->C->p[d->col[p]], all);
     }
   d->all = all;
-  return LAC_SUCCESS;
+  return concatenate_tangential (s, d);
 }
 
 int

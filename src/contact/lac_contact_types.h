@@ -46,6 +46,15 @@ typedef struct lac_contact
                          collocation point and unit normal of multiplier i */
   double offset;      /* the interference delta taken from every gap: G_i =
                          int (g0 - delta) (lac_contact_set_offset); 0: none */
+  /* Coulomb friction (lac_tangential.h); ntan = 0 and NULL without: */
+  int ntan;           /* tangential components of a multiplier: 1 in 2D
+                         and axisymmetry, 2 in 3D                          */
+  lac_csc *Ct;        /* owned, ndof x k ntan: column i ntan + b holds
+                         int (phi^S - phi^M) t_b, so that (Ct^T U)_{i,b} =
+                         int [u] . t_b, the mean tangential jump            */
+  double *sfix;       /* owned, k ntan: what the fixed dofs' values add to
+                         Ct^T U (their rows of Ct are zeroed, like C's)    */
+  double *mu;         /* owned, k: the friction coefficient of multiplier i */
 } lac_contact;
 
 #endif /* LAC_CONTACT_TYPES_H */

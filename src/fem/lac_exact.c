@@ -18,6 +18,12 @@
  *                   sigma_zz = -nu p; u_i = c_i x_i vanishes on the
  *                   symmetry planes x_i = 0.  The contact pressure is
  *                   lambda = -p on every horizontal interface.
+ *   taylor_shear    the frictional patch test: taylor's stress plus the
+ *                   shear sigma_xv = tau (v the vertical axis, y in 2D, z
+ *                   in 3D), u = diag(c) x + (tau / G) x_v e_x (the
+ *                   rotation that keeps u_v free of x): the contact
+ *                   tractions are lambda_n = -p and tau along the
+ *                   interface on every horizontal one.
  *   biaxial         a uniform stress sigma_xx = sigma_yy = -p, every other
  *                   component zero but the plane-strain sigma_zz =
  *                   -2 nu p (plane strain, 3D); u_i = c_i x_i as above.
@@ -128,6 +134,28 @@ taylor_setup (lac_exact *e)
         e->c[i] = nu * p / E;
       e->c[e->dim - 1] = -p / E;
     }
+}
+
+/* taylor's strains and the shear strain gamma = tau / G. */
+static void
+shear_setup (lac_exact *e)
+{
+  taylor_setup (e);
+  e->gamma = e->par.tau * 2 * (1 + e->par.nu) / e->par.E;
+}
+
+static void
+shear_u (const lac_exact *e, const double *x, double *out)
+{
+  linear_u (e, x, out);
+  out[0] += e->gamma * x[e->dim - 1];                /* gamma x_v e_x */
+}
+
+static void
+shear_grad (const lac_exact *e, const double *x, double *out)
+{
+  linear_grad (e, x, out);
+  out[e->dim - 1] += e->gamma;                       /* du_x / dx_v */
 }
 
 /* Strains of sigma = -p (e_x e_x^T + e_y e_y^T), Hooke's law. */
@@ -245,6 +273,8 @@ const lac_exact_solution lac_exact_table[] = {    /* lac_exact_kind order */
     mfd3_hess },
   { "biaxial", M_PS | M_3D, "p E nu", biaxial_setup, linear_u, linear_grad,
     NULL },
+  { "taylor_shear", M_PS | M_3D, "p tau E nu", shear_setup, shear_u,
+    shear_grad, NULL },
   { NULL, 0, NULL, NULL, NULL, NULL, NULL }
 };
 

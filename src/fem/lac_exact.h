@@ -24,13 +24,14 @@ typedef enum
 {
   LAC_EXACT_NONE = -1, LAC_EXACT_THICK_SPHERE = 0, LAC_EXACT_THICK_CYLINDER,
   LAC_EXACT_TAYLOR, LAC_EXACT_MANUFACTURED2D, LAC_EXACT_MANUFACTURED3D,
-  LAC_EXACT_BIAXIAL
+  LAC_EXACT_BIAXIAL, LAC_EXACT_TAYLOR_SHEAR
 } lac_exact_kind;
 
 typedef struct lac_exact_params       /* the keys of [exact] */
 {
   double a, b, p;       /* inner, outer radius; inner pressure */
   double E, nu;         /* the material of the solution        */
+  double tau;           /* taylor_shear: the shear stress      */
 } lac_exact_params;
 
 typedef struct lac_exact              /* a solution ready to evaluate */
@@ -44,6 +45,8 @@ typedef struct lac_exact              /* a solution ready to evaluate */
   int k;                /* radial: g = C1 + C2 / R^k                */
   double C1, C2;
   double c[3];          /* linear solutions: u_i = c_i x_i              */
+  double gamma;         /* taylor_shear: u_x += gamma x_v (v the last
+                           axis), the shear strain 2 eps_xv = tau / G  */
 } lac_exact;
 
 /* An entry of the table; `models` has bit (1 << model) for each model the

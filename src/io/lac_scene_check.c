@@ -464,7 +464,7 @@ exact_needs (const char *need, const char *key)
 static int
 finish_exact (lac_scene *sc)
 {
-  static const char *const keys[] = { "a", "b", "p", "E", "nu" };
+  static const char *const keys[] = { "a", "b", "p", "E", "nu", "tau" };
   lac_scene_exact *x = &sc->exact;
   lac_model model = (lac_model) sc->scene.model;
   char list[256];
@@ -475,7 +475,7 @@ finish_exact (lac_scene *sc)
   if ((status = require (sc, &x->sec, "solution", list)))
     return status;
   const char *need = lac_exact_table[x->solution].params;
-  for (int k = 0; k < 5; k++)
+  for (int k = 0; k < 6; k++)
     if (exact_needs (need, keys[k])
         && (status = require (sc, &x->sec, keys[k], "a number")))
       return status;
@@ -529,6 +529,10 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   if (c->method == 2 && !c->master)
     return lac_scene_error (sc, &c->sec, "method", LAC_EINVAL, "nts needs a "
                             "master group (not an obstacle)");
+  if (c->method == 2 && c->friction > 0)
+    return lac_scene_error (sc, &c->sec, "friction", LAC_EINVAL, "friction "
+                            "acts on the averages of the LAC method (method "
+                            "= lac or p0), not with nts");
   if (c->master && strcmp (c->slave, c->master) == 0)
     return lac_scene_error (sc, &c->sec, "master", LAC_EINVAL, "the master "
                             "group must differ from the slave group");
@@ -727,6 +731,14 @@ finish_nonlinear (lac_scene *sc)
       return lac_scene_error (sc, &sc->contact[k].sec, "method", LAC_EINVAL,
                               "large_deformation = yes runs the LAC method "
                               "only (method = lac)");
+  for (size_t k = 0; k < sc->ncontact; k++)
+    if (sc->contact[k].friction > 0)
+      return lac_scene_error (sc, &sc->contact[k].sec, "friction",
+                              LAC_EINVAL, "friction is a small-strain law "
+                              "in lac: the tangential averages are paired "
+                              "on the reference shape, which large "
+                              "deformation leaves (large_deformation = no, "
+                              "or friction = 0)");
   return LAC_SUCCESS;
 }
 

@@ -115,6 +115,7 @@ static const key_spec exact_keys[] = {
   NUM (lac_scene_exact, p, -HUGE_VAL, HUGE_VAL, 0, "a number"),
   NUM (lac_scene_exact, E, 0, HUGE_VAL, 1, "a number > 0"),
   NUM (lac_scene_exact, nu, -1, 0.5, 3, "a number in (-1, 0.5)"),
+  NUM (lac_scene_exact, tau, -HUGE_VAL, HUGE_VAL, 0, "a number"),
 };
 static const char *const obstacle_names[] = { "none", "graph", NULL };
 static const char *const normal_names[] = { "obstacle", "slave", NULL };
@@ -142,6 +143,7 @@ static const key_spec contact_keys[] = {
   NUM (lac_scene_contact, interference_tolerance, 0, HUGE_VAL, 1,
        "a number > 0"),
   NUM (lac_scene_contact, sliding_tolerance, 0, HUGE_VAL, 1, "a number > 0"),
+  NUM (lac_scene_contact, friction, 0, HUGE_VAL, 0, "a number >= 0"),
   ENUM (lac_scene_contact, hex_cut, hex_cut_names),
 };
 static const char *const tangent_names[] =            /* lac_nonlinear.h */

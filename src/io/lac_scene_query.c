@@ -71,6 +71,15 @@ lac_scene_error (const lac_scene *sc, const lac_scene_section *s,
   return lac_scene_where_error (sc->path, line, status, "%s", msg);
 }
 
+int
+lac_scene_friction (const lac_scene *sc)
+{
+  for (size_t k = 0; k < sc->ncontact; k++)
+    if (sc->contact[k].friction > 0)
+      return 1;
+  return 0;
+}
+
 const char *
 lac_scene_element_name (int element)
 {

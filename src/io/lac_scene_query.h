@@ -36,6 +36,11 @@ int lac_scene_where_error (const char *path, int line, int status,
 const char *lac_scene_element_name (int element);    /* "tri6", "any" */
 const char *lac_scene_exact_name (int solution);     /* "thick_sphere" */
 
+/* 1 if a [contact] section asks for friction (friction > 0): then every
+ * pair gets the tangential multipliers of friction, mu = 0 where not
+ * given (frictionless pairs of a frictional scene). */
+int lac_scene_friction (const lac_scene *sc);
+
 /* Model component index of a displacement key for the model ("ux", "ur",
  * "uz", ...), or -1 if the key does not apply to the model. */
 int lac_scene_component (lac_model model, const char *key);

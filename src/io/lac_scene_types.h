@@ -150,7 +150,7 @@ typedef struct lac_scene_exact           /* [exact] */
 {
   lac_scene_section sec;
   int solution;         /* lac_exact_kind: index in lac_exact_table */
-  double a, b, p, E, nu;
+  double a, b, p, E, nu, tau;
 } lac_scene_exact;
 
 typedef struct lac_scene_contact         /* [contact NAME] */
@@ -186,6 +186,8 @@ typedef struct lac_scene_contact         /* [contact NAME] */
                            its macro-element's size, a small-strain run
                            accepts; 0: not given (0.5,
                            run/lac_run_sliding.h)                         */
+  double friction;      /* Coulomb's coefficient mu >= 0 (0: frictionless,
+                           the default)                                    */
   int hex_cut;          /* the cut of a hexahedron under a slave face:
                            0 auto (hex8 pyramids, hex20 six), 1 pyramids,
                            2 six (LAC_MACRO_HEX_*, contact/lac_refine.h)  */

@@ -237,6 +237,27 @@ lac_run_publish (lac_run *r)
 
 /* ---- the run ------------------------------------------------------------ */
 
+/* "Coulomb friction (mu = 0.3)", one value for every pair, or each pair's
+ * ("mu = 0.3 on a, 0 on b"). */
+static const char *
+friction_effect (lac_run *r)
+{
+  const lac_scene *sc = r->scene;
+  char *t = r->friction_text;
+  size_t size = sizeof r->friction_text, n;
+  int same = 1;
+  for (size_t k = 1; k < sc->ncontact; k++)
+    same = same && sc->contact[k].friction == sc->contact[0].friction;
+  n = (size_t) snprintf (t, size, "Coulomb friction (LAC; mu =");
+  for (size_t k = 0; k < (same ? 1 : sc->ncontact) && n < size; k++)
+    n += (size_t) snprintf (t + n, size - n, "%s %g%s%s", k ? "," : "",
+                            sc->contact[k].friction, same ? "" : " on ",
+                            same ? "" : sc->contact[k].sec.name);
+  if (n < size)
+    snprintf (t + n, size - n, ")");
+  return t;
+}
+
 /* The effects the scene asks for, in words (printed by the caller, and a
  * summary line). */
 static void
@@ -245,7 +266,9 @@ list_effects (lac_run *r)
   const lac_scene *sc = r->scene;
   r->effects[r->neffects++] = r->model == LAC_PLANE_STRAIN ? "plane strain"
     : r->model == LAC_AXISYMMETRIC ? "axisymmetric" : "3D solid";
-  if (sc->ncontact)
+  if (sc->ncontact && lac_scene_friction (sc))
+    r->effects[r->neffects++] = friction_effect (r);
+  else if (sc->ncontact)
     r->effects[r->neffects++] = "frictionless contact (LAC)";
   if (sc->scene.large_deformation)
     {

@@ -116,7 +116,8 @@ typedef struct lac_run
   double time[LAC_NSTAGES]; /* seconds per stage                         */
   char progress[256];       /* one line about the last stage or iteration */
   size_t neffects;
-  const char *effects[LAC_RUN_MAX_EFFECTS];  /* static strings           */
+  const char *effects[LAC_RUN_MAX_EFFECTS];  /* static strings, or:      */
+  char friction_text[96];   /* "Coulomb friction (mu = 0.3)"              */
   char effects_text[256];   /* the same, joined by ", "                  */
 } lac_run;
 

@@ -10,6 +10,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "contact/lac_contact_facet.h"
+#include "contact/lac_tangential.h"
 #include "fem/lac_quadrature.h"
 
 void
@@ -19,6 +20,7 @@ lac_run_contact_clear (lac_run_contact *rc)
   lac_free (rc->s);
   lac_free (rc->force);
   lac_free (rc->pair_force);
+  lac_free (rc->pair_tforce);
   memset (rc, 0, sizeof *rc);
 }
 
@@ -243,11 +245,65 @@ lac_run_pair_force (lac_model model, const lac_mesh *m, const lac_macro *M,
   return LAC_SUCCESS;
 }
 
-/* f_i = lambda_i n_i, the resultant and the resultant of each pair. */
+/* t += int_{T^m cap Gamma_C} t_b for b < ntan (3 values each), the
+ * tangent frame of contact/lac_tangential.h. */
+static int
+column_tangent (lac_model model, const lac_mesh *m, const lac_macro *M,
+                const lac_pairing *P, size_t mm, int ntan, double *t)
+{
+  int dim = m->dim, nodes[LAC_MAX_FACE_NODES];
+  double nbar[3] = { 0, 0, 0 }, ref[3] = { 0, 0, 0 }, tb[6];
+  lac_map mp;
+  int status = column_normal (LAC_PLANE_STRAIN, m, M, P, mm, nbar);
+  if (status)
+    return status;
+  lac_tangential_reference (nbar, ref);
+  for (size_t j = M->ptr[mm]; j < M->ptr[mm + 1]; j++)
+    for (size_t q = P->ptr[j]; q < P->ptr[j + 1]; q++)
+      {
+        int nn = lac_contact_facet_eval (m, M->cell[j], M->face[j],
+                                         P->xs + q * (dim - 1), nodes, &mp);
+        if (nn < 0)
+          return -nn;
+        double w = P->w[q] * lac_model_weight (model, mp.x);
+        lac_tangential_frame (dim, P->normal ? P->normal + q * (size_t) dim
+                                             : mp.normal, ref, tb);
+        for (int b = 0; b < ntan; b++)
+          for (int k = 0; k < 3; k++)
+            t[3 * b + k] += w * tb[3 * b + k];
+      }
+  return LAC_SUCCESS;
+}
+
+/* Friction: the tangential force sum_b lambda_t,b int t_b of multiplier i
+ * of pair p added to f (3) and to the pair's tangential force. */
+static int
+tangential_force (lac_model model, const lac_mesh *m,
+                  const lac_run_setup *st, const lac_contact *c,
+                  const double *lambda_t, size_t i, size_t p, double *f,
+                  lac_run_contact *rc)
+{
+  size_t slot = c->macro[i], nt = (size_t) c->ntan;
+  double t[6] = { 0, 0, 0, 0, 0, 0 };
+  int status = column_tangent (model, m, st->macro[p], st->data.P[p],
+                               slot - st->set.offset[p], c->ntan, t);
+  for (size_t b = 0; !status && b < nt; b++)
+    for (int k = 0; k < 3; k++)
+      {
+        double v = lambda_t[slot * nt + b] * t[3 * b + (size_t) k] + 0.0;
+        f[k] += v;
+        rc->pair_tforce[3 * p + (size_t) k] += v;
+      }
+  return status;
+}
+
+/* f_i = lambda_i n_i (with friction: plus lambda_t,i t_i), the resultant
+ * and the resultant of each pair. */
 static int
 forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
-        const lac_contact *c, const double *lambda, lac_run_contact *rc)
+        const lac_contact *c, const lac_newton *nw, lac_run_contact *rc)
 {
+  const double *lambda = nw->lambda;
   for (size_t i = 0; i < c->k; i++)
     {
       double *f = rc->force + 3 * i, n[3] = { 0, 0, 0 };
@@ -262,8 +318,12 @@ forces (lac_model model, const lac_mesh *m, const lac_run_setup *st,
                                         slot - st->set.offset[p], n)))
         return status;
       for (int k = 0; k < 3; k++)
+        f[k] = lambda[slot] * n[k] + 0.0;     /* no -0 if lambda = 0 */
+      if (c->Ct && (status = tangential_force (model, m, st, c, nw->lambda_t,
+                                               i, p, f, rc)))
+        return status;
+      for (int k = 0; k < 3; k++)
         {
-          f[k] = lambda[slot] * n[k] + 0.0;   /* no -0 if lambda = 0 */
           rc->resultant[k] += f[k];
           rc->pair_force[3 * p + (size_t) k] += f[k];
         }
@@ -346,6 +406,47 @@ pair_line (lac_summary *sum, const char *what, const char *name,
   return lac_summary_add (sum, key, "%s", val);
 }
 
+/* "what" or "what.name" = "%zu". */
+static int
+count_line (lac_summary *sum, const char *what, const char *name, size_t n)
+{
+  return name ? pair_line (sum, what, name, "%zu", n)
+              : lac_summary_add (sum, what, "%zu", n);
+}
+
+/* Friction's lines of pair p, its columns i0 .. i1 - 1 (name: the
+ * pair's, or NULL for the one pair of a scene): the tangential force (a
+ * vector) and the macro-elements that stick, slip and are open; for the
+ * one pair, its normal force sum lambda_i |T^m_i cap Gamma_C| too (several
+ * pairs have it already, contact_normal_force.NAME). */
+static int
+summary_friction (lac_model model, const lac_contact *c, const lac_newton *nw,
+                  const lac_run_contact *rc, size_t p, size_t i0, size_t i1,
+                  const char *name, lac_summary *sum)
+{
+  size_t n[3] = { 0, 0, 0 };
+  double fn = 0;
+  char key[300];
+  int status;
+  for (size_t i = i0; i < i1; i++)
+    {
+      int st = nw->active[c->macro[i]];
+      n[st >= 0 && st <= 2 ? st : 0]++;
+      fn += nw->lambda[c->macro[i]] * c->area[i];
+    }
+  if (!name && (status = lac_summary_add (sum, "contact_normal_force",
+                                          LAC_SUMMARY_REAL, fn)))
+    return status;
+  snprintf (key, sizeof key, name ? "friction_force.%s" : "friction_force",
+            name);
+  if ((status = lac_summary_add_vector (sum, key, rc->pair_tforce + 3 * p,
+                                        lac_model_dim (model)))
+      || (status = count_line (sum, "stick_macro_elements", name, n[1]))
+      || (status = count_line (sum, "slip_macro_elements", name, n[2])))
+    return status;
+  return count_line (sum, "open_macro_elements", name, n[0]);
+}
+
 /* The lines of pair p (columns col[p] .. col[p+1]-1 of c): its force as
  * a vector, its normal force sum lambda_i |T^m_i cap Gamma_C|, area,
  * largest pressure and active macro-elements. */
@@ -379,7 +480,11 @@ summary_pair (const lac_scene *sc, lac_model model, const lac_run_setup *st,
       || (status = pair_line (sum, "max_contact_pressure", name,
                               LAC_SUMMARY_REAL, pmax)))
     return status;
-  return pair_line (sum, "active_macro_elements", name, "%zu", nact);
+  if ((status = pair_line (sum, "active_macro_elements", name, "%zu", nact)))
+    return status;
+  return c->Ct ? summary_friction (model, c, nw, rc, p, st->data.col[p],
+                                   st->data.col[p + 1], name, sum)
+               : LAC_SUCCESS;
 }
 
 /* Several pairs: the resultant of all as a vector, then each pair's. */
@@ -418,8 +523,15 @@ lac_run_contact_post (const lac_scene *sc, lac_model model, const lac_mesh *m,
        p++)
     status = abscissae (m, setup->macro[p], setup->data.P[p],
                         setup->set.offset[p], rc);
-  if (status || (status = forces (model, m, setup, c, nw->lambda, rc))
+  if (!status && c->Ct && !(rc->pair_tforce = lac_calloc (3 * setup->npairs,
+                                                         sizeof (double))))
+    status = LAC_ERRMSG (LAC_ENOMEM, "friction forces");
+  if (status || (status = forces (model, m, setup, c, nw, rc))
       || (status = summary (model, setup, c, nw, rc, sum)))
+    return status;
+  if (c->Ct && setup->npairs == 1
+      && (status = summary_friction (model, c, nw, rc, 0, 0, c->k, NULL,
+                                     sum)))
     return status;
   return setup->npairs > 1 ? summary_pairs (sc, model, setup, c, nw, rc, sum)
                            : LAC_SUCCESS;

@@ -63,6 +63,8 @@ typedef struct lac_run_contact
   double *force;        /* owned, 3k: f_i (zero third component in 2D)     */
   double resultant[3];  /* sum of f_i                                      */
   double *pair_force;   /* owned, 3 npairs: the sum of f_i of each pair    */
+  double *pair_tforce;  /* owned, 3 npairs: its tangential part (friction:
+                           sum_i sum_b lambda_t,ib int t_b; NULL without)  */
 } lac_run_contact;
 
 /* Positions, abscissae, forces; then the summary lines. */

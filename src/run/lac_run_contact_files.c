@@ -48,6 +48,26 @@ multiplier_fields (FILE *f, const lac_run_contact_data *d, size_t m)
   fprintf (f, ",%d", d->newton->active[m]);
 }
 
+/* Friction's columns of row m: lambda_t (per component), the status and
+ * the slip (the mean tangential jump, per component) of its multiplier;
+ * empty without a multiplier. */
+static void
+friction_fields (FILE *f, const lac_run_contact_data *d, size_t m)
+{
+  const lac_contact *c = d->contact;
+  const lac_newton *s = d->newton;
+  size_t nt = (size_t) c->ntan;
+  long i = c->mult[m];
+  static const char *const words[] = { "inactive", "stick", "slip" };
+  for (size_t b = 0; b < nt; b++)
+    field (f, i >= 0 ? s->lambda_t[m * nt + b] : NAN);
+  fprintf (f, ",%s", i >= 0 && s->active[m] >= 0 && s->active[m] <= 2
+           ? words[(int) s->active[m]] : "");
+  for (size_t b = 0; b < nt; b++)
+    field (f, i >= 0 && c->area[i] > 0 ? s->slip_conv[m * nt + b]
+              / c->area[i] : NAN);
+}
+
 int
 lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
 {
@@ -60,7 +80,9 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
     return status;
   fprintf (f, "macro,x,y,z,measure,covered,criterion,admissible,"
            "multiplier,lambda,lambda_exact,mean_gap,active,s,force_x,"
-           "force_y,force_z,pair\n");
+           "force_y,force_z,%spair\n", c->ntan == 1
+           ? "lambda_t,status,slip," : c->ntan == 2
+           ? "lambda_t1,lambda_t2,status,slip1,slip2," : "");
   for (size_t m = 0; m < c->nmacro; m++)
     {
       long i = c->mult[m];
@@ -74,6 +96,8 @@ lac_run_contact_csv (const lac_run_contact_data *d, const char *path)
       for (int k = 0; k < 3; k++)
         field (f, i >= 0 && k < dim ? w->force[3 * (size_t) i + (size_t) k]
                                     : NAN);
+      if (c->ntan)
+        friction_fields (f, d, m);
       fprintf (f, ",%s\n", d->sc->contact[pair_of (d, m)].sec.name);
     }
   return lac_file_close (f, path);
@@ -168,6 +192,40 @@ facet_slots (const lac_run_setup *st, int *mac, int *pair)
         }
 }
 
+/* Friction: lambda_t and the slip (the mean tangential jump of the last
+ * converged step per unit measure) of every facet's macro-element, ntan
+ * components each in the tangent frame of contact/lac_tangential.h (NAN
+ * without a multiplier). */
+static int
+friction_vtu (const lac_run_contact_data *d, size_t n, const int *mac,
+              lac_vtu *v)
+{
+  const lac_contact *c = d->contact;
+  size_t nt = (size_t) c->ntan;
+  double *lt = lac_malloc ((n * nt + 1) * sizeof *lt);
+  double *sl = lac_malloc ((n * nt + 1) * sizeof *sl);
+  int status = lt && sl ? LAC_SUCCESS
+               : LAC_ERRMSG (LAC_ENOMEM, "contact.vtu friction fields");
+  for (size_t j = 0; !status && j < n; j++)
+    for (size_t b = 0; b < nt; b++)
+      {
+        size_t m = (size_t) (mac[j] >= 0 ? mac[j] : 0);
+        long i = mac[j] >= 0 ? c->mult[m] : -1;
+        lt[j * nt + b] = i >= 0 ? d->newton->lambda_t[m * nt + b] : NAN;
+        sl[j * nt + b] = i >= 0 && c->area[i] > 0
+                         ? d->newton->slip_conv[m * nt + b] / c->area[i] : NAN;
+      }
+  if (!status)
+    status = lac_vtu_f64 (v, LAC_VTU_CELL_DATA, "lambda_t", (int) nt, lt,
+                          (int) nt, 0);
+  if (!status)
+    status = lac_vtu_f64 (v, LAC_VTU_CELL_DATA, "slip", (int) nt, sl,
+                          (int) nt, 0);
+  lac_free (lt);
+  lac_free (sl);
+  return status;
+}
+
 static int
 surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
 {
@@ -212,6 +270,8 @@ surface_fields (const lac_run_contact_data *d, const surface *s, lac_vtu *v)
     status = lac_vtu_i32 (v, sec, "status", st);
   if (!status)
     status = lac_vtu_i32 (v, LAC_VTU_CELL_DATA, "pair", pair);
+  if (!status && c->Ct && !nts)
+    status = friction_vtu (d, n, mac, v);
   lac_free (u), lac_free (lam), lac_free (gap), lac_free (st), lac_free (mac);
   lac_free (pair), lac_free (fmac);
   return status;

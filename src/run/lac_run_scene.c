@@ -12,7 +12,7 @@ void
 lac_run_exact (const lac_scene *sc, lac_model model, lac_exact *e)
 {
   const lac_scene_exact *x = &sc->exact;
-  lac_exact_params p = { x->a, x->b, x->p, x->E, x->nu };
+  lac_exact_params p = { x->a, x->b, x->p, x->E, x->nu, x->tau };
   lac_exact_init (e, x->solution, model, &p);
 }
 

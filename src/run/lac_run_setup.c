@@ -272,7 +272,8 @@ make_pair (const lac_scene *sc, const lac_mesh *m, size_t p,
                                     ? &s->master[p] : NULL, &s->obstacle[p],
                                     c->epsilon > 0 ? c->epsilon
                                     : LAC_EPSILON_DEFAULT, c->method == 2,
-                                    { 0 }, c->interference, 0 };  /* g0 - delta */
+                                    { 0 }, c->interference, 0, /* g0 - delta */
+                                    lac_scene_friction (sc), c->friction };
   lac_pairing_opts_init (&s->pair[p].popts);
   s->pair[p].popts.dist_abs = c->gap_bound;
 }

@@ -196,9 +196,11 @@ static const char *
 auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
           size_t k, size_t nfree, const lac_strategy_context *ctx)
 {
-  if (want != LAC_STRATEGY_AUTO
-      || kind == lac_strategy_choose (want, n, k, nfree))
+  lac_strategy_kind by_size = lac_strategy_choose (want, n, k, nfree);
+  if (want != LAC_STRATEGY_AUTO || kind == by_size)
     return NULL;
+  if (kind == LAC_STRATEGY_SADDLE && !lac_strategy_solves_rows (by_size))
+    return "auto: friction on a body held by contact alone";
   return ctx->processes > 1 ? "auto: more than one MPI process"
          : "auto: a Cholesky factor would not fit in --max-memory";
 }
@@ -214,8 +216,13 @@ contact_kind (const lac_scene *sc, int strategy,
   const lac_scene_contact *c = &sc->contact[sc->contact_loop];
   lac_strategy_kind want = (lac_strategy_kind) (strategy ? strategy
                                                 : c->strategy);
-  return lac_strategy_choose_in (want, sys->ndof, setup->data.all->k,
-                                 sys->nfree, ctx);
+  lac_strategy_kind kind = lac_strategy_choose_in (want, sys->ndof,
+                                                   setup->data.all->k,
+                                                   sys->nfree, ctx);
+  if (want == LAC_STRATEGY_AUTO && lac_scene_friction (sc)
+      && kind != LAC_NSTRATEGIES && !lac_strategy_solves_rows (kind))
+    kind = LAC_STRATEGY_SADDLE;    /* friction: a direct solve of its rows */
+  return kind;
 }
 
 /* The loop of Algorithm 1 on the linear model of the pair: the strategy

@@ -270,8 +270,8 @@ contact_matrices (const lac_scene *sc, lac_run_setup *setup,
   if ((status = lac_run_interference_check (sc, &setup->set, &setup->data,
                                             &sys->fit)))
     return status;                 /* before the Dirichlet values move in */
-  if (all && (status = lac_frames_rotate_rows (sys->dir->frames,
-                                               &all->C)))  /* T^T C */
+  if (all && (status = lac_contact_to_frames (all, sys->dir->frames)))
+                                                             /* T^T C */
     return status;
   if (sys->curves)           /* load steps: G0 and C_D kept for the steps */
     return lac_linear_lift_record (sys->dir, all, &sys->lift);

@@ -76,6 +76,14 @@ typedef struct lac_model_point
   const char *fixed;     /* n: Dirichlet dofs (NULL: none)                 */
   double fscale;         /* > 0: the size of the forces in r, the scale of
                             the residual (with |C lambda|)                 */
+  /* Coulomb friction (solve/lac_friction.h; all NULL when the model's
+   * ntan is 0) */
+  const lac_csc *Ct;     /* n x k ntan: the tangential columns (rows of the
+                            Dirichlet dofs zero): column i ntan + b        */
+  const double *slip;    /* k ntan: the mean tangential jumps at U, the
+                            fixed dofs with their values: Ct^T U + sfix    */
+  const double *sfix;    /* k ntan: what the fixed dofs add to them        */
+  const double *mu;      /* k: the friction coefficient of column i        */
 } lac_model_point;
 
 /* The macro-element (slot) of column i of p. */
@@ -152,6 +160,11 @@ typedef struct lac_contact_model
   size_t nslot;          /* macro-elements: the multipliers' index space   */
   double E;              /* reference Young modulus of rho (> 0)           */
   int dim;               /* 2 or 3: h_i from size_i                        */
+  int ntan;              /* friction: tangential multipliers per slot (1
+                            in 2D, 2 in 3D); 0: frictionless.  Then the
+                            system of linearize has the columns [c_n,
+                            c_t] of every column i side by side (q = 1 +
+                            ntan at a time, lac_contact_rows)            */
 } lac_contact_model;
 
 #endif /* LAC_CONTACT_MODEL_H */

@@ -74,6 +74,19 @@ evaluate (void *self, const double *U, int tangent, lac_model_point *p)
                            .slot = lm->slot, .lost = c ? c->lost : NULL,
                            .rho = sys->rho, .r = lm->r,
                            .fscale = fmax (sqrt (nf), sqrt (nku)) };
+  if (c && c->Ct)                            /* friction: Ct^T U + sfix */
+    {
+      for (size_t j = 0; j < c->Ct->ncol; j++)
+        {
+          lm->slip[j] = c->sfix[j];
+          for (int q = c->Ct->p[j]; q < c->Ct->p[j + 1]; q++)
+            lm->slip[j] += c->Ct->x[q] * U[c->Ct->i[q]];
+        }
+      p->Ct = c->Ct;
+      p->slip = lm->slip;
+      p->sfix = c->sfix;
+      p->mu = c->mu;
+    }
   return LAC_SUCCESS;
 }
 
@@ -83,7 +96,7 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
 {
   lac_linear_model *lm = self;
   (void) U;
-  *sys = &lm->sys;
+  *sys = lm->Call ? &lm->sys_rows : &lm->sys;
   *news = lm->news;
   lm->news = LAC_MODEL_SAME;
   return LAC_SUCCESS;
@@ -131,8 +144,56 @@ nts_missed (const lac_linear_model *lm)
              m->node_tag[node], u->x[0], u->x[1], u->x[2], u->depth);
 }
 
+/* [c_n c_t] of every column side by side: column i (1 + ntan) is C's
+ * column i, the next ntan those of Ct. */
+static lac_csc *
+columns_side_by_side (const lac_contact *c)
+{
+  const lac_csc *C = c->C, *T = c->Ct;
+  size_t nt = (size_t) c->ntan, q = 1 + nt, e = 0;
+  lac_csc *A = lac_csc_alloc (C->nrow, c->k * q, (size_t) (C->p[c->k]
+                                                      + T->p[T->ncol]) + 1);
+  if (!A)
+    return NULL;
+  A->p[0] = 0;
+  for (size_t i = 0; i < c->k; i++)
+    for (size_t b = 0; b < q; b++)
+      {
+        const lac_csc *S = b == 0 ? C : T;
+        size_t col = b == 0 ? i : i * nt + b - 1;
+        for (int p = S->p[col]; p < S->p[col + 1]; p++, e++)
+          {
+            A->i[e] = S->i[p];
+            A->x[e] = S->x[p];
+          }
+        A->p[i * q + b + 1] = (int) e;
+      }
+  return A;
+}
+
+/* The friction of the contact data: the columns side by side, the system
+ * that carries them. */
+static int
+take_friction (lac_linear_model *lm, const lac_contact *c)
+{
+  size_t q = 1 + (size_t) c->ntan;
+  lac_csc_free (lm->Call);
+  lac_free (lm->Gall);
+  lac_free (lm->slip);
+  lm->Call = columns_side_by_side (c);
+  lm->Gall = lac_calloc (c->k * q + 1, sizeof *lm->Gall);
+  lm->slip = lac_calloc (c->k * (q - 1) + 1, sizeof *lm->slip);
+  if (!lm->Call || !lm->Gall || !lm->slip)
+    LAC_ERROR (LAC_ENOMEM, "the frictional columns of %zu multipliers", c->k);
+  lm->sys_rows = lm->sys;
+  lm->sys_rows.C = lm->Call;
+  lm->sys_rows.G = lm->Gall;
+  lm->sys_rows.rho = NULL;
+  return LAC_SUCCESS;
+}
+
 /* The system's C and G, and the maps, from the contact data. */
-static void
+static int
 take_contact (lac_linear_model *lm)
 {
   const lac_contact *c = lm->data->all;
@@ -141,6 +202,7 @@ take_contact (lac_linear_model *lm)
   lm->slot = c->macro;
   lm->area = c->area;
   lm->size = c->size;
+  return c->Ct ? take_friction (lm, c) : LAC_SUCCESS;
 }
 
 /* ---- load steps: the Dirichlet part of G ------------------------------ */
@@ -229,7 +291,7 @@ static int
 new_contact (const lac_linear_model *lm, lac_contact *all,
              lac_linear_lift *l)
 {
-  int status = lac_frames_rotate_rows (lm->dir->frames, &all->C);
+  int status = lac_contact_to_frames (all, lm->dir->frames);
   if (!status && lm->lift.G0)
     return lac_linear_lift_record (lm->dir, all, l);
   return status ? status : lac_contact_apply_dirichlet (all, lm->dir->n,
@@ -286,8 +348,7 @@ widen (void *self, const double *U, double reach, size_t *more)
       lm->lift = l;
     }
   lm->news = LAC_MODEL_NEW_C;
-  take_contact (lm);
-  return LAC_SUCCESS;
+  return take_contact (lm);
 }
 
 static const lac_contact_model_type linear_type =
@@ -312,7 +373,7 @@ init (lac_linear_model *lm, const lac_contact_system *sys, double E,
       LAC_ERROR (LAC_ENOMEM, "linear model of %zu dofs", n);
     }
   *m = (lac_contact_model) { &linear_type, lm, n, nslot, E > 0 ? E : 1.0,
-                             2 };
+                             2, 0 };
   return LAC_SUCCESS;
 }
 
@@ -338,8 +399,8 @@ lac_linear_model_init_set (lac_linear_model *lm,
   lm->data = data;
   lm->dir = dir;
   m->dim = set->pair[0].mesh->dim;
-  take_contact (lm);
-  return LAC_SUCCESS;
+  m->ntan = data->all->ntan;
+  return take_contact (lm);
 }
 
 void
@@ -349,5 +410,8 @@ lac_linear_model_clear (lac_linear_model *lm)
   lac_free (lm->d);
   lac_free (lm->r);
   lac_free (lm->x);
+  lac_csc_free (lm->Call);
+  lac_free (lm->Gall);
+  lac_free (lm->slip);
   memset (lm, 0, sizeof *lm);
 }

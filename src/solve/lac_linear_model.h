@@ -27,6 +27,11 @@
  * projection misses the master in the reference shape) is an error of
  * widen that names it.
  *
+ * With friction (the contact data of the set has tangential columns,
+ * contact/lac_tangential.h) the model's ntan is theirs, evaluate gives
+ * the tangential columns and jumps too, and linearize a system whose
+ * columns are [c_n c_t] of every macro-element side by side.
+ *
  * Load steps (run/lac_run_steps.h): from one loop to the next the caller
  * changes F and the Dirichlet values in place; K, C and the pairing stay,
  * so that the strategy keeps its factorization.  The Dirichlet part of
@@ -81,6 +86,12 @@ typedef struct lac_linear_model
   lac_linear_lift lift;       /* owned, load steps: G0 and C_D (G0 NULL:
                                  not kept)                                */
   double *d, *r, *x;          /* owned: nslot, n, n (coordinates X + U)    */
+  /* Coulomb friction (the contact data has tangential columns): */
+  lac_csc *Call;              /* owned: [c_n c_t] of every column, side by
+                                 side (lac_contact_rows of lac_system.h)  */
+  double *Gall;               /* owned: zero, k (1 + ntan)                */
+  double *slip;               /* owned, k ntan: Ct^T U + sfix at U        */
+  lac_contact_system sys_rows; /* sys with Call: what linearize gives     */
 } lac_linear_model;
 
 /* A model over sys (C, G: one multiplier per column; E: the reference

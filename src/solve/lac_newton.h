@@ -142,6 +142,15 @@ typedef struct lac_newton
                             (0: inactive or no column)                   */
   double *d;             /* owned, nslot: its mean gap at the last
                             evaluation (0 without a column)              */
+  /* Coulomb friction (model.ntan > 0; NULL otherwise), solve/lac_friction.h:
+   * active[m] is then the status INACTIVE, STICK or SLIP */
+  int ntan;
+  double *lambda_t;      /* owned, nslot ntan: tangential multipliers     */
+  double *lambda0_t;     /* owned: the same when the loop began           */
+  double *slip_conv;     /* owned, nslot ntan: the mean tangential jumps
+                            of the last converged loop (0 at first): the
+                            slip of a loop is measured from them         */
+  double *dir;           /* owned, nslot ntan: the slip direction e       */
   char *active;          /* owned, nslot: status (1 = contact)            */
   int first;             /* no solve yet: statuses from the gaps [l. 2-8] */
   int predicted;         /* U, lambda were moved since begin (a load-step

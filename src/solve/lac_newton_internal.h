@@ -26,6 +26,8 @@ struct lac_newton_work
   char *want;            /* nslot: statuses asked for by the rule          */
   long *col;             /* nslot: the column of the slot (-1: none)       */
   double *pair;          /* 2 nslot: (value, index) to sort                */
+  char *target;          /* nslot: the statuses of the rule, before the
+                            cycle guard                                   */
   char *active0;         /* nslot: the statuses the loop began with        */
   int first0;            /* and s->first then                              */
   /* the loop */
@@ -38,6 +40,15 @@ struct lac_newton_work
   long worst_gap;        /* the slot of step 3's gap residual (-1: none)   */
   int strategy_set;      /* the strategy holds a factorization             */
   int gmres_last;        /* GMRES iterations since the last one            */
+  /* friction: the equations of the law per column (lac_contact_rows;
+   * q = 1 + ntan components per column), NULL without */
+  double *fl;            /* nslot q: lambda per component, the unknown     */
+  char *ffree;           /* nslot q: the component is an unknown           */
+  double *fP, *fQ;       /* nslot q q: the rows' coefficients              */
+  double *fr;            /* nslot q: their right-hand sides                */
+  double *dir_new;       /* nslot ntan: the slip directions of the rule    */
+  int rows_its;          /* GMRES iterations of the last solve by lac_rows */
+  double rows_berr;      /* and its backward error                         */
   /* the rules' own state (solve/lac_newton_rules.h) */
   lac_cycle_guard guard;
   lac_line_search ls;

@@ -140,7 +140,7 @@ status_hash (const char *active, size_t k)
 {
   unsigned long long h = 1469598103934665603ull;       /* FNV-1a */
   for (size_t i = 0; i < k; i++)
-    h = (h ^ (unsigned long long) (active[i] != 0)) * 1099511628211ull;
+    h = (h ^ (unsigned char) active[i]) * 1099511628211ull;  /* a status */
   return h;
 }
 
@@ -180,7 +180,8 @@ lac_cycle_guard_seen (const lac_cycle_guard *g, const char *want,
 
 size_t
 lac_cycle_guard_damp (const lac_cycle_guard *g, const char *active,
-                      char *want, double *pair, size_t nch, size_t nslot)
+                      const char *target, char *want, double *pair,
+                      size_t nch, size_t nslot)
 {
   qsort (pair, nch, 2 * sizeof *pair, cmp_down);
   for (size_t keep = nch / 2 > 0 ? nch / 2 : 1;; keep = keep / 2 > 0
@@ -188,7 +189,7 @@ lac_cycle_guard_damp (const lac_cycle_guard *g, const char *active,
     {
       memcpy (want, active, nslot);
       for (size_t c = 0; c < keep; c++)
-        want[(size_t) pair[2 * c + 1]] ^= 1;
+        want[(size_t) pair[2 * c + 1]] = target[(size_t) pair[2 * c + 1]];
       if (keep == 1 || !lac_cycle_guard_seen (g, want, nslot))
         return keep;
     }

@@ -154,13 +154,13 @@ int lac_cycle_guard_remember (lac_cycle_guard *g, const char *active,
 /* 1 if the statuses want (nslot) were solved already. */
 int lac_cycle_guard_seen (const lac_cycle_guard *g, const char *want,
                           size_t nslot);
-/* want := active with the changes that lead to statuses not tried yet:
- * of the nch changes ranked in pair[] (value, slot; sorted here, most
- * violated first), the first half, a quarter, ..., one.  Returns the
- * number kept. */
+/* want := active with the changes to target that lead to statuses not
+ * tried yet: of the nch changes ranked in pair[] (value, slot; sorted
+ * here, most violated first), the first half, a quarter, ..., one.
+ * Returns the number kept. */
 size_t lac_cycle_guard_damp (const lac_cycle_guard *g, const char *active,
-                             char *want, double *pair, size_t nch,
-                             size_t nslot);
+                             const char *target, char *want, double *pair,
+                             size_t nch, size_t nslot);
 
 /* ---- line search ---------------------------------------------------------- */
 

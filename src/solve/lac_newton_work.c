@@ -39,6 +39,13 @@ work_free (lac_newton_work *w)
   lac_free (w->want);
   lac_free (w->col);
   lac_free (w->pair);
+  lac_free (w->target);
+  lac_free (w->fl);
+  lac_free (w->ffree);
+  lac_free (w->fP);
+  lac_free (w->fQ);
+  lac_free (w->fr);
+  lac_free (w->dir_new);
   lac_cycle_guard_free (&w->guard);
   if (w->lin)
     lac_linear_model_clear (w->lin);
@@ -57,6 +64,10 @@ lac_newton_free (lac_newton *s)
   lac_free (s->lambda0);
   lac_free (s->d);
   lac_free (s->active);
+  lac_free (s->lambda_t);
+  lac_free (s->lambda0_t);
+  lac_free (s->slip_conv);
+  lac_free (s->dir);
   lac_free (s->hist);
   lac_strategy_free (s->strategy);
   work_free (s->w);
@@ -73,6 +84,25 @@ opts_defaults (lac_newton_opts *o)
     o->tol = LAC_NEWTON_TOL;
   if (o->pen_tol == 0)
     o->pen_tol = LAC_NEWTON_PEN_TOL;
+}
+
+/* The arrays of friction (lac_friction.h) for ns slots; 0 without memory. */
+static int
+friction_alloc (lac_newton *s, size_t ns)
+{
+  lac_newton_work *w = s->w;
+  size_t nt = (size_t) s->model.ntan, q = 1 + nt;
+  s->ntan = (int) nt;
+  double **arr[] = { &s->lambda_t, &s->lambda0_t, &s->slip_conv, &s->dir,
+                     &w->dir_new };
+  for (size_t j = 0; j < sizeof arr / sizeof *arr; j++)
+    if (!(*arr[j] = lac_calloc (ns * nt, sizeof (double))))
+      return 0;
+  return (w->fl = lac_calloc (ns * q, sizeof *w->fl))
+         && (w->ffree = lac_calloc (ns * q, 1))
+         && (w->fP = lac_calloc (ns * q * q, sizeof *w->fP))
+         && (w->fQ = lac_calloc (ns * q * q, sizeof *w->fQ))
+         && (w->fr = lac_calloc (ns * q, sizeof *w->fr));
 }
 
 lac_newton *
@@ -107,6 +137,9 @@ lac_newton_alloc (const lac_contact_model *m, const lac_newton_opts *opts)
     ok = ok && (*per_dof[j] = lac_calloc (n, sizeof (double)));
   for (size_t j = 0; j < sizeof per_slot / sizeof *per_slot; j++)
     ok = ok && (*per_slot[j] = lac_calloc (ns, sizeof (double)));
+  ok = ok && (w->target = lac_calloc (ns, 1));
+  if (ok && m->ntan > 0)
+    ok = friction_alloc (s, ns);
   if (!ok)
     {
       lac_newton_free (s);
@@ -127,6 +160,9 @@ lac_newton_restart (lac_newton *s)
 {
   memcpy (s->U, s->U0, s->n * sizeof *s->U);
   memcpy (s->lambda, s->lambda0, s->nslot * sizeof *s->lambda);
+  if (s->ntan)
+    memcpy (s->lambda_t, s->lambda0_t, s->nslot * (size_t) s->ntan
+            * sizeof *s->lambda_t);
   memcpy (s->active, s->w->active0, s->nslot);
   s->first = s->w->first0;
 }

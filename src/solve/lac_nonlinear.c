@@ -142,7 +142,7 @@ set_pairs (lac_nl *s, const lac_nl_opts *o)
       else
         s->pair[q] = (lac_contact_pair) { p->mesh, p->mat->model, p->M,
                                           p->master, p->obstacle,
-                                          p->epsilon, 0, { 0 }, 0, 0 };
+                                          p->epsilon, 0, { 0 }, 0, 0, 0, 0 };
       s->pair[q].model = p->mat->model;
       if (!(s->pair[q].epsilon > 0))
         s->pair[q].epsilon = LAC_EPSILON_DEFAULT;
@@ -491,5 +491,5 @@ lac_nl_model (lac_nl *s, lac_contact_model *m)
     if (s->prob.mat->E[c] > 0)
       E = fmin (E, s->prob.mat->E[c]);
   *m = (lac_contact_model) { &nl_type, s, s->ndof, s->nmacro,
-                             E < HUGE_VAL ? E : 1.0, s->prob.mesh->dim };
+                             E < HUGE_VAL ? E : 1.0, s->prob.mesh->dim, 0 };
 }

@@ -23,6 +23,9 @@ typedef struct lac_saddle
   double *D;                       /* owned, n + k: the scaling            */
   double *work;                    /* owned, 2 (n + k)                     */
   lac_solve_counts counts;         /* factorizations (solves: not counted) */
+  double *rows_for;                /* owned, 2 k q + k: the P, Q and free
+                                      of the factors of a law's equations
+                                      (solve_rows; NULL: none)           */
 } lac_saddle;
 
 static void *
@@ -61,6 +64,7 @@ saddle_free (void *w)
   lac_free (s->factored_for);
   lac_free (s->D);
   lac_free (s->work);
+  lac_free (s->rows_for);
   lac_free (s);
 }
 
@@ -84,6 +88,8 @@ saddle_set (void *w, const lac_contact_system *sys)
   s->n = n;
   s->k = k;
   s->have_factor = 0;               /* new numbers: factorize again */
+  lac_free (s->rows_for);
+  s->rows_for = NULL;
   return LAC_SUCCESS;
 }
 
@@ -166,6 +172,8 @@ factorize (lac_saddle *s, const char *active)
     return status;
   memcpy (s->factored_for, active, s->k);
   s->have_factor = 1;
+  lac_free (s->rows_for);           /* the factors of (*), not of a law's */
+  s->rows_for = NULL;
   return LAC_SUCCESS;
 }
 
@@ -179,7 +187,8 @@ saddle_solve (void *w, const char *active, const double *f, const double *g,
   const double *D = s->D;
   int status = LAC_SUCCESS;
   (void) rtol;
-  if (!s->have_factor || memcmp (active, s->factored_for, k) != 0)
+  if (!s->have_factor || s->rows_for
+      || memcmp (active, s->factored_for, k) != 0)
     status = factorize (s, active);
   if (status)
     return status;
@@ -198,6 +207,153 @@ saddle_solve (void *w, const char *active, const double *f, const double *g,
   return LAC_SUCCESS;
 }
 
+/* ---- the equations of a contact law (friction) ---------------------------- */
+
+/* The scale Dr_j of row j of a law's equations: 1 / its largest entry
+ * once the columns are scaled by D (P C^T D on the displacements, Q D on
+ * the multipliers).  A row of Q alone (the slip of friction: lambda_t + mu
+ * e lambda_n = 0) would otherwise carry entries D_j^2, far from the
+ * others, and look singular to the solver's condition test. */
+static double
+rows_scale (const lac_saddle *s, const lac_contact_rows *R, size_t j)
+{
+  const lac_csc *C = s->sys->C;
+  const double *D = s->D;
+  size_t n = s->n, q = (size_t) R->q, g = j / q;
+  double m = 0;
+  for (size_t b = 0; b < q; b++)
+    {
+      size_t i = g * q + b;
+      double pj = fabs (R->P[j * q + b]), qj = fabs (R->Q[j * q + b]);
+      for (int p = C->p[i]; pj != 0 && p < C->p[i + 1]; p++)
+        m = fmax (m, pj * fabs (C->x[p] * D[C->i[p]]));
+      if (R->free[i])
+        m = fmax (m, qj * D[n + i]);
+    }
+  return m > 0 ? 1 / m : 1.0;
+}
+
+/* The entries of row j of a law's equations (lac_contact_rows), scaled by
+ * Dr_j and the columns' D: -P C^T on the displacements, Q on the
+ * multipliers of its group. */
+static int
+rows_row (const lac_saddle *s, const lac_contact_rows *R, size_t j,
+          double dr, lac_triplet *T)
+{
+  const lac_csc *C = s->sys->C;
+  const double *D = s->D;
+  size_t n = s->n, q = (size_t) R->q, g = j / q;
+  int status = LAC_SUCCESS;
+  for (size_t b = 0; !status && b < q; b++)
+    {
+      size_t i = g * q + b;
+      double pj = R->P[j * q + b], qj = R->Q[j * q + b];
+      for (int p = C->p[i]; !status && pj != 0 && p < C->p[i + 1]; p++)
+        status = lac_triplet_add (T, n + j, (size_t) C->i[p],
+                                  -dr * pj * C->x[p] * D[C->i[p]]);
+      if (!status && qj != 0 && R->free[i])
+        status = lac_triplet_add (T, n + j, n + i, dr * qj * D[n + i]);
+    }
+  return status;
+}
+
+/* [D; Dr] A D of a law's equations: K, -C on the free multipliers, their
+ * rows; lambda_j = 0 for the others. */
+static lac_csc *
+rows_matrix (const lac_saddle *s, const lac_contact_rows *R)
+{
+  const lac_csc *K = s->sys->K, *C = s->sys->C;
+  const double *D = s->D;
+  size_t n = s->n, k = s->k, q = (size_t) R->q;
+  lac_triplet *T = lac_triplet_alloc (n + k, n + k, (size_t) K->p[n]
+                                      + (2 * q + 1) * (size_t) C->p[k] + k
+                                      * (q + 1));
+  lac_csc *A = NULL;
+  int status = T ? LAC_SUCCESS : LAC_ENOMEM;
+  for (size_t j = 0; !status && j < n; j++)                /* D K D */
+    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
+      status = lac_triplet_add (T, (size_t) K->i[p], j,
+                                D[K->i[p]] * K->x[p] * D[j]);
+  for (size_t i = 0; !status && i < k; i++)
+    {
+      if (!R->free[i])
+        {
+          status = lac_triplet_add (T, n + i, n + i, 1.0);
+          continue;
+        }
+      for (int p = C->p[i]; !status && p < C->p[i + 1]; p++)   /* -C */
+        status = lac_triplet_add (T, (size_t) C->i[p], n + i,
+                                  -D[C->i[p]] * C->x[p] * D[n + i]);
+      if (!status)
+        status = rows_row (s, R, i, s->rows_for[2 * k * q + i], T);
+    }
+  if (!status)
+    A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  return A;
+}
+
+/* Factorize the system of R unless its factors are those of R already. */
+static int
+rows_factorize (lac_saddle *s, const lac_contact_rows *R)
+{
+  size_t k = s->k, kq = k * (size_t) R->q;
+  if (s->rows_for && s->have_factor
+      && !memcmp (s->rows_for, R->P, kq * sizeof *R->P)
+      && !memcmp (s->rows_for + kq, R->Q, kq * sizeof *R->Q)
+      && !memcmp (s->factored_for, R->free, k))
+    return LAC_SUCCESS;
+  if (!s->rows_for && !(s->rows_for = lac_malloc ((2 * kq + k + 1)
+                                                  * sizeof *s->rows_for)))
+    LAC_ERROR (LAC_ENOMEM, "equations of %zu multipliers", k);
+  s->have_factor = 0;
+  saddle_scaling (s, R->free);
+  for (size_t j = 0; j < k; j++)                 /* the rows' scales Dr */
+    s->rows_for[2 * kq + j] = R->free[j] ? rows_scale (s, R, j) : 1.0;
+  lac_csc *A = rows_matrix (s, R);
+  if (!A)
+    return LAC_ENOMEM;
+  int status = lac_solve_counts_factor (&s->counts, s->solver, A);
+  lac_csc_free (A);
+  if (status == LAC_ESING)
+    return LAC_ERRMSG (LAC_ESING, "the system of the contact law's "
+                       "equations is singular (%s)", lac_error_message ());
+  if (status)
+    return status;
+  memcpy (s->rows_for, R->P, kq * sizeof *R->P);
+  memcpy (s->rows_for + kq, R->Q, kq * sizeof *R->Q);
+  memcpy (s->factored_for, R->free, k);
+  s->have_factor = 1;
+  return LAC_SUCCESS;
+}
+
+static int
+saddle_solve_rows (void *w, const lac_contact_rows *R, const double *f,
+                   const double *r, double *U, double *lambda)
+{
+  lac_saddle *s = w;
+  size_t n = s->n, k = s->k;
+  double *rhs = s->work, *sol = s->work + n + k;
+  const double *D = s->D;
+  int status = rows_factorize (s, R);
+  if (status)
+    return status;
+  const double *Dr = s->rows_for + 2 * k * (size_t) R->q;
+  f = f ? f : s->sys->F;
+  r = r ? r : R->r;
+  for (size_t j = 0; j < n; j++)                        /* [D F; Dr r] */
+    rhs[j] = D[j] * f[j];
+  for (size_t i = 0; i < k; i++)
+    rhs[n + i] = R->free[i] ? Dr[i] * r[i] : 0.0;
+  if ((status = lac_solver_solve (s->solver, rhs, sol)))
+    return status;
+  for (size_t j = 0; j < n; j++)
+    U[j] = D[j] * sol[j];
+  for (size_t i = 0; i < k; i++)
+    lambda[i] = R->free[i] ? D[n + i] * sol[n + i] : 0.0;
+  return LAC_SUCCESS;
+}
+
 static void
 saddle_get_counts (const void *w, lac_solve_counts *c)
 {
@@ -207,9 +363,11 @@ saddle_get_counts (const void *w, lac_solve_counts *c)
 
 const lac_strategy_ops lac_saddle_dense_ops = {
   .alloc = saddle_alloc_dense, .free = saddle_free, .set = saddle_set,
-  .solve = saddle_solve, .get_counts = saddle_get_counts
+  .solve = saddle_solve, .get_counts = saddle_get_counts,
+  .solve_rows = saddle_solve_rows
 };
 const lac_strategy_ops lac_saddle_lu_ops = {
   .alloc = saddle_alloc_lu, .free = saddle_free, .set = saddle_set,
-  .solve = saddle_solve, .get_counts = saddle_get_counts
+  .solve = saddle_solve, .get_counts = saddle_get_counts,
+  .solve_rows = saddle_solve_rows
 };

@@ -230,8 +230,118 @@ schur_solve (void *w, const char *active, const double *f, const double *g,
   return lac_solver_solve (s->chol, s->x, U);          /* U = K^-1 (.) */
 }
 
+/* ---- the equations of a contact law (friction) ---------------------------- */
+
+/* min |U_ii| / max |U_ii| of an LU factorization (0: singular). */
+static double
+pivot_ratio (const gsl_matrix *LU)
+{
+  double lo = HUGE_VAL, hi = 0;
+  for (size_t i = 0; i < LU->size1; i++)
+    {
+      double u = fabs (gsl_matrix_get (LU, i, i));
+      lo = fmin (lo, u);
+      hi = fmax (hi, u);
+    }
+  return hi > 0 ? lo / hi : 0.0;
+}
+
+/* The free multipliers of R by a dense LU of
+ *   M(j, i) = Q(j, i) - sum_b P(j, b) S(g q + b, i)    (j, i free, j in group g)
+ * with b(j) = r_j + sum_b P(j, b) c_{g q + b}^T K^-1 f in lambda on entry
+ * (every j) and lambda on return (0 where not free). */
+static int
+rows_multipliers (lac_schur *s, const lac_contact_rows *R, double *lambda)
+{
+  size_t q = (size_t) R->q, m = 0, *F = lac_malloc ((s->k ? s->k : 1)
+                                                    * sizeof *F);
+  int status = F ? LAC_SUCCESS : LAC_ENOMEM, sign;
+  for (size_t i = 0; F && i < s->k; i++)
+    if (R->free[i])
+      F[m++] = i;
+  gsl_matrix *M = m ? gsl_matrix_alloc (m, m) : NULL;
+  gsl_vector *x = m ? gsl_vector_alloc (m) : NULL;
+  gsl_permutation *perm = m ? gsl_permutation_alloc (m) : NULL;
+  if (m && (!M || !x || !perm))
+    status = LAC_ERRMSG (LAC_ENOMEM, "Schur matrix %zu x %zu", m, m);
+  for (size_t a = 0; !status && a < m; a++)
+    {
+      size_t j = F[a], g = j / q;
+      gsl_vector_set (x, a, lambda[j]);
+      for (size_t c = 0; c < m; c++)
+        {
+          size_t i = F[c];
+          double v = i / q == g ? R->Q[j * q + i % q] : 0.0;
+          for (size_t b = 0; b < q; b++)
+            v -= R->P[j * q + b] * s->S[i * s->k + g * q + b];
+          gsl_matrix_set (M, a, c, v);
+        }
+    }
+  if (!status && m && (gsl_linalg_LU_decomp (M, perm, &sign)
+                       || pivot_ratio (M) < 1e-14))
+    status = LAC_ERRMSG (LAC_ESING, "the Schur complement of the %zu "
+                         "multipliers of the contact law is singular", m);
+  if (!status && m)
+    gsl_linalg_LU_svx (M, perm, x);
+  for (size_t i = 0; !status && i < s->k; i++)
+    lambda[i] = 0;
+  for (size_t a = 0; !status && a < m; a++)
+    lambda[F[a]] = gsl_vector_get (x, a);
+  gsl_permutation_free (perm);
+  gsl_matrix_free (M);
+  gsl_vector_free (x);
+  lac_free (F);
+  return status;
+}
+
+static int
+schur_solve_rows (void *w, const lac_contact_rows *R, const double *f,
+                  const double *r, double *U, double *lambda)
+{
+  lac_schur *s = w;
+  const lac_csc *C = s->sys->C;
+  size_t q = (size_t) R->q;
+  int status;
+  s->factor_failed = 0;
+  f = f ? f : s->sys->F;
+  r = r ? r : R->r;
+  if ((status = schur_columns (s, R->free))
+      || (status = lac_solver_solve (s->chol, f, U)))   /* U_0 = K^-1 f */
+    return status;
+  s->counts.solves++;
+  for (size_t i = 0; i < s->k; i++)                    /* c_i^T U_0 */
+    {
+      double cu = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        cu += C->x[p] * U[C->i[p]];
+      lambda[i] = cu;
+    }
+  for (size_t g = 0; g < s->k / q; g++)               /* r + P C^T U_0 */
+    {
+      double b[3];
+      for (size_t a = 0; a < q; a++)
+        {
+          size_t j = g * q + a;
+          b[a] = r[j];
+          for (size_t c = 0; c < q; c++)
+            b[a] += R->P[j * q + c] * lambda[g * q + c];
+        }
+      for (size_t a = 0; a < q; a++)
+        lambda[g * q + a] = b[a];
+    }
+  if ((status = rows_multipliers (s, R, lambda)))
+    return status;
+  memcpy (s->x, f, s->n * sizeof *s->x);               /* f + C_F lambda_F */
+  for (size_t i = 0; i < s->k; i++)
+    for (int p = C->p[i]; R->free[i] && p < C->p[i + 1]; p++)
+      s->x[C->i[p]] += C->x[p] * lambda[i];
+  s->counts.solves++;
+  return lac_solver_solve (s->chol, s->x, U);          /* U = K^-1 (.) */
+}
+
 const lac_strategy_ops lac_schur_ops = {
   .alloc = schur_alloc, .free = schur_free, .set = schur_set,
   .reset = schur_reset, .solve = schur_solve,
-  .get_counts = schur_get_counts, .factor_failed = schur_factor_failed
+  .get_counts = schur_get_counts, .factor_failed = schur_factor_failed,
+  .solve_rows = schur_solve_rows
 };

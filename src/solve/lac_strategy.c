@@ -456,6 +456,83 @@ lac_strategy_solve (lac_strategy *s, const char *active, double *U,
 }
 
 int
+lac_strategy_solves_rows (lac_strategy_kind kind)
+{
+  return kind > LAC_STRATEGY_AUTO && kind < LAC_NSTRATEGIES
+         && lac_strategy_table[kind].ops->solve_rows != NULL;
+}
+
+/* The names of the types that solve the equations of a contact law. */
+static void
+rows_types (char *buf, size_t size)
+{
+  size_t n = 0;
+  buf[0] = '\0';
+  for (int k = 1; k < LAC_NSTRATEGIES; k++)
+    if (lac_strategy_solves_rows ((lac_strategy_kind) k) && n < size)
+      n += (size_t) snprintf (buf + n, size - n, "%s%s", n ? ", " : "",
+                              lac_strategy_table[k].name);
+}
+
+/* Refinement of a solve of the equations R, as refine (). */
+static int
+refine_rows (lac_strategy *s, const lac_contact_rows *R, double *U,
+             double *lambda)
+{
+  double be;
+  int status = lac_system_rows_residual (s->sys, R, U, lambda, s->r, s->g,
+                                         &be);
+  for (int step = 0; !status && step < MAX_REFINE
+                     && be > LAC_STRATEGY_TOL; step++)
+    {
+      double bnew;
+      memset (s->dU, 0, s->n * sizeof *s->dU);
+      memset (s->dl, 0, s->k * sizeof *s->dl);
+      if ((status = s->type->ops->solve_rows (s->w, R, s->r, s->g, s->dU,
+                                              s->dl)))
+        return status;
+      for (size_t j = 0; j < s->n; j++)
+        s->dU[j] += U[j];
+      for (size_t i = 0; i < s->k; i++)
+        s->dl[i] += lambda[i];
+      if ((status = lac_system_rows_residual (s->sys, R, s->dU, s->dl, s->r,
+                                              s->g, &bnew)))
+        return status;
+      s->counts.refinements++;
+      if (!(bnew < be))
+        break;
+      memcpy (U, s->dU, s->n * sizeof *U);
+      memcpy (lambda, s->dl, s->k * sizeof *lambda);
+      be = bnew;
+    }
+  s->counts.backward_error = be;
+  return status;
+}
+
+int
+lac_strategy_solve_rows (lac_strategy *s, const lac_contact_rows *R,
+                         double *U, double *lambda)
+{
+  double t0 = lac_seconds ();
+  char names[128];
+  if (!s->sys)
+    LAC_ERROR (LAC_EINVAL, "lac_strategy_set was not called");
+  if (!s->type->ops->solve_rows)
+    {
+      rows_types (names, sizeof names);
+      LAC_ERROR (LAC_EINVAL, "the strategy %s does not solve the equations "
+                 "of friction (its slip makes the system unsymmetric): "
+                 "take %s", s->type->name, names);
+    }
+  s->counts.solves++;
+  int status = s->type->ops->solve_rows (s->w, R, NULL, NULL, U, lambda);
+  if (!status)
+    status = refine_rows (s, R, U, lambda);
+  s->counts.time_solve += lac_seconds () - t0;
+  return status;
+}
+
+int
 lac_strategy_solve_rhs (lac_strategy *s, const char *active, const double *f,
                         const double *g, double *U, double *lambda)
 {

@@ -225,6 +225,14 @@ int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
  * the check of the bodies held and without refinement. */
 int lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
                         int *kept);
+/* U, lambda for the equations R of a contact law (lac_contact_rows of
+ * solve/lac_system.h: friction), with the same refinement; LAC_EINVAL
+ * with a message naming the strategies that can when the type cannot
+ * (lac_strategy_solves_rows). */
+int lac_strategy_solve_rows (lac_strategy *s, const lac_contact_rows *R,
+                             double *U, double *lambda);
+/* 1 if the type solves the equations of a contact law (solve_rows). */
+int lac_strategy_solves_rows (lac_strategy_kind kind);
 int lac_strategy_solve_rhs (lac_strategy *s, const char *active,
                             const double *f, const double *g, double *U,
                             double *lambda);

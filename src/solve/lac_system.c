@@ -118,6 +118,56 @@ lac_system_residual (const lac_contact_system *sys, const char *active,
   return LAC_SUCCESS;
 }
 
+int
+lac_system_rows_residual (const lac_contact_system *sys,
+                          const lac_contact_rows *R, const double *U,
+                          const double *lambda, double *res_f, double *res_r,
+                          double *berr)
+{
+  const lac_csc *C = sys->C;
+  size_t n = lac_system_n (sys), k = C->ncol, q = (size_t) R->q;
+  double normK, normC, scale;
+  int status = lac_system_k_mult (sys, U, res_f);
+  if (status)
+    return status;
+  for (size_t j = 0; j < n; j++)
+    res_f[j] = sys->F[j] - res_f[j];                       /* F - K U */
+  for (size_t i = 0; i < k; i++)
+    {
+      double cu = 0;
+      for (int p = C->p[i]; p < C->p[i + 1]; p++)
+        {
+          if (R->free[i])
+            res_f[C->i[p]] += C->x[p] * lambda[i];         /* + C lambda */
+          cu += C->x[p] * U[C->i[p]];
+        }
+      res_r[i] = -cu;                                      /* -c_i^T U */
+    }
+  for (size_t g = 0; g < k / q; g++)                       /* r - P (.) - Q l */
+    {
+      double row[3];
+      for (size_t a = 0; a < q; a++)
+        {
+          size_t j = g * q + a;
+          row[a] = R->r[j];
+          for (size_t b = 0; R->free[j] && b < q; b++)
+            row[a] -= R->P[j * q + b] * res_r[g * q + b]
+                      + R->Q[j * q + b] * lambda[g * q + b];
+        }
+      for (size_t a = 0; a < q; a++)
+        res_r[g * q + a] = R->free[g * q + a] ? row[a] : 0.0;
+    }
+  double nu = norm_inf (n, U);
+  if ((nu > 0 && (status = lac_system_norm_k (sys, &normK)))
+      || (status = lac_system_norm_c (sys, &normC)))
+    return status;
+  scale = (nu > 0 ? normK * nu : 0.0) + normC * norm_inf (k, lambda)
+          + norm_inf (n, sys->F) + norm_inf (k, R->r);
+  *berr = fmax (norm_inf (n, res_f), norm_inf (k, res_r))
+          / (scale > 0 ? scale : 1e-300);
+  return LAC_SUCCESS;
+}
+
 /* H = M^T M, M = C_A^T N (k x nfree), and the scale of each motion over
  * all of C (Hall_jj = sum_i (c_i^T N_j)^2); v: nfree of work. */
 static void

@@ -72,6 +72,34 @@ typedef struct lac_contact_system
   const lac_stiffness_op *Kop; /* borrowed; used when K is NULL          */
 } lac_contact_system;
 
+/* The equations of the multipliers for a contact law other than the
+ * frictionless one (Coulomb friction, solve/lac_friction.h), in place of
+ * the statuses of (*).  The columns of C come q at a time, one group per
+ * macro-element (q = 1 + ntan: the normal column, then the tangential
+ * ones); row j of group g = j / q reads, over the columns of its group,
+ *
+ *   sum_a P[j q + a] (-c_{g q + a}^T U) + sum_a Q[j q + a] lambda_{g q + a}
+ *     = r[j],
+ *
+ * so that the system of one iteration is
+ *
+ *   [ K        -C ] [ U      ]   [ F ]
+ *   [ -P C^T    Q ] [ lambda ] = [ r ]      (P, Q block diagonal).
+ *
+ * The frictionless law is q = 1, P = 1, Q = 0, r = -G on the active
+ * multipliers and P = 0, Q = 1, r = 0 on the others: (*) itself.  The
+ * system is not symmetric where P differs from Q's pattern (the slip of
+ * friction): only the strategies with a solve_rows operation solve it.
+ * Ownership: borrowed. */
+typedef struct lac_contact_rows
+{
+  int q;                 /* columns (multiplier components) per group     */
+  const double *P, *Q;   /* k q each: row j's q coefficients at j q       */
+  const double *r;       /* k: the right-hand sides                       */
+  const char *free;      /* k: 1 if lambda_j is an unknown; 0 where row j
+                            is lambda_j = 0 (then lambda_j = 0)           */
+} lac_contact_rows;
+
 /* What the Cholesky-based solvers of (*) did (solve/lac_schur.h,
  * solve/lac_augmented.h). */
 typedef struct lac_solve_counts
@@ -129,6 +157,12 @@ typedef struct lac_strategy_ops
   /* Optional, with own_k: the stresses and errors of the solution from
    * the cells, on the processes that hold them (fem/lac_post_dist.h). */
   int (*post) (void *w, struct lac_post_request *p);
+  /* Optional: U, lambda of the system of a contact law's equations R
+   * (lac_contact_rows), right-hand sides f and r (NULL: F and R->r);
+   * lambda_j = 0 where R->free[j] is 0.  Without it the type solves only
+   * the frictionless law. */
+  int (*solve_rows) (void *w, const lac_contact_rows *R, const double *f,
+                     const double *r, double *U, double *lambda);
 } lac_strategy_ops;
 
 /* Residuals of (U, lambda) for the active set `active` (NULL: all):
@@ -140,6 +174,15 @@ typedef struct lac_strategy_ops
 int lac_system_residual (const lac_contact_system *sys, const char *active,
                          const double *U, const double *lambda,
                          double *r, double *g, double *berr);
+/* The residuals of (U, lambda) for the equations R of a contact law:
+ *   res_f = F - K U + C lambda (n),
+ *   res_r_j = r_j - (P (-C^T U) + Q lambda)_j (k; 0 where R->free is 0),
+ * and the normwise backward error as for lac_system_residual (with r in
+ * place of G). */
+int lac_system_rows_residual (const lac_contact_system *sys,
+                              const lac_contact_rows *R, const double *U,
+                              const double *lambda, double *res_f,
+                              double *res_r, double *berr);
 /* n, K's order (K or Kop). */
 size_t lac_system_n (const lac_contact_system *sys);
 /* y = K x (K or Kop). */

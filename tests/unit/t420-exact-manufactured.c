@@ -24,7 +24,7 @@ rnd (unsigned *s)
 static void
 check_solution (int kind, lac_model model, double E, double nu)
 {
-  lac_exact_params par = { 0, 0, 0, E, nu };
+  lac_exact_params par = { 0, 0, 0, E, nu, 0 };
   lac_exact e;
   lac_exact_init (&e, kind, model, &par);
   int d = e.dim;

@@ -130,7 +130,7 @@ run (lac_elem_type t, int dim, const char *what)
     {
       pr[p] = (lac_contact_pair) { m, dim == 2 ? LAC_PLANE_STRAIN
                                    : LAC_SOLID3D, M[p], &Mf[p], NULL,
-                                   LAC_EPSILON_DEFAULT, 0, { 0 }, 0, 0 };
+                                   LAC_EPSILON_DEFAULT, 0, { 0 }, 0, 0, 0, 0 };
       lac_pairing_opts_init (&pr[p].popts);
     }
   lac_contact_set s;

@@ -60,7 +60,7 @@ setup_make (setup *s, lac_elem_type type, lac_model model, double g0)
                 LAC_SUCCESS, "macro-mesh");
   s->master = lac_pairing_facets_of (s->m, lac_mesh_group (s->m, "lo.ymax"));
   s->pair = (lac_contact_pair) { s->m, model, s->M, &s->master, &s->ob,
-                                 0.01, 0, { 0 }, 0, 0 };
+                                 0.01, 0, { 0 }, 0, 0, 0, 0 };
   lac_pairing_opts_init (&s->pair.popts);
   s->pair.popts.dist_abs = 0.1;
 }

@@ -39,7 +39,7 @@ exercise1 (void)
 {
   const double lam = -925.0 / 189.0, pi = acos (-1.0);
   /* the closed forms against the library's Lame solution */
-  lac_exact_params par = { 20, 40, 25, 2000, 0.3 };
+  lac_exact_params par = { 20, 40, 25, 2000, 0.3, 0 };
   lac_exact e;
   lac_exact_init (&e, LAC_EXACT_THICK_SPHERE, LAC_AXISYMMETRIC, &par);
   double x30[2] = { 30, 0 }, n[2] = { 1, 0 }, u[2];

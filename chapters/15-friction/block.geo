@@ -1,0 +1,16 @@
+// block.geo -- a 20 x 10 mm block standing on y = 0
+If (!Exists(level))
+  level = 0;
+EndIf
+n = 4 * 2^level;
+Point(1) = {-10, 0, 0}; Point(2) = {10, 0, 0};
+Point(3) = {10, 10, 0}; Point(4) = {-10, 10, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = 2 * n + 1;
+Transfinite Curve{2, 4} = n + 1;
+Transfinite Surface{1};
+Physical Surface("block") = {1};
+Physical Curve("bottom") = {1};
+Physical Curve("top") = {3};
