@@ -41,7 +41,7 @@ static int
 run (const char *scene, int n, const char **set, lac_scene **sc,
      lac_run **r)
 {
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   int st = lac_scene_read (scene, (size_t) n, set, sc);
   *r = NULL;
   if (!st && !(*r = lac_run_alloc (*sc, &o)))

@@ -33,7 +33,7 @@ static int
 run (const char *file, const char *text, const char *path, int n,
      const char **set, lac_scene **sc, lac_run **r)
 {
-  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0 };
+  lac_run_opts o = { NULL, 0, 1, 0, 0, NULL, 0, 0 };
   int st = file ? lac_scene_read (file, (size_t) n, set, sc)
                 : lac_scene_read_string (text, path, (size_t) n, set, sc);
   *r = NULL;
