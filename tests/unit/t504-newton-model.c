@@ -160,7 +160,7 @@ chain_init (chain *c, int reach2, int may_widen)
 static int
 solve (chain *c, double pen_tol, lac_newton **out)
 {
-  lac_contact_model m = { &chain_type, c, N, NOB, 1.0, 2 };
+  lac_contact_model m = { &chain_type, c, N, NOB, 1.0, 2, 0 };
   lac_newton_opts o;
   lac_newton_opts_init (&o);
   o.kind = LAC_STRATEGY_SADDLE;
