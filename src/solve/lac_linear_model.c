@@ -212,6 +212,7 @@ lac_linear_lift_clear (lac_linear_lift *l)
 {
   lac_free (l->G0);
   lac_free (l->e);
+  lac_free (l->et);
   memset (l, 0, sizeof *l);
 }
 
@@ -240,6 +241,17 @@ lift_keep (const lac_dirichlet *dir, const lac_contact *all,
           else
             l->e[l->n++] = (lac_linear_lift_entry) { i, (size_t) C->i[p],
                                                      C->x[p] };
+        }
+  const lac_csc *T = all->Ct;                      /* friction: Ct_D */
+  for (size_t i = 0; !status && T && i < T->ncol; i++)
+    for (int p = T->p[i]; !status && p < T->p[i + 1]; p++)
+      if (fixed[T->i[p]])
+        {
+          if (lac_grow (&l->et, l->nt + 1, &l->capt, sizeof *l->et, 64))
+            status = LAC_ERRMSG (LAC_ENOMEM, "Dirichlet rows of Ct");
+          else
+            l->et[l->nt++] = (lac_linear_lift_entry) { i, (size_t) T->i[p],
+                                                       T->x[p] };
         }
   if (!status)
     memcpy (l->G0, all->G, all->k * sizeof *l->G0);
@@ -281,6 +293,11 @@ lac_linear_model_dirichlet (lac_linear_model *lm)
   memcpy (G, l->G0, lm->data->all->k * sizeof *G);
   for (size_t j = 0; j < l->n; j++)     /* G_i -= C(dof, i) g_dof */
     G[l->e[j].col] -= l->e[j].x * g[l->e[j].dof];
+  double *sfix = lm->data->all->sfix;   /* friction: sfix = Ct_D^T g */
+  if (sfix)
+    memset (sfix, 0, lm->data->all->Ct->ncol * sizeof *sfix);
+  for (size_t j = 0; sfix && j < l->nt; j++)
+    sfix[l->et[j].col] += l->et[j].x * g[l->et[j].dof];
 }
 
 /* A new concatenation of the contact data of every pair, as the caller's

@@ -69,6 +69,9 @@ typedef struct lac_linear_lift
   double *G0;                 /* owned, k: G without the Dirichlet values  */
   size_t n, cap;
   lac_linear_lift_entry *e;   /* owned, n: C_D column by column            */
+  size_t nt, capt;            /* with friction: Ct_D, the rows of Ct at    */
+  lac_linear_lift_entry *et;  /* the Dirichlet dofs (owned, nt), from
+                                 which sfix = Ct_D^T g is made again      */
 } lac_linear_lift;
 
 typedef struct lac_linear_model
