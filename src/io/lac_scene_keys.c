@@ -169,6 +169,19 @@ static const key_spec output_keys[] = {
 };
 
 #define NK(a) ((int) (sizeof a / sizeof a[0]))
+/* A section keeps the text and the line of each key in arrays of
+ * LAC_SCENE_MAX_KEYS (io/lac_scene_types.h): every table fits in them. */
+#define FITS(a) _Static_assert (NK (a) <= LAC_SCENE_MAX_KEYS, #a \
+                                " has more keys than LAC_SCENE_MAX_KEYS")
+FITS (scene_keys);
+FITS (mesh_keys);
+FITS (material_keys);
+FITS (dirichlet_keys);
+FITS (load_keys);
+FITS (exact_keys);
+FITS (output_keys);
+FITS (contact_keys);
+FITS (steps_keys);
 const section_spec lac_scene_sections[NSEC] = {
   { "scene", 0, scene_keys, NK (scene_keys) },
   { "mesh", 0, mesh_keys, NK (mesh_keys) },

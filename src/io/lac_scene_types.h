@@ -18,7 +18,8 @@
 #include "fem/lac_material.h"     /* model: a lac_model */
 #include "fem/lac_spaces.h"       /* element: a lac_elem_type */
 
-#define LAC_SCENE_MAX_KEYS 16
+#define LAC_SCENE_MAX_KEYS 32    /* keys of a section at most (io/lac_scene_keys.c
+                                    checks its tables against it)       */
 
 /* The largest scene file read: a scene is a few kilobytes of text (the
  * largest of lac's is 3 kB); a path to anything larger, or to what is not
