@@ -679,14 +679,23 @@ friction_lmax (const lac_newton *s)
 }
 
 /* Step 2 with friction: the status of column i's slot (its slip
- * direction into w->dir_new). */
+ * direction into w->dir_new; the direction it had where the status is not
+ * slip, so that a slot the cycle guard keeps slipping keeps its e).  At
+ * the start of a load step (iteration 0) ds = 0 and a slot that slipped
+ * is at the limit, |xi| = b: it starts from stick, the step's elastic
+ * predictor (kept slipping, a step that unloads would first reverse its
+ * whole slip, and stick and slip alternate for ever). */
 static char
 friction_want (lac_newton *s, size_t i, double lmax)
 {
   size_t m = lac_model_slot (&s->pt, i), nt = (size_t) s->ntan;
   double ds[2];
   lac_friction_slot x = friction_slot (s, i, lmax, ds);
-  return (char) lac_friction_status (&x, s->first, s->active[m],
+  int current = s->active[m];
+  if (s->w->it == 0 && current == LAC_FRICTION_SLIP)
+    current = LAC_FRICTION_STICK;     /* a load step starts from stick */
+  memcpy (s->w->dir_new + m * nt, s->dir + m * nt, nt * sizeof *s->dir);
+  return (char) lac_friction_status (&x, s->first, current,
                                      s->w->dir_new + m * nt);
 }
 
