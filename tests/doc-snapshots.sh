@@ -12,12 +12,13 @@
 #   <!-- snapshot[ATTRS]: COMMAND @ COMMIT, MACHINE; sha SHA -->
 #
 # ([ATTRS] is optional).  COMMAND runs from the top of the repository (in
-# $B/doc-snapshots/run, whose entries are links to the repository's, its
+# $DOC_SNAP_DIR/run, whose entries are links to the repository's, its
 # build/ the build folder $B, and " /tmp/" a folder of its own) and must
 # print the block: line by line, word by word, integers exactly and other
 # numbers within atol + rtol |x| (tests/numcmp), blank lines at the end
 # aside; its standard output only (a log excerpt says 2>&1).  A command
-# "HEAD | FILTER" runs HEAD once for all the snapshots that share it.  ATTRS, separated by commas:
+# "HEAD | FILTER" runs HEAD once for all the snapshots that share it.
+# ATTRS, separated by commas:
 #   long          a run of minutes: not in the cheap tier that make test runs
 #   bench         a benchmark's record (the times of one machine, runs of
 #                 hours): rerun only in the tier bench (BENCH=1)
@@ -75,8 +76,7 @@ done
 ln -s "$ROOT/$B" "$W/run/build"
 
 # the markers: "FILE<TAB>LINE<TAB>ATTRS (- if none)<TAB>COMMAND", each
-# file's last first
-# (an update changes the lines below it)
+# file's last first (an update changes the lines below it)
 [ $# -gt 0 ] || set -- README.md chapters/README.md chapters/*/*.md
 for a in "$@"; do
   f=${a%%:*}; at=; [ "$f" = "$a" ] || at=${a#*:}
