@@ -4,7 +4,7 @@
 #   sh tests/doc-snapshots.sh [--tier cheap|long|bench] [--update] [--list]
 #                             [--output FILE] [--keep DIR] [FILE[:LINE]...]
 #
-# (make doc-snapshots [UPDATE=1] [BENCH=1]; tests/cases-doc-snapshots.sh
+# (make doc-snapshots [UPDATE=1] [TIER=bench]; tests/cases-doc-snapshots.sh
 # runs the cheap tier in make test.)  A snapshot is a table or a log
 # excerpt of the book that a command prints, marked on the line right
 # before its fenced block or pipe table by
@@ -21,7 +21,7 @@
 # ATTRS, separated by commas:
 #   long          a run of minutes: not in the cheap tier that make test runs
 #   bench         a benchmark's record (the times of one machine, runs of
-#                 hours): rerun only in the tier bench (BENCH=1)
+#                 hours): rerun only in the tier bench (TIER=bench)
 #   machine=ITEMS values that depend on the machine (times, memory): not
 #                 compared.  ITEMS joined by +, each a column (a cell of a
 #                 pipe table, a blank-separated field of a block; N-M a
