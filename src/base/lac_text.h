@@ -18,6 +18,11 @@
 #ifndef LAC_TEXT_H
 #define LAC_TEXT_H
 
+/* The text of a macro's value, e.g. "50" for LAC_NEWTON_MAXIT (help
+ * texts quote the defaults defined once in code). */
+#define LAC_STR_(x) #x
+#define LAC_XSTR(x) LAC_STR_ (x)
+
 #include <stddef.h>
 
 /* The offset of the first bad byte of text[0 .. len-1], or len if none;

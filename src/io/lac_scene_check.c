@@ -20,6 +20,7 @@
 #include "io/lac_output_batch.h"
 #include "io/lac_scene_keys.h"
 #include "io/lac_scene_query.h"
+#include "solve/lac_newton_rules.h"
 #include "base/lac_input.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -534,42 +535,62 @@ finish_contact (lac_scene *sc, lac_scene_contact *c)
   return LAC_SUCCESS;
 }
 
-/* The value of loop key q (0 strategy, 1 max_iterations) of c. */
-static int
-loop_value (const lac_scene_contact *c, int q)
+/* The key q of the loop (0 strategy, 1 max_iterations, 2 rules) of c:
+ * its value, and the value given to every section (*set). */
+static int *
+loop_value (lac_scene_contact *c, int q)
 {
-  return q == 0 ? c->strategy : c->max_iterations;
+  return q == 0 ? &c->strategy : q == 1 ? &c->max_iterations
+         : &c->rules_off;
 }
 
-/* The keys of the one loop of all pairs (strategy, max_iterations): in
- * one [contact] section, or the same in several.  Every section gets the
- * value given; sc->contact_loop is the first section that gives
- * strategy, else max_iterations (0 if none does). */
+/* [contact] rules: the names into the bits switched off. */
+static int
+parse_rules (lac_scene *sc, lac_scene_contact *c)
+{
+  int on;
+  if (!c->rules)
+    return LAC_SUCCESS;
+  if (lac_rule_parse (c->rules, &on))
+    return lac_scene_error (sc, &c->sec, "rules", LAC_EINVAL, "%s",
+                            lac_error_message ());
+  c->rules_off = LAC_RULES_ALL & ~on;
+  return LAC_SUCCESS;
+}
+
+/* The keys of the one loop of all pairs (strategy, max_iterations,
+ * rules): in one [contact] section, or the same in several.  Every
+ * section gets the value given; sc->contact_loop is the first section
+ * that gives strategy, else max_iterations (0 if none does). */
 static int
 finish_contact_loop (lac_scene *sc)
 {
-  static const char *const keys[] = { "strategy", "max_iterations" };
-  size_t from[2] = { SIZE_MAX, SIZE_MAX };
-  for (int q = 0; q < 2; q++)
+  static const char *const keys[] = { "strategy", "max_iterations",
+                                      "rules" };
+  size_t from[3] = { SIZE_MAX, SIZE_MAX, SIZE_MAX };
+  int status;
+  for (size_t k = 0; k < sc->ncontact; k++)
+    if ((status = parse_rules (sc, &sc->contact[k])))
+      return status;
+  for (int q = 0; q < 3; q++)
     {
       for (size_t k = 0; k < sc->ncontact; k++)
         {
-          const lac_scene_contact *c = &sc->contact[k];
+          lac_scene_contact *c = &sc->contact[k];
           if (!given (&c->sec, keys[q]))
             continue;
           if (from[q] == SIZE_MAX)
             from[q] = k;
-          else if (loop_value (c, q) != loop_value (&sc->contact[from[q]], q))
+          else if (*loop_value (c, q)
+                   != *loop_value (&sc->contact[from[q]], q))
             return lac_scene_error (sc, &c->sec, keys[q], LAC_EINVAL, "the "
                                     "pairs are solved by one loop: %s "
                                     "differs from [contact %s]", keys[q],
                                     sc->contact[from[q]].sec.name);
         }
       for (size_t k = 0; from[q] != SIZE_MAX && k < sc->ncontact; k++)
-        if (q == 0)
-          sc->contact[k].strategy = sc->contact[from[0]].strategy;
-        else
-          sc->contact[k].max_iterations = sc->contact[from[1]].max_iterations;
+        *loop_value (&sc->contact[k], q)
+          = *loop_value (&sc->contact[from[q]], q);
     }
   sc->contact_loop = from[0] != SIZE_MAX ? from[0]
                      : from[1] != SIZE_MAX ? from[1] : 0;

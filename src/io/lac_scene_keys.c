@@ -15,6 +15,8 @@
 #include "fem/lac_exact.h"
 #include "fem/lac_material.h"
 #include "linalg/lac_linalg.h"
+#include "solve/lac_newton.h"
+#include "solve/lac_nonlinear.h"
 #include "solve/lac_strategy.h"
 #include "base/lac_mem.h"
 
@@ -130,6 +132,7 @@ static const key_spec contact_keys[] = {
     NULL },
   INT (lac_scene_contact, max_iterations, 1, 100000,
        "an integer in 1..100000"),
+  STR (lac_scene_contact, rules),
   NUM (lac_scene_contact, gap_bound, 0, HUGE_VAL, 0, "a length >= 0"),
   NUM (lac_scene_contact, interference, 0, HUGE_VAL, 0, "a length >= 0"),
   ENUM (lac_scene_contact, hex_cut, hex_cut_names),
@@ -226,7 +229,7 @@ lac_scene_section_defaults (int kind, lac_scene_section *s)
       break;
     case SEC_CONTACT:
       ((lac_scene_contact *) s)->strategy = LAC_STRATEGY_AUTO;
-      ((lac_scene_contact *) s)->max_iterations = 50;
+      ((lac_scene_contact *) s)->max_iterations = LAC_NEWTON_MAXIT;
       break;
     case SEC_DIRICHLET:
       ((lac_scene_dirichlet *) s)->ramp = 1;
@@ -235,8 +238,8 @@ lac_scene_section_defaults (int kind, lac_scene_section *s)
       {
         lac_scene_steps *t = (lac_scene_steps *) s;
         t->n = 1;
-        t->tol = 1e-8;
-        t->maxit = 25;
+        t->tol = LAC_NL_TOL;
+        t->maxit = LAC_NL_MAXIT;
         break;
       }
     default:

@@ -162,7 +162,12 @@ typedef struct lac_scene_contact         /* [contact NAME] */
                            given (the method's default)                    */
   int method;           /* 0 lac, 1 p0 (raw trace), 2 nts (collocation)   */
   int strategy;         /* lac_strategy_kind, LAC_STRATEGY_AUTO default   */
-  int max_iterations;   /* active-set iterations at most (default 50)     */
+  int max_iterations;   /* active-set iterations at most
+                           (LAC_NEWTON_MAXIT, solve/lac_newton.h)         */
+  char *rules;          /* the rules of the loop switched on: all (the
+                           default), none, or a list of their names
+                           (solve/lac_newton_rules.h)                      */
+  int rules_off;        /* and the LAC_RULE_* bits switched off           */
   double gap_bound;     /* pairs up to this normal gap more (length, 0)   */
   double interference;  /* delta >= 0 taken from every gap: a shrink fit
                            drawn with matching surfaces (length, 0)       */

@@ -258,6 +258,7 @@ nl_setup (const lac_scene *sc, int strategy, const lac_mesh *m,
   o.tol = sc->steps.tol;
   o.maxit = sc->steps.maxit;
   o.frozen = sc->steps.tangent == 1;
+  o.off = sc->ncontact ? sc->contact[sc->contact_loop].rules_off : 0;
   if (!(nl->model = lac_nl_alloc (p, &o))
       || !(nl->ls = lac_loadstep_alloc (nl->model, &o)))
     return LAC_ENOMEM;       /* each pair's shrink fit: t delta, from its

@@ -12,8 +12,6 @@
 #include "run/lac_run_mesh.h"
 #include "run/lac_run_scene.h"
 
-#define NEWTON_TOL 1e-10
-
 void
 lac_run_solution_clear (lac_run_solution *sol)
 {
@@ -259,7 +257,7 @@ contact_start (const lac_scene *sc, int strategy,
   lac_newton_opts_init (&o);
   o.kind = sol->strategy;
   o.maxit = c->max_iterations;
-  o.tol = NEWTON_TOL;
+  o.off = c->rules_off;
   if (!(sol->newton = lac_newton_alloc (&model, &o)))
     {
       lac_strategy_free (st);

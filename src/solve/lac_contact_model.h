@@ -49,6 +49,7 @@
 #ifndef LAC_CONTACT_MODEL_H
 #define LAC_CONTACT_MODEL_H
 
+#include <math.h>
 #include <stddef.h>
 #include "contact/lac_contact_pair.h"
 #include "solve/lac_strategy.h"
@@ -76,6 +77,34 @@ typedef struct lac_model_point
   double fscale;         /* > 0: the size of the forces in r, the scale of
                             the residual (with |C lambda|)                 */
 } lac_model_point;
+
+/* The macro-element (slot) of column i of p. */
+static inline size_t
+lac_model_slot (const lac_model_point *p, size_t i)
+{
+  return p->slot ? p->slot[i] : i;
+}
+
+/* The penetration of column i as a length: -d_i / |C(:,i)|_1, the mean
+ * gap per unit weight of the column (0 for an empty column). */
+static inline double
+lac_model_penetration (const lac_model_point *p, size_t i)
+{
+  double csum = 0;
+  for (int q = p->C->p[i]; q < p->C->p[i + 1]; q++)
+    csum += fabs (p->C->x[q]);
+  return csum > 0 ? -p->d[i] / csum : 0.0;
+}
+
+/* h_i of column i, the size of T^m cap Gamma_C as a length: size_i in
+ * 2D, sqrt(size_i) in 3D (1 without sizes). */
+static inline double
+lac_model_h (const lac_model_point *p, size_t i, int dim)
+{
+  if (!p->size)
+    return 1.0;
+  return dim == 3 ? sqrt (p->size[i]) : p->size[i];
+}
 
 typedef struct lac_contact_model_type
 {

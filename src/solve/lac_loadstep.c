@@ -40,10 +40,11 @@ lac_loadstep_alloc (lac_nl *model, const lac_nl_opts *opts)
   ls->predict = o.predict;
   lac_newton_opts_init (&lo);
   lo.kind = o.kind;
-  lo.maxit = o.maxit > 0 ? o.maxit : 25;
-  lo.tol = o.tol > 0 ? o.tol : 1e-8;
+  lo.maxit = o.maxit > 0 ? o.maxit : LAC_NL_MAXIT;
+  lo.tol = o.tol > 0 ? o.tol : LAC_NL_TOL;
   lo.rho = o.rho;
   lo.frozen = o.frozen;
+  lo.off = o.off;
   lac_nl_model (model, &m);
   size_t n = m.n ? m.n : 1, ns = m.nslot ? m.nslot : 1;
   if (!(ls->loop = lac_newton_alloc (&m, &lo))

@@ -33,46 +33,27 @@
  * after each solve and LAC_SUCCESS at the iteration that finds it
  * converged (at least one solve per loop).
  *
- * Heuristics, each for a measured reason:
- *   - held start: when the statuses of the first iteration of a loop do
- *     not hold a body held by contact alone (its stiffness alone is
- *     singular), the multipliers of the smallest gaps are switched on, 1,
- *     2, 4, ... of them until they hold every body (restarted,
- *     held_start); from every multiplier active, the rule released the
- *     elements in tension a ring at a time: 19/22/24 iterations for the
- *     sphere on a rigid flat of chapter 10 (tet10 levels 0/1/2) against
- *     3/5/5;
- *   - first contact: when the first solve of a loop had no active
- *     multiplier (bodies apart), or only those of a held start, only the
- *     elements that penetrate by at least LAC_NEWTON_FIRST_CONTACT
- *     (LAC_NEWTON_HELD_CONTACT) times the deepest penetration are
- *     switched on: for a pressed paraboloid the contact radius is where
- *     the overlap is half the deepest (Hertz), so the overlap, wider than
- *     the contact zone, is not taken whole and released half an excess
- *     per iteration;
- *   - cycle guard: the statuses of every iteration are remembered (a
- *     checksum); when the rule would return to statuses already tried,
- *     only the most violated half of its changes is made (damped);
- *   - line search (a nonlinear model only): a Newton step that turns a
- *     cell inside out, or that was made on settled statuses and does not
- *     lower max(residual, gap residual), is halved, up to
- *     LAC_NEWTON_HALVINGS times; a residual LAC_NEWTON_DIVERGED times
- *     above the best of the loop is a failure;
- *   - inexact consistent step (a model with a consistent op): the step is
- *     accurate to eta = 1e-2 times the residual (in [1e-12, 1e-3]; 1e-5
- *     in the first iteration of a loop), and the factorization of an
- *     earlier tangent is kept (schur) while GMRES needs at most
- *     LAC_NEWTON_LAG iterations (about half a factorization).
+ * The rules.  Algorithm 1 alone can take many iterations, cycle, or fail
+ * to start a body held by contact alone; six rules, each for a measured
+ * reason, each a function of solve/lac_newton_rules.h switched by a bit
+ * of opts.off: the held start, every multiplier active after a singular
+ * first solve, the first contact, the cycle guard, the line search and
+ * the inexact consistent step (nonlinear models).  With opts.off =
+ * LAC_RULES_ALL the loop is the paper's (chapter 07 shows both).
  *
- * No silent penetration.  When the test of step 3 passes, the model says
- * how deep the macro-elements WITHOUT a multiplier (not paired, or not
- * admissible) are inside the master at U (lac_contact_model.h,
- * uncovered).  Deeper than opts.pen_tol times their size: the model pairs
- * again with a reach of 2 max |U| + that depth (widen) and the loop goes
- * on with the new multipliers; if that gains nothing, the loop stops with
- * an error naming the macro-element, where it is and how deep.  Likewise
- * an active macro-element that lost part of its surface to failed
- * projections of the pairing is an error.
+ * No silent penetration.  When the test of step 3 passes, the
+ * macro-elements without a multiplier, and those that lost surface to
+ * failed projections, are checked (solve/lac_newton_check.h): the model
+ * pairs again with a longer reach and the loop goes on, or the loop
+ * stops with an error naming the macro-element.
+ *
+ * Why a loop stops.  Converged: the statuses have settled and both
+ * residuals of step 3 are below tol, a mean gap at the level of rounding
+ * of what it was computed from (lac_snap) counting as closed.  Otherwise
+ * the error says which of these failed: the statuses still change (raise
+ * the iteration limit, load in more steps), the residual of equilibrium
+ * or a mean gap (named) stays above tol with the statuses settled, or
+ * the residual grew LAC_NEWTON_DIVERGED times above its best.
  *
  * Usage (the loop over iterations belongs to the caller, which reports):
  *   lac_newton *s = lac_newton_alloc (&model, &opts);
@@ -91,37 +72,30 @@
 
 #include <stddef.h>
 #include "solve/lac_contact_model.h"
+#include "solve/lac_newton_rules.h"
 #include "solve/lac_strategy.h"
 #include "solve/lac_system.h"
 
-/* Fraction of the deepest penetration switched on at the first contact. */
-#define LAC_NEWTON_FIRST_CONTACT 0.5
-/* The same after a held start: the first solve pressed the bodies on a
- * few elements, its penetrations are those of a load concentrated there,
- * not of a rigid approach; the zone is grown from its deepest elements
- * instead (measured on chapter 10's sphere on a rigid flat, tet10 levels
- * 0/1/2: 7/10/- active-set iterations with 0.5, 4/6/8 with 0.9, 3/5/5
- * with 0.95, 7/6/5 with 0.99). */
-#define LAC_NEWTON_HELD_CONTACT 0.95
-#define LAC_NEWTON_HALVINGS 4   /* line search: a step halved at most   */
-#define LAC_NEWTON_DIVERGED 1e3 /* residual / the loop's best: failure  */
-#define LAC_NEWTON_LAG 6        /* GMRES iterations that keep an older
-                                   factorization: about half of one (one
-                                   costs 12 iterations on the coarse hex20
-                                   ring, 13 on the fine one)             */
+/* The defaults of the loop, defined here only. */
+#define LAC_NEWTON_MAXIT 50     /* solves per loop                      */
+#define LAC_NEWTON_TOL 1e-10    /* the test of step 3                   */
+#define LAC_NEWTON_PEN_TOL 1e-2 /* penetration of a macro-element without
+                                   a multiplier, in its sizes            */
 
 typedef struct lac_newton_opts
 {
   lac_strategy_kind kind;  /* how (*) is solved (auto: chosen from the
                               problem at the first solve)                */
-  int maxit;               /* solves per loop (0: 50)                    */
-  double tol;              /* of the test of step 3 (0: 1e-10)           */
+  int maxit;               /* solves per loop (0: LAC_NEWTON_MAXIT)      */
+  double tol;              /* of the test of step 3 (0: LAC_NEWTON_TOL)  */
   double rho;              /* > 0: rho_m = rho for all m; 0: E / (h |T|) */
   int frozen;              /* 1: no consistent correction of the step    */
   double pen_tol;          /* penetration of a macro-element without a
                               multiplier, in its sizes, above which the
-                              loop pairs again or stops (0: 1e-2; < 0:
-                              not checked)                               */
+                              loop pairs again or stops (0:
+                              LAC_NEWTON_PEN_TOL; < 0: not checked)      */
+  int off;                 /* the rules switched off (LAC_RULE_* bits of
+                              solve/lac_newton_rules.h; 0: none)         */
 } lac_newton_opts;
 
 void lac_newton_opts_init (lac_newton_opts *o);

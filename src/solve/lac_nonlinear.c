@@ -20,8 +20,8 @@ lac_nl_opts_init (lac_nl_opts *o)
 {
   memset (o, 0, sizeof *o);
   o->kind = lac_strategy_choose_factor (LAC_FACTOR_LU, 0);    /* saddle */
-  o->maxit = 25;
-  o->tol = 1e-8;
+  o->maxit = LAC_NL_MAXIT;
+  o->tol = LAC_NL_TOL;
   o->rho = 0;
   o->max_cuts = 6;
   o->predict = 1;

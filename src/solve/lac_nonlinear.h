@@ -101,6 +101,10 @@ typedef struct lac_nl_problem
 
 /* The options of a large-deformation solve: of the loop, of the load
  * steps (solve/lac_loadstep.h) and of the pairing. */
+/* The defaults of a load step's loop, defined here only. */
+#define LAC_NL_MAXIT 25         /* Newton iterations per step           */
+#define LAC_NL_TOL 1e-8         /* relative tolerance of the loop's test */
+
 typedef struct lac_nl_opts
 {
   lac_strategy_kind kind; /* how the saddle system is solved
@@ -109,8 +113,9 @@ typedef struct lac_nl_opts
                             Cholesky strategy falls back to saddle for the
                             rest of a step where K_T is not positive
                             definite                                       */
-  int maxit;             /* Newton iterations per step (0: 25)              */
-  double tol;            /* relative tolerance of the loop's test (0: 1e-8) */
+  int maxit;             /* Newton iterations per step (0: LAC_NL_MAXIT)    */
+  double tol;            /* relative tolerance of the loop's test (0:
+                            LAC_NL_TOL)                                    */
   double rho;            /* > 0: rho_m = rho for all m; 0: E / (h |T|)      */
   int max_cuts;          /* a sub-step is at least 2^-max_cuts of its load
                             step (0: 6; < 0: no cut)                       */
@@ -120,6 +125,8 @@ typedef struct lac_nl_opts
   int frozen;            /* 1: the frozen-geometry tangent (the generalized
                             Newton method of [LAC §4.5]); 0: the consistent
                             one (solve/lac_consistent.h)                   */
+  int off;               /* the rules of the loop switched off
+                            (solve/lac_newton_rules.h; 0: none)            */
   lac_pairing_opts popts;  /* pairing options (allow_empty is forced);
                             degree_nonaffine = 8 instead of 18: deformed
                             facets are all non-affine, and with 100 points
