@@ -10,6 +10,7 @@
 #   make fuzz        libFuzzer harnesses (clang), FUZZ_SECONDS (60) each
 #   make doc         the book as HTML in build/doc (pandoc, MathML)
 #   make doc-test    make doc, then its pages checked in headless Chromium
+#   make doc-snapshots  the book's snapshot tables rerun [UPDATE=1] [TIER=bench]
 #   make exercise NAME=x [FROM=chapters/NN-name/skeleton.c]
 #                    exercises/x/main.c from a skeleton, built as build/exercises/x
 #   make install     bin/lac, the libraries, headers, lac.pc, lac.1 and the
@@ -325,6 +326,16 @@ doc-test: doc $(B)/figures/pngcheck
 	@sh tests/deps.sh $(DEB_DOCTEST)
 	sh tests/doc-browser.sh $(DOC_B) $(B)/figures/pngcheck
 
+# The snapshots of the book rerun (tests/doc-snapshots.sh): every table and
+# log excerpt marked <!-- snapshot[...]: COMMAND ... --> against what
+# COMMAND prints now, machine-bound values (times) excepted.  make test
+# runs the cheap ones (tests/cases-doc-snapshots.sh, or TIER=cheap here);
+# this target adds those of minutes (about 20 minutes on 2 cores alone);
+# TIER=bench the benchmark records too (hours); UPDATE=1 rewrites each
+# snapshot that differs from what its command prints.
+doc-snapshots: all $(UNIT) $(NUMCMP) $(FIGPROG)
+	@B=$(B) sh tests/doc-snapshots.sh --tier $(or $(TIER),long) $(if $(UPDATE),--update)
+
 # ---- exercises with code (chapters/README.md, "Exercises with code") -----
 # make exercise NAME=x [FROM=FILE]: exercises/x/main.c, a copy of FROM (a
 # chapter's skeleton; chapters/exercise.c by default), kept if it exists,
@@ -370,7 +381,7 @@ $(B)/tools/make_seeds: fuzz/make_seeds.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 help:
-	@sed -n '3,18p' Makefile
+	@sed -n '3,19p' Makefile
 
-.PHONY: all deps install uninstall test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test exercise
+.PHONY: all deps install uninstall test test-asan test-nomem demo bench bench-ring bench-ring-fine figures fuzz clean help doc doc-test doc-snapshots exercise
 .DELETE_ON_ERROR:

@@ -7,7 +7,7 @@
 # hex27) and the manufactured convergence problems (2D tri3, tri6, quad4,
 # quad8; 3D tet4, tet10, hex8, hex20, hex27) over several mesh levels, each
 # run with the contact strategies of solve/lac_strategy.h (chapter 07,
-# section 3): auto (what a user gets: dense up to 600 unknowns, else schur,
+# section 4): auto (what a user gets: dense up to 600 unknowns, else schur,
 # or split when a body is held by contact alone), then every other
 # strategy that applies -- dense (at most DENSE_MAX dofs), schur (refused,
 # and skipped, when a body is held by contact alone), augmented, split and

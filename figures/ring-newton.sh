@@ -3,7 +3,7 @@
 # with the frozen-geometry tangent (before) and the consistent one (after)
 #                                                  [LAC §4.5, Alg. 1; §5.4]
 #
-#   sh figures/ring-newton.sh [BUILD_DIR] [--quick] [--out DIR]
+#   sh figures/ring-newton.sh [BUILD_DIR] [--quick] [--out DIR] [--table]
 #
 # Runs chapters/10-large-deformation/ring.scene (hex20, coarse mesh, 61 load
 # steps; --quick: hex8, 7 steps) twice, with [steps] tangent = frozen and
@@ -16,14 +16,18 @@
 # The data: BUILD_DIR/figures-work/ring-newton/{frozen,consistent}.csv
 # (step, iteration, residual; iteration 0 is the residual the step ended
 # with, written last) and .sum (the runs' summaries); the table
-# iterations-per-step is printed.  The coarse hex20 runs take about 6 and
-# 2 minutes on 2 cores.
+# iterations-per-step is printed, or with --table the Markdown table of
+# chapter 10 (tangent, Newton iterations, most in a step, final u_z of
+# ring_mid; make doc-snapshots compares it with the book).  The coarse
+# hex20 runs take about 6 and 2 minutes on 2 cores.
 B=build
 QUICK=0
+TABLE=0
 OUT=figures
 while [ $# -gt 0 ]; do
   case $1 in
     --quick) QUICK=1 ;;
+    --table) TABLE=1 ;;
     --out) shift; OUT=${1:?--out needs a directory} ;;
     -*) echo "ring-newton.sh: unknown option '$1'" >&2; exit 2 ;;
     *) B=$1 ;;
@@ -67,7 +71,17 @@ awk -F, 'FNR == 1 { f++ } $2 > 0 { n[f, $1]++; if ($1 > s) s = $1 }
   END { print "step  frozen  consistent"
         for (k = 1; k <= s; k++) printf "%4d %7d %11d\n", k, n[1, k], n[2, k] }' \
   "$W/frozen.csv" "$W/consistent.csv" > "$W/iterations.txt"
-cat "$W/iterations.txt"
+if [ $TABLE = 1 ]; then
+  echo '| tangent | Newton iterations | most in a step | final $u_z$ of ring_mid |'
+  echo '|---|---:|---:|---:|'
+  for tg in frozen consistent; do
+    awk -F' = ' -v tg=$tg '{ v[$1] = $2 }
+      END { u = sprintf ("%.10f", v["monitor_uz"]); sub (/^-/, "−", u)
+            printf "| %s | %d | %d | %s |\n", tg, v["newton_iterations"], v["max_iterations_per_step"], u }' "$W/$tg.sum"
+  done
+else
+  cat "$W/iterations.txt"
+fi
 
 # four load steps spread over the loading (the last one among them)
 S1=$((N / 4 + 1)); S2=$((N / 2 + 1)); S3=$((3 * N / 4 + 1)); S4=$N

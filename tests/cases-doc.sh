@@ -26,7 +26,9 @@
 #                 "function" column of a chapter's "function | file" table
 #                 is a word of one of the files of its "file" column;
 #   doc-tables    every table of numbers is checked (output), a snapshot
-#                 whose checksum still holds, or quoted (tests/doc-tables.awk);
+#                 whose checksum still holds and that names the command
+#                 that prints it (make doc-snapshots reruns it:
+#                 tests/doc-snapshots.sh), or quoted (tests/doc-tables.awk);
 #   doc-functions every lac_xxx name in backquotes exists in a source file;
 #   doc-values    a constant of the text followed by <!-- value V: COMMAND -->
 #                 is what COMMAND prints;
@@ -226,13 +228,29 @@ else doc_fail doc-names "$msg"; fi
 awk -f tests/doc-tables.awk $DOC_MD > "$DOC_TMP/tables"
 msg=$(awk -F'\t' -v tmp="$DOC_TMP/snap" '
   /^@@end$/ { if (kind == "snapshot") { close (tmp); cmd = "sha256sum < " tmp; cmd | getline s; close (cmd)
-                s = substr (s, 1, 12); if (s != want) printf "%s: snapshot changed by hand (sha %s, the marker says %s): rerun its command and tests/doc-snapshot.sh\n", at, s, want }
+                s = substr (s, 1, 12); if (s != want) printf "%s: snapshot changed by hand (sha %s, the marker says %s): make doc-snapshots UPDATE=1 renews it from its command\n", at, s, want }
               kind = ""; next }
   /^\t/ { if (kind == "snapshot") print substr ($0, 2) > tmp; next }
   { at = $1; kind = $2
     if (kind == "none") printf "%s: a table of numbers without a marker (output, snapshot or quoted: tests/doc-tables.awk)\n", at
     if (kind == "snapshot") { want = $3; sub (/.*; sha /, "", want); sub (/ -->$/, "", want); printf "" > tmp } }' \
   "$DOC_TMP/tables")
+# every snapshot names the command that prints it (tests/doc-snapshots.sh
+# reruns it): after VAR=VALUE words, `sh FILE` of the repository or a
+# program of the build (build/lac, build/tests/tNNN-x of tests/unit,
+# build/chapters/NN-x of chapters/)
+msg="$msg$(grep -n '^<!-- snapshot' $DOC_MD /dev/null | while IFS= read -r l; do
+  at=${l%%:<!--*}; c=$(printf '%s' "$l" | sed 's/^[^<]*<!-- snapshot\(\[[^]]*\]\)\{0,1\}: //; s/ @ [^@]*$//')
+  set -f; set -- $c; set +f
+  while [ $# -gt 0 ] && case $1 in [A-Za-z_]*=*) true ;; *) false ;; esac; do shift; done
+  case $1:${2:-} in
+    sh:*) [ -f "${2:-}" ] ;;
+    build/lac:*) true ;;
+    build/tests/t*) [ -f "tests/unit/${1#build/tests/}.c" ] ;;
+    build/chapters/*) [ -f "chapters/${1#build/chapters/}/example.c" ] ;;
+    *) false ;;
+  esac || printf '\n%s: the snapshot names no command of the repository (sh FILE, build/lac, build/tests/..., build/chapters/...): %s' "$at" "$c"
+done)"
 ntab=$(grep -c '^[^@	]' "$DOC_TMP/tables")
 [ "$ntab" -ge 20 ] || msg="$msg
 only $ntab tables of numbers found"

@@ -98,6 +98,13 @@ check_summary (void)
   return nfail != 0;
 }
 
+int
+check_doc_table (const char *name)
+{
+  const char *t = getenv ("LAC_DOC_TABLE");
+  return t && strcmp (t, name) == 0;
+}
+
 /* ---- whole runs --------------------------------------------------------- */
 
 lac_run *

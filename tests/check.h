@@ -25,6 +25,11 @@ void check_message (const char *needle, const char *fmt, ...)
   __attribute__ ((format (printf, 2, 3)));
 int check_summary (void);
 
+/* 1 when the environment asks for the answer table of exercise `name`
+ * (LAC_DOC_TABLE=name, e.g. "ex4"): the test then prints the table as the
+ * book shows it, which tests/doc-snapshots.sh compares with the book. */
+int check_doc_table (const char *name);
+
 /* ---- whole runs (run/lac_run.h), for the tests of the exercises ---- */
 #include "io/lac_scene.h"
 #include "run/lac_run.h"

@@ -1,20 +1,21 @@
 #!/bin/sh
-# doc-snapshot.sh FILE LINE [NEW]  -- renew a snapshot of the book
+# doc-snapshot.sh FILE LINE NEW  -- renew a snapshot of the book
 #
 # LINE is the line of FILE that holds a marker
-#   <!-- snapshot: COMMAND @ COMMIT, MACHINE; sha SHA -->
-# (tests/doc-tables.awk says what it is).  With NEW (a file: what COMMAND
-# printed when you ran it), the block or table that follows the marker is
-# replaced by NEW's lines and COMMIT becomes the current commit (git
-# rev-parse --short HEAD); without, the block and COMMIT are kept (a table
-# pasted by hand from a run).  SHA becomes the checksum of the block's
-# lines (the first 12 hex digits of their sha256), which
-# tests/cases-doc.sh (doc-tables) checks.  Run from the top of the
-# repository.
+#   <!-- snapshot[ATTRS]: COMMAND @ COMMIT, MACHINE; sha SHA -->
+# (tests/doc-tables.awk says what it is) and NEW a file: what COMMAND
+# prints now.  The block or table that follows the marker is replaced by
+# NEW's lines, COMMIT becomes the current commit (git rev-parse --short
+# HEAD) and SHA the checksum of the block's lines (the first 12 hex digits
+# of their sha256), which tests/cases-doc.sh (doc-tables) checks.
+# tests/doc-snapshots.sh --update (make doc-snapshots UPDATE=1) reruns
+# COMMAND and calls this script: a snapshot is renewed from its command,
+# never edited by hand.  Run from the top of the repository.
 set -eu
-F=${1:?usage: doc-snapshot.sh FILE LINE [NEW]}; N=${2:?usage: doc-snapshot.sh FILE LINE [NEW]}
-NEW=${3:-}
-sed -n "${N}p" "$F" | grep -q '^<!-- snapshot: .* @ .*; sha [0-9a-f]* -->$' ||
+F=${1:?usage: doc-snapshot.sh FILE LINE NEW}; N=${2:?usage: doc-snapshot.sh FILE LINE NEW}
+NEW=${3:?usage: doc-snapshot.sh FILE LINE NEW}
+[ -f "$NEW" ] || { echo "doc-snapshot: no file $NEW" >&2; exit 1; }
+sed -n "${N}p" "$F" | grep -q '^<!-- snapshot\(\[[^]]*\]\)\{0,1\}: .* @ .*; sha [0-9a-f]* -->$' ||
   { echo "doc-snapshot: $F:$N is not a snapshot marker" >&2; exit 1; }
 commit=$(git rev-parse --short HEAD)
 tmp=$(mktemp); trap 'rm -f "$tmp" "$tmp.b"' EXIT
@@ -40,7 +41,7 @@ awk -v n="$N" -v new="$NEW" -v blk="$tmp.b" '
   { print }
   END { if (state == 1) emit() }' "$F" > "$tmp"
 sha=$(sha256sum < "$tmp.b" | cut -c1-12)
-if [ -n "$NEW" ]; then at="s/ @ [^,;]*\([,;]\)/ @ $commit\1/;"; else at=""; fi
+at="s/ @ [^,;]*\([,;]\)/ @ $commit\1/;"
 mark=$(sed -n "${N}p" "$F" | sed "$at s/; sha [0-9a-f]* -->\$/; sha $sha -->/")
 awk -v m="$mark" '$0 == "@@MARK@@" { print m; next } { print }' "$tmp" > "$F"
 echo "doc-snapshot: $F:$N: sha $sha"

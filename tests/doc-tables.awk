@@ -6,11 +6,14 @@
 # before that if blank) one of the markers
 #   <!-- output: COMMAND -->          checked: COMMAND prints it (numcmp)
 #   <!-- output[TOL]: COMMAND -->     the same with the tolerances TOL
-#   <!-- snapshot: COMMAND @ COMMIT, MACHINE; sha SHA -->
-#                                     a run too long for make test: SHA is
-#                                     the first 12 hex digits of the
-#                                     sha256 of the block's lines (so an
-#                                     edit by hand shows)
+#   <!-- snapshot[ATTRS]: COMMAND @ COMMIT, MACHINE; sha SHA -->
+#                                     a run too long for an output block:
+#                                     make doc-snapshots reruns COMMAND
+#                                     (tests/doc-snapshots.sh, which says
+#                                     what ATTRS may be); SHA is the first
+#                                     12 hex digits of the sha256 of the
+#                                     block's lines (so an edit by hand
+#                                     shows in make test)
 #   <!-- quoted: SOURCE -->           numbers that are not lac's results
 #                                     (the paper's tables, input data)
 # Prints "FILE:LINE<TAB>KIND<TAB>MARKER" for each table (KIND none when no
@@ -30,7 +33,7 @@ function flush(   i, kind) {
   if (nl > 0 && rows >= 3) {
     kind = "none"
     if (mark ~ /^<!-- output(\[[^]]*\])?: /) kind = "output"
-    else if (mark ~ /^<!-- snapshot: /) kind = "snapshot"
+    else if (mark ~ /^<!-- snapshot(\[[^]]*\])?: /) kind = "snapshot"
     else if (mark ~ /^<!-- quoted: /) kind = "quoted"
     printf "%s:%d\t%s\t%s\n", FILENAME, at, kind, mark
     for (i = 1; i <= nl; i++) printf "\t%s\n", tl[i]

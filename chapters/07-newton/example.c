@@ -32,7 +32,11 @@
 #include "solve/lac_newton.h"
 #include "base/lac_status.h"
 
-/* Stop on a failed library call with its stored one-line message. */
+// @sect Printing the statuses
+/* The program drives the loop of Algorithm 1 itself and prints what it
+ * does; these helpers turn its state into short, solver-independent
+ * text.  First, a library call that fails stops the program with the
+ * one-line message the library stored (library code never prints). */
 static void
 check_status (int status, const char *what)
 {
@@ -86,7 +90,16 @@ macro_range (const lac_mesh *m, const lac_macro *M, size_t k, double *x0,
     }
 }
 
-/* The loop of [LAC Alg. 1] on the linear model of sys (K, C, G
+// @sect The loop of Algorithm 1, one iteration at a time
+/* lac_newton_solve would run the whole loop; here it is opened up:
+ * lac_newton_begin sets the initial statuses from the gaps (lines 2-8),
+ * then each call of lac_newton_iterate evaluates the model, updates the
+ * statuses (lines 26-33), tests (line 10) and, unless the test passed,
+ * solves the saddle system of the active set (line 21) and updates U and
+ * lambda (lines 22-24).  Its record, s->hist, is what this function
+ * prints.
+ *
+ * The loop of [LAC Alg. 1] on the linear model of sys (K, C, G
  * constant: lac_linear_model.h), one line per iteration: the statuses of
  * its solve, how many are active and how many the rule changed to get
  * them, and the residuals of the test at the iterate it started from. */
@@ -121,9 +134,14 @@ run (lac_strategy_kind kind, const lac_contact_system *sys,
 }
 
 // @sect Part 1: a tilted block
+/* A block resting on another, pressed on the left half of its top only:
+ * the right part of the interface lifts off, so the loop has to find which
+ * macro-elements stay in contact.  Nothing holds the upper block
+ * vertically but the contact, which decides the strategies that apply. */
 static void
 tilted_block (lac_strategy_kind kind)
 {
+  // @sect Two blocks, meshed independently
   /* 1. Two quad8 blocks stacked, meshed independently (8 x 4 below, 10 x 4
    *    above), E = 2000, nu = 0.3, plane strain.  The slave is the bottom
    *    of the upper block: 10 seg3 macro-elements of length 5. */
@@ -138,6 +156,7 @@ tilted_block (lac_strategy_kind kind)
   lac_mesh_free (lo);
   lac_mesh_free (up);
 
+  // @sect The load and the supports
   /* 2. The load: a pressure p = 25 on the left half of the top only (a
    *    facet group made of the top facets with x < 25), and the supports:
    *    the lower block clamped at its bottom, the upper block held in x at
@@ -167,6 +186,7 @@ tilted_block (lac_strategy_kind kind)
   lac_free (fc);
   lac_free (ff);
 
+  // @sect The contact matrices and the stiffness
   /* 3. Macro-mesh, pairing, C and G (chapters 05, 06), then K and F with
    *    the Dirichlet conditions eliminated, in K and in C/G alike. */
   lac_macro *M = NULL;
@@ -206,6 +226,7 @@ tilted_block (lac_strategy_kind kind)
   printf ("1. tilted block: %zu dofs, %zu multipliers, p = 25 on x < 25, %s\n",
           ndof, c->k, lac_strategy_name (kind));
 
+  // @sect The loop on the tilted block
   /* 4. The loop.  G = 0 (the blocks touch), so every macro-element starts
    *    active.  Each iteration updates the statuses (active iff
    *    lambda_i + rho_i d_i < 0), tests, then solves the saddle system
@@ -226,6 +247,7 @@ tilted_block (lac_strategy_kind kind)
     {
       s = run (kind, &sys, &lin, 20);
 
+      // @sect Complementarity in the result
       /* 5. The result: lambda per macro-element (<= 0, 0 where open) and
        *    the mean gap d_i / |T^i| (0 where active, > 0 where open); their
        *    product vanishes: complementarity.  The total contact force
@@ -244,6 +266,7 @@ tilted_block (lac_strategy_kind kind)
       lac_newton_free (s);
       lac_linear_model_clear (&lin);
     }
+  /* Everything the program allocated, freed in the reverse order. */
   lac_dirichlet_free (D);
   lac_triplet_free (T);
   lac_csc_free (K);
@@ -257,6 +280,8 @@ tilted_block (lac_strategy_kind kind)
 }
 
 // @sect Part 2: springs against obstacles
+/* The same loop on a problem small enough to solve by hand (exercise 4):
+ * one dof per spring end, each obstacle a column of C with a single 1. */
 static void
 spring_chain (void)
 {
@@ -283,6 +308,10 @@ spring_chain (void)
     }
   lac_csc *K = lac_csc_from_triplet (T);
   lac_triplet_free (T);
+
+  /* 7. C: one column per obstacle, e_j at its dof; F: the unit forces;
+   *    then the loop, and the multipliers and the displacements at the
+   *    obstacles it ends with. */
   T = lac_triplet_alloc (N, KC, KC);
   check_status (K && T ? LAC_SUCCESS : LAC_ENOMEM, "allocation");
   for (int i = 0; i < KC; i++)
@@ -310,6 +339,10 @@ spring_chain (void)
   lac_csc_free (K);
 }
 
+// @sect The main program
+/* The strategy of part 1 from the command line (saddle, the UMFPACK LU of
+ * the whole saddle matrix, unless told otherwise); part 2 always uses
+ * schur. */
 int
 main (int argc, char **argv)
 {

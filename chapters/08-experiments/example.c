@@ -24,7 +24,11 @@
 #include "run/lac_run.h"
 #include "run/lac_run_scene.h"
 
-/* Stop on a failed library call with its stored one-line message. */
+// @sect A whole run from a program
+/* Chapters 01-07 built every piece by hand; here each test is the whole
+ * pipeline of `lac run`, called from C: read a scene, run it, read its
+ * summary.  A library call that fails stops the program with the one-line
+ * message the library stored. */
 static void
 check_status (int status, const char *what)
 {
@@ -35,8 +39,11 @@ check_status (int status, const char *what)
   exit (1);
 }
 
-/* One run of DIR/NAME with the overrides SET (no output files).  The
- * scene is returned too: the run borrows it. */
+/* One run of DIR/NAME with the overrides SET (no output files): the scene
+ * read with its `--set` overrides (lac_scene_read), a run made from it
+ * (lac_run_alloc: no output folder, quiet, the strategy auto) and every
+ * stage run (lac_run_all).  The scene is returned too: the run borrows
+ * it, so it is freed after the run. */
 static lac_run *
 run_scene (const char *dir, const char *name, int nset, const char **set,
            lac_scene **sc)
@@ -52,7 +59,8 @@ run_scene (const char *dir, const char *name, int nset, const char **set,
   return r;
 }
 
-/* A summary value as a number (NaN if absent). */
+/* A value of the run's summary (the lines `lac run` prints, key = value)
+ * as a number (NaN if absent). */
 static double
 value (const lac_run *r, const char *key)
 {
@@ -82,6 +90,7 @@ taylor (const char *dir, const char *scene, const char *element, int upper)
   snprintf (s[2], sizeof s[2], "contact.interface.master=%s", master);
   lac_run *r = run_scene (dir, scene, 3, set, &sc);
 
+  // @sect The exact multiplier, and every multiplier against it
   /* The exact pressure at the middle of the interface (y = 50 in 2D,
    * z = 50 in 3D), normal e_y or e_z: n.sigma.n = -p. */
   lac_exact e;
@@ -92,12 +101,19 @@ taylor (const char *dir, const char *scene, const char *element, int upper)
   n[dim - 1] = 1;
   double lam = lac_exact_normal_stress (&e, x, n);
 
-  /* Every multiplier against it. */
+  /* Every multiplier against it: the multipliers of the run are indexed
+   * by macro-element (the slots of the loop), c->macro[i] the slot of
+   * multiplier i. */
   const lac_newton *nw = r->sol.newton;
   const lac_contact *c = r->sys.contact;      /* multiplier i: macro[i] */
   double worst = 0;
   for (size_t i = 0; i < c->k; i++)
     worst = fmax (worst, fabs (nw->lambda[c->macro[i]] - lam) / fabs (lam));
+
+  /* One row per run: dofs, multipliers, iterations, the extreme
+   * multipliers and whether the worst relative error is below 1e-12; then
+   * the run and the scene are freed (the run first: it borrows the
+   * scene). */
   printf ("%-7s %-5s %5.0f %5zu %6.0f  %14.10f %14.10f  %s\n", element,
           upper ? "upper" : "lower", value (r, "dofs"), c->k, value (r, "newton_iterations"),
           value (r, "lambda_min"), value (r, "lambda_max"),
@@ -109,9 +125,9 @@ taylor (const char *dir, const char *scene, const char *element, int upper)
 // @sect The runs
 /* Two elements in 2D (quad4, whose macro-elements gather two segments, and
  * quad8, one macro-element per segment), two in 3D (hex8, each slave face
- * fanned into four triangles, and tet10, each slave face cut in four),
- * each body as slave in turn for the 2D ones.  The 3D runs are the
- * slowest part: level 0 only. */
+ * fanned into four triangles, and tet10, each slave face cut into three
+ * tri6: chapter 03), each body as slave in turn for the 2D ones.  The 3D
+ * runs are the slowest part: level 0 only. */
 int
 main (int argc, char **argv)
 {

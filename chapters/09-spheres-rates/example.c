@@ -29,7 +29,11 @@
 #include "run/lac_run.h"
 #include "run/lac_run_scene.h"
 
-/* Stop on a failed library call with its stored one-line message. */
+// @sect Runs from a program
+/* As in chapter 08, each case is the whole pipeline of `lac run` called
+ * from C: a scene read with its overrides, run, its summary read.  A
+ * library call that fails stops the program with the one-line message the
+ * library stored. */
 static void
 check_status (int status, const char *what)
 {
@@ -40,8 +44,10 @@ check_status (int status, const char *what)
   exit (1);
 }
 
-/* One run of DIR/NAME with the overrides SET (no output files).  The
- * scene is returned too: the run borrows it. */
+/* One run of DIR/NAME with the overrides SET (no output files): the scene
+ * read (lac_scene_read), a run made from it (lac_run_alloc) and every
+ * stage run (lac_run_all).  The scene is returned too: the run borrows
+ * it. */
 static lac_run *
 run_scene (const char *dir, const char *name, int nset, const char **set,
            lac_scene **sc)
@@ -57,7 +63,8 @@ run_scene (const char *dir, const char *name, int nset, const char **set,
   return r;
 }
 
-/* A summary value as a number (NaN if absent). */
+/* A value of the run's summary (key = value) as a number (NaN if
+ * absent). */
 static double
 value (const lac_run *r, const char *key)
 {
@@ -76,6 +83,7 @@ value (const lac_run *r, const char *key)
 static void
 spheres (const char *dir)
 {
+  // @sect The exact multiplier, by hand and by the library
   /* Lame's thick sphere a = 20, b = 40, inner pressure p = 25: sigma_RR(R)
    * = -p a^3 / (b^3 - a^3) (b^3 / R^3 - 1). */
   double a = 20, b = 40, p = 25, R = 30;
@@ -84,6 +92,13 @@ spheres (const char *dir)
   printf ("Part 1: self-included spheres, axisymmetric (spheres-axi.scene)\n");
   printf ("  lambda = sigma_RR(30) by hand: %.10f\n", hand);
 
+  // @sect Three levels per element
+  /* tri6 and quad8 at levels 0, 1, 2 (each level halves the cells): per
+   * run the largest relative error of the multipliers against the exact
+   * one (the summary's max_rel_err_lambda), and from the second level on
+   * the factor by which it fell.  The first run also asks the library for
+   * the exact value (lac_exact_normal_stress on the run's exact solution),
+   * which must be the number computed by hand above. */
   const char *el[2] = { "tri6", "quad8" };
   for (int k = 0; k < 2; k++)
     {
@@ -136,6 +151,13 @@ manufactured (const char *dir)
 {
   printf ("\nPart 2: manufactured2d.scene, exact lambda = -0.05 (x - 1/2)^2 - 0.01\n\n");
   printf ("  element level  dofs  mult   l2_err_u    l2_err_lambda  e_P0 (N = mult)\n");
+
+  // @sect The errors against the bound of a constant multiplier
+  /* quad4 and quad8 at levels 1-3: the L2 errors of u and of lambda the
+   * run computes against the manufactured solution, and e_P0
+   * for the run's N macro-elements (all active here).  quad8 at level L
+   * has the macro-elements of quad4 at level L + 1 (one seg3 against two
+   * gathered seg2), hence the same N one row apart. */
   const char *el[2] = { "quad4", "quad8" };
   for (int k = 0; k < 2; k++)
     for (int level = 1; level <= 3; level++)
@@ -156,6 +178,9 @@ manufactured (const char *dir)
       }
 }
 
+// @sect The main program
+/* The scenes are read from this chapter's folder, or from the folder
+ * given on the command line. */
 int
 main (int argc, char **argv)
 {

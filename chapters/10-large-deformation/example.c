@@ -26,7 +26,10 @@
 #include "run/lac_run_scene.h"
 #include "fem/lac_hyper.h"
 
-/* Stop on a failed library call with its stored one-line message. */
+// @sect Runs from a program
+/* Part 2 runs a scene through the whole pipeline of `lac run`, as in
+ * chapters 08 and 09.  A library call that fails stops the program with
+ * the one-line message the library stored. */
 static void
 check_status (int status, const char *what)
 {
@@ -37,8 +40,10 @@ check_status (int status, const char *what)
   exit (1);
 }
 
-/* One run of DIR/NAME with the overrides SET (no output files).  The
- * scene is returned too: the run borrows it. */
+/* One run of DIR/NAME with the overrides SET (no output files): the scene
+ * read (lac_scene_read), a run made from it (lac_run_alloc) and every
+ * stage run (lac_run_all).  The scene is returned too: the run borrows
+ * it. */
 static lac_run *
 run_scene (const char *dir, const char *name, int nset, const char **set,
            lac_scene **sc)
@@ -54,7 +59,8 @@ run_scene (const char *dir, const char *name, int nset, const char **set,
   return r;
 }
 
-/* A summary value as a number (NaN if absent). */
+/* A value of the run's summary (key = value) as a number (NaN if
+ * absent). */
 static double
 value (const lac_run *r, const char *key)
 {
@@ -76,6 +82,12 @@ value (const lac_run *r, const char *key)
 static void
 stretch (void)
 {
+  // @sect The two laws at one deformation gradient
+  /* lac_hyper_lame turns (E, nu) into the Lame constants lambda, mu that
+   * both laws share; lac_hyper_stress evaluates P at a given F (and,
+   * when its last argument is not NULL, the tangent dP/dF, which the
+   * Newton loop needs: exercise 2).  One row per stretch e, from 1e-4 to
+   * 0.3. */
   const double E = 1000, nu = 0.3;
   double lam, mu;
   check_status (lac_hyper_lame (E, nu, &lam, &mu), "lac_hyper_lame");
@@ -107,6 +119,11 @@ stretch (void)
 static void
 hertz (const char *dir)
 {
+  // @sect Hertz's numbers, then four levels
+  /* The exact half-width and peak pressure first; then quad8 at levels
+   * 0-3, one row each: the active macro-elements and the iterations of
+   * the loop, the peak pressure and the active half-width a_A against
+   * Hertz's (in percent), and the balance of forces. */
   const double pi = acos (-1.0), R = 10, P = 700, E = 2e5, nu = 0.3;
   double Es = E / (1 - nu * nu);
   double a = sqrt (4 * P * R / (pi * Es)), p0 = 2 * P / (pi * a);
@@ -122,6 +139,8 @@ hertz (const char *dir)
       snprintf (s[0], sizeof s[0], "element=quad8");
       snprintf (s[1], sizeof s[1], "level=%d", level);
       lac_run *r = run_scene (dir, "hertz-cylinder.scene", 2, set, &sc);
+      /* The scene models the half x >= 0: its contact force is half the
+       * load, and contact_area is the half-width of the active zone. */
       double pm = value (r, "max_contact_pressure");
       double aA = value (r, "contact_area");       /* half model: the half-width */
       double F = -2 * value (r, "contact_force");
@@ -134,6 +153,9 @@ hertz (const char *dir)
     }
 }
 
+// @sect The main program
+/* The scenes are read from this chapter's folder, or from the folder
+ * given on the command line. */
 int
 main (int argc, char **argv)
 {

@@ -10,7 +10,8 @@
 # block), each :tet10 or :hex20; the finer 3D levels take up to a minute)
 # and prints one row per run: dofs, the peak pressure
 # max_contact_pressure against Hertz's p0, the half-width (radius in 3D)
-# a_h against Hertz's a, the contact force against the load, the time.
+# a_h against Hertz's a, the contact force against the load, the time,
+# the iterations.
 # a_h comes from the second moment of the computed pressure over the
 # active macro-elements (contact.csv: centroid, measure, lambda), which
 # for Hertz's distribution is m2/m0 = a^2/4 in 2D and 2 a^2/5 in 3D, so
@@ -19,7 +20,9 @@
 # its length L; 3D: A/6 of its area A, that of a square).  a_A(%) is the
 # error of the radius (2D: half-width) of the active area contact_area
 # instead, which moves by whole macro-elements.  The time t is
-# the wall-clock time of the run; LAC_ARGS adds options to every run
+# the wall-clock time of the run, it the active-set iterations
+# (chapters/10-large-deformation/hertz-table.sh makes the tables of
+# chapter 14 from these rows); LAC_ARGS adds options to every run
 # (LAC_ARGS="--strategy schur --timings").  Hertz (E* the
 # combined modulus 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)):
 #   2D, P per unit length: a = sqrt(4 P R / (pi E*)),  p0 = 2 P / (pi a);
@@ -34,7 +37,7 @@ CASES=${1:-"cyl-rigid:quad8 cyl-rigid:tri6 cyl-block:quad8 cyl-block:tri6"}
 LEVELS=${2:-"0 1 2 3 4"}
 D8=chapters/10-large-deformation
 mkdir -p "$OUT"
-printf '%-16s %5s %8s %12s %9s %10s %9s %9s %9s %6s\n' case level dofs p_max "err(%)" a_h "err(%)" "a_A(%)" "|F-P|/P" "t(s)"
+printf '%-16s %5s %8s %12s %9s %10s %9s %9s %9s %6s %3s\n' case level dofs p_max "err(%)" a_h "err(%)" "a_A(%)" "|F-P|/P" "t(s)" it
 for c in $CASES; do
   name=${c%%:*}; el=${c#*:}
   case $name in
@@ -75,8 +78,9 @@ for c in $CASES; do
       END { ah = dim == 2 ? 2 * sqrt(m2 / m0) : sqrt(2.5 * m2 / m0)
         aA = dim == 2 ? v["contact_area"] * q / 2 : sqrt(v["contact_area"] * q / pi)
         F = -v["contact_force"] * q; pm = v["max_contact_pressure"]
-        printf "%-16s %5d %8d %12.5f %9.4f %10.6f %9.4f %9.4f %9.1e %6.1f\n", name, L, v["dofs"], pm,
-          100 * (pm / p0 - 1), ah, 100 * (ah / a - 1), 100 * (aA / a - 1), (F > P ? F - P : P - F) / P, t }' "$d/contact.csv"
+        printf "%-16s %5d %8d %12.5f %9.4f %10.6f %9.4f %9.4f %9.1e %6.1f %3d\n", name, L, v["dofs"], pm,
+          100 * (pm / p0 - 1), ah, 100 * (ah / a - 1), 100 * (aA / a - 1), (F > P ? F - P : P - F) / P, t,
+          v["newton_iterations"] }' "$d/contact.csv"
   done
 done
 

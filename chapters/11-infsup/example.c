@@ -31,7 +31,11 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
-/* Stop on a failed library call with its stored one-line message. */
+// @sect The set-up, from the chapters before
+/* The program estimates $\beta_h$ on two stacked blocks, again and again
+ * with other meshes; the helpers below build each set-up and the
+ * matrices of the estimate.  A library call that fails stops the program
+ * with the one-line message the library stored. */
 static void
 check_status (int status, const char *what)
 {
@@ -104,6 +108,7 @@ setup (problem *p, size_t nlo, size_t nup, double Lm)
                 "lac_infsup_norm_lac");
 }
 
+/* Everything setup made, freed (each _alloc or _build has its _free). */
 static void
 teardown (problem *p)
 {
@@ -116,6 +121,12 @@ teardown (problem *p)
   lac_mesh_free (p->m);
 }
 
+// @sect The estimate and what it is made of
+/* beta_h^2 is the smallest eigenvalue of the pencil (C^T A^-1 C, M):
+ * lac_infsup_estimate takes A, C and M and finds it densely (S formed
+ * with k solves, then GSL's symmetric eigensolver) or by shift-invert
+ * Lanczos (one saddle-point solve per step), as PATH says.  The caller
+ * frees the result. */
 static lac_infsup *
 estimate (const lac_csc *A, const lac_csc *C, const lac_csc *M,
           lac_infsup_path path)
@@ -160,8 +171,10 @@ print_S (const problem *p)
   lac_solver_free (s);
 }
 
+// @sect Two other choices: the norm, and the multipliers
 /* The multiplier norm with h_i replaced by the length of T^m cap Gamma_C
- * (2D): M'_ii = |T^m cap Gamma_C|^2. */
+ * (2D): M'_ii = |T^m cap Gamma_C|^2.  Step 3 compares the two norms on a
+ * macro-element that the master covers less and less. */
 static lac_csc *
 norm_covered (const problem *p)
 {
@@ -210,6 +223,11 @@ raw_p0 (const problem *p, lac_csc **C, lac_csc **M)
   lac_free (R.ptr);
 }
 
+// @sect The main program
+/* --delta: the covered fraction of the partly covered macro-element of
+ * steps 1 and 2 (0.25 unless given; step 3 runs through several);
+ * --path: how the eigenvalue is found.  The steps below use the helpers
+ * above in turn. */
 int
 main (int argc, char **argv)
 {

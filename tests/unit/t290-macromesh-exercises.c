@@ -356,11 +356,21 @@ exercise3 (void)
     }
 }
 
-/* Exercise 4: rounds. */
+/* Exercise 4: rounds.  With LAC_DOC_TABLE=ex4 the answer's table, a row
+ * per case: cell, slave faces, rounds, new nodes, cells. */
+static void
+table_row (const char *cell, const char *faces, const lac_macro *M,
+           long dn, long ncells)
+{
+  if (check_doc_table ("ex4"))
+    printf ("| %s | %s | %d | %ld | %ld |\n", cell, faces, M->nrounds, dn,
+            ncells);
+}
+
 static void
 rounds_case (lac_elem_type t, const char *a, const char *b,
              const lac_macro_opts *o, int rounds, long dn, long ncells,
-             const char *what)
+             const char *what, const char *cell, const char *faces)
 {
   lac_mesh *m = box (t, 1, 1, 1);
   lac_macro *M = NULL;
@@ -376,6 +386,7 @@ rounds_case (lac_elem_type t, const char *a, const char *b,
       check_int ((long) (m->nnodes - nn0), dn, "ex4 %s: new nodes", what);
       check_int ((long) m->ncells, ncells, "ex4 %s: cells", what);
       check_rel (lac_mesh_measure (m), vol0, TOL, "ex4 %s: volume", what);
+      table_row (cell, faces, M, (long) (m->nnodes - nn0), (long) m->ncells);
     }
   lac_macromesh_free (M);
   lac_mesh_free (m);
@@ -385,23 +396,26 @@ static void
 exercise4 (void)
 {
   lac_macro_opts six = { LAC_MACRO_HEX_SIX, 0 };
+  if (check_doc_table ("ex4"))
+    printf ("| cell | slave faces | rounds | new nodes | cells |\n"
+            "|---|---|---|---|---|\n");
   /* hex8: 5 pyramids (+1 node), then the pyramid on the side cut on its
    * base into 4 tets (+1 node): 5 - 1 + 4 = 8 cells */
   rounds_case (LAC_HEX8, "zmax", "xmax", NULL, 2, 2, 5 - 1 + 4,
-               "hex8 top+side");
+               "hex8 top+side", "hex8", "top + xmax");
   /* six hexahedra: 6 - 1 + 6 = 11 cells, 8 + 8 nodes */
   rounds_case (LAC_HEX8, "zmax", "xmax", &six, 2, 16, 6 - 1 + 6,
-               "hex8 six top+side");
+               "hex8 six top+side", "hex8 six", "top + xmax");
   rounds_case (LAC_HEX20, "zmax", "xmax", NULL, 2, 56, 6 - 1 + 6,
-               "hex20 top+side");
+               "hex20 top+side", "hex20", "top + xmax");
   /* Kuhn tets 0, e_a, e_a+e_b, 1 (x_a >= x_b >= x_c): boundary faces
    * x_a = 1 and x_c = 0 only.  top (z = 1) and xmax (x = 1) are never in
    * the same tet: 1 round, 4 facets, +4 nodes, 6 + 4*2 cells; top and
    * xmin (x = 0): the tet z >= y >= x owns both: 2 rounds. */
   rounds_case (LAC_TET4, "zmax", "xmax", NULL, 1, 4, 6 + 4 * 2,
-               "tet4 top+xmax");
+               "tet4 top+xmax", "tet4", "top + xmax");
   rounds_case (LAC_TET4, "zmax", "xmin", NULL, 2, 4, 6 + 4 * 2,
-               "tet4 top+xmin");
+               "tet4 top+xmin", "tet4", "top + xmin");
   /* all six faces of one hex8: round 1 gives 5 pyramids, each other face
    * the base of one of them; round 2 cuts all five: 5 * 4 cells. */
   {
@@ -417,6 +431,7 @@ exercise4 (void)
         check_int (M->nrounds, 2, "ex4 hex8 all faces: rounds");
         check_int ((long) m->nnodes, 8 + 6, "ex4 hex8 all faces: nodes");
         check_int ((long) m->ncells, 5 * 4, "ex4 hex8 all faces: cells");
+        table_row ("hex8", "all six", M, (long) m->nnodes - 8, (long) m->ncells);
       }
     lac_macromesh_free (M);
     lac_mesh_free (m);

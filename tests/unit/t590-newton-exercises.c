@@ -238,12 +238,31 @@ exercise2 (void)
   release (&pb);
 }
 
+/* The statuses of s's first iteration (initial: 1) or at its end, in
+ * words: all, none, or how many of k. */
+static const char *
+statuses (const lac_newton *s, size_t k, int initial, char *buf, size_t n)
+{
+  size_t a = initial ? s->hist[0].nactive : (size_t) lac_newton_nactive (s);
+  if (initial)
+    snprintf (buf, n, "%s", a == k ? "all active" : a == 0 ? "all inactive" : "mixed");
+  else if (a == k || a == 0)
+    snprintf (buf, n, "%s", a == k ? "all" : "none");
+  else
+    snprintf (buf, n, "%zu of %zu", a, k);
+  return buf;
+}
+
 static void
 exercise3 (void)
 {
   static const double g0s[3] = { 0.0, 0.05, 0.2 };
   static const long it[3] = { 1, 2, 1 };
   double w = 0.1, Ep = E_ / (1 - NU * NU);
+  /* LAC_DOC_TABLE=ex3: the answer's table (the dense strategy's run) */
+  if (check_doc_table ("ex3"))
+    printf ("| $g_0$ | initial statuses | iterations | final active set | $\\lambda_i$ |\n"
+            "|---|---|---|---|---|\n");
   for (int g = 0; g < 3; g++)
     {
       problem pb;
@@ -273,6 +292,14 @@ exercise3 (void)
                       check_rel (s->d[i], (g0 - w) * pb.c->area[i], 1e-12,
                                  "ex3 g0 = %g %s: d_%zu", g0, kn, i);
                     }
+                }
+              if (b == 0 && check_doc_table ("ex3"))
+                {
+                  char s0[32], s1[32];
+                  printf ("| %g | %s | %zu | %s | %.4f |\n", g0,
+                          statuses (s, pb.c->k, 1, s0, sizeof s0), s->nhist,
+                          statuses (s, pb.c->k, 0, s1, sizeof s1),
+                          s->lambda[0] + 0.0);
                 }
             }
           lac_newton_free (s);
