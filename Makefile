@@ -136,7 +136,7 @@ $(B)/bench/%: bench/%.c $(LIB)
 
 # The objects that depend on PETSc's presence follow its changes.
 $(B)/src/solve/lac_petsc.o $(B)/src/linalg/lac_petsc_env.o \
-  $(B)/src/linalg/lac_petsc_saddle.o $(B)/src/linalg/lac_petsc_graph.o \
+  $(B)/src/linalg/lac_petsc_saddle.o $(B)/src/linalg/lac_petsc_mg.o \
   $(B)/src/fem/lac_assembly_dist.o: \
   $(PETSC_MK)
 

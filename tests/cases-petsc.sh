@@ -19,10 +19,9 @@
 #                    the 3D patch test's and spheres' stresses and errors
 #                    come from the processes' cells (the progress line),
 #                    the spheres' L2 and H1 errors those of -n 1 to 1e-8;
-#   mpi-graph        the unit test t512 (GAMG's graph without the weak
-#                    couplings of the contact nodes) on 2 and 3
-#                    processes: the contact nodes of the other processes'
-#                    columns;
+#   mpi-mg           the unit test t512 (the contact multigrid's finest
+#                    level) on 2 and 3 processes: the graphs and
+#                    aggregates of each process's own nodes;
 #   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
@@ -34,9 +33,12 @@
 #                    petsc instead of the refusal, which stays when petsc
 #                    does not fit either;
 #   contact pc       the 3D patch test (n = 20) within 1.5 times the CG
-#                    iterations of the cube of the same size, and the
-#                    oblique projection P_Z (one Jacobi step) fewer than
-#                    the l2 one (-lac_projection_steps 0), lambda to 1e-9;
+#                    iterations of the cube of the same size, and fewer
+#                    than two thirds of those without the contact nodes'
+#                    weak couplings left out (-lac_contact_threshold -1);
+#                    the oblique projection P_Z (one Jacobi step) fewer
+#                    than the l2 one (-lac_projection_steps 0), lambda to
+#                    1e-9;
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
@@ -222,14 +224,14 @@ if [ "$have_petsc" = 1 ]; then
     done
     petsc_same "mpi-post errors" "$C/spheres3d-hex20.np4.out" "$C/spheres3d-hex20.np1.out" l2_err_u h1_err_u
 
-    # ---- mpi-graph: the contact graph's ghost columns (t512 on 2 and 3) -
+    # ---- mpi-mg: the contact multigrid on each process (t512 on 2 and 3)
     for np in 2 3; do
       # shellcheck disable=SC2086
-      if env "$PETSC_ENV" $MPIRUN -n $np "$B/tests/t512-petsc-graph" \
-           > "$C/graph.np$np.out" 2>&1; then
-        petsc_ok "mpi-graph -n $np"
+      if env "$PETSC_ENV" $MPIRUN -n $np "$B/tests/t512-petsc-mg" \
+           > "$C/mg.np$np.out" 2>&1; then
+        petsc_ok "mpi-mg -n $np"
       else
-        petsc_fail "mpi-graph -n $np" "$(grep FAIL "$C/graph.np$np.out" | head -2)"
+        petsc_fail "mpi-mg -n $np" "$(grep FAIL "$C/mg.np$np.out" | head -2)"
       fi
     done
 
@@ -263,7 +265,7 @@ if [ "$have_petsc" = 1 ]; then
     if env "$PETSC_ENV" $MPIRUN -n 2 "$LAC" run "$D8/taylor3d.scene" --set element=hex8 --set level=1 \
          --no-output > "$C/auto-mpi.out" 2> "$C/auto-mpi.err" \
        && [ "$(petsc_value "$C/auto-mpi.out" processes)" = 2 ] \
-       && grep -q "solve .*projected cg + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
+       && grep -q "solve .*projected cg + lac-sa + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
       petsc_ok "auto-mpi petsc"
       [ -f "$C/taylor3d-hex8.direct.out" ] && petsc_same "auto-mpi vs direct" \
         "$C/auto-mpi.out" "$C/taylor3d-hex8.direct.out" lambda_min lambda_max max_u
@@ -276,9 +278,9 @@ if [ "$have_petsc" = 1 ]; then
 
   # ---- the contact solve against plain elasticity (chapter 13, section 1):
   # the patch test at n = 20 (52,866 dofs) within 1.5 times the CG
-  # iterations of the cube at n = 25 (52,728 dofs); 52 against 20 without
-  # the threshold on GAMG's finest level, 27 with it, 25 with the oblique
-  # projection.
+  # iterations of the cube at n = 25 (52,728 dofs): 58 against 20 when the
+  # contact multigrid keeps every coupling, 27 when it leaves out the
+  # contact nodes' weak ones, 25 with the oblique projection too.
   if petsc_run pc-taylor "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
      && petsc_run pc-cube bench/cube.scene --set mesh.numbers=n=25 --strategy petsc; then
     a=$(petsc_value "$C/pc-taylor.out" solver_iterations) b=$(petsc_value "$C/pc-cube.out" solver_iterations)
@@ -287,6 +289,16 @@ if [ "$have_petsc" = 1 ]; then
     else
       petsc_fail "contact solve within 1.5 x the iterations of plain elasticity" \
         "patch test $a CG iterations, cube $b (want <= 1.5 x)"
+    fi
+    if petsc_run pc-taylor-all "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
+         --petsc-options "-lac_contact_threshold -1"; then
+      a1=$(petsc_value "$C/pc-taylor-all.out" solver_iterations)
+      if awk -v a="$a" -v a1="$a1" 'BEGIN { exit !(a > 0 && 3 * a < 2 * a1) }'; then
+        petsc_ok "the contact nodes' weak couplings left out"
+      else
+        petsc_fail "the contact nodes' weak couplings left out" \
+          "$a CG iterations, $a1 with every coupling kept (want fewer than two thirds)"
+      fi
     fi
     if petsc_run pc-taylor-l2 "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
          --petsc-options "-lac_projection_steps 0"; then

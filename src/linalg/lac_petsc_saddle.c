@@ -11,7 +11,7 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
-#include "linalg/lac_petsc_graph.h"
+#include "linalg/lac_petsc_mg.h"
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
@@ -30,6 +30,8 @@ struct lac_petsc_saddle
   Vec ru;                          /* K alone, projected: U's layout     */
   /* projected */
   PC pg;                           /* the multigrid of K                 */
+  lac_petsc_mg *mg;                /* owned: lac's contact multigrid in
+                                      pg (NULL: a PETSc PC of -elast_)   */
   KSP kg, kp;                      /* B^T B + D (LU); CG on P K           */
   Mat G, Ah;                       /* B^T B + D; P K (shell)             */
   Vec u0, bu, tu, tk, sk;          /* U's layout; the multipliers'       */
@@ -64,27 +66,12 @@ lac_petsc_saddle_free (lac_petsc_saddle *sv)
   for (size_t i = 0; i < COUNT (ksp); i++)
     KSPDestroy (ksp[i]);
   PCDestroy (&sv->pg);
+  lac_petsc_mg_free (sv->mg);
   for (size_t i = 0; i < COUNT (mat); i++)
     MatDestroy (mat[i]);
   for (size_t i = 0; i < COUNT (vec); i++)
     VecDestroy (vec[i]);
   lac_free (sv);
-}
-
-/* An option's default value, unless the user set it; lac's own is
- * marked read (looked up once more), so that the warning about options
- * nothing read does not name it when another preconditioner than the
- * one it configures was chosen. */
-static int
-default_option (const char *name, const char *value)
-{
-  PetscBool set = PETSC_FALSE;
-  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  if (set)
-    return LAC_SUCCESS;
-  TRY (PetscOptionsSetValue (NULL, name, value));
-  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  return LAC_SUCCESS;
 }
 
 /* ---- the projection ----------------------------------------------------- */
@@ -240,16 +227,29 @@ create_alone (lac_petsc_saddle *sv)
   return LAC_SUCCESS;
 }
 
-/* projected: the multigrid of K (prefix elast_; threshold, or
- * -lac_contact_threshold, if >= 0: on the couplings of the contact nodes
- * of its finest level, lac_petsc_graph.h; on all those of the finest level
- * where this PETSc has no hook for it), the solver of B^T B + D (prefix
- * gram_: redundant LU), CG on P K (no prefix). */
+/* M, the multigrid of K (prefix elast_): lac's contact multigrid with
+ * threshold (lac_petsc_mg.h), or the PETSc preconditioner -elast_pc_type
+ * names. */
+static int
+kernel_pc (lac_petsc_saddle *sv, double threshold)
+{
+  PetscBool set = PETSC_FALSE;
+  TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
+  TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
+  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  TRY (PetscOptionsHasName (NULL, "elast_", "-pc_type", &set));
+  if (!set)
+    return lac_petsc_mg_create (sv->pg, threshold, &sv->mg);
+  TRY (gamg_setup (sv->pg));                /* the user's preconditioner */
+  TRY (PCSetFromOptions (sv->pg));
+  return LAC_SUCCESS;
+}
+
+/* projected: M (kernel_pc), the solver of B^T B + D (prefix gram_:
+ * redundant LU), CG on P K (no prefix). */
 static int
 create_projected (lac_petsc_saddle *sv, double threshold)
 {
-  PetscReal th[2] = { threshold, 0.0 };
-  PetscBool set = PETSC_FALSE;
   PetscInt nl, n, steps = PROJECTION_STEPS;
   PC pc;
   int status;
@@ -259,21 +259,8 @@ create_projected (lac_petsc_saddle *sv, double threshold)
     LAC_ERROR (LAC_EINVAL, "-lac_projection_steps %d: expected 0 or more",
                (int) steps);
   sv->steps = (int) steps;
-  TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
-  TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
-  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
-  TRY (gamg_setup (sv->pg));
-  TRY (PCSetFromOptions (sv->pg));
-  TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
-  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_contact_threshold", &th[0],
-                            NULL));
-  if (th[0] >= 0 && !set && lac_petsc_graph_available ())
-    {                               /* the contact nodes' couplings only */
-      if ((status = lac_petsc_graph_contact (sv->pg, sv->B, th[0])))
-        return status;
-    }
-  else if (th[0] >= 0 && !set)      /* after the options: they would copy */
-    TRY (PCGAMGSetThreshold (sv->pg, th, 2));   /* th[0] to every level */
+  if ((status = kernel_pc (sv, threshold)))
+    return status;
   if ((status = direct_solver (PETSC_COMM_WORLD, "gram_", PCREDUNDANT,
                               &sv->kg)))
     return status;
@@ -326,18 +313,22 @@ create_fieldsplit (lac_petsc_saddle *sv, double threshold)
   IS is[2];
   char th[40];
   int status;
+  static const char *const defaults[][2] = {
+    { "-fieldsplit_u_ksp_type", "preonly" },
+    { "-fieldsplit_u_pc_type", "gamg" },
+    { "-fieldsplit_u_pc_gamg_reuse_interpolation", "true" },
+    { "-fieldsplit_lambda_ksp_type", "preonly" },
+    { "-fieldsplit_lambda_pc_type", "jacobi" } };
   snprintf (th, sizeof th, "%g,0", threshold);  /* the finest level only */
   if ((threshold >= 0
-       && (status = default_option ("-fieldsplit_u_pc_gamg_threshold", th)))
+       && (status = lac_petsc_option_default
+                      ("-fieldsplit_u_pc_gamg_threshold", th)))
       || (status = create_diagonal (sv, &sv->D))
-      || (status = create_diagonal (sv, &sv->Sp))
-      || (status = default_option ("-fieldsplit_u_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_u_pc_type", "gamg"))
-      || (status = default_option ("-fieldsplit_u_pc_gamg_reuse_interpolation",
-                                   "true"))
-      || (status = default_option ("-fieldsplit_lambda_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_lambda_pc_type", "jacobi")))
+      || (status = create_diagonal (sv, &sv->Sp)))
     return status;
+  for (size_t i = 0; i < COUNT (defaults); i++)
+    if ((status = lac_petsc_option_default (defaults[i][0], defaults[i][1])))
+      return status;
   TRY (MatCreateTranspose (sv->B, &sv->Bt));
   blocks[0] = sv->K, blocks[1] = sv->B, blocks[2] = sv->Bt, blocks[3] = sv->D;
   TRY (MatCreateNest (PETSC_COMM_WORLD, 2, NULL, 2, NULL, blocks, &sv->A));
@@ -490,6 +481,8 @@ update_projected (lac_petsc_saddle *sv, Vec d)
   if ((sv->size > 1 && (status = update_local (sv)))
       || (sv->steps && (status = smoothed_constraints (sv, d))))
     return status;
+  if (sv->mg)
+    return lac_petsc_mg_update (sv->mg, sv->K, sv->B);
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
   return LAC_SUCCESS;
 }
@@ -709,6 +702,11 @@ lac_petsc_saddle_types (const lac_petsc_saddle *sv, char *krylov, char *pc,
       snprintf (pc, size, "gamg");
       TRY (PetscOptionsGetString (NULL, NULL, "-fieldsplit_u_pc_type", pc,
                                   size, &set));
+      return LAC_SUCCESS;
+    }
+  if (sv->mg)
+    {
+      snprintf (pc, size, "%s", LAC_PETSC_MG_NAME);
       return LAC_SUCCESS;
     }
   if (sv->pg)

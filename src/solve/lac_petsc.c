@@ -85,6 +85,7 @@ enum { PROJECTED = LAC_SADDLE_PROJECTED,     /* the contact solvers  */
 typedef struct lac_petsc
 {
   double omega;                    /* W_i = omega / s_i                   */
+  double threshold;                /* the multigrid's, on contact nodes   */
   int rank, size, root;            /* root: rank 0                        */
   size_t n, k;
   int mode, coords_given, built, cells;   /* cells: K from the cells     */
@@ -121,27 +122,39 @@ typedef struct lac_petsc
 
 /* ---- the object --------------------------------------------------------- */
 
+/* lac's options, read on the root (its build command carries them to the
+ * others): -lac_contact, -lac_omega, -lac_contact_threshold. */
+static int
+read_options (lac_petsc *s)
+{
+  PetscBool set = PETSC_FALSE;
+  char mode[32] = "";
+  s->omega = LAC_PETSC_OMEGA;
+  s->threshold = LAC_PETSC_CONTACT_THRESHOLD;
+  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL));
+  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_contact_threshold",
+                            &s->threshold, NULL));
+  TRY (PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
+                              &set));
+  s->mode = set && strcmp (mode, "fieldsplit") == 0 ? FIELDSPLIT : PROJECTED;
+  if (set && s->mode == PROJECTED && strcmp (mode, "projected") != 0)
+    LAC_ERROR (LAC_EINVAL, "-lac_contact %s: expected projected or "
+               "fieldsplit", mode);
+  if (!(s->omega > 0))
+    LAC_ERROR (LAC_EINVAL, "-lac_omega %g: expected omega > 0", s->omega);
+  return LAC_SUCCESS;
+}
+
 static void *
 petsc_alloc (void)
 {
   lac_petsc *s;
-  PetscBool set = PETSC_FALSE;
-  char mode[32] = "";
   if (lac_petsc_initialize (NULL))
     return NULL;
   if (!(s = lac_calloc (1, sizeof *s)))
     LAC_ERROR_NULL (LAC_ENOMEM, "petsc strategy");
-  s->omega = LAC_PETSC_OMEGA;
-  PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL);
-  PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
-                         &set);
-  s->mode = set && strcmp (mode, "fieldsplit") == 0 ? FIELDSPLIT : PROJECTED;
-  if ((set && s->mode == PROJECTED && strcmp (mode, "projected") != 0)
-      || !(s->omega > 0))
+  if (read_options (s))
     {
-      lac_error_set (LAC_EINVAL, __func__, "-lac_contact %s, -lac_omega %g: "
-                     "expected projected or fieldsplit, and omega > 0",
-                     mode, s->omega);
       lac_free (s);
       return NULL;
     }
@@ -487,6 +500,7 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
   s->bs = c->bs;
   s->mode = c->mode;
   s->omega = c->omega;
+  s->threshold = c->threshold;
   s->coords_given = c->coords;
   s->cells = c->cells;
   if ((status = build_layout (s, c, sys ? sys->C : NULL))
@@ -502,8 +516,8 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
       || (s->k && (status = multiplier_vectors (s)))
       || (status = lac_petsc_saddle_create ((lac_saddle_method) s->mode,
                                             s->Kw, s->k ? s->B : NULL,
-                                            s->k ? LAC_PETSC_GAMG_THRESHOLD
-                                            : -1.0, &s->sv)))
+                                            s->k ? s->threshold : -1.0,
+                                            &s->sv)))
     return status;
   s->built = 1;
   s->counts.analyses++;
@@ -538,7 +552,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
     .n = (long long) n, .k = (long long) k, .cells = petsc_own_k (s, n),
-    .omega = s->omega };
+    .omega = s->omega, .threshold = s->threshold };
   int status;
   if (!c.cells && !sys->K)
     LAC_ERROR (LAC_EINVAL, "petsc: no K and no cells of these dofs to "
