@@ -43,7 +43,14 @@
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
-#                    "lac: ..." and exit status 1;
+#                    "lac: ..." and exit status 1; the user's options win
+#                    over lac's: -pc_type none (the projected CG without
+#                    multigrid: more iterations, the same lambda),
+#                    -ksp_rtol 0.5 (inexact solves: a last residual above
+#                    1e-9, the loop still converges to lambda), -ksp_max_it
+#                    2 (exit status 1 "after 2 iterations"); -pc_type
+#                    jacobi, -lac_contact_threshold nan, -lac_omega inf are
+#                    one line "lac: ..." and exit status 1;
 #   large-deformation  the large-deformation loop through petsc: the 3D
 #                    patch test (hex8, a body held by contact alone) and the
 #                    Hertz cylinder (2D, an obstacle), two load steps each,
@@ -349,6 +356,47 @@ if [ "$have_petsc" = 1 ]; then
   else
     petsc_fail "options unused" "want exit 0 and the warnings, got $rc $rc2: $(cat "$C/opt-unused.err" "$C/opt-typo.err")"
   fi
+
+  # the user's options win over lac's: -pc_type none leaves the multigrid
+  # out (more iterations, the same lambda), -ksp_rtol 0.5 makes every
+  # solve inexact (the loop's own residual still converges: lambda to
+  # 1e-8, the last solve's residual above 1e-9), -ksp_max_it 2 stops the
+  # CG (before: all three overridden without a word)
+  petsc_run opt-default "$D8/taylor3d.scene" --strategy petsc
+  if petsc_run opt-pcnone "$D8/taylor3d.scene" --strategy petsc --petsc-options "-pc_type none"; then
+    a=$(petsc_value "$C/opt-pcnone.out" solver_iterations) b=$(petsc_value "$C/opt-default.out" solver_iterations)
+    if awk -v a="$a" -v b="$b" 'BEGIN { exit !(a > 2 * b && b > 0) }' \
+       && ! grep -q "never read" "$C/opt-pcnone.err"; then
+      petsc_ok "options -pc_type none honoured"
+    else
+      petsc_fail "options -pc_type none honoured" "$a iterations without the multigrid, $b with it (want more than twice): $(cat "$C/opt-pcnone.err")"
+    fi
+    petsc_same "options -pc_type none lambda" "$C/opt-pcnone.out" "$C/opt-ref.out" lambda_min lambda_max max_u
+  fi
+  if petsc_run opt-rtol "$D8/taylor3d.scene" --strategy petsc --petsc-options "-ksp_rtol 0.5"; then
+    r=$(petsc_value "$C/opt-rtol.out" solver_residual)
+    if awk -v r="$r" 'BEGIN { exit !(r > 1e-9) }'; then
+      petsc_ok "options -ksp_rtol honoured"
+    else
+      petsc_fail "options -ksp_rtol honoured" "the last solve's residual $r (want above 1e-9: -ksp_rtol 0.5)"
+    fi
+    petsc_same "options -ksp_rtol lambda" "$C/opt-rtol.out" "$C/opt-ref.out" lambda_min lambda_max
+  fi
+  # petsc_refused NAME OPTIONS WANT: exit 1, one line "lac: ...WANT"
+  petsc_refused () {
+    env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "$2" \
+      --quiet --no-output > "$C/$1.out" 2> "$C/$1.err"
+    rc=$?
+    if [ "$rc" = 1 ] && [ "$(wc -l < "$C/$1.err")" -eq 1 ] && grep -q "^lac: .*$3" "$C/$1.err"; then
+      petsc_ok "options $2"
+    else
+      petsc_fail "options $2" "want exit 1 and one line 'lac: ...$3', got $rc: $(cat "$C/$1.err")"
+    fi
+  }
+  petsc_refused opt-maxit "-ksp_max_it 2" "after 2 iterations"
+  petsc_refused opt-pcjacobi "-pc_type jacobi" "-pc_type jacobi: .*-elast_pc_type"
+  petsc_refused opt-nan "-lac_contact_threshold nan" "-lac_contact_threshold nan: expected a finite number"
+  petsc_refused opt-inf "-lac_omega inf" "-lac_omega inf: expected a finite number"
 
   # ---- large deformation: the same loop through petsc -----------------
   # petsc_ld NAME SCENE ARGS...: the scene's own strategy, --strategy petsc

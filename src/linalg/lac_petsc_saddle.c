@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <petscksp.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -21,6 +22,16 @@
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 #define COUNT(a) (sizeof (a) / sizeof *(a))
 
+/* The tolerances of a Krylov method the user gave (-ksp_rtol, -ksp_atol,
+ * -ksp_max_it with its prefix): they win over lac's, as PETSc's options
+ * win over a program's settings. */
+typedef struct
+{
+  PetscReal rtol, atol;
+  PetscInt maxit;
+  PetscBool has_rtol, has_atol, has_maxit;
+} user_tolerances;
+
 struct lac_petsc_saddle
 {
   lac_saddle_method method;
@@ -28,8 +39,10 @@ struct lac_petsc_saddle
   Mat K, B;                        /* borrowed; B NULL: K alone          */
   KSP ku;                          /* K alone: CG + GAMG                 */
   Vec ru;                          /* K alone, projected: U's layout     */
+  user_tolerances tol;             /* the user's, of the Krylov method   */
   /* projected */
-  PC pg;                           /* the multigrid of K                 */
+  PC pg;                           /* the multigrid of K (NULL: none,
+                                      -pc_type none)                     */
   lac_petsc_mg *mg;                /* owned: lac's contact multigrid in
                                       pg (NULL: a PETSc PC of -elast_)   */
   KSP kg, kp;                      /* B^T B + D (LU); CG on P K           */
@@ -188,13 +201,14 @@ projected_pc (PC pc, Vec r, Vec z)
   PetscCall (PCShellGetContext (pc, &sv));
   if (!sv->steps)
     {
-      PetscCall (PCApply (sv->pg, r, z));
+      PetscCall (sv->pg ? PCApply (sv->pg, r, z) : VecCopy (r, z));
       return project (sv, z);
     }
   PetscCall (VecCopy (r, sv->ru));                     /* P_Z^T r */
   PetscCall (subtract (sv, sv->Z, sv->B, sv->kz, sv->Zl, sv->Bl, sv->kzl, 1,
                        sv->ru));
-  PetscCall (PCApply (sv->pg, sv->ru, z));             /* M */
+  PetscCall (sv->pg ? PCApply (sv->pg, sv->ru, z)      /* M */
+             : VecCopy (sv->ru, z));
   return subtract (sv, sv->B, sv->Z, sv->kz, sv->Bl, sv->Zl, sv->kzl, 0, z);
 }
 
@@ -208,6 +222,36 @@ gamg_setup (PC pc)
   PetscCall (PCSetType (pc, PCGAMG));
   PetscCall (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
   return 0;
+}
+
+/* The tolerances the user gave a Krylov method of options prefix
+ * `prefix` (NULL: none) into *u. */
+static int
+read_tolerances (const char *prefix, user_tolerances *u)
+{
+  memset (u, 0, sizeof *u);
+  TRY (PetscOptionsGetReal (NULL, prefix, "-ksp_rtol", &u->rtol,
+                            &u->has_rtol));
+  TRY (PetscOptionsGetReal (NULL, prefix, "-ksp_atol", &u->atol,
+                            &u->has_atol));
+  TRY (PetscOptionsGetInt (NULL, prefix, "-ksp_max_it", &u->maxit,
+                           &u->has_maxit));
+  return LAC_SUCCESS;
+}
+
+/* ksp's tolerances: lac's rtol, atol and KSP_MAXIT, but those the user
+ * gave (sv->tol); a relative tolerance of the user's stands alone (no
+ * atol of lac's beside it, PETSc's 1e-50). */
+static int
+set_tolerances (const lac_petsc_saddle *sv, KSP ksp, PetscReal rtol,
+                PetscReal atol)
+{
+  const user_tolerances *u = &sv->tol;
+  TRY (KSPSetTolerances (ksp, u->has_rtol ? u->rtol : rtol,
+                         u->has_atol ? u->atol : u->has_rtol ? 1e-50 : atol,
+                         PETSC_DEFAULT, u->has_maxit ? u->maxit
+                         : KSP_MAXIT));
+  return LAC_SUCCESS;
 }
 
 /* K alone: conjugate gradients and GAMG (prefix elast_). */
@@ -224,16 +268,40 @@ create_alone (lac_petsc_saddle *sv)
   TRY (gamg_setup (pc));
   TRY (KSPSetFromOptions (sv->ku));
   TRY (MatCreateVecs (sv->K, NULL, &sv->ru));
+  return read_tolerances ("elast_", &sv->tol);
+}
+
+/* -pc_type of the projected CG (no prefix): its preconditioner is the
+ * projection around M, the multigrid of K; "none" leaves M out (*none =
+ * 1: z = P_Z P_Z^T r), another type is refused (-elast_pc_type chooses
+ * M). */
+static int
+projected_pc_type (int *none)
+{
+  char type[64] = "";
+  PetscBool set = PETSC_FALSE;
+  *none = 0;
+  TRY (PetscOptionsGetString (NULL, NULL, "-pc_type", type, sizeof type,
+                              &set));
+  if (set && strcmp (type, "none") != 0)
+    LAC_ERROR (LAC_EINVAL, "-pc_type %s: the projected CG of the contact "
+               "solve is preconditioned by the projection around the "
+               "multigrid of K_W; -elast_pc_type chooses that one, -pc_type "
+               "none leaves it out", type);
+  *none = set;
   return LAC_SUCCESS;
 }
 
 /* M, the multigrid of K (prefix elast_): lac's contact multigrid with
- * threshold (lac_petsc_mg.h), or the PETSc preconditioner -elast_pc_type
- * names. */
+ * threshold (lac_petsc_mg.h), the PETSc preconditioner -elast_pc_type
+ * names, or none (-pc_type none). */
 static int
 kernel_pc (lac_petsc_saddle *sv, double threshold)
 {
   PetscBool set = PETSC_FALSE;
+  int none, status;
+  if ((status = projected_pc_type (&none)) || none)
+    return status;
   TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
   TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
   TRY (PCSetOperators (sv->pg, sv->K, sv->K));
@@ -259,7 +327,8 @@ create_projected (lac_petsc_saddle *sv, double threshold)
     LAC_ERROR (LAC_EINVAL, "-lac_projection_steps %d: expected 0 or more",
                (int) steps);
   sv->steps = (int) steps;
-  if ((status = kernel_pc (sv, threshold)))
+  if ((status = kernel_pc (sv, threshold))
+      || (status = read_tolerances (NULL, &sv->tol)))
     return status;
   if ((status = direct_solver (PETSC_COMM_WORLD, "gram_", PCREDUNDANT,
                               &sv->kg)))
@@ -350,7 +419,7 @@ create_fieldsplit (lac_petsc_saddle *sv, double threshold)
   TRY (PCFieldSplitSetSchurFactType (pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
   TRY (PCFieldSplitSetSchurPre (pc, PC_FIELDSPLIT_SCHUR_PRE_USER, sv->Sp));
   TRY (KSPSetFromOptions (sv->ks));
-  return LAC_SUCCESS;
+  return read_tolerances (NULL, &sv->tol);
 }
 
 int
@@ -483,7 +552,8 @@ update_projected (lac_petsc_saddle *sv, Vec d)
     return status;
   if (sv->mg)
     return lac_petsc_mg_update (sv->mg, sv->K, sv->B);
-  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  if (sv->pg)
+    TRY (PCSetOperators (sv->pg, sv->K, sv->K));
   return LAC_SUCCESS;
 }
 
@@ -557,7 +627,7 @@ solve_alone (lac_petsc_saddle *sv, Vec f, double rtol, const char *what,
   double res;
   int status;
   TRY (KSPSetInitialGuessNonzero (sv->ku, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->ku, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ku, rtol, 0.0));
   TRY (KSPSolve (sv->ku, f, u));
   if ((status = true_residual (sv->K, f, u, sv->ru, &res)))
     return status;
@@ -616,8 +686,7 @@ solve_projected (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
   TRY (projected_start (sv, f, g, u));
   TRY (VecNorm (f, NORM_2, &b1));           /* the CG's residual: forces */
   TRY (KSPSetInitialGuessNonzero (sv->kp, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->kp, 0.0, rtol * b1, PETSC_DEFAULT,
-                         KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->kp, 0.0, rtol * b1));
   TRY (KSPSolve (sv->kp, sv->bu, u));
   TRY (projected_finish (sv, f, g, u, l, &res));
   return check_ksp (sv->kp, res, what, c);
@@ -653,14 +722,13 @@ solve_fieldsplit (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
       || (status = nest_blocks (sv, sv->x, u, l, 1)))
     return status;
   TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->ks, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ks, rtol, 0.0));
   TRY (KSPSolve (sv->ks, sv->b, sv->x));
   if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
       || (status = check_ksp (sv->ks, res, what, c)))
     return status;
   TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_FALSE));
-  TRY (KSPSetTolerances (sv->ks, CORRECTION_RTOL, 0.0, PETSC_DEFAULT,
-                         KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ks, CORRECTION_RTOL, 0.0));
   TRY (KSPSolve (sv->ks, sv->r, sv->dx));
   TRY (VecAXPY (sv->x, 1.0, sv->dx));
   snprintf (part, sizeof part, "%s, correction", what);
@@ -707,6 +775,11 @@ lac_petsc_saddle_types (const lac_petsc_saddle *sv, char *krylov, char *pc,
   if (sv->mg)
     {
       snprintf (pc, size, "%s", LAC_PETSC_MG_NAME);
+      return LAC_SUCCESS;
+    }
+  if (sv->kp && !sv->pg)
+    {
+      snprintf (pc, size, "none");
       return LAC_SUCCESS;
     }
   if (sv->pg)

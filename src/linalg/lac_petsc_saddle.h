@@ -32,9 +32,10 @@
  *                for the Schur complement (fieldsplit_lambda_: Jacobi).
  *
  * Every PETSc option of those prefixes is read (-ksp_type, -pc_type of
- * the outer solver have no prefix).  PETSc's types appear only in the
- * implementation: the header names its matrices and vectors by their
- * structs, as fem/lac_assembly_dist.h does.
+ * the outer solver have no prefix), and wins over lac's settings.
+ * PETSc's types appear only in the implementation: the header names its
+ * matrices and vectors by their structs, as fem/lac_assembly_dist.h
+ * does.
  */
 #ifndef LAC_PETSC_SADDLE_H
 #define LAC_PETSC_SADDLE_H
@@ -63,10 +64,12 @@ typedef struct
  * borrowed and keep their patterns (new values: _update).  threshold:
  * projected CG, the multigrid of K is lac's (lac_petsc_mg.h), whose
  * graph leaves out the couplings below it at a contact node (a node with
- * a row of B; < 0: none), unless -elast_pc_type names another.
- * fieldsplit: PCGAMG's threshold on the finest level (0 on the coarser
- * ones; < 0: PETSc's default), unless -fieldsplit_u_pc_gamg_threshold
- * is given.  Collective. */
+ * a row of B; < 0: none), unless -elast_pc_type names another; with
+ * -pc_type none no multigrid.  fieldsplit: PCGAMG's threshold on the
+ * finest level (0 on the coarser ones; < 0: PETSc's default), unless
+ * -fieldsplit_u_pc_gamg_threshold is given.  The user's -ksp_rtol,
+ * -ksp_atol, -ksp_max_it (with the Krylov method's prefix) replace the
+ * tolerance and limit of every solve.  Collective. */
 int lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
                              lac_saddle_mat B, double threshold,
                              lac_petsc_saddle **out);

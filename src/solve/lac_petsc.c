@@ -140,8 +140,12 @@ read_options (lac_petsc *s)
   if (set && s->mode == PROJECTED && strcmp (mode, "projected") != 0)
     LAC_ERROR (LAC_EINVAL, "-lac_contact %s: expected projected or "
                "fieldsplit", mode);
-  if (!(s->omega > 0))
-    LAC_ERROR (LAC_EINVAL, "-lac_omega %g: expected omega > 0", s->omega);
+  if (!(s->omega > 0) || !isfinite (s->omega))
+    LAC_ERROR (LAC_EINVAL, "-lac_omega %g: expected a finite number > 0",
+               s->omega);
+  if (!isfinite (s->threshold))
+    LAC_ERROR (LAC_EINVAL, "-lac_contact_threshold %g: expected a finite "
+               "number (< 0: no coupling dropped)", s->threshold);
   return LAC_SUCCESS;
 }
 

@@ -79,10 +79,14 @@
  * multigrid of K_W (and the solver of K when k = 0) has the prefix
  * -elast_ (-elast_pc_type hypre: BoomerAMG instead of lac's; lac's
  * coarse GAMG: -elast_mg_coarse_), the projected CG none (-ksp_monitor;
- * its tolerance is the strategy's), C_A^T C_A -gram_; fieldsplit: no
- * prefix for GMRES, -fieldsplit_u_ and -fieldsplit_lambda_ for the
- * blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega W (>
- * 0), -lac_contact_threshold T (< 0: no coupling left out),
+ * -pc_type none: the projections without the multigrid, another type
+ * is refused), C_A^T C_A -gram_; fieldsplit: no prefix for GMRES,
+ * -fieldsplit_u_ and -fieldsplit_lambda_ for the blocks.  The user's
+ * options win over lac's settings, as in PETSc: -ksp_rtol, -ksp_atol,
+ * -ksp_max_it of a Krylov method replace the strategy's tolerance and
+ * limit (the root's residuals still decide when Algorithm 1 stops).
+ * lac's own: -lac_contact projected|fieldsplit, -lac_omega W (finite, >
+ * 0), -lac_contact_threshold T (finite; < 0: no coupling left out),
  * -lac_projection_steps N.  The defaults are those of an elastic body:
  * nothing to tune.
  *
