@@ -110,9 +110,10 @@ $(B)/tests/nomem_lac: tests/nomem_lac.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/nomem_lac_malloc: tests/nomem_lac.c tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -DNOMEM_MALLOC $(LDFLAGS) $< tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
-# lac with a failure on purpose on the MPI process LAC_TEST_FAIL_RANK
-# (fem/lac_assembly_dist.h; tests/cases-petsc.sh): its object of the
-# distributed assembly comes before the library's.
+# lac with failures on purpose (LAC_TEST_FAIL_RANK: on an MPI process,
+# LAC_TEST_SCALE_CELL: a K that is not its cells'; fem/lac_assembly_dist.h,
+# tests/cases-petsc.sh): its object of the distributed assembly comes
+# before the library's.
 $(B)/tests/lac_assembly_dist_faults.o: src/fem/lac_assembly_dist.c $(PETSC_MK) | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -DLAC_TEST_FAULTS -c $< -o $@

@@ -26,6 +26,10 @@
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
 #                    ends every process within 10 s, exit status 1, with
 #                    the line "lac: ... process 1: failure injected ...";
+#   assembly check   PETSc's K made different from its cells' (one
+#                    cell's matrix times 1.01, LAC_TEST_SCALE_CELL) on 1
+#                    and 2 processes: exit status 1 and one line that
+#                    says so, not an answer;
 #   auto             the strategy auto (no --strategy): under mpirun -n 2
 #                    petsc on 2 processes, with the direct lambda; on one
 #                    process, with a --max-memory the Cholesky factor is
@@ -266,6 +270,24 @@ if [ "$have_petsc" = 1 ]; then
     }
     petsc_fault 2 1
     petsc_fault 4 3
+
+    # ---- assembly check: PETSc's K against its cells -------------------
+    # one cell's matrix in PETSc's K times 1.01 (LAC_TEST_SCALE_CELL, not
+    # in the cells' own products): the run stops with one line, not with
+    # the answer of another stiffness (before: exit 0, lambda 7e-5 off)
+    for np in 1 2; do
+      # shellcheck disable=SC2086
+      env "$PETSC_ENV" LAC_TEST_SCALE_CELL=1.01 timeout 60 $MPIRUN -n $np "$B/tests/lac_faults" run \
+        "$D8/taylor3d.scene" --set element=hex8 --set level=1 --strategy petsc --quiet --no-output \
+        > "$C/scaled$np.out" 2> "$C/scaled$np.err"
+      rc=$?
+      if [ "$rc" = 1 ] && [ "$(grep -c '^lac: ' "$C/scaled$np.err")" = 1 ] \
+         && grep -q "^lac: .*the stiffness PETSc assembled on $np process.* is not its cells'" "$C/scaled$np.err"; then
+        petsc_ok "assembly check -n $np"
+      else
+        petsc_fail "assembly check -n $np" "want exit 1 and one line 'the stiffness ... is not its cells', got $rc: $(grep -m 2 . "$C/scaled$np.err") $(grep max_u "$C/scaled$np.out")"
+      fi
+    done
 
     # ---- auto on 2 processes: petsc, with the direct answer ------------
     # shellcheck disable=SC2086

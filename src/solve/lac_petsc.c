@@ -13,7 +13,8 @@
  *           linalg/lac_petsc_saddle.h (projected CG or fieldsplit GMRES
  *           on (*W); CG on K_W alone when k = 0);
  *   update  the statuses from the root; new numbers: K_W = K / kappa
- *           from the own cells, and from K ||K||_inf (for the root's
+ *           from the own cells (K checked against them first:
+ *           check_assembly), and from K ||K||_inf (for the root's
  *           residuals) and the scales s_i = c_i^T diag(K)^-1 c_i of
  *           W_i = omega / s_i, on every process; then K_W += C (W -
  *           W_old) C^T / kappa by the owners of the columns that
@@ -81,6 +82,7 @@ enum { PROJECTED = LAC_SADDLE_PROJECTED,     /* the contact solvers  */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
+#define ASSEMBLY_TOL 1e-10    /* K x against its cells', of |K| |x|    */
 
 typedef struct lac_petsc
 {
@@ -660,6 +662,26 @@ column_scales (lac_petsc *s, Vec d)
   return LAC_SUCCESS;
 }
 
+/* K_W, K just assembled from the cells, against the cells' element
+ * matrices (lac_dist_check_stiffness): the residuals of the root take K x
+ * from K_W (petsc_kmul), so that they are the cells' K's. */
+static int
+check_assembly (lac_petsc *s)
+{
+  double err;
+  int status = lac_dist_check_stiffness (s->dist, s->Kw, &err);
+  if (status)
+    return status;
+  TRY (PetscInfo (s->Kw, "K against its cells: %.3g of |K| |x|\n", err));
+  if (!(err <= ASSEMBLY_TOL))
+    LAC_ERROR (LAC_ESANITY, "the stiffness PETSc assembled on %d "
+               "process%s is not its cells' (|K x - sum_e K_e x| = %.2g of "
+               "|K| |x| for a probe x): a fault of the distributed "
+               "assembly; a direct strategy on one process does without it",
+               s->size, s->size > 1 ? "es" : "", err);
+  return LAC_SUCCESS;
+}
+
 /* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
  * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
  * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
@@ -680,7 +702,8 @@ new_stiffness (lac_petsc *s, const lac_contact_system *sys)
   TRY (MatZeroEntries (s->Kw));
   if ((status = lac_dist_add_stiffness (s->dist, sys && !s->cells
                                         ? sys->K : NULL, s->Kw, 1.0))
-      || (status = assemble (s->Kw)))
+      || (status = assemble (s->Kw))
+      || (s->cells && (status = check_assembly (s))))
     return status;
   TRY (MatNorm (s->Kw, NORM_INFINITY, &s->knorm));
   TRY (MatGetDiagonal (s->Kw, s->ru));
@@ -875,7 +898,8 @@ step_kmul (lac_petsc *s, const double *x, double *y)
 
 /* y = K x = kappa K_W x - C W_old C^T x: K_W holds K / kappa and the
  * contact terms of W_old (contact_terms), with the copy of C they were
- * added from; no K on the root. */
+ * added from; no K on the root.  K_W's K was checked against its cells
+ * when it was assembled (new_stiffness). */
 static int
 petsc_kmul (void *w, const double *x, double *y)
 {

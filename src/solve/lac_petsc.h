@@ -68,11 +68,15 @@
  * (fem/lac_assembly_dist.h): the root broadcasts the mesh once (given by
  * set_mesh), PETSc's partitioner cuts the cells, each process adds its
  * cells' element matrices and the contact terms of the columns it owns,
- * PETSc adds the entries of the other processes' rows.  Without a mesh
- * (rigid plates, large deformation) the root adds K's entries.  The
- * solution comes back to the root alone.  An error on any process ends
- * the command on every process with that process's message.  One petsc
- * strategy at a time exists on the root when N > 1.
+ * PETSc adds the entries of the other processes' rows.  The K so
+ * assembled is checked against its cells (K x against the sum of the
+ * element matrices times x, for a probe x: lac_dist_check_stiffness)
+ * before it is used, so that the root's residuals, which take K x from
+ * it (kmul), judge the cells' system.  Without a mesh (rigid plates,
+ * large deformation) the root adds K's entries.  The solution comes back
+ * to the root alone.  An error on any process ends the command on every
+ * process with that process's message.  One petsc strategy at a time
+ * exists on the root when N > 1.
  *
  * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
  * from the string given to lac_petsc_initialize (which wins).  The
