@@ -23,9 +23,11 @@
 #                    level) on 2 and 3 processes: the graphs and
 #                    aggregates of each process's own nodes;
 #   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
-#                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
-#                    ends every process within 10 s, exit status 1, with
-#                    the line "lac: ... process 1: failure injected ...";
+#                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK),
+#                    or on process 1 of 2 after its part of a command of
+#                    the root (LAC_TEST_FAIL_AFTER=1:solve, 1:post), ends
+#                    every process within 10 s, exit status 1, with the
+#                    line "lac: ... process 1: failure injected ...";
 #   assembly check   PETSc's K made different from its cells' (one
 #                    cell's matrix times 1.01, LAC_TEST_SCALE_CELL) on 1
 #                    and 2 processes: exit status 1 and one line that
@@ -247,20 +249,24 @@ if [ "$have_petsc" = 1 ]; then
     done
 
     # ---- mpi-fail: a failure on one process ends them all -------------
-    # petsc_fault NP RANK: the failure injected on process RANK of NP.
+    # petsc_fault NP RANK [VAR=VALUE WANT]: the failure injected on
+    # process RANK of NP, in the assembly (or as VAR=VALUE says); WANT:
+    # what the line names after "process RANK: ".
     petsc_fault () {
-      fname="mpi-fail -n $1 on $2"
+      fname="mpi-fail -n $1 on $2${3:+ ($3)}"
+      fvar=${3:-LAC_TEST_FAIL_RANK=$2}
+      fwant=${4:-failure injected by LAC_TEST_FAIL_RANK in the assembly}
       if [ ! -x "$B/tests/lac_faults" ]; then
         petsc_fail "$fname" "$B/tests/lac_faults not built (make $B/tests/lac_faults)"
         return
       fi
       t0=$(date +%s)
       # shellcheck disable=SC2086
-      env "$PETSC_ENV" LAC_TEST_FAIL_RANK="$2" timeout 60 $MPIRUN -n "$1" "$B/tests/lac_faults" run \
+      env "$PETSC_ENV" "$fvar" timeout 60 $MPIRUN -n "$1" "$B/tests/lac_faults" run \
         "$D8/taylor3d.scene" --set element=hex8 --set level=1 --strategy petsc --quiet --no-output \
         > "$C/fault$1.out" 2> "$C/fault$1.err"
       rc=$? t=$(( $(date +%s) - t0 ))
-      want="^lac: .*process $2: failure injected by LAC_TEST_FAIL_RANK in the assembly"
+      want="^lac: .*process $2: $fwant"
       if [ "$rc" != 0 ] && [ "$rc" != 124 ] && [ "$t" -le 10 ] \
          && [ "$(grep -c '^lac: ' "$C/fault$1.err")" = 1 ] && grep -q "$want" "$C/fault$1.err"; then
         petsc_ok "$fname"
@@ -270,6 +276,12 @@ if [ "$have_petsc" = 1 ]; then
     }
     petsc_fault 2 1
     petsc_fault 4 3
+    # after the last collective call of a command: only the agreement that
+    # ends the command carries it to the root (before: exit 0, an answer)
+    for step in solve post; do
+      petsc_fault 2 1 "LAC_TEST_FAIL_AFTER=1:$step" \
+        "failure injected by LAC_TEST_FAIL_AFTER after the $step"
+    done
 
     # ---- assembly check: PETSc's K against its cells -------------------
     # one cell's matrix in PETSc's K times 1.01 (LAC_TEST_SCALE_CELL, not

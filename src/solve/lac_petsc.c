@@ -30,7 +30,8 @@
  *           summed on the root (fem/lac_post_dist.h).
  *
  * A failure on one process is agreed on by all before the next
- * collective call (lac_petsc_agree): the root returns it with the message
+ * collective call (lac_petsc_agree), and every command but free and
+ * memory ends with that agreement: the root returns it with the message
  * of the process that failed.  PETSc's errors become LAC_EDEP with
  * PETSc's message.
  */
@@ -38,6 +39,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -566,7 +568,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   if ((status = alloc_arrays (s, n, k))
       || (status = lac_petsc_command_send (&c)))
     return status;
-  return build (s, &c, sys);
+  return lac_petsc_agree (build (s, &c, sys));
 }
 
 static int
@@ -799,7 +801,7 @@ update (lac_petsc *s, const char *active)
     memcpy (s->stat, active, s->k);
   s->have_stat = 0;
   if ((status = lac_petsc_command_send (&c))
-      || (status = update_values (s, &c, s->sys)))
+      || (status = lac_petsc_agree (update_values (s, &c, s->sys))))
     return status;
   s->have_stat = 1;
   s->new_numbers = 0;
@@ -876,7 +878,8 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
   for (size_t j = 0; j < s->n; j++)
     s->xv[j] /= s->kappa;                          /* f_W / kappa */
   if ((status = lac_petsc_command_send (&c))
-      || (status = step_solve (s, &c, s->xv, s->rhs, U, s->lst)))
+      || (status = lac_petsc_agree (step_solve (s, &c, s->xv, s->rhs, U,
+                                                s->lst))))
     return status;
   for (size_t i = 0; i < s->k; i++)
     lambda[i] = active[i] ? s->lst[i] * s->kappa : 0.0;
@@ -911,7 +914,7 @@ petsc_kmul (void *w, const double *x, double *y)
     LAC_ERROR (LAC_EINVAL, "petsc: K x before the matrices of the last set "
                "were made");
   if ((status = lac_petsc_command_send (&c))
-      || (status = step_kmul (s, x, y)))
+      || (status = lac_petsc_agree (step_kmul (s, x, y))))
     return status;
   for (size_t j = 0; j < s->n; j++)
     y[j] *= s->kappa;
@@ -954,25 +957,49 @@ petsc_post (void *w, lac_post_request *p)
                "cells K was assembled from");
   if ((status = lac_petsc_command_send (&c)))
     return status;
-  return lac_dist_post (s->dist, p);
+  return lac_petsc_agree (lac_dist_post (s->dist, p));
 }
 
 /* ---- the other processes ------------------------------------------------ */
 
+#ifdef LAC_TEST_FAULTS
+/* A failure on purpose (test builds): LAC_TEST_FAIL_AFTER=R:NAME fails
+ * process R once its step of the command NAME (build, update, solve,
+ * kmul, post) is done, after its last collective call, where only the
+ * agreement that ends the command carries it to the root. */
+static int
+injected (const lac_petsc *s, int cmd)
+{
+  static const char *name[] = { "", "build", "update", "solve", "free",
+                                "memory", "kmul", "post", "quit" };
+  const char *v = getenv ("LAC_TEST_FAIL_AFTER"), *colon;
+  if (!v || !(colon = strchr (v, ':')) || atoi (v) != s->rank || cmd < 1
+      || cmd > LAC_PETSC_CMD_QUIT || strcmp (colon + 1, name[cmd]) != 0)
+    return LAC_SUCCESS;
+  LAC_ERROR (LAC_EDEP, "failure injected by LAC_TEST_FAIL_AFTER after the "
+             "%s", name[cmd]);
+}
+#else
+#define injected(s, cmd) LAC_SUCCESS
+#endif
+
 /* The others: the root's command, the same steps as the root's with
- * none of its data.  A failure is agreed on within the steps (every
- * process returns it) and reported by the root. */
+ * none of its data. */
 static int
 follow (lac_petsc *s, const lac_petsc_command *c)
 {
+  int status;
   switch (c->cmd)
     {
     case LAC_PETSC_CMD_BUILD:
-      return build (s, c, NULL);
+      status = build (s, c, NULL);
+      break;
     case LAC_PETSC_CMD_UPDATE:
-      return update_values (s, c, NULL);
+      status = update_values (s, c, NULL);
+      break;
     case LAC_PETSC_CMD_SOLVE:
-      return step_solve (s, c, NULL, NULL, NULL, NULL);
+      status = step_solve (s, c, NULL, NULL, NULL, NULL);
+      break;
     case LAC_PETSC_CMD_FREE:
       free_petsc (s);
       free_arrays (s);
@@ -980,14 +1007,31 @@ follow (lac_petsc *s, const lac_petsc_command *c)
     case LAC_PETSC_CMD_MEMORY:
       return lac_petsc_memory_reply ();
     case LAC_PETSC_CMD_KMUL:
-      return step_kmul (s, NULL, NULL);
+      status = step_kmul (s, NULL, NULL);
+      break;
     case LAC_PETSC_CMD_POST:
-      return lac_dist_post (s->dist, NULL);
+      status = lac_dist_post (s->dist, NULL);
+      break;
     default:
       LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
     }
+  return status ? status : injected (s, c->cmd);
 }
 
+/* 1 for the commands that end with an agreement on their status (the
+ * others cannot fail on a process: free, memory). */
+static int
+agreed (int cmd)
+{
+  return cmd == LAC_PETSC_CMD_BUILD || cmd == LAC_PETSC_CMD_UPDATE
+         || cmd == LAC_PETSC_CMD_SOLVE || cmd == LAC_PETSC_CMD_KMUL
+         || cmd == LAC_PETSC_CMD_POST;
+}
+
+/* Each command ends with the agreement of every process on its status,
+ * as the root's side ends it: a failure on this process (after the
+ * steps' own agreements too) reaches the root with this process's
+ * message, and the root ends the run. */
 int
 lac_petsc_serve (void)
 {
@@ -1007,7 +1051,9 @@ lac_petsc_serve (void)
   while (!(status = lac_petsc_command_receive (&c))
          && c.cmd != LAC_PETSC_CMD_QUIT)
     {
-      follow (s, &c);
+      status = follow (s, &c);
+      if (agreed (c.cmd))
+        lac_petsc_agree (status);
       lac_error_clear ();
     }
   free_petsc (s);

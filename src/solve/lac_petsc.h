@@ -75,8 +75,9 @@
  * it (kmul), judge the cells' system.  Without a mesh (rigid plates,
  * large deformation) the root adds K's entries.  The solution comes back
  * to the root alone.  An error on any process ends the command on every
- * process with that process's message.  One petsc strategy at a time
- * exists on the root when N > 1.
+ * process with that process's message: each command ends with the
+ * agreement of every process on its status.  One petsc strategy at a
+ * time exists on the root when N > 1.
  *
  * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
  * from the string given to lac_petsc_initialize (which wins).  The
