@@ -19,14 +19,19 @@
 #                    the 3D patch test's and spheres' stresses and errors
 #                    come from the processes' cells (the progress line),
 #                    the spheres' L2 and H1 errors those of -n 1 to 1e-8;
-#   mpi-graph        the unit test t512 (GAMG's graph without the weak
-#                    couplings of the contact nodes) on 2 and 3
-#                    processes: the contact nodes of the other processes'
-#                    columns;
+#   mpi-mg           the unit test t512 (the contact multigrid's finest
+#                    level) on 2 and 3 processes: the graphs and
+#                    aggregates of each process's own nodes;
 #   mpi-fail         a failure injected on process 1 (or 3 of 4) in the
-#                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK)
-#                    ends every process within 10 s, exit status 1, with
-#                    the line "lac: ... process 1: failure injected ...";
+#                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK),
+#                    or on process 1 of 2 after its part of a command of
+#                    the root (LAC_TEST_FAIL_AFTER=1:solve, 1:post), ends
+#                    every process within 10 s, exit status 1, with the
+#                    line "lac: ... process 1: failure injected ...";
+#   assembly check   PETSc's K made different from its cells' (one
+#                    cell's matrix times 1.01, LAC_TEST_SCALE_CELL) on 1
+#                    and 2 processes: exit status 1 and one line that
+#                    says so, not an answer;
 #   auto             the strategy auto (no --strategy): under mpirun -n 2
 #                    petsc on 2 processes, with the direct lambda; on one
 #                    process, with a --max-memory the Cholesky factor is
@@ -34,14 +39,24 @@
 #                    petsc instead of the refusal, which stays when petsc
 #                    does not fit either;
 #   contact pc       the 3D patch test (n = 20) within 1.5 times the CG
-#                    iterations of the cube of the same size, and the
-#                    oblique projection P_Z (one Jacobi step) fewer than
-#                    the l2 one (-lac_projection_steps 0), lambda to 1e-9;
+#                    iterations of the cube of the same size, and fewer
+#                    than two thirds of those without the contact nodes'
+#                    weak couplings left out (-lac_contact_threshold -1);
+#                    the oblique projection P_Z (one Jacobi step) fewer
+#                    than the l2 one (-lac_projection_steps 0), lambda to
+#                    1e-9;
 #   options          --petsc-options and PETSC_OPTIONS reach PETSc; an
 #                    option nothing read is named in a warning
 #                    (BoomerAMG instead of GAMG, the fieldsplit solver)
 #                    with the same answers; a bad option is one line
-#                    "lac: ..." and exit status 1;
+#                    "lac: ..." and exit status 1; the user's options win
+#                    over lac's: -pc_type none (the projected CG without
+#                    multigrid: more iterations, the same lambda),
+#                    -ksp_rtol 0.5 (inexact solves: a last residual above
+#                    1e-9, the loop still converges to lambda), -ksp_max_it
+#                    2 (exit status 1 "after 2 iterations"); -pc_type
+#                    jacobi, -lac_contact_threshold nan, -lac_omega inf are
+#                    one line "lac: ..." and exit status 1;
 #   large-deformation  the large-deformation loop through petsc: the 3D
 #                    patch test (hex8, a body held by contact alone) and the
 #                    Hertz cylinder (2D, an obstacle), two load steps each,
@@ -222,32 +237,36 @@ if [ "$have_petsc" = 1 ]; then
     done
     petsc_same "mpi-post errors" "$C/spheres3d-hex20.np4.out" "$C/spheres3d-hex20.np1.out" l2_err_u h1_err_u
 
-    # ---- mpi-graph: the contact graph's ghost columns (t512 on 2 and 3) -
+    # ---- mpi-mg: the contact multigrid on each process (t512 on 2 and 3)
     for np in 2 3; do
       # shellcheck disable=SC2086
-      if env "$PETSC_ENV" $MPIRUN -n $np "$B/tests/t512-petsc-graph" \
-           > "$C/graph.np$np.out" 2>&1; then
-        petsc_ok "mpi-graph -n $np"
+      if env "$PETSC_ENV" $MPIRUN -n $np "$B/tests/t512-petsc-mg" \
+           > "$C/mg.np$np.out" 2>&1; then
+        petsc_ok "mpi-mg -n $np"
       else
-        petsc_fail "mpi-graph -n $np" "$(grep FAIL "$C/graph.np$np.out" | head -2)"
+        petsc_fail "mpi-mg -n $np" "$(grep FAIL "$C/mg.np$np.out" | head -2)"
       fi
     done
 
     # ---- mpi-fail: a failure on one process ends them all -------------
-    # petsc_fault NP RANK: the failure injected on process RANK of NP.
+    # petsc_fault NP RANK [VAR=VALUE WANT]: the failure injected on
+    # process RANK of NP, in the assembly (or as VAR=VALUE says); WANT:
+    # what the line names after "process RANK: ".
     petsc_fault () {
-      fname="mpi-fail -n $1 on $2"
+      fname="mpi-fail -n $1 on $2${3:+ ($3)}"
+      fvar=${3:-LAC_TEST_FAIL_RANK=$2}
+      fwant=${4:-failure injected by LAC_TEST_FAIL_RANK in the assembly}
       if [ ! -x "$B/tests/lac_faults" ]; then
         petsc_fail "$fname" "$B/tests/lac_faults not built (make $B/tests/lac_faults)"
         return
       fi
       t0=$(date +%s)
       # shellcheck disable=SC2086
-      env "$PETSC_ENV" LAC_TEST_FAIL_RANK="$2" timeout 60 $MPIRUN -n "$1" "$B/tests/lac_faults" run \
+      env "$PETSC_ENV" "$fvar" timeout 60 $MPIRUN -n "$1" "$B/tests/lac_faults" run \
         "$D8/taylor3d.scene" --set element=hex8 --set level=1 --strategy petsc --quiet --no-output \
         > "$C/fault$1.out" 2> "$C/fault$1.err"
       rc=$? t=$(( $(date +%s) - t0 ))
-      want="^lac: .*process $2: failure injected by LAC_TEST_FAIL_RANK in the assembly"
+      want="^lac: .*process $2: $fwant"
       if [ "$rc" != 0 ] && [ "$rc" != 124 ] && [ "$t" -le 10 ] \
          && [ "$(grep -c '^lac: ' "$C/fault$1.err")" = 1 ] && grep -q "$want" "$C/fault$1.err"; then
         petsc_ok "$fname"
@@ -257,13 +276,37 @@ if [ "$have_petsc" = 1 ]; then
     }
     petsc_fault 2 1
     petsc_fault 4 3
+    # after the last collective call of a command: only the agreement that
+    # ends the command carries it to the root (before: exit 0, an answer)
+    for step in solve post; do
+      petsc_fault 2 1 "LAC_TEST_FAIL_AFTER=1:$step" \
+        "failure injected by LAC_TEST_FAIL_AFTER after the $step"
+    done
+
+    # ---- assembly check: PETSc's K against its cells -------------------
+    # one cell's matrix in PETSc's K times 1.01 (LAC_TEST_SCALE_CELL, not
+    # in the cells' own products): the run stops with one line, not with
+    # the answer of another stiffness (before: exit 0, lambda 7e-5 off)
+    for np in 1 2; do
+      # shellcheck disable=SC2086
+      env "$PETSC_ENV" LAC_TEST_SCALE_CELL=1.01 timeout 60 $MPIRUN -n $np "$B/tests/lac_faults" run \
+        "$D8/taylor3d.scene" --set element=hex8 --set level=1 --strategy petsc --quiet --no-output \
+        > "$C/scaled$np.out" 2> "$C/scaled$np.err"
+      rc=$?
+      if [ "$rc" = 1 ] && [ "$(grep -c '^lac: ' "$C/scaled$np.err")" = 1 ] \
+         && grep -q "^lac: .*the stiffness PETSc assembled on $np process.* is not its cells'" "$C/scaled$np.err"; then
+        petsc_ok "assembly check -n $np"
+      else
+        petsc_fail "assembly check -n $np" "want exit 1 and one line 'the stiffness ... is not its cells', got $rc: $(grep -m 2 . "$C/scaled$np.err") $(grep max_u "$C/scaled$np.out")"
+      fi
+    done
 
     # ---- auto on 2 processes: petsc, with the direct answer ------------
     # shellcheck disable=SC2086
     if env "$PETSC_ENV" $MPIRUN -n 2 "$LAC" run "$D8/taylor3d.scene" --set element=hex8 --set level=1 \
          --no-output > "$C/auto-mpi.out" 2> "$C/auto-mpi.err" \
        && [ "$(petsc_value "$C/auto-mpi.out" processes)" = 2 ] \
-       && grep -q "solve .*projected cg + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
+       && grep -q "solve .*projected cg + lac-sa + gamg on K_W, 2 processes (auto: more than one MPI process)" "$C/auto-mpi.err"; then
       petsc_ok "auto-mpi petsc"
       [ -f "$C/taylor3d-hex8.direct.out" ] && petsc_same "auto-mpi vs direct" \
         "$C/auto-mpi.out" "$C/taylor3d-hex8.direct.out" lambda_min lambda_max max_u
@@ -276,9 +319,9 @@ if [ "$have_petsc" = 1 ]; then
 
   # ---- the contact solve against plain elasticity (chapter 13, section 1):
   # the patch test at n = 20 (52,866 dofs) within 1.5 times the CG
-  # iterations of the cube at n = 25 (52,728 dofs); 52 against 20 without
-  # the threshold on GAMG's finest level, 27 with it, 25 with the oblique
-  # projection.
+  # iterations of the cube at n = 25 (52,728 dofs): 58 against 20 when the
+  # contact multigrid keeps every coupling, 27 when it leaves out the
+  # contact nodes' weak ones, 25 with the oblique projection too.
   if petsc_run pc-taylor "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
      && petsc_run pc-cube bench/cube.scene --set mesh.numbers=n=25 --strategy petsc; then
     a=$(petsc_value "$C/pc-taylor.out" solver_iterations) b=$(petsc_value "$C/pc-cube.out" solver_iterations)
@@ -287,6 +330,16 @@ if [ "$have_petsc" = 1 ]; then
     else
       petsc_fail "contact solve within 1.5 x the iterations of plain elasticity" \
         "patch test $a CG iterations, cube $b (want <= 1.5 x)"
+    fi
+    if petsc_run pc-taylor-all "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
+         --petsc-options "-lac_contact_threshold -1"; then
+      a1=$(petsc_value "$C/pc-taylor-all.out" solver_iterations)
+      if awk -v a="$a" -v a1="$a1" 'BEGIN { exit !(a > 0 && 3 * a < 2 * a1) }'; then
+        petsc_ok "the contact nodes' weak couplings left out"
+      else
+        petsc_fail "the contact nodes' weak couplings left out" \
+          "$a CG iterations, $a1 with every coupling kept (want fewer than two thirds)"
+      fi
     fi
     if petsc_run pc-taylor-l2 "$D8/taylor3d.scene" --set mesh.numbers=n=20 --strategy petsc \
          --petsc-options "-lac_projection_steps 0"; then
@@ -337,6 +390,47 @@ if [ "$have_petsc" = 1 ]; then
   else
     petsc_fail "options unused" "want exit 0 and the warnings, got $rc $rc2: $(cat "$C/opt-unused.err" "$C/opt-typo.err")"
   fi
+
+  # the user's options win over lac's: -pc_type none leaves the multigrid
+  # out (more iterations, the same lambda), -ksp_rtol 0.5 makes every
+  # solve inexact (the loop's own residual still converges: lambda to
+  # 1e-8, the last solve's residual above 1e-9), -ksp_max_it 2 stops the
+  # CG (before: all three overridden without a word)
+  petsc_run opt-default "$D8/taylor3d.scene" --strategy petsc
+  if petsc_run opt-pcnone "$D8/taylor3d.scene" --strategy petsc --petsc-options "-pc_type none"; then
+    a=$(petsc_value "$C/opt-pcnone.out" solver_iterations) b=$(petsc_value "$C/opt-default.out" solver_iterations)
+    if awk -v a="$a" -v b="$b" 'BEGIN { exit !(a > 2 * b && b > 0) }' \
+       && ! grep -q "never read" "$C/opt-pcnone.err"; then
+      petsc_ok "options -pc_type none honoured"
+    else
+      petsc_fail "options -pc_type none honoured" "$a iterations without the multigrid, $b with it (want more than twice): $(cat "$C/opt-pcnone.err")"
+    fi
+    petsc_same "options -pc_type none lambda" "$C/opt-pcnone.out" "$C/opt-ref.out" lambda_min lambda_max max_u
+  fi
+  if petsc_run opt-rtol "$D8/taylor3d.scene" --strategy petsc --petsc-options "-ksp_rtol 0.5"; then
+    r=$(petsc_value "$C/opt-rtol.out" solver_residual)
+    if awk -v r="$r" 'BEGIN { exit !(r > 1e-9) }'; then
+      petsc_ok "options -ksp_rtol honoured"
+    else
+      petsc_fail "options -ksp_rtol honoured" "the last solve's residual $r (want above 1e-9: -ksp_rtol 0.5)"
+    fi
+    petsc_same "options -ksp_rtol lambda" "$C/opt-rtol.out" "$C/opt-ref.out" lambda_min lambda_max
+  fi
+  # petsc_refused NAME OPTIONS WANT: exit 1, one line "lac: ...WANT"
+  petsc_refused () {
+    env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "$2" \
+      --quiet --no-output > "$C/$1.out" 2> "$C/$1.err"
+    rc=$?
+    if [ "$rc" = 1 ] && [ "$(wc -l < "$C/$1.err")" -eq 1 ] && grep -q "^lac: .*$3" "$C/$1.err"; then
+      petsc_ok "options $2"
+    else
+      petsc_fail "options $2" "want exit 1 and one line 'lac: ...$3', got $rc: $(cat "$C/$1.err")"
+    fi
+  }
+  petsc_refused opt-maxit "-ksp_max_it 2" "after 2 iterations"
+  petsc_refused opt-pcjacobi "-pc_type jacobi" "-pc_type jacobi: .*-elast_pc_type"
+  petsc_refused opt-nan "-lac_contact_threshold nan" "-lac_contact_threshold nan: expected a finite number"
+  petsc_refused opt-inf "-lac_omega inf" "-lac_omega inf: expected a finite number"
 
   # ---- large deformation: the same loop through petsc -----------------
   # petsc_ld NAME SCENE ARGS...: the scene's own strategy, --strategy petsc

@@ -30,6 +30,8 @@ struct lac_dist
   double *E, *nu;              /* owned on the others                   */
   char *fixed;                 /* owned, n                              */
   int *owner;                  /* owned, ncells                         */
+  double *probe;               /* owned, n: s sum_e K_e x of the own
+                                  cells, x the probe (probe_at)         */
   /* contact: C on every process */
   lac_csc *C;                  /* owned (k = C->ncol)                   */
   int *col;                    /* owned, k: 1 if this process owns it   */
@@ -322,6 +324,7 @@ lac_dist_free (lac_dist *d)
   lac_free (d->nu);
   lac_free (d->fixed);
   lac_free (d->owner);
+  lac_free (d->probe);
   lac_free (d->rstart);
   lac_free (d->row);
   lac_csc_free (d->C);
@@ -552,38 +555,90 @@ injected (const lac_dist *d)
                "assembly of the cells");
   return LAC_SUCCESS;
 }
+
+/* The factor of the first own cell's matrix in PETSc's K (test builds:
+ * LAC_TEST_SCALE_CELL, a K that is not the cells' sum), else 1. */
+static double
+perturbed (const lac_dist *d, size_t c)
+{
+  const char *v = getenv ("LAC_TEST_SCALE_CELL");
+  size_t first = 0;
+  if (!v || !*v)
+    return 1.0;
+  while (first < d->m->ncells && d->owner[first] != d->rank)
+    first++;
+  return c == first ? atof (v) : 1.0;
+}
 #else
 #define injected(d) LAC_SUCCESS
+#define perturbed(d, c) 1.0
 #endif
 
+/* Cell c's element matrix (nc x nc) times s into ke, its dofs into dof,
+ * the Dirichlet dofs' rows and columns zero but the diagonal (as in K:
+ * lac_dirichlet_apply). */
+static int
+cell_matrix (const lac_dist *d, size_t c, lac_quad_cache *qc, double s,
+             double *ke, size_t *dof, int *nc)
+{
+  const lac_mesh *m = d->m;
+  size_t bs = (size_t) d->bs;
+  int status = lac_assembly_cell_stiffness_q (m, &d->mat, c, qc, ke);
+  *nc = (int) ((m->ptr[c + 1] - m->ptr[c]) * bs);
+  for (int a = 0; a < *nc; a++)
+    dof[a] = (size_t) m->conn[m->ptr[c] + (size_t) a / bs] * bs
+             + (size_t) a % bs;
+  for (int a = 0; !status && a < *nc; a++)
+    for (int b = 0; b < *nc; b++)
+      ke[a * *nc + b] = (d->fixed[dof[a]] || d->fixed[dof[b]])
+                        && dof[a] != dof[b] ? 0.0 : s * ke[a * *nc + b];
+  return status;
+}
+
+/* The probe x_j of dof j: a vector without structure (a hash of j, in
+ * [-1, 1]), the same on every process. */
+static double
+probe_at (size_t j)
+{
+  unsigned long long h = (unsigned long long) j * 0x9E3779B97F4A7C15ULL;
+  h ^= h >> 29;
+  return (double) (h % 2000001ULL) / 1000000.0 - 1.0;
+}
+
+/* d->probe += ke x on the cell's dofs (nc of them). */
+static void
+add_probe (lac_dist *d, const double *ke, const size_t *dof, int nc)
+{
+  for (int a = 0; a < nc; a++)
+    {
+      double t = 0;
+      for (int b = 0; b < nc; b++)
+        t += ke[a * nc + b] * probe_at (dof[b]);
+      d->probe[dof[a]] += t;
+    }
+}
+
 /* The own cells' Ke times s (s = 0: the pattern, ke zeros), Dirichlet
- * rows and columns zero but the diagonal. */
+ * rows and columns zero but the diagonal; with values, their product
+ * with the probe into d->probe (lac_dist_check_stiffness). */
 static int
 add_cells (lac_dist *d, Mat M, double s, double *ke)
 {
   PetscInt rows[NC_MAX];
+  size_t dof[NC_MAX];
   lac_quad_cache qc;              /* the rules of each cell type, once */
-  int status = injected (d);
+  int status = injected (d), nc;
   memset (&qc, 0, sizeof qc);
   for (size_t c = 0; !status && c < d->m->ncells; c++)
     if (d->owner[c] == d->rank && d->mat.E[c] > 0.0)
       {
-        int nc = cell_rows (d, c, rows);
-        const lac_mesh *m = d->m;
-        size_t bs = (size_t) d->bs;
-        if (s != 0 && (status = lac_assembly_cell_stiffness_q (m, &d->mat, c,
-                                                               &qc, ke)))
+        nc = cell_rows (d, c, rows);
+        if (s != 0 && (status = cell_matrix (d, c, &qc, s, ke, dof, &nc)))
           break;
-        for (int a = 0; s != 0 && a < nc; a++)
-          for (int b = 0; b < nc; b++)
-            {
-              size_t ja = (size_t) m->conn[m->ptr[c] + (size_t) a / bs] * bs
-                          + (size_t) a % bs;
-              size_t jb = (size_t) m->conn[m->ptr[c] + (size_t) b / bs] * bs
-                          + (size_t) b % bs;
-              ke[a * nc + b] = (d->fixed[ja] || d->fixed[jb]) && ja != jb
-                               ? 0.0 : s * ke[a * nc + b];
-            }
+        if (s != 0)
+          add_probe (d, ke, dof, nc);
+        for (int q = 0; s != 0 && q < nc * nc; q++)
+          ke[q] *= perturbed (d, c);
         PetscErrorCode e = MatSetValues (M, nc, rows, nc, rows, ke,
                                          ADD_VALUES);
         if (e)
@@ -598,11 +653,60 @@ lac_dist_add_stiffness (lac_dist *d, const lac_csc *K, Mat Kw, double kappa)
 {
   double *ke = lac_malloc (NC_MAX * NC_MAX * sizeof *ke);
   int status = ke ? LAC_SUCCESS : LAC_ERRMSG (LAC_ENOMEM, "Ke");
+  if (!status && d->cells && !d->probe
+      && !(d->probe = lac_malloc (d->n * sizeof *d->probe + 1)))
+    status = LAC_ERRMSG (LAC_ENOMEM, "the probe of K (%zu)", d->n);
+  if (!status && d->cells)
+    memset (d->probe, 0, d->n * sizeof *d->probe);
   if (!status)
     status = d->cells ? add_cells (d, Kw, 1 / kappa, ke)
                       : add_root_k (d, K, Kw, 1 / kappa);
   lac_free (ke);
   return lac_petsc_agree (status);
+}
+
+/* x (own rows: the probe) and y (the cells' probe products added up in
+ * PETSc's rows) in Kw's layout. */
+static int
+probe_vectors (lac_dist *d, Mat Kw, Vec *x, Vec *y)
+{
+  PetscInt r0, r1;
+  TRY (MatCreateVecs (Kw, x, y));
+  TRY (MatGetOwnershipRange (Kw, &r0, &r1));
+  for (size_t j = 0; j < d->n; j++)
+    {
+      PetscInt r = row_of (d, j);
+      if (r >= r0 && r < r1)
+        TRY (VecSetValue (*x, r, probe_at (j), INSERT_VALUES));
+      if (d->probe[j] != 0)
+        TRY (VecSetValue (*y, r, d->probe[j], ADD_VALUES));
+    }
+  TRY (VecAssemblyBegin (*x));
+  TRY (VecAssemblyEnd (*x));
+  TRY (VecAssemblyBegin (*y));
+  TRY (VecAssemblyEnd (*y));
+  return LAC_SUCCESS;
+}
+
+int
+lac_dist_check_stiffness (lac_dist *d, Mat Kw, double *err)
+{
+  Vec x = NULL, y = NULL;
+  PetscReal nr, nk;
+  int status;
+  *err = 0;
+  if (!d->cells || !d->probe)
+    LAC_ERROR (LAC_EINVAL, "the check of K needs K added from the cells");
+  if ((status = probe_vectors (d, Kw, &x, &y)))
+    return status;
+  TRY (VecScale (y, -1.0));
+  TRY (MatMultAdd (Kw, x, y, y));                    /* K x - sum Ke x */
+  TRY (VecNorm (y, NORM_INFINITY, &nr));
+  TRY (MatNorm (Kw, NORM_INFINITY, &nk));
+  TRY (VecDestroy (&x));
+  TRY (VecDestroy (&y));
+  *err = nk > 0 ? nr / nk : nr;                       /* |x| <= 1 */
+  return LAC_SUCCESS;
 }
 
 int

@@ -33,7 +33,9 @@
  * call (lac_petsc_agree): every process returns it, with the message of
  * the process that failed.  A build compiled with LAC_TEST_FAULTS fails on
  * purpose in the assembly of the cells on the process named by the
- * environment variable LAC_TEST_FAIL_RANK (tests/cases-petsc.sh).
+ * environment variable LAC_TEST_FAIL_RANK, and scales the first own
+ * cell's matrix in PETSc's K (not in lac_dist_k_mult) by the factor
+ * LAC_TEST_SCALE_CELL (tests/cases-petsc.sh).
  *
  * Ownership: lac_dist_alloc/lac_dist_free; the root's mesh, material and
  * matrices are borrowed during each call only.
@@ -87,6 +89,14 @@ int lac_dist_pattern (lac_dist *d, const lac_csc *K, lac_dist_mat Pk,
 /* K_W += K / kappa, from the own cells (or the root's K); not assembled. */
 int lac_dist_add_stiffness (lac_dist *d, const lac_csc *K, lac_dist_mat Kw,
                             double kappa);
+/* After lac_dist_add_stiffness from the cells and the assembly of Kw
+ * (holding K / kappa, nothing else yet): *err = |Kw x - y|_inf /
+ * |Kw|_inf for a probe x without structure (|x|_inf <= 1) and y the sum
+ * over the cells of their element matrices times x, which
+ * lac_dist_add_stiffness made from the same element matrices, in lac's
+ * numbering of the dofs: rounding (1e-15) if PETSc's matrix is the
+ * cells' K, whatever the partition and the numbering of the rows. */
+int lac_dist_check_stiffness (lac_dist *d, lac_dist_mat Kw, double *err);
 /* K_W += sum_i dw_i c_i c_i^T over the own columns (dw: k, the same on
  * every process); not assembled. */
 int lac_dist_add_contact (lac_dist *d, lac_dist_mat Kw, const double *dw);

@@ -71,6 +71,13 @@ lac_petsc_peak_rss_total_mb (int *nproc)
 }
 
 int
+lac_petsc_option_default (const char *name, const char *value)
+{
+  (void) name, (void) value;
+  return LAC_SUCCESS;
+}
+
+int
 lac_petsc_command_send (const lac_petsc_command *c)
 {
   (void) c;
@@ -205,6 +212,21 @@ lac_petsc_options_unused (char *names, size_t n)
   int unused = (int) count;               /* Restore sets count to 0 */
   PetscOptionsLeftRestore (NULL, &count, &name, &value);
   return unused;
+}
+
+int
+lac_petsc_option_default (const char *name, const char *value)
+{
+  PetscBool set = PETSC_FALSE;
+  PetscErrorCode e;
+  if ((e = PetscOptionsHasName (NULL, NULL, name, &set)))
+    return lac_petsc_fail (e, __func__, name);
+  if (set)
+    return LAC_SUCCESS;
+  if ((e = PetscOptionsSetValue (NULL, name, value))
+      || (e = PetscOptionsHasName (NULL, NULL, name, &set)))
+    return lac_petsc_fail (e, __func__, name);
+  return LAC_SUCCESS;
 }
 
 void

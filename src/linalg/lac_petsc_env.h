@@ -42,6 +42,12 @@ void lac_petsc_finalize (void);
  * the run, so that an option with a wrong prefix, or one given to a run
  * that solved nothing with PETSc, is not ignored silently. */
 int lac_petsc_options_unused (char *names, size_t n);
+/* PETSc's option `name` ("-prefix_key") set to `value` unless the user
+ * set it (the user's options win, as in PETSc); marked read, so that
+ * the warning about the options nothing read does not name lac's own
+ * when another preconditioner than the one it configures was chosen.
+ * Nothing without PETSc. */
+int lac_petsc_option_default (const char *name, const char *value);
 /* This process and the number of processes: 0 and 1 without MPI or
  * before lac_petsc_initialize. */
 void lac_petsc_rank (int *rank, int *size);
@@ -76,6 +82,8 @@ typedef struct lac_petsc_command
   double rtol;              /* solve: relative residual                   */
   double omega;             /* build: W_i = omega / s_i, which every
                                process computes                          */
+  double threshold;         /* build: the contact multigrid's threshold
+                               (-lac_contact_threshold, read by the root) */
 } lac_petsc_command;
 
 /* The root: c to every other process (nothing with one process). */

@@ -7,11 +7,12 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <petscksp.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
-#include "linalg/lac_petsc_graph.h"
+#include "linalg/lac_petsc_mg.h"
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
@@ -21,6 +22,16 @@
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 #define COUNT(a) (sizeof (a) / sizeof *(a))
 
+/* The tolerances of a Krylov method the user gave (-ksp_rtol, -ksp_atol,
+ * -ksp_max_it with its prefix): they win over lac's, as PETSc's options
+ * win over a program's settings. */
+typedef struct
+{
+  PetscReal rtol, atol;
+  PetscInt maxit;
+  PetscBool has_rtol, has_atol, has_maxit;
+} user_tolerances;
+
 struct lac_petsc_saddle
 {
   lac_saddle_method method;
@@ -28,8 +39,12 @@ struct lac_petsc_saddle
   Mat K, B;                        /* borrowed; B NULL: K alone          */
   KSP ku;                          /* K alone: CG + GAMG                 */
   Vec ru;                          /* K alone, projected: U's layout     */
+  user_tolerances tol;             /* the user's, of the Krylov method   */
   /* projected */
-  PC pg;                           /* the multigrid of K                 */
+  PC pg;                           /* the multigrid of K (NULL: none,
+                                      -pc_type none)                     */
+  lac_petsc_mg *mg;                /* owned: lac's contact multigrid in
+                                      pg (NULL: a PETSc PC of -elast_)   */
   KSP kg, kp;                      /* B^T B + D (LU); CG on P K           */
   Mat G, Ah;                       /* B^T B + D; P K (shell)             */
   Vec u0, bu, tu, tk, sk;          /* U's layout; the multipliers'       */
@@ -64,27 +79,12 @@ lac_petsc_saddle_free (lac_petsc_saddle *sv)
   for (size_t i = 0; i < COUNT (ksp); i++)
     KSPDestroy (ksp[i]);
   PCDestroy (&sv->pg);
+  lac_petsc_mg_free (sv->mg);
   for (size_t i = 0; i < COUNT (mat); i++)
     MatDestroy (mat[i]);
   for (size_t i = 0; i < COUNT (vec); i++)
     VecDestroy (vec[i]);
   lac_free (sv);
-}
-
-/* An option's default value, unless the user set it; lac's own is
- * marked read (looked up once more), so that the warning about options
- * nothing read does not name it when another preconditioner than the
- * one it configures was chosen. */
-static int
-default_option (const char *name, const char *value)
-{
-  PetscBool set = PETSC_FALSE;
-  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  if (set)
-    return LAC_SUCCESS;
-  TRY (PetscOptionsSetValue (NULL, name, value));
-  TRY (PetscOptionsHasName (NULL, NULL, name, &set));
-  return LAC_SUCCESS;
 }
 
 /* ---- the projection ----------------------------------------------------- */
@@ -201,13 +201,14 @@ projected_pc (PC pc, Vec r, Vec z)
   PetscCall (PCShellGetContext (pc, &sv));
   if (!sv->steps)
     {
-      PetscCall (PCApply (sv->pg, r, z));
+      PetscCall (sv->pg ? PCApply (sv->pg, r, z) : VecCopy (r, z));
       return project (sv, z);
     }
   PetscCall (VecCopy (r, sv->ru));                     /* P_Z^T r */
   PetscCall (subtract (sv, sv->Z, sv->B, sv->kz, sv->Zl, sv->Bl, sv->kzl, 1,
                        sv->ru));
-  PetscCall (PCApply (sv->pg, sv->ru, z));             /* M */
+  PetscCall (sv->pg ? PCApply (sv->pg, sv->ru, z)      /* M */
+             : VecCopy (sv->ru, z));
   return subtract (sv, sv->B, sv->Z, sv->kz, sv->Bl, sv->Zl, sv->kzl, 0, z);
 }
 
@@ -221,6 +222,36 @@ gamg_setup (PC pc)
   PetscCall (PCSetType (pc, PCGAMG));
   PetscCall (PCGAMGSetReuseInterpolation (pc, PETSC_TRUE));
   return 0;
+}
+
+/* The tolerances the user gave a Krylov method of options prefix
+ * `prefix` (NULL: none) into *u. */
+static int
+read_tolerances (const char *prefix, user_tolerances *u)
+{
+  memset (u, 0, sizeof *u);
+  TRY (PetscOptionsGetReal (NULL, prefix, "-ksp_rtol", &u->rtol,
+                            &u->has_rtol));
+  TRY (PetscOptionsGetReal (NULL, prefix, "-ksp_atol", &u->atol,
+                            &u->has_atol));
+  TRY (PetscOptionsGetInt (NULL, prefix, "-ksp_max_it", &u->maxit,
+                           &u->has_maxit));
+  return LAC_SUCCESS;
+}
+
+/* ksp's tolerances: lac's rtol, atol and KSP_MAXIT, but those the user
+ * gave (sv->tol); a relative tolerance of the user's stands alone (no
+ * atol of lac's beside it, PETSc's 1e-50). */
+static int
+set_tolerances (const lac_petsc_saddle *sv, KSP ksp, PetscReal rtol,
+                PetscReal atol)
+{
+  const user_tolerances *u = &sv->tol;
+  TRY (KSPSetTolerances (ksp, u->has_rtol ? u->rtol : rtol,
+                         u->has_atol ? u->atol : u->has_rtol ? 1e-50 : atol,
+                         PETSC_DEFAULT, u->has_maxit ? u->maxit
+                         : KSP_MAXIT));
+  return LAC_SUCCESS;
 }
 
 /* K alone: conjugate gradients and GAMG (prefix elast_). */
@@ -237,19 +268,56 @@ create_alone (lac_petsc_saddle *sv)
   TRY (gamg_setup (pc));
   TRY (KSPSetFromOptions (sv->ku));
   TRY (MatCreateVecs (sv->K, NULL, &sv->ru));
+  return read_tolerances ("elast_", &sv->tol);
+}
+
+/* -pc_type of the projected CG (no prefix): its preconditioner is the
+ * projection around M, the multigrid of K; "none" leaves M out (*none =
+ * 1: z = P_Z P_Z^T r), another type is refused (-elast_pc_type chooses
+ * M). */
+static int
+projected_pc_type (int *none)
+{
+  char type[64] = "";
+  PetscBool set = PETSC_FALSE;
+  *none = 0;
+  TRY (PetscOptionsGetString (NULL, NULL, "-pc_type", type, sizeof type,
+                              &set));
+  if (set && strcmp (type, "none") != 0)
+    LAC_ERROR (LAC_EINVAL, "-pc_type %s: the projected CG of the contact "
+               "solve is preconditioned by the projection around the "
+               "multigrid of K_W; -elast_pc_type chooses that one, -pc_type "
+               "none leaves it out", type);
+  *none = set;
   return LAC_SUCCESS;
 }
 
-/* projected: the multigrid of K (prefix elast_; threshold, or
- * -lac_contact_threshold, if >= 0: on the couplings of the contact nodes
- * of its finest level, lac_petsc_graph.h; on all those of the finest level
- * where this PETSc has no hook for it), the solver of B^T B + D (prefix
- * gram_: redundant LU), CG on P K (no prefix). */
+/* M, the multigrid of K (prefix elast_): lac's contact multigrid with
+ * threshold (lac_petsc_mg.h), the PETSc preconditioner -elast_pc_type
+ * names, or none (-pc_type none). */
+static int
+kernel_pc (lac_petsc_saddle *sv, double threshold)
+{
+  PetscBool set = PETSC_FALSE;
+  int none, status;
+  if ((status = projected_pc_type (&none)) || none)
+    return status;
+  TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
+  TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
+  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  TRY (PetscOptionsHasName (NULL, "elast_", "-pc_type", &set));
+  if (!set)
+    return lac_petsc_mg_create (sv->pg, threshold, &sv->mg);
+  TRY (gamg_setup (sv->pg));                /* the user's preconditioner */
+  TRY (PCSetFromOptions (sv->pg));
+  return LAC_SUCCESS;
+}
+
+/* projected: M (kernel_pc), the solver of B^T B + D (prefix gram_:
+ * redundant LU), CG on P K (no prefix). */
 static int
 create_projected (lac_petsc_saddle *sv, double threshold)
 {
-  PetscReal th[2] = { threshold, 0.0 };
-  PetscBool set = PETSC_FALSE;
   PetscInt nl, n, steps = PROJECTION_STEPS;
   PC pc;
   int status;
@@ -259,21 +327,9 @@ create_projected (lac_petsc_saddle *sv, double threshold)
     LAC_ERROR (LAC_EINVAL, "-lac_projection_steps %d: expected 0 or more",
                (int) steps);
   sv->steps = (int) steps;
-  TRY (PCCreate (PETSC_COMM_WORLD, &sv->pg));
-  TRY (PCSetOptionsPrefix (sv->pg, "elast_"));
-  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
-  TRY (gamg_setup (sv->pg));
-  TRY (PCSetFromOptions (sv->pg));
-  TRY (PetscOptionsHasName (NULL, "elast_", "-pc_gamg_threshold", &set));
-  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_contact_threshold", &th[0],
-                            NULL));
-  if (th[0] >= 0 && !set && lac_petsc_graph_available ())
-    {                               /* the contact nodes' couplings only */
-      if ((status = lac_petsc_graph_contact (sv->pg, sv->B, th[0])))
-        return status;
-    }
-  else if (th[0] >= 0 && !set)      /* after the options: they would copy */
-    TRY (PCGAMGSetThreshold (sv->pg, th, 2));   /* th[0] to every level */
+  if ((status = kernel_pc (sv, threshold))
+      || (status = read_tolerances (NULL, &sv->tol)))
+    return status;
   if ((status = direct_solver (PETSC_COMM_WORLD, "gram_", PCREDUNDANT,
                               &sv->kg)))
     return status;
@@ -326,18 +382,22 @@ create_fieldsplit (lac_petsc_saddle *sv, double threshold)
   IS is[2];
   char th[40];
   int status;
+  static const char *const defaults[][2] = {
+    { "-fieldsplit_u_ksp_type", "preonly" },
+    { "-fieldsplit_u_pc_type", "gamg" },
+    { "-fieldsplit_u_pc_gamg_reuse_interpolation", "true" },
+    { "-fieldsplit_lambda_ksp_type", "preonly" },
+    { "-fieldsplit_lambda_pc_type", "jacobi" } };
   snprintf (th, sizeof th, "%g,0", threshold);  /* the finest level only */
   if ((threshold >= 0
-       && (status = default_option ("-fieldsplit_u_pc_gamg_threshold", th)))
+       && (status = lac_petsc_option_default
+                      ("-fieldsplit_u_pc_gamg_threshold", th)))
       || (status = create_diagonal (sv, &sv->D))
-      || (status = create_diagonal (sv, &sv->Sp))
-      || (status = default_option ("-fieldsplit_u_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_u_pc_type", "gamg"))
-      || (status = default_option ("-fieldsplit_u_pc_gamg_reuse_interpolation",
-                                   "true"))
-      || (status = default_option ("-fieldsplit_lambda_ksp_type", "preonly"))
-      || (status = default_option ("-fieldsplit_lambda_pc_type", "jacobi")))
+      || (status = create_diagonal (sv, &sv->Sp)))
     return status;
+  for (size_t i = 0; i < COUNT (defaults); i++)
+    if ((status = lac_petsc_option_default (defaults[i][0], defaults[i][1])))
+      return status;
   TRY (MatCreateTranspose (sv->B, &sv->Bt));
   blocks[0] = sv->K, blocks[1] = sv->B, blocks[2] = sv->Bt, blocks[3] = sv->D;
   TRY (MatCreateNest (PETSC_COMM_WORLD, 2, NULL, 2, NULL, blocks, &sv->A));
@@ -359,7 +419,7 @@ create_fieldsplit (lac_petsc_saddle *sv, double threshold)
   TRY (PCFieldSplitSetSchurFactType (pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
   TRY (PCFieldSplitSetSchurPre (pc, PC_FIELDSPLIT_SCHUR_PRE_USER, sv->Sp));
   TRY (KSPSetFromOptions (sv->ks));
-  return LAC_SUCCESS;
+  return read_tolerances (NULL, &sv->tol);
 }
 
 int
@@ -490,7 +550,10 @@ update_projected (lac_petsc_saddle *sv, Vec d)
   if ((sv->size > 1 && (status = update_local (sv)))
       || (sv->steps && (status = smoothed_constraints (sv, d))))
     return status;
-  TRY (PCSetOperators (sv->pg, sv->K, sv->K));
+  if (sv->mg)
+    return lac_petsc_mg_update (sv->mg, sv->K, sv->B);
+  if (sv->pg)
+    TRY (PCSetOperators (sv->pg, sv->K, sv->K));
   return LAC_SUCCESS;
 }
 
@@ -564,7 +627,7 @@ solve_alone (lac_petsc_saddle *sv, Vec f, double rtol, const char *what,
   double res;
   int status;
   TRY (KSPSetInitialGuessNonzero (sv->ku, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->ku, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ku, rtol, 0.0));
   TRY (KSPSolve (sv->ku, f, u));
   if ((status = true_residual (sv->K, f, u, sv->ru, &res)))
     return status;
@@ -623,8 +686,7 @@ solve_projected (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
   TRY (projected_start (sv, f, g, u));
   TRY (VecNorm (f, NORM_2, &b1));           /* the CG's residual: forces */
   TRY (KSPSetInitialGuessNonzero (sv->kp, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->kp, 0.0, rtol * b1, PETSC_DEFAULT,
-                         KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->kp, 0.0, rtol * b1));
   TRY (KSPSolve (sv->kp, sv->bu, u));
   TRY (projected_finish (sv, f, g, u, l, &res));
   return check_ksp (sv->kp, res, what, c);
@@ -660,14 +722,13 @@ solve_fieldsplit (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
       || (status = nest_blocks (sv, sv->x, u, l, 1)))
     return status;
   TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_TRUE));
-  TRY (KSPSetTolerances (sv->ks, rtol, 0.0, PETSC_DEFAULT, KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ks, rtol, 0.0));
   TRY (KSPSolve (sv->ks, sv->b, sv->x));
   if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
       || (status = check_ksp (sv->ks, res, what, c)))
     return status;
   TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_FALSE));
-  TRY (KSPSetTolerances (sv->ks, CORRECTION_RTOL, 0.0, PETSC_DEFAULT,
-                         KSP_MAXIT));
+  TRY (set_tolerances (sv, sv->ks, CORRECTION_RTOL, 0.0));
   TRY (KSPSolve (sv->ks, sv->r, sv->dx));
   TRY (VecAXPY (sv->x, 1.0, sv->dx));
   snprintf (part, sizeof part, "%s, correction", what);
@@ -709,6 +770,16 @@ lac_petsc_saddle_types (const lac_petsc_saddle *sv, char *krylov, char *pc,
       snprintf (pc, size, "gamg");
       TRY (PetscOptionsGetString (NULL, NULL, "-fieldsplit_u_pc_type", pc,
                                   size, &set));
+      return LAC_SUCCESS;
+    }
+  if (sv->mg)
+    {
+      snprintf (pc, size, "%s", LAC_PETSC_MG_NAME);
+      return LAC_SUCCESS;
+    }
+  if (sv->kp && !sv->pg)
+    {
+      snprintf (pc, size, "none");
       return LAC_SUCCESS;
     }
   if (sv->pg)

@@ -17,7 +17,8 @@
  *                l2-orthogonal projection P = I - B (B^T B + D)^-1 B^T,
  *                u = u0 + x, B^T u0 = g, and P K x = P (f - K u0), each
  *                iteration preconditioned by z = P_Z M P_Z^T r, M one
- *                V-cycle of GAMG on K, P_Z = I - Z (B^T Z + D)^-1 B^T
+ *                V-cycle of multigrid on K (lac_petsc_mg.h; prefix
+ *                elast_), P_Z = I - Z (B^T Z + D)^-1 B^T
  *                with Z ~ K^-1 B after -lac_projection_steps Jacobi
  *                steps from diag(K)^-1 B (default 1; 0: P_Z = P); the
  *                multipliers after, l = (B^T B + D)^-1 B^T (f - K u).
@@ -31,9 +32,10 @@
  *                for the Schur complement (fieldsplit_lambda_: Jacobi).
  *
  * Every PETSc option of those prefixes is read (-ksp_type, -pc_type of
- * the outer solver have no prefix).  PETSc's types appear only in the
- * implementation: the header names its matrices and vectors by their
- * structs, as fem/lac_assembly_dist.h does.
+ * the outer solver have no prefix), and wins over lac's settings.
+ * PETSc's types appear only in the implementation: the header names its
+ * matrices and vectors by their structs, as fem/lac_assembly_dist.h
+ * does.
  */
 #ifndef LAC_PETSC_SADDLE_H
 #define LAC_PETSC_SADDLE_H
@@ -59,15 +61,15 @@ typedef struct
 } lac_saddle_counts;
 
 /* The solvers of K (and B: NULL for K alone) by `method`; K and B are
- * borrowed and keep their patterns (new values: _update).  threshold >=
- * 0: the multigrid of K drops weak couplings of K's graph before it
- * aggregates.  Projected CG: those below `threshold` at a contact node
- * (a node with a row of B) on the finest level, every other coupling
- * kept (lac_petsc_graph.h; -lac_contact_threshold sets it, < 0 none);
- * where this PETSc has no hook for that, and for fieldsplit: all those
- * below it on the finest level (PCGAMG's threshold, 0 on the coarser
- * ones).  -elast_pc_gamg_threshold, -fieldsplit_u_pc_gamg_threshold
- * still win.  < 0: PETSc's default.  Collective. */
+ * borrowed and keep their patterns (new values: _update).  threshold:
+ * projected CG, the multigrid of K is lac's (lac_petsc_mg.h), whose
+ * graph leaves out the couplings below it at a contact node (a node with
+ * a row of B; < 0: none), unless -elast_pc_type names another; with
+ * -pc_type none no multigrid.  fieldsplit: PCGAMG's threshold on the
+ * finest level (0 on the coarser ones; < 0: PETSc's default), unless
+ * -fieldsplit_u_pc_gamg_threshold is given.  The user's -ksp_rtol,
+ * -ksp_atol, -ksp_max_it (with the Krylov method's prefix) replace the
+ * tolerance and limit of every solve.  Collective. */
 int lac_petsc_saddle_create (lac_saddle_method method, lac_saddle_mat K,
                              lac_saddle_mat B, double threshold,
                              lac_petsc_saddle **out);

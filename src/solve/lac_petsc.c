@@ -13,7 +13,8 @@
  *           linalg/lac_petsc_saddle.h (projected CG or fieldsplit GMRES
  *           on (*W); CG on K_W alone when k = 0);
  *   update  the statuses from the root; new numbers: K_W = K / kappa
- *           from the own cells, and from K ||K||_inf (for the root's
+ *           from the own cells (K checked against them first:
+ *           check_assembly), and from K ||K||_inf (for the root's
  *           residuals) and the scales s_i = c_i^T diag(K)^-1 c_i of
  *           W_i = omega / s_i, on every process; then K_W += C (W -
  *           W_old) C^T / kappa by the owners of the columns that
@@ -29,7 +30,8 @@
  *           summed on the root (fem/lac_post_dist.h).
  *
  * A failure on one process is agreed on by all before the next
- * collective call (lac_petsc_agree): the root returns it with the message
+ * collective call (lac_petsc_agree), and every command but free and
+ * memory ends with that agreement: the root returns it with the message
  * of the process that failed.  PETSc's errors become LAC_EDEP with
  * PETSc's message.
  */
@@ -37,6 +39,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -81,10 +84,12 @@ enum { PROJECTED = LAC_SADDLE_PROJECTED,     /* the contact solvers  */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
+#define ASSEMBLY_TOL 1e-10    /* K x against its cells', of |K| |x|    */
 
 typedef struct lac_petsc
 {
   double omega;                    /* W_i = omega / s_i                   */
+  double threshold;                /* the multigrid's, on contact nodes   */
   int rank, size, root;            /* root: rank 0                        */
   size_t n, k;
   int mode, coords_given, built, cells;   /* cells: K from the cells     */
@@ -121,27 +126,43 @@ typedef struct lac_petsc
 
 /* ---- the object --------------------------------------------------------- */
 
+/* lac's options, read on the root (its build command carries them to the
+ * others): -lac_contact, -lac_omega, -lac_contact_threshold. */
+static int
+read_options (lac_petsc *s)
+{
+  PetscBool set = PETSC_FALSE;
+  char mode[32] = "";
+  s->omega = LAC_PETSC_OMEGA;
+  s->threshold = LAC_PETSC_CONTACT_THRESHOLD;
+  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL));
+  TRY (PetscOptionsGetReal (NULL, NULL, "-lac_contact_threshold",
+                            &s->threshold, NULL));
+  TRY (PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
+                              &set));
+  s->mode = set && strcmp (mode, "fieldsplit") == 0 ? FIELDSPLIT : PROJECTED;
+  if (set && s->mode == PROJECTED && strcmp (mode, "projected") != 0)
+    LAC_ERROR (LAC_EINVAL, "-lac_contact %s: expected projected or "
+               "fieldsplit", mode);
+  if (!(s->omega > 0) || !isfinite (s->omega))
+    LAC_ERROR (LAC_EINVAL, "-lac_omega %g: expected a finite number > 0",
+               s->omega);
+  if (!isfinite (s->threshold))
+    LAC_ERROR (LAC_EINVAL, "-lac_contact_threshold %g: expected a finite "
+               "number (< 0: no coupling dropped)", s->threshold);
+  return LAC_SUCCESS;
+}
+
 static void *
 petsc_alloc (void)
 {
   lac_petsc *s;
-  PetscBool set = PETSC_FALSE;
-  char mode[32] = "";
   if (lac_petsc_initialize (NULL))
     return NULL;
   if (!(s = lac_calloc (1, sizeof *s)))
     LAC_ERROR_NULL (LAC_ENOMEM, "petsc strategy");
-  s->omega = LAC_PETSC_OMEGA;
-  PetscOptionsGetReal (NULL, NULL, "-lac_omega", &s->omega, NULL);
-  PetscOptionsGetString (NULL, NULL, "-lac_contact", mode, sizeof mode,
-                         &set);
-  s->mode = set && strcmp (mode, "fieldsplit") == 0 ? FIELDSPLIT : PROJECTED;
-  if ((set && s->mode == PROJECTED && strcmp (mode, "projected") != 0)
-      || !(s->omega > 0))
+  if (read_options (s))
     {
-      lac_error_set (LAC_EINVAL, __func__, "-lac_contact %s, -lac_omega %g: "
-                     "expected projected or fieldsplit, and omega > 0",
-                     mode, s->omega);
       lac_free (s);
       return NULL;
     }
@@ -487,6 +508,7 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
   s->bs = c->bs;
   s->mode = c->mode;
   s->omega = c->omega;
+  s->threshold = c->threshold;
   s->coords_given = c->coords;
   s->cells = c->cells;
   if ((status = build_layout (s, c, sys ? sys->C : NULL))
@@ -502,8 +524,8 @@ build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
       || (s->k && (status = multiplier_vectors (s)))
       || (status = lac_petsc_saddle_create ((lac_saddle_method) s->mode,
                                             s->Kw, s->k ? s->B : NULL,
-                                            s->k ? LAC_PETSC_GAMG_THRESHOLD
-                                            : -1.0, &s->sv)))
+                                            s->k ? s->threshold : -1.0,
+                                            &s->sv)))
     return status;
   s->built = 1;
   s->counts.analyses++;
@@ -538,7 +560,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   lac_petsc_command c = { .cmd = LAC_PETSC_CMD_BUILD, .mode = s->mode,
     .bs = (int) bs, .coords = s->coords && s->dim >= 2 && (int) bs == s->dim,
     .n = (long long) n, .k = (long long) k, .cells = petsc_own_k (s, n),
-    .omega = s->omega };
+    .omega = s->omega, .threshold = s->threshold };
   int status;
   if (!c.cells && !sys->K)
     LAC_ERROR (LAC_EINVAL, "petsc: no K and no cells of these dofs to "
@@ -546,7 +568,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   if ((status = alloc_arrays (s, n, k))
       || (status = lac_petsc_command_send (&c)))
     return status;
-  return build (s, &c, sys);
+  return lac_petsc_agree (build (s, &c, sys));
 }
 
 static int
@@ -642,6 +664,26 @@ column_scales (lac_petsc *s, Vec d)
   return LAC_SUCCESS;
 }
 
+/* K_W, K just assembled from the cells, against the cells' element
+ * matrices (lac_dist_check_stiffness): the residuals of the root take K x
+ * from K_W (petsc_kmul), so that they are the cells' K's. */
+static int
+check_assembly (lac_petsc *s)
+{
+  double err;
+  int status = lac_dist_check_stiffness (s->dist, s->Kw, &err);
+  if (status)
+    return status;
+  TRY (PetscInfo (s->Kw, "K against its cells: %.3g of |K| |x|\n", err));
+  if (!(err <= ASSEMBLY_TOL))
+    LAC_ERROR (LAC_ESANITY, "the stiffness PETSc assembled on %d "
+               "process%s is not its cells' (|K x - sum_e K_e x| = %.2g of "
+               "|K| |x| for a probe x): a fault of the distributed "
+               "assembly; a direct strategy on one process does without it",
+               s->size, s->size > 1 ? "es" : "", err);
+  return LAC_SUCCESS;
+}
+
 /* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
  * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
  * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
@@ -662,7 +704,8 @@ new_stiffness (lac_petsc *s, const lac_contact_system *sys)
   TRY (MatZeroEntries (s->Kw));
   if ((status = lac_dist_add_stiffness (s->dist, sys && !s->cells
                                         ? sys->K : NULL, s->Kw, 1.0))
-      || (status = assemble (s->Kw)))
+      || (status = assemble (s->Kw))
+      || (s->cells && (status = check_assembly (s))))
     return status;
   TRY (MatNorm (s->Kw, NORM_INFINITY, &s->knorm));
   TRY (MatGetDiagonal (s->Kw, s->ru));
@@ -758,7 +801,7 @@ update (lac_petsc *s, const char *active)
     memcpy (s->stat, active, s->k);
   s->have_stat = 0;
   if ((status = lac_petsc_command_send (&c))
-      || (status = update_values (s, &c, s->sys)))
+      || (status = lac_petsc_agree (update_values (s, &c, s->sys))))
     return status;
   s->have_stat = 1;
   s->new_numbers = 0;
@@ -835,7 +878,8 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
   for (size_t j = 0; j < s->n; j++)
     s->xv[j] /= s->kappa;                          /* f_W / kappa */
   if ((status = lac_petsc_command_send (&c))
-      || (status = step_solve (s, &c, s->xv, s->rhs, U, s->lst)))
+      || (status = lac_petsc_agree (step_solve (s, &c, s->xv, s->rhs, U,
+                                                s->lst))))
     return status;
   for (size_t i = 0; i < s->k; i++)
     lambda[i] = active[i] ? s->lst[i] * s->kappa : 0.0;
@@ -857,7 +901,8 @@ step_kmul (lac_petsc *s, const double *x, double *y)
 
 /* y = K x = kappa K_W x - C W_old C^T x: K_W holds K / kappa and the
  * contact terms of W_old (contact_terms), with the copy of C they were
- * added from; no K on the root. */
+ * added from; no K on the root.  K_W's K was checked against its cells
+ * when it was assembled (new_stiffness). */
 static int
 petsc_kmul (void *w, const double *x, double *y)
 {
@@ -869,7 +914,7 @@ petsc_kmul (void *w, const double *x, double *y)
     LAC_ERROR (LAC_EINVAL, "petsc: K x before the matrices of the last set "
                "were made");
   if ((status = lac_petsc_command_send (&c))
-      || (status = step_kmul (s, x, y)))
+      || (status = lac_petsc_agree (step_kmul (s, x, y))))
     return status;
   for (size_t j = 0; j < s->n; j++)
     y[j] *= s->kappa;
@@ -912,25 +957,49 @@ petsc_post (void *w, lac_post_request *p)
                "cells K was assembled from");
   if ((status = lac_petsc_command_send (&c)))
     return status;
-  return lac_dist_post (s->dist, p);
+  return lac_petsc_agree (lac_dist_post (s->dist, p));
 }
 
 /* ---- the other processes ------------------------------------------------ */
 
+#ifdef LAC_TEST_FAULTS
+/* A failure on purpose (test builds): LAC_TEST_FAIL_AFTER=R:NAME fails
+ * process R once its step of the command NAME (build, update, solve,
+ * kmul, post) is done, after its last collective call, where only the
+ * agreement that ends the command carries it to the root. */
+static int
+injected (const lac_petsc *s, int cmd)
+{
+  static const char *name[] = { "", "build", "update", "solve", "free",
+                                "memory", "kmul", "post", "quit" };
+  const char *v = getenv ("LAC_TEST_FAIL_AFTER"), *colon;
+  if (!v || !(colon = strchr (v, ':')) || atoi (v) != s->rank || cmd < 1
+      || cmd > LAC_PETSC_CMD_QUIT || strcmp (colon + 1, name[cmd]) != 0)
+    return LAC_SUCCESS;
+  LAC_ERROR (LAC_EDEP, "failure injected by LAC_TEST_FAIL_AFTER after the "
+             "%s", name[cmd]);
+}
+#else
+#define injected(s, cmd) LAC_SUCCESS
+#endif
+
 /* The others: the root's command, the same steps as the root's with
- * none of its data.  A failure is agreed on within the steps (every
- * process returns it) and reported by the root. */
+ * none of its data. */
 static int
 follow (lac_petsc *s, const lac_petsc_command *c)
 {
+  int status;
   switch (c->cmd)
     {
     case LAC_PETSC_CMD_BUILD:
-      return build (s, c, NULL);
+      status = build (s, c, NULL);
+      break;
     case LAC_PETSC_CMD_UPDATE:
-      return update_values (s, c, NULL);
+      status = update_values (s, c, NULL);
+      break;
     case LAC_PETSC_CMD_SOLVE:
-      return step_solve (s, c, NULL, NULL, NULL, NULL);
+      status = step_solve (s, c, NULL, NULL, NULL, NULL);
+      break;
     case LAC_PETSC_CMD_FREE:
       free_petsc (s);
       free_arrays (s);
@@ -938,14 +1007,31 @@ follow (lac_petsc *s, const lac_petsc_command *c)
     case LAC_PETSC_CMD_MEMORY:
       return lac_petsc_memory_reply ();
     case LAC_PETSC_CMD_KMUL:
-      return step_kmul (s, NULL, NULL);
+      status = step_kmul (s, NULL, NULL);
+      break;
     case LAC_PETSC_CMD_POST:
-      return lac_dist_post (s->dist, NULL);
+      status = lac_dist_post (s->dist, NULL);
+      break;
     default:
       LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
     }
+  return status ? status : injected (s, c->cmd);
 }
 
+/* 1 for the commands that end with an agreement on their status (the
+ * others cannot fail on a process: free, memory). */
+static int
+agreed (int cmd)
+{
+  return cmd == LAC_PETSC_CMD_BUILD || cmd == LAC_PETSC_CMD_UPDATE
+         || cmd == LAC_PETSC_CMD_SOLVE || cmd == LAC_PETSC_CMD_KMUL
+         || cmd == LAC_PETSC_CMD_POST;
+}
+
+/* Each command ends with the agreement of every process on its status,
+ * as the root's side ends it: a failure on this process (after the
+ * steps' own agreements too) reaches the root with this process's
+ * message, and the root ends the run. */
 int
 lac_petsc_serve (void)
 {
@@ -965,7 +1051,9 @@ lac_petsc_serve (void)
   while (!(status = lac_petsc_command_receive (&c))
          && c.cmd != LAC_PETSC_CMD_QUIT)
     {
-      follow (s, &c);
+      status = follow (s, &c);
+      if (agreed (c.cmd))
+        lac_petsc_agree (status);
       lac_error_clear ();
     }
   free_petsc (s);

@@ -22,17 +22,16 @@
  *      the projection P = I - C_A (C_A^T C_A)^-1 C_A^T (C_A^T C_A is k x
  *      k and sparse: LU on every process), U = u0 + x with C_A^T u0 = g_A
  *      and x = P x solving P K_W x = P (f_W - K_W u0), preconditioned by
- *      P M, M one V-cycle of smoothed-aggregation multigrid (PCGAMG) on
- *      K_W; then lambda_A = (C_A^T C_A)^-1 C_A^T (K_W U - f_W).  On the
- *      null space K_W is K: W only makes K_W positive definite for the
+ *      P M, M one V-cycle of smoothed-aggregation multigrid on K_W;
+ *      then lambda_A = (C_A^T C_A)^-1 C_A^T (K_W U - f_W).  On the null
+ *      space K_W is K: W only makes K_W positive definite for the
  *      multigrid (omega = LAC_PETSC_OMEGA, smaller than the augmented
- *      strategy's: a stiffer K_W is harder for the multigrid).  With
- *      contact, GAMG's graph of K_W's finest level loses the couplings
- *      of the contact nodes below LAC_PETSC_GAMG_THRESHOLD of the
- *      diagonal before it aggregates (linalg/lac_petsc_graph.h; every
- *      other coupling is kept): on the 1M-dof patch test 27 CG
- *      iterations instead of 62, the cube without contact 22 (chapter
- *      13, section 1).
+ *      strategy's: a stiffer K_W is harder for the multigrid).  The
+ *      multigrid's finest level is lac's (linalg/lac_petsc_mg.h: its
+ *      aggregates leave out the couplings of the contact nodes below
+ *      LAC_PETSC_CONTACT_THRESHOLD, and have no single nodes), PETSc's
+ *      GAMG the coarser ones: about 1.2 times the CG iterations of the
+ *      cube without contact (chapter 13, section 1).
  *   fieldsplit  GMRES on the whole of (*W), right preconditioned by the
  *      block factorization of PCFIELDSPLIT (Schur type, "upper"): K_W by
  *      one V-cycle of GAMG, the Schur complement S_W = C_A^T K_W^-1 C_A
@@ -69,30 +68,43 @@
  * (fem/lac_assembly_dist.h): the root broadcasts the mesh once (given by
  * set_mesh), PETSc's partitioner cuts the cells, each process adds its
  * cells' element matrices and the contact terms of the columns it owns,
- * PETSc adds the entries of the other processes' rows.  Without a mesh
- * (rigid plates, large deformation) the root adds K's entries.  The
- * solution comes back to the root alone.  An error on any process ends
- * the command on every process with that process's message.  One petsc
- * strategy at a time exists on the root when N > 1.
+ * PETSc adds the entries of the other processes' rows.  The K so
+ * assembled is checked against its cells (K x against the sum of the
+ * element matrices times x, for a probe x: lac_dist_check_stiffness)
+ * before it is used, so that the root's residuals, which take K x from
+ * it (kmul), judge the cells' system.  Without a mesh (rigid plates,
+ * large deformation) the root adds K's entries.  The solution comes back
+ * to the root alone.  An error on any process ends the command on every
+ * process with that process's message: each command ends with the
+ * agreement of every process on its status.  One petsc strategy at a
+ * time exists on the root when N > 1.
  *
  * Options: PETSc's, from the environment variable PETSC_OPTIONS and then
  * from the string given to lac_petsc_initialize (which wins).  The
  * multigrid of K_W (and the solver of K when k = 0) has the prefix
- * -elast_ (-elast_pc_type hypre: BoomerAMG), the projected CG none
- * (-ksp_monitor; its tolerance is the strategy's), C_A^T C_A -gram_;
- * fieldsplit: no prefix for GMRES, -fieldsplit_u_ and -fieldsplit_lambda_
- * for the blocks.  lac's own: -lac_contact projected|fieldsplit, -lac_omega
- * W (> 0).  The defaults are those of an elastic body: nothing to tune.
+ * -elast_ (-elast_pc_type hypre: BoomerAMG instead of lac's; lac's
+ * coarse GAMG: -elast_mg_coarse_), the projected CG none (-ksp_monitor;
+ * -pc_type none: the projections without the multigrid, another type
+ * is refused), C_A^T C_A -gram_; fieldsplit: no prefix for GMRES,
+ * -fieldsplit_u_ and -fieldsplit_lambda_ for the blocks.  The user's
+ * options win over lac's settings, as in PETSc: -ksp_rtol, -ksp_atol,
+ * -ksp_max_it of a Krylov method replace the strategy's tolerance and
+ * limit (the root's residuals still decide when Algorithm 1 stops).
+ * lac's own: -lac_contact projected|fieldsplit, -lac_omega W (finite, >
+ * 0), -lac_contact_threshold T (finite; < 0: no coupling left out),
+ * -lac_projection_steps N.  The defaults are those of an elastic body:
+ * nothing to tune.
  *
  * The operations of the type petsc of solve/lac_strategy.h: alloc starts
  * MPI and PETSc if nobody did (lac_petsc_initialize) and reads
- * -lac_contact and -lac_omega; set_coordinates (before set) gives the
- * rigid motions; set_mesh (before set) the cells K comes from; set
- * builds K_W's pattern (kept while the patterns of K and C stay; new
- * numbers: set again); solve's rtol is the relative
- * unpreconditioned residual of (*W); method says what solves, e.g.
- * "projected cg + gamg on K_W, 2 processes"; the counts give the
- * processes.  A build without PETSc (no LAC_HAVE_PETSC, chapter 13)
+ * -lac_contact, -lac_omega and -lac_contact_threshold (their build
+ * command carries them to the others); set_coordinates (before set)
+ * gives the rigid motions; set_mesh (before set) the cells K comes from;
+ * set builds K_W's pattern (kept while the patterns of K and C stay; new
+ * numbers: set again); solve's rtol is the relative unpreconditioned
+ * residual of (*W); method says what solves, e.g.
+ * "projected cg + lac-sa + gamg on K_W, 2 processes"; the counts give
+ * the processes.  A build without PETSc (no LAC_HAVE_PETSC, chapter 13)
  * compiles the same: alloc and lac_petsc_serve fail with LAC_EDEP and the
  * apt-get line.
  */
@@ -103,10 +115,9 @@
 #include "solve/lac_system.h"
 
 #define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */
-/* GAMG's threshold on the couplings of the contact nodes of K_W's finest
- * level (-lac_contact_threshold; chapter 13: 0.05 and 0.3 too small and
- * too large on the patch test, 0.08 to 0.2 alike) */
-#define LAC_PETSC_GAMG_THRESHOLD 0.1
+/* The multigrid's threshold on the couplings of the contact nodes of
+ * K_W's finest level (-lac_contact_threshold; chapter 13) */
+#define LAC_PETSC_CONTACT_THRESHOLD 0.1
 
 /* The processes other than the root: follow the root's commands until it
  * finalizes (lac_petsc_finalize).  LAC_SUCCESS then; an error if called

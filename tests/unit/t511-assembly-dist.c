@@ -8,7 +8,10 @@
  * interior cell with E = 0 left out by both); the same matrix from the root's K
  * (no mesh); K_W = K + C diag(dw) C^T and B = -C_A for a C of three
  * columns, one of them inactive (C given before the patterns are
- * made); then a change of dw added, where dw was 0.  One process:
+ * made); then a change of dw added, where dw was 0.  The check of K
+ * against the cells' element matrices (lac_dist_check_stiffness): to
+ * rounding, and an entry changed by 1e-6 of the largest seen; refused
+ * without the cells.  One process:
  * lac_petsc_agree gives back the status it is given.  Built without
  * PETSc: nothing to test (one check).  tests/cases-petsc.sh runs the
  * assembly on 2 and 4 processes (the same U and lambda) and injects a
@@ -190,6 +193,29 @@ contact (lac_dist *d, Mat Kw, Mat B, const lac_csc *K, const lac_csc *C,
   lac_csc_free (Bc);
 }
 
+/* K just assembled from the cells against their element matrices: to
+ * rounding; one entry of PETSc's matrix changed by 1e-6 of its largest,
+ * seen. */
+static void
+check_probe (lac_dist *d, Mat Kw, const char *name)
+{
+  double err = -1;
+  Mat W;
+  PetscReal big;
+  check_status (lac_dist_check_stiffness (d, Kw, &err), LAC_SUCCESS,
+                "%s: the check of K", name);
+  check_abs (err, 0.0, 1e-14, "%s: K x against the cells' sum", name);
+  MatDuplicate (Kw, MAT_COPY_VALUES, &W);
+  MatNorm (W, NORM_MAX, &big);
+  MatSetValue (W, 3, 3, 1e-6 * big, ADD_VALUES);
+  MatAssemblyBegin (W, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd (W, MAT_FINAL_ASSEMBLY);
+  check_status (lac_dist_check_stiffness (d, W, &err), LAC_SUCCESS,
+                "%s: the check of a changed K", name);
+  check_true (err > 1e-9, "%s: one entry changed by 1e-6: %.2g", name, err);
+  MatDestroy (&W);
+}
+
 /* One mesh: the cells' K_W and the root's K against K. */
 static void
 compare (lac_elem_type type, lac_model model, const size_t *nc,
@@ -235,6 +261,7 @@ compare (lac_elem_type type, lac_model model, const size_t *nc,
   R = from_csc (K);
   check_abs (mat_diff (Kw, R), 0.0, 1e-14, "%s: K from the cells", name);
   MatDestroy (&R);
+  check_probe (d, Kw, name);
   contact (d, Kw, B, K, C, name);
   MatDestroy (&Kw);
   MatDestroy (&B);
@@ -252,6 +279,9 @@ compare (lac_elem_type type, lac_model model, const size_t *nc,
   R = from_csc (K);
   check_abs (mat_diff (Kw, R), 0.0, 1e-15, "%s: K / kappa from the root's",
              name);
+  double err;
+  check_status (lac_dist_check_stiffness (d, Kw, &err), LAC_EINVAL,
+                "%s: no check without the cells", name);
   MatDestroy (&R);
   MatDestroy (&Kw);
   MatDestroy (&B);
