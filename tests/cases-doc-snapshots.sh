@@ -41,7 +41,7 @@ while IFS= read -r l; do
   case $l in
     "ok       "*) n=$((n+1)); at=${l#ok       }; ds_ok "doc-snapshot ${at%% *}" ;;
     DIFFERS*|FAILS*) n=$((n+1)); at=$(printf '%s' "$l" | awk '{ print $2 }')
-                     ds_fail "doc-snapshot $at" "$(sed -n "/^[A-Z]* *${at%%:*}:${at##*:}[ :]/,/^[a-zA-Z]/p" "$DS/cheap.log" | sed '$d')" ;;
+                     ds_fail "doc-snapshot $at" "$(sed -n "\#^[A-Z]* *${at%%:*}:${at##*:}[ :]#,\#^[a-zA-Z]#p" "$DS/cheap.log" | sed '$d')" ;;
   esac
 done < "$DS/cheap.log"
 if [ "$n" -lt 5 ] || ! tail -1 "$DS/cheap.log" | grep -q '^doc-snapshots: '; then

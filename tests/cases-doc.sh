@@ -117,7 +117,7 @@ while IFS= read -r line; do
 $(tail -5 "$DOC_TMP/act")"
       elif [ ! -s "$DOC_TMP/exp" ]; then
         doc_fail "doc-output $at" "the marker is not followed by a fenced block"
-      elif d=$("$DOC_NUMCMP" --rtol "$rt" --atol "$az" "$DOC_TMP/exp" "$DOC_TMP/act" 2>&1); then
+      elif d=$("$DOC_NUMCMP" --as-written --rtol "$rt" --atol "$az" "$DOC_TMP/exp" "$DOC_TMP/act" 2>&1); then
         doc_ok "doc-output $at"
       else
         doc_fail "doc-output $at" "$cmd prints what the block does not show (expected: the block):

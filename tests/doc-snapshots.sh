@@ -173,7 +173,7 @@ while IFS='	' read -r f n a c; do
   mi=$(attr "$a" machine)
   mask "$mi" < "$W/exp" > "$W/exp.m"; mask "$mi" < "$W/act" > "$W/act.m"
   rt=$(attr "$a" rtol); az=$(attr "$a" atol); it=$(attr "$a" int)
-  if d=$("$NUMCMP" --rtol "${rt:-1e-6}" --atol "${az:-1e-9}" --int "${it:-exact}" "$W/exp.m" "$W/act.m" 2>&1); then
+  if d=$("$NUMCMP" --as-written --rtol "${rt:-1e-6}" --atol "${az:-1e-9}" --int "${it:-exact}" "$W/exp.m" "$W/act.m" 2>&1); then
     nok=$((nok+1)); printf 'ok       %s:%s (%ss)\n' "$f" "$n" "$dt"
   elif [ -n "$UPDATE" ]; then
     if sh tests/doc-snapshot.sh "$f" "$n" "$W/act" > /dev/null; then
