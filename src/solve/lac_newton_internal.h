@@ -1,11 +1,14 @@
 /* lac_newton_internal.h -- the state of the loop of Algorithm 1, shared by
- *                          the loop (lac_newton.c) and its workspace
- *                          (lac_newton_work.c); not part of the API
+ *                          the loop (lac_newton.c), its workspace
+ *                          (lac_newton_work.c), the units of a column
+ *                          (lac_newton_units.c) and the friction steps
+ *                          (lac_newton_friction.c); not part of the API
  */
 #ifndef LAC_NEWTON_INTERNAL_H
 #define LAC_NEWTON_INTERNAL_H
 
 #include <stddef.h>
+#include "solve/lac_newton.h"
 #include "solve/lac_newton_rules.h"
 
 struct lac_linear_model;
@@ -54,5 +57,12 @@ struct lac_newton_work
   lac_line_search ls;
   struct lac_linear_model *lin;  /* lac_newton_solve_system's model        */
 };
+
+/* The units of column i (lac_newton_units.c): |T^m cap Gamma_C|, rho_i
+ * (the scale of lambda + rho d), and the scale of the terms its mean gap
+ * d_i was computed from. */
+double lac_newton_area (const lac_newton *s, size_t i);
+double lac_newton_rho (const lac_newton *s, size_t i);
+double lac_newton_gap_scale (const lac_newton *s, size_t i);
 
 #endif /* LAC_NEWTON_INTERNAL_H */
