@@ -27,13 +27,12 @@
 
 /* @sect The statuses of a loop, as letters
  *
- * One letter per macro-element of the slave surface: S for stick, s for
- * slip, . for open (solve/lac_friction.h). */
+ * One letter per macro-element of the slave surface into buf (of n
+ * bytes): S for stick, s for slip, . for open (solve/lac_friction.h). */
 static const char *
-statuses (const lac_newton *s)
+statuses (const lac_newton *s, char *buf, size_t n)
 {
-  static char buf[64];
-  size_t k = s->nslot < sizeof buf - 1 ? s->nslot : sizeof buf - 1;
+  size_t k = s->nslot < n - 1 ? s->nslot : n - 1;
   for (size_t i = 0; i < k; i++)
     buf[i] = s->active[i] == LAC_FRICTION_STICK ? 'S'
              : s->active[i] == LAC_FRICTION_SLIP ? 's' : '.';
@@ -52,7 +51,7 @@ statuses (const lac_newton *s)
 static int
 pull (double T)
 {
-  char set[64];
+  char set[64], st[64];
   const char *sets[1] = { set };
   lac_scene *sc = NULL;
   snprintf (set, sizeof set, "load.top.traction=%g -10", T / 20);
@@ -69,14 +68,14 @@ pull (double T)
       if (!s || s->nhist == (size_t) it)
         continue;                         /* another stage */
       it = (int) s->nhist;
-      printf ("  %2d  %-8s ", it, statuses (s));
+      printf ("  %2d  %-8s ", it, statuses (s, st, sizeof st));
       for (size_t m = 0; m < s->nslot; m++)
         printf (" %7.2f (%6.2f)", s->lambda[m], s->lambda_t[m]);
       printf ("\n");
     }
   if (status == LAC_SUCCESS)
     printf ("  converged: %s, friction_force = %s\n",
-            statuses (r->sol.newton),
+            statuses (r->sol.newton, st, sizeof st),
             lac_run_summary_get (r, "friction_force"));
   else
     printf ("  stopped: %s\n", lac_error_message ());
