@@ -607,6 +607,8 @@ say "fig13 ($(since "$t") s)"
 fi
 
 # ---- Figure 15 (chapter 15): Cattaneo-Mindlin, partial slip -------------
+# (the table of the three ratios in cattaneo.txt; the picture at 0.6, drawn
+# by lac render --contact --compare --srange)
 if want 15; then
 t=$(date +%s)
 LC=3; [ $QUICK = 1 ] && LC=0

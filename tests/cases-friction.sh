@@ -18,6 +18,9 @@
 #                  unsymmetric equations: GMRES preconditioned by their own
 #                  solve, solve/lac_rows.h) give the patch test's friction
 #                  force to 1e-10;
+#   render         lac render --contact of Cattaneo-Mindlin (level 1): the
+#                  tangential panel agrees with contact.csv; --compare,
+#                  --srange, and their bad values;
 #   bad input      friction = -1 and nan, friction with large deformation,
 #                  with method = nts: one line naming the key and the way
 #                  out, exit status 1.
@@ -150,6 +153,48 @@ for r in 0.3 0.6 0.9; do
   else fric_fail "cattaneo-$r" "levels 1 2 3: $line"
   fi
 done
+
+# ---- lac render --contact of a partial slip (level 1, Q / (mu P) = 0.6) ---------
+# The third panel: contact.dat has lambda_t and the stick flag of every
+# admissible macro-element of contact.csv, contact.gp draws lambda_t, mu
+# |lambda| (mu = 0.3 from summary.txt) and the shaded stick zone; --compare
+# and --srange reach the script; a bad compare file (exit 1, FILE:LINE) or
+# range (exit 2) leaves the picture as it was.
+d="$FC/cm-1-0.6"
+if [ -f "$d/contact.csv" ] && "$LAC" render "$d" --contact > "$FC/render.out" 2> "$FC/render.err" \
+   && [ "$(cat "$FC/render.out")" = "$d/contact.png" ] \
+   && awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+        $(c["admissible"]) == 1 { printf "%.10e %d\n", $(c["lambda_t"]), $(c["status"]) == "stick" }' \
+        "$d/contact.csv" | sort > "$FC/render-csv.txt" \
+   && awk '!/^#/ && NF && ++n % 2 == 0 { printf "%.10e %d\n", $5, $6 }' "$d/contact.dat" | sort > "$FC/render-dat.txt" \
+   && grep -q " 1$" "$FC/render-csv.txt" && grep -q " 0$" "$FC/render-csv.txt" \
+   && cmp -s "$FC/render-csv.txt" "$FC/render-dat.txt" \
+   && grep -q "layout 3,1" "$d/contact.gp" && grep -q "^mu = 0.3$" "$d/contact.gp" \
+   && grep -q "using 1:5 .*mu \* abs(\$2).*stick shaded" "$d/contact.gp"; then
+  fric_ok render-partial-slip
+else fric_fail render-partial-slip "$(cat "$FC/render.err") (contact.dat against contact.csv: $FC/render-*.txt)"
+fi
+printf '# a line\n3.4 -100\n3.6 -200\n' > "$FC/render-q.txt"
+printf '# a line\n3.4 -100\n3.6\n' > "$FC/render-bad.txt"
+cp "$d/contact.png" "$FC/render-before.png" 2> /dev/null
+if "$LAC" render "$d" --contact --compare "$FC/render-q.txt" --srange 3.3:3.9 \
+     > /dev/null 2>> "$FC/render.err" \
+   && grep -q "^set xrange \[3.3:3.9\]$" "$d/contact.gp" \
+   && grep -q "'contact-compare.dat' using 1:2 .* title 'a line'" "$d/contact.gp"; then
+  fric_ok render-compare-srange
+else fric_fail render-compare-srange "$(tail -1 "$FC/render.err")"
+fi
+cp "$d/contact.png" "$FC/render-before.png" 2> /dev/null
+"$LAC" render "$d" --contact --compare "$FC/render-bad.txt" > /dev/null 2> "$FC/render-bad.err"
+rc1=$?
+"$LAC" render "$d" --contact --srange 3.9:3.3 > /dev/null 2>> "$FC/render-bad.err"
+rc2=$?
+if [ $rc1 = 1 ] && [ $rc2 = 2 ] && grep -q "render-bad.txt:3: expected two numbers" "$FC/render-bad.err" \
+   && grep -q "srange '3.9:3.3': expected S0:S1" "$FC/render-bad.err" \
+   && cmp -s "$d/contact.png" "$FC/render-before.png"; then
+  fric_ok render-bad-compare-srange
+else fric_fail render-bad-compare-srange "exit $rc1, $rc2: $(cat "$FC/render-bad.err")"
+fi
 
 # ---- the path: monotone Q in 1 or 10 steps; unloading ---------------------------
 # Cattaneo's state does not depend on how Q grows at fixed P: P in one step,

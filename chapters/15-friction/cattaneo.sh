@@ -10,9 +10,10 @@
 # macro-elements in contact, c/a measured and Cattaneo's, the error of c in
 # %, the relative L2 error of the tangential traction, the most Newton
 # iterations of a load step.  Several minutes on two cores (level 3 has
-# 62k dofs).  FIG=file.png: the tangential traction of the finest level
-# at each ratio against Cattaneo's, with mu times the pressure and the
-# stick zone (gnuplot, pngcairo).
+# 62k dofs).  FIG=file.png: the finest level at Q / (mu P) = 0.6 (the
+# first ratio if 0.6 is not among them), FIG=fig-%s.png one picture per
+# ratio: `lac render --contact` of the run, zoomed on the contact zone,
+# with Cattaneo's tangential traction for comparison.
 B=${1:-build}
 LEVELS=${2:-"1 2 3"}
 RATIOS=${3:-"0.3 0.6 0.9"}
@@ -36,33 +37,54 @@ for L in $LEVELS; do
   done
 done
 
+# FIG: the finest level drawn by `lac render --contact`: lambda, the mean
+# gap and the tangential traction per macro-element, zoomed on the contact
+# zone, against Cattaneo's q written in render's abscissa s.  s runs over
+# the admissible macro-elements of the block's flat face from its end of
+# lower x, so s = x - x0 with x0 the lower end of the first of them (from
+# contact.csv); q takes the sign of lambda_t (the block's traction, against
+# the pull).  The picture is drawn in the run's directory, where render
+# leaves its data and script (traction.dat, traction.gp), and copied to FIG.
+draw_fig () {  # draw_fig RATIO PNG
+  d="$OUT/L$Lmax-$1"
+  [ -f "$d/contact.csv" ] || { echo "cattaneo.sh: no run $d for FIG" >&2; return 1; }
+  awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+    $(c["admissible"]) == 1 { x = $(c["x"]) - $(c["measure"]) / 2
+                              if (!n++ || x < x0) x0 = x
+                              f += $(c["lambda_t"]) * $(c["covered"]) }
+    END { printf "%.12g %d\n", x0, f < 0 ? -1 : 1 }' "$d/contact.csv" \
+    > "$d/origin.txt"
+  read x0 sign < "$d/origin.txt"
+  # Hertz: E* = E / (2 (1 - nu^2)), a = sqrt(4 P R / (pi E*)), p0 = 2 P /
+  # (pi a); Cattaneo: c = a sqrt(1 - Q / (mu P)), q = mu p0 sqrt(1 - x^2 /
+  # a^2) - mu p0 (c / a) sqrt(1 - x^2 / c^2) (the second term for |x| < c);
+  # 1201 points over |x| < 1.3 a, the range of s drawn
+  awk -v r="$1" -v x0="$x0" -v sg="$sign" -v range="$d/srange.txt" 'BEGIN {
+    pi = 3.14159265358979; Es = 200000 / (2 * (1 - 0.09)); mu = 0.3
+    a = sqrt(4 * 700 * 10 / (pi * Es)); p0 = 2 * 700 / (pi * a)
+    c = a * sqrt(1 - r)
+    printf "# Cattaneo q(x), c / a = %.4f\n", c / a
+    for (i = 0; i <= 1200; i++) {
+      x = -1.3 * a + 2.6 * a * i / 1200; q = 0
+      if (x * x < a * a) q = mu * p0 * sqrt(1 - x * x / (a * a))
+      if (x * x < c * c) q -= mu * p0 * (c / a) * sqrt(1 - x * x / (c * c))
+      printf "%.10e %.10e\n", x - x0, q == 0 ? 0 : sg * q }
+    printf "%.10g:%.10g\n", -1.3 * a - x0, 1.3 * a - x0 > range }' \
+    > "$d/cattaneo-q.txt"
+  "$B/lac" render "$d" --contact --compare "$d/cattaneo-q.txt" \
+    --srange "$(cat "$d/srange.txt")" --units MPa --width 900 --height 1000 \
+    --title "Cattaneo-Mindlin, quad8 level $Lmax, Q / (mu P) = $1" \
+    --out "$d/traction.png" > /dev/null && cp "$d/traction.png" "$2"
+}
+
 if [ -n "$FIG" ]; then
   Lmax=$(echo $LEVELS | awk '{ print $NF }')
-  n=$(echo $RATIOS | wc -w)
-  {
-    echo "set terminal pngcairo size $((520 * n)),560 font \"DejaVu Sans,12\" enhanced"
-    echo "set output '$FIG'"
-    echo "set multiplot layout 1,$n"
-    echo 'set xlabel "x (mm)"; set ylabel "traction (MPa)"; set key top center font ",10"; set offsets 0, 0, 170, 0'
-    echo 'Es = 200000 / (2 * (1 - 0.09)); a = sqrt(4 * 700 * 10 / (pi * Es)); p0 = 2 * 700 / (pi * a); mu = 0.3'
-    echo 'set xrange [-1.3 * a:1.3 * a]; set samples 600'
-    echo 'p(x) = abs(x) < a ? p0 * sqrt(1 - x * x / (a * a)) : 0'
-    for r in $RATIOS; do
-      d="$OUT/L$Lmax-$r"
-      awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
-        $(c["multiplier"]) != "" && $(c["status"]) != "inactive" {
-          w = $(c["covered"]) / 2; t = $(c["lambda_t"]); t = t < 0 ? -t : t
-          n = $(c["lambda"]); n = n < 0 ? -n : n
-          print $2 - w, $2 + w, t, 0.3 * n }' "$d/contact.csv" | sort -g |
-        awk '{ print $1, $3, $4; print $2, $3, $4; print "" }' \
-        > "$d/traction.dat"      # one segment per macro-element
-      echo "c = a * sqrt(1 - $r)"
-      echo "q(x) = abs(x) < c ? mu * p(x) - mu * p0 * (c / a) * sqrt(1 - x * x / (c * c)) : mu * p(x)"
-      echo "set title \"Q / ({/Symbol m} P) = $r, quad8 level $Lmax\""
-      echo "set object 1 rect from -c, graph 0 to c, graph 1 behind fc rgb '#e8f0ff' fs solid noborder"
-      echo "plot '$d/traction.dat' using 1:3 with lines lc rgb '#999999' lw 1.5 title '{/Symbol m} |{/Symbol l}_n|', '' using 1:2 with lines lc rgb '#d03030' lw 2 title '|{/Symbol l}_t|, LAC (shaded: Cattaneo stick zone)', q(x) with lines lc rgb 'black' dt 2 lw 2 title 'Cattaneo q(x)'"
-    done
-    echo 'unset multiplot'
-  } > "$OUT/cattaneo.gp"
-  gnuplot "$OUT/cattaneo.gp"
+  case $FIG in
+    *%s*) for r in $RATIOS; do
+            draw_fig "$r" "$(printf "$FIG" "$r")" || exit 1
+          done ;;
+    *) r=$(echo $RATIOS | awk '{ for (k = 1; k <= NF; k++) if ($k == 0.6) { print $k; exit }
+                                 print $1 }')
+       draw_fig "$r" "$FIG" || exit 1 ;;
+  esac
 fi

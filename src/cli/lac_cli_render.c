@@ -12,17 +12,21 @@
  *        constant per macro-element, drawn by gnuplot (pngcairo): the
  *        macro-elements are ordered along the curve by walking from an end
  *        to the nearest unvisited centroid, each spans its length
- *        (measure, or measure / (2 pi r) in the axisymmetric model); the
- *        data (.dat) and the script (.gp) are left next to the PNG so that
- *        they can be edited and replotted;
+ *        (measure, or measure / (2 pi r) in the axisymmetric model), and
+ *        non-admissible macro-elements between two of them leave a gap
+ *        (from contact.csv's column s); the data (.dat) and the script
+ *        (.gp) are left next to the PNG so that they can be edited and
+ *        replotted; with friction a third panel, the tangential traction
+ *        with Coulomb's bound and the stick zone; --compare FILE adds a
+ *        curve, --srange S0:S1 zooms;
  *    3D: the mesh in light grey and, seen through it, one disc per
  *        admissible macro-element at its centroid (moved by scale times the
  *        displacement of the nearest node), of the macro-element's area,
- *        coloured by lambda (contact.csv has no facets, so the slave
+ *        coloured by lambda, or by |lambda_t| with --field lambda_t
+ *        (contact.csv has no facets, so the slave
  *        surface itself cannot be drawn from the result directory; the
  *        library can, with lac_render_facets).
- * Non-admissible macro-elements have no centroid in contact.csv and are
- * left out of both contact views.
+ * Non-admissible macro-elements are left out of both contact views.
  *
  * This is command-line glue: it prints and runs gnuplot (fork, execvp);
  * the library files do not.
@@ -52,6 +56,8 @@ typedef struct render_args
                                --range, --box, --title, --units; the
                                defaults of lac_render_opts_init            */
   int auto_scale, contact, list;
+  int height_given;         /* --height: the frictional curves keep it   */
+  lac_cli_curves_opts curves;   /* --compare, --srange (2D --contact)    */
 } render_args;
 
 const char lac_cli_render_help[] =
@@ -94,10 +100,23 @@ const char lac_cli_render_help[] =
   "  --contact         draw the contact results of RESULT_DIR/contact.csv:\n"
   "                    in 2D the multiplier lambda (and its exact value) and\n"
   "                    the mean gap per macro-element against the\n"
-  "                    curvilinear abscissa along Gamma_C (gnuplot; the .dat\n"
-  "                    and .gp files are kept next to the PNG); in 3D the\n"
-  "                    mesh in grey with one disc per macro-element at its\n"
-  "                    centroid, coloured by lambda\n"
+  "                    curvilinear abscissa s along Gamma_C (gnuplot; the\n"
+  "                    .dat and .gp files are kept next to the PNG); s runs\n"
+  "                    over the admissible macro-elements, from 0 at the end\n"
+  "                    with the lower y (then the lower x), non-admissible\n"
+  "                    ones between them a gap; a run with\n"
+  "                    friction adds a third panel: the tangential traction\n"
+  "                    lambda_t, mu |lambda| dashed (mu from summary.txt)\n"
+  "                    and the sticking macro-elements shaded (900 pixels\n"
+  "                    high unless --height); in 3D the mesh in grey with\n"
+  "                    one disc per macro-element at its centroid, coloured\n"
+  "                    by lambda, or by |lambda_t| with --field lambda_t\n"
+  "  --compare FILE    with --contact in 2D: a black dashed curve from FILE\n"
+  "                    (lines 's value', '#' comment lines, the first one\n"
+  "                    the curve's title) in the lambda_t panel, or in the\n"
+  "                    lambda panel without friction\n"
+  "  --srange S0:S1    with --contact in 2D: the range of s in every panel\n"
+  "                    (a zoom on the contact zone)\n"
   "\n"
   "The path of the file written is printed on stdout.  Exit status: 0\n"
   "success, 1 failure (message 'lac: ...' on stderr), 2 bad command line.\n"
@@ -137,6 +156,16 @@ parse_box (const char *v, lac_render_opts *o)
          || (n == 6 && !(b[5] > b[4]));
 }
 
+/* "LO:HI", two finite numbers, LO below HI; 1 if malformed. */
+static int
+parse_interval (const char *v, double *lo, double *hi)
+{
+  char a[64];
+  const char *c = strchr (v, ':');
+  snprintf (a, sizeof a, "%.*s", c ? (int) (c - v) : 0, v);
+  return !c || !to_double (a, lo) || !to_double (c + 1, hi) || !(*hi > *lo);
+}
+
 /* The numeric options; 1 if argv[*k] was one, -1 on a bad value (the
  * usage line printed, naming the limit broken). */
 static int
@@ -158,6 +187,7 @@ numeric_option (int argc, char **argv, int *k, render_args *a, int *missing)
           *dst[i] = v;
         else
           *(i == 2 ? &a->opts.width : &a->opts.height) = (int) v;
+        a->height_given |= i == 3;
         return 1;
       }
   return 0;
@@ -187,14 +217,16 @@ parse_value_option (int argc, char **argv, int *k, render_args *a,
     *bad = parse_box (v, &a->opts);
   else if ((v = lac_cli_option_value (argc, argv, k, "--range", missing)))
     {
-      char lo[64];
-      const char *c = strchr (v, ':');
-      snprintf (lo, sizeof lo, "%.*s", c ? (int) (c - v) : 0, v);
-      *bad = !c || !to_double (lo, &a->opts.vmin)
-             || !to_double (c + 1, &a->opts.vmax)
-             || !(a->opts.vmax > a->opts.vmin);
+      *bad = parse_interval (v, &a->opts.vmin, &a->opts.vmax);
       a->opts.fixed_range = 1;
     }
+  else if ((v = lac_cli_option_value (argc, argv, k, "--srange", missing)))
+    {
+      *bad = parse_interval (v, &a->curves.s0, &a->curves.s1);
+      a->curves.srange = 1;
+    }
+  else if ((v = lac_cli_option_value (argc, argv, k, "--compare", missing)))
+    a->curves.compare = v;
   else
     return 0;
   return 1;
@@ -211,6 +243,9 @@ expected (const char *opt)
            "lower bound below its upper one";
   if (!strncmp (opt, "--range", 7))
     return "expected MIN:MAX, finite numbers, MIN below MAX";
+  if (!strncmp (opt, "--srange", 8))
+    return "expected S0:S1, finite numbers, S0 below S1 (the abscissa "
+           "along Gamma_C)";
   return "bad value";
 }
 
@@ -258,6 +293,15 @@ parse_args (int argc, char **argv, render_args *a)
     }
   if (!a->dir)
     return lac_cli_usage_error ("render", "no result directory given", NULL);
+  if ((a->curves.compare || a->curves.srange) && !a->contact)
+    return lac_cli_usage_error ("render", "--compare and --srange draw on "
+                                "the contact curves: --contact is needed "
+                                "with", a->curves.compare ? "--compare"
+                                : "--srange");
+  if (a->contact && a->field && strcmp (a->field, "lambda")
+      && strcmp (a->field, "lambda_t"))
+    return lac_cli_usage_error ("render", "with --contact, --field is "
+                                "lambda or lambda_t, not", a->field);
   if (a->vtu && a->contact)
     return lac_cli_usage_error ("render", "--contact draws contact.csv, "
                                 "the last step: not with", "--vtu");
@@ -379,7 +423,8 @@ draw_field (const render_args *a, const lac_render_result *res,
   return status;
 }
 
-/* 3D: discs at the centroids, moved with the nearest node. */
+/* 3D: discs at the centroids, moved with the nearest node, coloured by
+ * lambda, or by |lambda_t| with --field lambda_t. */
 static int
 draw_contact_3d (const render_args *a, const lac_render_result *res,
                  const double *u, double scale, const macro_rows *rows,
@@ -390,7 +435,7 @@ draw_contact_3d (const render_args *a, const lac_render_result *res,
     *rad = lac_malloc (rows->n * sizeof *rad);
   char title[1024];
   lac_render_opts o;
-  int status;
+  int status, tangential;
   if (!xyz || !rad)
     {
       lac_free (xyz);
@@ -415,25 +460,55 @@ draw_contact_3d (const render_args *a, const lac_render_result *res,
                                   + scale * u[3 * best + (size_t) i];
       rad[k] = 0.9 * sqrt (rows->meas[k] / 3.14159265358979323846);
     }
-  fill_opts (a, scale, "lambda per macro-element", title, sizeof title, &o);
-  o.label = "lambda";
-  status = lac_render_points (m, u, rows->n, xyz, rad, rows->lam, &o, out);
+  tangential = a->field && !strcmp (a->field, "lambda_t");
+  fill_opts (a, scale, tangential ? "|lambda_t| per macro-element"
+             : "lambda per macro-element", title, sizeof title, &o);
+  o.label = tangential ? "|lambda_t|" : "lambda";
+  status = lac_render_points (m, u, rows->n, xyz, rad,
+                              tangential ? rows->lt : rows->lam, &o, out);
   lac_free (xyz);
   lac_free (rad);
   return status;
 }
 
-/* 2D: lambda and the mean gap along Gamma_C, drawn by gnuplot. */
+/* 2D: lambda and the mean gap along Gamma_C, and with friction the
+ * tangential traction (900 pixels high unless --height), drawn by
+ * gnuplot. */
 static int
 draw_curves (const render_args *a, const lac_render_result *res,
              const macro_rows *rows, const char *out)
 {
   char scene[512];
   lac_render_opts o = a->opts;
+  lac_cli_curves_opts c = a->curves;
   lac_cli_result_title (a->dir, scene, sizeof scene);
   if (!o.title)
     o.title = scene;
-  return lac_cli_render_curves (rows, res, &o, out);
+  if (rows->friction && !a->height_given)
+    o.height = 900;
+  if (!lac_cli_result_mu (a->dir, &c.mu))
+    c.mu = 0;
+  return lac_cli_render_curves (rows, res, &o, &c, out);
+}
+
+/* What the options ask of the contact results that they cannot give: a
+ * 2D option on a 3D result, lambda_t without friction. */
+static int
+contact_mismatch (const render_args *a, int dim, const macro_rows *rows)
+{
+  char csv[4200];
+  if (dim == 3 && (a->curves.compare || a->curves.srange))
+    return lac_error_place (LAC_EINVAL, a->curves.compare ? "--compare"
+                            : "--srange", "the curves along Gamma_C are "
+                            "drawn in 2D only, and %s is a 3D result",
+                            a->dir);
+  snprintf (csv, sizeof csv, "%s/contact.csv", a->dir);
+  if (a->field && !strcmp (a->field, "lambda_t") && !rows->friction)
+    return lac_error_place (LAC_EINVAL, csv, "no tangential multiplier "
+                            "(columns lambda_t or lambda_t1, lambda_t2, and "
+                            "status: a run with friction) for --field "
+                            "lambda_t");
+  return LAC_SUCCESS;
 }
 
 /* ---- the command ---------------------------------------------------------- */
@@ -459,7 +534,8 @@ render_result (const render_args *a, const lac_render_result *res,
     scale = auto_scale (m, u);
   if (!a->contact)
     status = draw_field (a, res, u, scale, out);
-  else if (!(status = lac_cli_result_contact (a->dir, &rows)))
+  else if (!(status = lac_cli_result_contact (a->dir, &rows))
+           && !(status = contact_mismatch (a, m->dim, &rows)))
     status = m->dim == 2 ? draw_curves (a, res, &rows, out)
              : draw_contact_3d (a, res, u, scale, &rows, out);
   lac_cli_result_contact_free (&rows);

@@ -51,6 +51,18 @@ lac_cli_result_title (const char *dir, char *buf, size_t len)
   snprintf (buf, len, "%.*s", (int) (dir + n - p), p);
 }
 
+/* Coulomb's mu from the effects line of DIR/summary.txt. */
+int
+lac_cli_result_mu (const char *dir, double *mu)
+{
+  char effects[1024], *p, *end;
+  if (!summary_value (dir, "effects", effects, sizeof effects)
+      || !(p = strstr (effects, "mu = ")))
+    return 0;
+  *mu = strtod (p + 5, &end);
+  return end != p + 5 && isfinite (*mu) && *mu > 0;
+}
+
 /* Free the arrays of r (not r). */
 void
 lac_cli_result_contact_free (macro_rows *r)
@@ -60,33 +72,57 @@ lac_cli_result_contact_free (macro_rows *r)
   lac_free (r->lam);
   lac_free (r->lex);
   lac_free (r->gap);
+  lac_free (r->lt);
+  lac_free (r->status);
+  lac_free (r->sc);
 }
 
-/* Column index of each wanted name in the CSV header line. */
+/* The columns of contact.csv that render reads; the required ones first. */
+enum { C_X, C_Y, C_Z, C_MEAS, C_ADM, C_LAM, C_GAP, NREQUIRED = C_GAP + 1,
+       C_LEX = NREQUIRED, C_LT, C_LT1, C_LT2, C_STATUS, C_S, NCOLS };
+static const char *const column_names[NCOLS] = {
+  "x", "y", "z", "measure", "admissible", "lambda", "mean_gap",
+  "lambda_exact", "lambda_t", "lambda_t1", "lambda_t2", "status", "s" };
+
+/* Column index of each wanted name in the CSV header line; the first
+ * required one missing, or -1. */
 static int
-csv_columns (char *head, const char *const *want, int nwant, int *col)
+csv_columns (char *head, int *col)
 {
   int k = 0;
-  for (int i = 0; i < nwant; i++)
+  for (int i = 0; i < NCOLS; i++)
     col[i] = -1;
   for (char *t = strtok (head, ",\r\n"); t; t = strtok (NULL, ",\r\n"), k++)
-    for (int i = 0; i < nwant; i++)
-      if (!strcmp (t, want[i]))
+    for (int i = 0; i < NCOLS; i++)
+      if (!strcmp (t, column_names[i]))
         col[i] = k;
-  for (int i = 0; i < nwant; i++)
-    if (col[i] < 0 && i != 6)                /* lambda_exact: optional */
+  for (int i = 0; i < NREQUIRED; i++)
+    if (col[i] < 0)
       return i;
   return -1;
 }
 
+/* One row: the numbers by column (NaN: empty or no such column) and the
+ * status. */
+typedef struct csv_row
+{
+  double v[NCOLS];
+  signed char status;
+} csv_row;
+
 static int
-rows_add (macro_rows *r, size_t *cap, const double *v)
+rows_add (macro_rows *r, size_t *cap, const csv_row *w)
 {
   if (r->n == *cap)
     {
       size_t c = *cap ? 2 * *cap : 64;
-      double **dst[5] = { &r->x, &r->meas, &r->lam, &r->lex, &r->gap };
-      for (int i = 0; i < 5; i++)
+      double **dst[7] = { &r->x, &r->meas, &r->lam, &r->lex, &r->gap,
+                          &r->lt, &r->sc };
+      signed char *st = lac_realloc (r->status, c);
+      if (!st)
+        return LAC_ERRMSG (LAC_ENOMEM, "out of memory");
+      r->status = st;
+      for (int i = 0; i < 7; i++)
         {
           double *p = lac_realloc (*dst[i], (i ? 1 : 3) * c * sizeof *p);
           if (!p)
@@ -95,24 +131,58 @@ rows_add (macro_rows *r, size_t *cap, const double *v)
         }
       *cap = c;
     }
-  memcpy (r->x + 3 * r->n, v, 3 * sizeof *v);
-  r->meas[r->n] = v[3];
-  r->lam[r->n] = v[5];
-  r->lex[r->n] = v[6];
-  r->gap[r->n++] = v[7];
+  for (int i = 0; i < 3; i++)                    /* no coordinate: 0 */
+    r->x[3 * r->n + (size_t) i] = isnan (w->v[C_X + i]) ? 0 : w->v[C_X + i];
+  r->meas[r->n] = isnan (w->v[C_MEAS]) ? 0 : w->v[C_MEAS];
+  r->lam[r->n] = isnan (w->v[C_LAM]) ? 0 : w->v[C_LAM];
+  r->lex[r->n] = w->v[C_LEX];
+  r->gap[r->n] = isnan (w->v[C_GAP]) ? 0 : w->v[C_GAP];
+  r->lt[r->n] = r->friction && isnan (w->v[C_LT])   /* 3D: the modulus */
+                ? hypot (w->v[C_LT1], w->v[C_LT2]) : w->v[C_LT];
+  r->sc[r->n] = w->v[C_S];
+  r->status[r->n++] = w->status;
   return LAC_SUCCESS;
+}
+
+/* The fields of one line of contact.csv (modified in place) into *w; 0,
+ * or 1 if the status is none of stick, slip, inactive (then *bad points to
+ * it). */
+static int
+csv_row_read (char *line, const int *col, csv_row *w, const char **bad)
+{
+  int k = 0, wrong = 0;
+  for (int i = 0; i < NCOLS; i++)
+    w->v[i] = NAN;
+  w->status = LAC_CLI_NO_STATUS;
+  for (char *t = line; t; k++)          /* empty fields: no value */
+    {
+      char *e = t + strcspn (t, ",\r\n");
+      int last = *e != ',';
+      *e = '\0';
+      for (int i = 0; i < NCOLS; i++)
+        if (col[i] == k && *t && i != C_STATUS)
+          w->v[i] = strtod (t, NULL);
+        else if (col[i] == k && *t)
+          {
+            w->status = !strcmp (t, "stick") ? LAC_CLI_STICK
+                        : !strcmp (t, "slip") ? LAC_CLI_SLIP
+                        : !strcmp (t, "inactive") ? LAC_CLI_INACTIVE
+                        : LAC_CLI_NO_STATUS;
+            if (w->status == LAC_CLI_NO_STATUS && !wrong)
+              wrong = 1, *bad = t;
+          }
+      t = last ? NULL : e + 1;
+    }
+  return wrong;
 }
 
 /* The admissible rows of DIR/contact.csv. */
 int
 lac_cli_result_contact (const char *dir, macro_rows *r)
 {
-  static const char *const want[8] = { "x", "y", "z", "measure",
-                                       "admissible", "lambda",
-                                       "lambda_exact", "mean_gap" };
   char path[4096], line[4096];
-  int col[8], miss, status = LAC_SUCCESS;
-  size_t cap = 0;
+  int col[NCOLS], miss, status = LAC_SUCCESS;
+  size_t cap = 0, lineno = 1;
   FILE *fp;
   memset (r, 0, sizeof *r);
   snprintf (path, sizeof path, "%s/contact.csv", dir);
@@ -135,28 +205,29 @@ lac_cli_result_contact (const char *dir, macro_rows *r)
       fclose (fp);
       LAC_ERROR (LAC_EIO, "'%s' is empty", path);
     }
-  if ((miss = csv_columns (line, want, 8, col)) >= 0)
+  if ((miss = csv_columns (line, col)) >= 0)
     {
       fclose (fp);
       LAC_ERROR (LAC_EIO, "'%s': no column '%s' in the header", path,
-                 want[miss]);
+                 column_names[miss]);
     }
+  r->friction = col[C_STATUS] >= 0
+                && (col[C_LT] >= 0 || (col[C_LT1] >= 0 && col[C_LT2] >= 0));
   while (!status && fgets (line, sizeof line, fp))
     {
-      double v[8] = { 0, 0, 0, 0, 0, 0, NAN, 0 };
-      int k = 0;
-      for (char *t = line; t; k++)          /* empty fields: no value */
+      csv_row w;
+      const char *bad = NULL;
+      lineno++;
+      if (csv_row_read (line, col, &w, &bad))
         {
-          char *e = t + strcspn (t, ",\r\n");
-          int last = *e != ',';
-          *e = '\0';
-          for (int i = 0; i < 8; i++)
-            if (col[i] == k && *t)
-              v[i] = strtod (t, NULL);
-          t = last ? NULL : e + 1;
+          char where[4200];
+          snprintf (where, sizeof where, "%s:%zu", path, lineno);
+          status = lac_error_place (LAC_EIO, where, "status '%.40s': "
+                                    "expected stick, slip or inactive",
+                                    bad);
         }
-      if (v[4] != 0)
-        status = rows_add (r, &cap, v);
+      else if (!isnan (w.v[C_ADM]) && w.v[C_ADM] != 0)
+        status = rows_add (r, &cap, &w);
     }
   fclose (fp);
   if (!status && r->n == 0)
@@ -164,4 +235,3 @@ lac_cli_result_contact (const char *dir, macro_rows *r)
                          "macro-element", path);
   return status;
 }
-

@@ -9,6 +9,15 @@
  * the fields, frames a given --box, and rejects bad command lines (exit
  * status 2) and bad
  * results (1).  Its stdout and stderr go to /dev/null.
+ *
+ * With friction (contact.csv with lambda_t and status, mu in summary.txt's
+ * effects line) the 2D curves have a third panel: the .dat carries
+ * lambda_t and the stick flag of each macro-element as contact.csv has
+ * them, the .gp draws lambda_t, mu |lambda| and one shaded rectangle per
+ * run of sticking macro-elements; --compare FILE adds its curve (to the
+ * lambda panel without friction), --srange fixes the range of s; a bad
+ * compare file or range leaves the earlier picture, data and script as
+ * they were.  In 3D, --field lambda_t colours the discs by |lambda_t|.
  */
 #include <fcntl.h>
 #include <math.h>
@@ -85,6 +94,47 @@ write_file (const char *dir, const char *name, const char *text)
     }
 }
 
+/* The whole file DIR/NAME as a string (malloc'd), or NULL; its size in
+ * *size when size is not NULL. */
+static char *
+slurp_n (const char *dir, const char *name, size_t *size)
+{
+  char path[700], *buf = NULL;
+  long n = 0;
+  FILE *fp;
+  snprintf (path, sizeof path, "%s/%s", dir, name);
+  if (!(fp = fopen (path, "rb")))
+    return NULL;
+  if (fseek (fp, 0, SEEK_END) == 0 && (n = ftell (fp)) >= 0
+      && fseek (fp, 0, SEEK_SET) == 0 && (buf = malloc ((size_t) n + 1)))
+    buf[fread (buf, 1, (size_t) n, fp)] = '\0';
+  fclose (fp);
+  if (size)
+    *size = (size_t) n;
+  return buf;
+}
+
+static char *
+slurp (const char *dir, const char *name)
+{
+  return slurp_n (dir, name, NULL);
+}
+
+/* The line of text that contains needle (its first one), or "". */
+static const char *
+line_with (const char *text, const char *needle, char *buf, size_t len)
+{
+  const char *p = text ? strstr (text, needle) : NULL, *a, *b;
+  buf[0] = '\0';
+  if (!p)
+    return buf;
+  for (a = p; a > text && a[-1] != '\n'; a--)
+    ;
+  b = strchr (p, '\n');
+  snprintf (buf, len, "%.*s", (int) (b ? b - a : (long) strlen (a)), a);
+  return buf;
+}
+
 static int
 png_size (const char *path, int *w, int *h)
 {
@@ -128,6 +178,164 @@ write_result (const char *dir, lac_mesh *m, lac_model model)
   lac_free (u);
   lac_free (s);
   lac_free (vm);
+}
+
+/* Every bad option value or compare file: the exit status, and the
+ * picture, data and script of the run before left as they were. */
+static void
+bad_curves (const char *dir)
+{
+  static const char *const files[3] = { "contact.png", "contact.gp",
+                                        "contact.dat" };
+  char *before[3], one[600], nan_[600], none[600];
+  size_t nb[3], na;
+  snprintf (one, sizeof one, "%s/one.txt", dir);
+  snprintf (nan_, sizeof nan_, "%s/nan.txt", dir);
+  snprintf (none, sizeof none, "%s/missing.txt", dir);
+  write_file (dir, "one.txt", "# title\n0 1\n5\n");
+  write_file (dir, "nan.txt", "0 nan\n");
+  for (int i = 0; i < 3; i++)
+    before[i] = slurp_n (dir, files[i], &nb[i]);
+  check_int (cli (dir, "--contact", "--compare", none, NULL, NULL), 1,
+             "compare: no such file");
+  check_message ("missing.txt", "the message names the file");
+  check_int (cli (dir, "--contact", "--compare", one, NULL, NULL), 1,
+             "compare: a line with one number");
+  check_message ("one.txt:3:", "the message names the file and the line");
+  check_int (cli (dir, "--contact", "--compare", nan_, NULL, NULL), 1,
+             "compare: nan");
+  check_message ("nan.txt:1:", "the message names the file and the line");
+  check_int (cli (dir, "--contact", "--srange", "3:1", NULL, NULL), 2,
+             "srange: S0 > S1");
+  check_int (cli (dir, "--contact", "--srange", "1:1", NULL, NULL), 2,
+             "srange: S0 = S1");
+  check_int (cli (dir, "--contact", "--srange", "nan:1", NULL, NULL), 2,
+             "srange: nan");
+  check_int (cli (dir, "--contact", "--srange=0:inf", NULL, NULL, NULL), 2,
+             "srange: inf");
+  check_int (cli (dir, "--contact", "--srange", "1", NULL, NULL), 2,
+             "srange: one number");
+  check_int (cli (dir, "--srange", "0:1", NULL, NULL, NULL), 2,
+             "srange without --contact");
+  check_int (cli (dir, "--compare", one, NULL, NULL, NULL), 2,
+             "compare without --contact");
+  for (int i = 0; i < 3; i++)
+    {
+      char *after = slurp_n (dir, files[i], &na);
+      check_true (before[i] && after && na == nb[i] && na > 100
+                  && !memcmp (before[i], after, na), "%s/%s left as it was",
+                  dir, files[i]);
+      free (after);
+      free (before[i]);
+    }
+}
+
+/* Without friction: two panels, the compare curve with lambda. */
+static void
+test_2d_compare (const char *dir)
+{
+  char cmp[600], line[2048], *gp = slurp (dir, "contact.gp");
+  check_true (gp && strstr (gp, "layout 2,1") && !strstr (gp, "compare")
+              && !strstr (gp, "lambda_t"), "frictionless contact.gp: two "
+              "panels");
+  free (gp);
+  write_file (dir, "cmp.txt", "1 -10\n30 -15\n");
+  snprintf (cmp, sizeof cmp, "%s/cmp.txt", dir);
+  check_int (cli (dir, "--contact", "--compare", cmp, NULL, NULL), 0,
+             "frictionless --compare");
+  gp = slurp (dir, "contact.gp");
+  check_true (gp && strstr (line_with (gp, "'{/Symbol l} per macro-element'",
+                                       line, sizeof line),
+                            "'contact-compare.dat' using 1:2")
+              && strstr (line, "title 'cmp.txt'")
+              && !strstr (gp, "layout 3,1"), "frictionless contact.gp: the "
+              "compare curve with lambda, titled by the file's name");
+  free (gp);
+  bad_curves (dir);
+}
+
+/* A frictional run along the arc of test_2d: statuses and lambda_t per
+ * macro-element k (k from the equator), mu = 0.25 in summary.txt; the
+ * column s puts a non-admissible macro-element of the same length between
+ * k = 2 and 3: a gap in s. */
+static void
+test_2d_friction (lac_mesh *m)
+{
+  static const char *const status[6] = { "slip", "stick", "stick", "slip",
+                                         "inactive", "stick" };
+  char dir[512], csv[2048], *p = csv, cmp[600], line[2048], *gp;
+  int w, h, ok = 1;
+  FILE *fp;
+  snprintf (dir, sizeof dir, "%s", t8_path ("t805-2d-friction"));
+  write_result (dir, m, LAC_AXISYMMETRIC);
+  write_file (dir, "summary.txt", "title = t805 friction\n"
+              "effects = axisymmetric, Coulomb friction (LAC; mu = 0.25), "
+              "small strain\n");
+  p += sprintf (p, "macro,x,y,z,measure,covered,criterion,admissible,"
+                "multiplier,lambda,lambda_exact,mean_gap,active,s,lambda_t,"
+                "status,slip,pair\n");
+  for (int j = 0; j < 6; j++)
+    {
+      int k = (int[]) { 3, 0, 5, 1, 4, 2 }[j];
+      double th = (k + 0.5) * PI / 12, len = 20 * PI / 12;
+      p += sprintf (p, "%d,%.10e,%.10e,,%.10e,1,0.6,1,%d,%g,,0,1,%.10e,%g,%s,"
+                    "0,i\n", j, 20 * cos (th), 20 * sin (th),
+                    2 * PI * 20 * cos (th) * len, j, -10.0 - k,
+                    (k + 0.5 + (k >= 3)) * len, 0.5 + k, status[k]);
+    }
+  write_file (dir, "contact.csv", csv);
+  check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 0,
+             "2D contact curves with friction");
+  snprintf (cmp, sizeof cmp, "%s/contact.png", dir);
+  check_true (png_size (cmp, &w, &h) && w == 800 && h == 900,
+              "%s: 800 x 900 (three panels)", cmp);
+  snprintf (cmp, sizeof cmp, "%s/contact.dat", dir);
+  fp = fopen (cmp, "r");
+  check_true (fp && fgets (line, sizeof line, fp)
+              && strstr (line, "lambda_t  stick"), "%s: columns", cmp);
+  for (int r = 0; fp && r < 12; r++)          /* two rows per macro */
+    {
+      double v[5], ds = 20 * PI / 12;
+      int stick = -1, k = r / 2;
+      ok &= fscanf (fp, "%lf %lf %lf %lf %lf %d", &v[0], &v[1], &v[2], &v[3],
+                    &v[4], &stick) == 6
+            && fabs (v[0] - (k + r % 2 + (k >= 3)) * ds) < 1e-6
+            && v[1] == -10.0 - k && v[4] == 0.5 + k
+            && stick == !strcmp (status[k], "stick");
+    }
+  check_true (ok, "%s: lambda, lambda_t and stick of contact.csv, in "
+              "order along the arc, a gap before k = 3", cmp);
+  if (fp)
+    fclose (fp);
+  gp = slurp (dir, "contact.gp");
+  check_true (gp && strstr (gp, "layout 3,1") && strstr (gp, "mu = 0.25\n")
+              && strstr (line_with (gp, "using 1:5", line, sizeof line),
+                         "'' using 1:(mu * abs($2))")
+              && strstr (line, "stick shaded"), "contact.gp: the third "
+              "panel, lambda_t, +mu |lambda| (lambda_t > 0)");
+  check_true (gp && strstr (gp, "set object 1 rect") && strstr (gp,
+              "set object 2 rect") && !strstr (gp, "set object 3"),
+              "contact.gp: two runs of sticking macro-elements shaded");
+  free (gp);
+  write_file (dir, "cmp.txt", "# closed form q(s)\n0 1\n# more\n\n"
+              "10\t2.5\n20.5 3\n");
+  snprintf (cmp, sizeof cmp, "%s/cmp.txt", dir);
+  check_int (cli (dir, "--contact", "--compare", cmp, "--srange", "1:3.5"),
+             0, "--compare, --srange");
+  gp = slurp (dir, "contact.gp");
+  check_true (gp && strstr (line_with (gp, "using 1:5", line, sizeof line),
+                            "'contact-compare.dat' using 1:2")
+              && strstr (line, "'closed form q(s)'")
+              && strstr (gp, "set xrange [1:3.5]\n"), "contact.gp: the "
+              "compare curve in the lambda_t panel, the range of s");
+  free (gp);
+  gp = slurp (dir, "contact-compare.dat");
+  check_true (gp && !strcmp (gp, "# closed form q(s)\n0.0000000000e+00 "
+                             "1.0000000000e+00\n1.0000000000e+01 "
+                             "2.5000000000e+00\n2.0500000000e+01 "
+                             "3.0000000000e+00\n"), "contact-compare.dat");
+  free (gp);
+  bad_curves (dir);
 }
 
 static void
@@ -205,6 +413,8 @@ test_2d (void)
             }
           fclose (fp);
         }
+      test_2d_compare (dir);
+      test_2d_friction (m);
     }
 
   /* bad command lines and results */
@@ -294,6 +504,26 @@ test_3d (void)
              "3D |u|");
   snprintf (png, sizeof png, "%s/u.png", dir);
   check_true (png_size (png, &w, &h), "%s", png);
+  check_int (cli (dir, "--contact", "--field", "lambda_t", NULL, NULL), 1,
+             "3D --field lambda_t without friction");
+  check_message ("no tangential multiplier", "lambda_t: message");
+  check_int (cli (dir, "--contact", "--srange", "0:1", NULL, NULL), 1,
+             "3D --srange");
+  write_file (dir, "contact.csv",
+              "macro,x,y,z,measure,admissible,lambda,mean_gap,lambda_t1,"
+              "lambda_t2,status\n"
+              "0,0.5,0.5,1,1,1,-25,0,3,4,slip\n1,1.5,0.5,1,1,1,-24,0,0,1,"
+              "stick\n2,0.5,1.5,1,1,1,-23,0,0,0,inactive\n"
+              "3,1.5,1.5,1,1,1,-22,0,1,0,stick\n");
+  check_int (cli (dir, "--contact", "--field", "lambda_t", NULL, NULL), 0,
+             "3D discs coloured by |lambda_t|");
+  check_true (png_size (png, &w, &h) && w == 800, "%s", png);
+  write_file (dir, "contact.csv",
+              "macro,x,y,z,measure,admissible,lambda,mean_gap,status\n"
+              "0,0.5,0.5,1,1,1,-25,0,stuck\n");
+  check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 1,
+             "a status that is not stick, slip, inactive");
+  check_message ("contact.csv:2:", "the message names the line");
   test_box (dir);
   write_file (dir, "contact.csv", "macro,x,y\n");
   check_int (cli (dir, "--contact", NULL, NULL, NULL, NULL), 1,
