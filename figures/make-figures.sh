@@ -1,8 +1,8 @@
 #!/bin/sh
 # make-figures.sh -- regenerate figures/: the counterparts of the paper's
 # Figure 2 (the refinement of the first layer, chapter 03) and Figures
-# 3-11 [LAC §5], several contact pairs (Figure 13, chapter 06) and the
-# accuracy-cost study (chapter 12).
+# 3-11 [LAC §5], several contact pairs (Figure 13, chapter 06), a compound
+# ring (Figure 16, chapter 16) and the accuracy-cost study (chapter 12).
 #
 #   sh figures/make-figures.sh [BUILD_DIR] [--quick] [--out DIR] [--no-bench]
 #
@@ -617,6 +617,22 @@ FIG="$OUT/fig15-cattaneo-traction.png" \
   > "$W/cattaneo.txt" 2> "$W/cattaneo.err" \
   || fail "chapters/15-friction/cattaneo.sh: $(tail -1 "$W/cattaneo.err")"
 say "fig15 ($(since "$t") s)"
+fi
+
+# ---- Figure 16 (chapter 16): a compound ring, two pairs, a roller -------
+if want 16; then
+t=$(date +%s)
+C16=chapters/16-setups/compound.scene
+LR=1; [ $QUICK = 1 ] && LR=0
+if frun compound $C16 --set level=$LR --edges \
+     --title "compound ring, two pairs: lambda on the slave sub-facets" \
+     --label lambda --units MPa --draw lambda "$OUT/fig16-compound-lambda.png" \
+   && run compound-run $C16 --set level=$LR; then
+  render compound-run fig16-compound-von-mises.png --field von_mises --edges \
+    --units MPa --scale 200 \
+    --title "compound ring (quad8): von Mises, deformed x200"
+fi
+say "fig16 ($(since "$t") s)"
 fi
 
 # ---- the accuracy-cost study (chapter 12) ----------------------------------

@@ -58,7 +58,7 @@ else
            fig06-spheres3d-tet10-sigma-rr fig06-spheres3d-tet10-lambda \
            fig07-manufactured2d-quad8-u fig08-manufactured3d-hex20-u \
            fig08-manufactured3d-hex20-lambda fig13-blocks-quad4-von-mises \
-           fig13-blocks-quad4-lambda; do
+           fig13-blocks-quad4-lambda fig16-compound-lambda fig16-compound-von-mises; do
     png_check "png-$f" "$C/png/$f.png" 800 600 0.10 100
   done
   # a gnuplot chart: 900 x 620, curves and text

@@ -1,6 +1,6 @@
 # tests/cases-pairs.sh -- several contact pairs (sourced by tests/run.sh)
 #
-# The scenes of chapter 06, section 5, through `lac run`:
+# The scenes of chapter 16, sections 1-2 (in chapters/06-assembly), through `lac run`:
 #   stacked   three stacked blocks, two non-matching interfaces (two
 #             [contact] sections, the middle block slave of one and master
 #             of the other, held by contact alone), the ten element types,
@@ -23,7 +23,7 @@
 #   outputs   the per-pair keys of the summary, the pair column of
 #             contact.csv, the pair field of contact.vtu;
 #   rollers   the stacked blocks turned by 30 degrees on rollers, with an
-#             interference on each pair (chapter 06, sections 5 and 6
+#             interference on each pair (chapter 16, sections 1-5
 #             together), small strain and large deformation;
 #   bad       the roles of the pairs checked, messages naming the section.
 # Same conventions as tests/cases.sh ($B, pass, fail).

@@ -1,7 +1,7 @@
 # tests/cases-steps.sh -- load steps and load curves in small strain
 #                         (sourced by tests/run.sh)  [LAC §4.5, Alg. 1]
 #
-# Checked through `lac run` (chapter 08, section 7):
+# Checked through `lac run` (chapter 16, section 6):
 #   - frictionless small strain has no memory: chapter 07's cylinder on a
 #     flat pressed in 10 steps, the 3D patch test of chapter 08 and the
 #     manufactured solution of chapter 09 (non-zero Dirichlet values on

@@ -1,4 +1,4 @@
-// shrink-fit.geo -- two concentric rings, a sector of them    (chapter 08, 7)
+// shrink-fit.geo -- two concentric rings, a sector of them    (chapter 16, 5)
 //
 // An inner ring a < r < b and an outer ring b < r < c, drawn with the same
 // radius b at the interface (the interference is the scene's [contact]
