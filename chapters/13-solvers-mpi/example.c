@@ -7,7 +7,8 @@
  *                                of chapter 08)
  *               mpirun -n 2 build/chapters/13-solvers-mpi  (part 1 on two
  *                                processes; as root Open MPI also wants
- *                                --allow-run-as-root)
+ *                                --allow-run-as-root, which
+ *                                chapters/13-solvers-mpi/mpirun.sh adds)
  * Description:  The 3D Taylor patch test (two hex8 cubes, the upper one
  *               held by the contact alone, 25 MPa on its top) is run
  *               through stages 1-4 of `lac run`: mesh, contact, material,
@@ -27,7 +28,8 @@
  *               strategy; part 2 needs one process (it changes PETSc's
  *               options between solves).  Without PETSc in lac (make
  *               PETSC=no) only the direct strategy runs.  No timings: the
- *               output is the same on every machine.
+ *               output is the same on every machine, up to the last digit
+ *               of the residuals (rounding).
  * Read first:   chapter 07 (the strategies of one active set), chapter 08
  *               (the Taylor patch test).
  */
@@ -291,8 +293,8 @@ part2 (void)
  * process 0 sends them "quit".  The partitioner of the cells is asked
  * for blocks of consecutive cells ("average"), which cuts the same way in
  * every run: PT-Scotch, the default of Debian's PETSc, may not, and the
- * iteration counts would then change in their last digit from run to
- * run. */
+ * aggregates of the multigrid, which never span two processes, and so
+ * the iteration count, would then depend on the run. */
 int
 main (void)
 {
