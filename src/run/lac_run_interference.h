@@ -3,7 +3,7 @@
  *
  * Part of stage 4 (assemble).  `[contact] interference = delta` takes
  * delta from every gap of a pair drawn with matching surfaces (chapter
- * 08, section 7): the gaps of the drawing are meant to be zero, the fit
+ * 16, section 5): the gaps of the drawing are meant to be zero, the fit
  * is delta.  Meshed, the two sides of a curved interface are polygons
  * (polyhedra) with their vertices on the curve and chords between them,
  * and the chords of the two sides do not match: the mean gap of a
