@@ -111,7 +111,7 @@ evaluate_and_test (lac_newton *s, lac_newton_record *rec, int *done)
   return LAC_SUCCESS;
 }
 
-/* Step 4 [Alg. 1, lines 11-23]: linearize at U, solve (*) for the
+/* Step 4 [Alg. 1, lines 11-24]: linearize at U, solve (*) for the
  * statuses, U and lambda updated. */
 static int
 step (lac_newton *s, double eta, lac_newton_record *rec)
