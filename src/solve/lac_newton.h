@@ -26,7 +26,7 @@
  *        max |d_m| / (h_m |T^m cap Gamma_C|),
  *      both below tol: the loop has converged, unless a macro-element
  *      without a multiplier is inside the master (see below);
- *   4. solve (*) for the statuses [lines 11-23] (the linearization of the
+ *   4. solve (*) for the statuses [lines 11-24] (the linearization of the
  *      model at U), U <- U + dU (or U <- the solution, for a model that
  *      gives U itself), lambda <- lambda_A (0 elsewhere).
  * Every iteration is a record in hist; the loop returns LAC_CONTINUE
