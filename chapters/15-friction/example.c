@@ -25,9 +25,8 @@
 #include "run/lac_run.h"
 #include "solve/lac_friction.h"
 
-/* @sect The statuses of a loop, as letters
- *
- * One letter per macro-element of the slave surface into buf (of n
+// @sect The statuses of a loop, as letters
+/* One letter per macro-element of the slave surface into buf (of n
  * bytes): S for stick, s for slip, . for open (solve/lac_friction.h). */
 static const char *
 statuses (const lac_newton *s, char *buf, size_t n)
@@ -40,9 +39,8 @@ statuses (const lac_newton *s, char *buf, size_t n)
   return buf;
 }
 
-/* @sect One run, iteration by iteration
- *
- * The scene is read with the traction of its top set to (T/20, -10) (the
+// @sect One run, iteration by iteration
+/* The scene is read with the traction of its top set to (T/20, -10) (the
  * block is 20 mm wide: a force T per unit length), then run one stage at a
  * time; during the solve stage each call of lac_run_iterate is one
  * iteration of Algorithm 1, after which the statuses and the two
@@ -84,9 +82,8 @@ pull (double T)
   return status;
 }
 
-/* @sect The two parts
- *
- * Below the stick limit the run converges; above it, it must stop. */
+// @sect The two parts
+/* Below the stick limit the run converges; above it, it must stop. */
 int
 main (void)
 {
