@@ -9,14 +9,15 @@
  *    return LAC_SUCCESS with a true solution (|X(xi) - x - t dir| <= 1e-8
  *    |x|, or the closest point's optimality), or LAC_EMAXITER / LAC_ESING
  *    with a one-line message; an iteration count in the message is at most
- *    50 (PROJ_MAXITER); the whole grid (about 10^4 calls) takes < 2 s,
- *    i.e. nothing loops.
+ *    50 (PROJ_MAXITER), so that nothing loops (the time of the grid, about
+ *    10^4 calls, is printed with LAC_TEST_VERBOSE, not asserted: a
+ *    wall-clock limit fails on a loaded machine; speed is benchmarked).
  * 2. The pairing with such a geometry: the master is the top of quad9
  *    cells whose top middle nodes are folded sideways / raised, the slave
  *    the bottom of a block above (2D), and a hex27 master face with its
  *    centre node raised 2 h, and hex27 master faces folded over themselves
  *    (mid-edge nodes shifted by 1.2 h along the face: many projections
- *    fail) (3D).  lac_pairing_build must finish (< 2 s): either
+ *    fail) (3D).  lac_pairing_build must return: either
  *    LAC_SUCCESS (points that fail to project drop their pair, counted in
  *    P->nfail -- asserted > 0 for the folded faces -- and every point kept
  *    is finite) or an error with a one-line message; and then the contact
@@ -150,7 +151,6 @@ grid (const lac_refelem *re, const double *xe, const char *what)
   check_true (T.bad_msg == 0, "%s: %ld failures without a proper message",
               what, T.bad_msg);
   check_true (T.other == 0, "%s: %ld other statuses", what, T.other);
-  check_true (sec < 2.0, "%s: %ld calls in %.3f s", what, T.calls, sec);
   if (getenv ("LAC_TEST_VERBOSE"))
     printf ("%s: %ld calls: %ld success, %ld EMAXITER, %ld ESING (%.3f s)\n",
             what, T.calls, T.ok, T.maxiter, T.sing, sec);
@@ -295,7 +295,6 @@ pairing_case (const char *name, lac_elem_type tm,
                 cst ? lac_error_message () : "");
     }
   double sec = hard_now () - t0;
-  check_true (sec < 2.0, "%s: finished in %.3f s", name, sec);
   if (getenv ("LAC_TEST_VERBOSE"))
     printf ("%s: %s (%.3f s)\n", name, status, sec);
   hard_row_raw (name, k, -1, -1, NULL, 0, status);
