@@ -26,8 +26,11 @@
 #                    assembly (build/tests/lac_faults, LAC_TEST_FAIL_RANK),
 #                    or on process 1 of 2 after its part of a command of
 #                    the root (LAC_TEST_FAIL_AFTER=1:solve, 1:post), ends
-#                    every process within 10 s, exit status 1, with the
-#                    line "lac: ... process 1: failure injected ...";
+#                    every process (a hang meets `timeout 60`: status
+#                    124, a failure; the wall clock is not asserted, it
+#                    grows with the load and under AddressSanitizer),
+#                    exit status 1, with the line "lac: ... process 1:
+#                    failure injected ...";
 #   assembly check   PETSc's K made different from its cells' (one
 #                    cell's matrix times 1.01, LAC_TEST_SCALE_CELL) on 1
 #                    and 2 processes: exit status 1 and one line that
@@ -267,11 +270,11 @@ if [ "$have_petsc" = 1 ]; then
         > "$C/fault$1.out" 2> "$C/fault$1.err"
       rc=$? t=$(( $(date +%s) - t0 ))
       want="^lac: .*process $2: $fwant"
-      if [ "$rc" != 0 ] && [ "$rc" != 124 ] && [ "$t" -le 10 ] \
+      if [ "$rc" != 0 ] && [ "$rc" != 124 ] \
          && [ "$(grep -c '^lac: ' "$C/fault$1.err")" = 1 ] && grep -q "$want" "$C/fault$1.err"; then
         petsc_ok "$fname"
       else
-        petsc_fail "$fname" "want one line '$want' within 10 s, got status $rc after $t s: $(grep -m 2 . "$C/fault$1.err")"
+        petsc_fail "$fname" "want one line '$want' and an end before the timeout, got status $rc after $t s: $(grep -m 2 . "$C/fault$1.err")"
       fi
     }
     petsc_fault 2 1
