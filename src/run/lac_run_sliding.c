@@ -281,6 +281,7 @@ pair_check (const lac_contact_pair *p, const lac_pairing *P,
     }
   if ((!cx || cx->k == 0) && p->offset != 0)
     {                   /* moved by about delta: the interference's checks */
+      lac_contact_free (cx);
       lac_pairing_free (Px);
       return LAC_SUCCESS;
     }
