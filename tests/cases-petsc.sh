@@ -58,8 +58,11 @@
 #                    -ksp_rtol 0.5 (inexact solves: a last residual above
 #                    1e-9, the loop still converges to lambda), -ksp_max_it
 #                    2 (exit status 1 "after 2 iterations"); -pc_type
-#                    jacobi, -lac_contact_threshold nan, -lac_omega inf are
-#                    one line "lac: ..." and exit status 1;
+#                    jacobi, -lac_contact_threshold nan, -lac_omega inf,
+#                    an option of lac's without its value, a
+#                    -lac_projection_steps beyond 100 or not an integer, a
+#                    -lac_omega above 1e6 are one line "lac: ..." and
+#                    exit status 1;
 #   large-deformation  the large-deformation loop through petsc: the 3D
 #                    patch test (hex8, a body held by contact alone) and the
 #                    Hertz cylinder (2D, an obstacle), two load steps each,
@@ -421,7 +424,7 @@ if [ "$have_petsc" = 1 ]; then
   fi
   # petsc_refused NAME OPTIONS WANT: exit 1, one line "lac: ...WANT"
   petsc_refused () {
-    env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "$2" \
+    env "$PETSC_ENV" timeout 300 "$LAC" run "$D8/taylor3d.scene" --strategy petsc --petsc-options "$2" \
       --quiet --no-output > "$C/$1.out" 2> "$C/$1.err"
     rc=$?
     if [ "$rc" = 1 ] && [ "$(wc -l < "$C/$1.err")" -eq 1 ] && grep -q "^lac: .*$3" "$C/$1.err"; then
@@ -434,6 +437,15 @@ if [ "$have_petsc" = 1 ]; then
   petsc_refused opt-pcjacobi "-pc_type jacobi" "-pc_type jacobi: .*-elast_pc_type"
   petsc_refused opt-nan "-lac_contact_threshold nan" "-lac_contact_threshold nan: expected a finite number"
   petsc_refused opt-inf "-lac_omega inf" "-lac_omega inf: expected a finite number"
+  # lac's own options read as lac reads a number (base/lac_number.h):
+  # given without a value (PETSc kept lac's value, exit 0), an integer
+  # beyond 32 bits (PETSc wrapped it to 1215752191 Jacobi steps a solve:
+  # the run hung), an omega whose C W C^T swamps K (the loop stalled, or
+  # the CG met an indefinite preconditioner, without naming -lac_omega)
+  petsc_refused opt-novalue "-lac_contact_threshold" "-lac_contact_threshold: expected a finite number .*got no value"
+  petsc_refused opt-steps-huge "-lac_projection_steps 99999999999" "-lac_projection_steps 99999999999: expected an integer from 0 to 100; above the largest allowed value 100"
+  petsc_refused opt-steps-frac "-lac_projection_steps 2.5" "-lac_projection_steps 2.5: expected an integer .*not an integer"
+  petsc_refused opt-omega-huge "-lac_omega 1e8" "-lac_omega 1e8: expected a finite number > 0 and at most 1e6.*above the largest allowed value"
 
   # ---- large deformation: the same loop through petsc -----------------
   # petsc_ld NAME SCENE ARGS...: the scene's own strategy, --strategy petsc

@@ -78,6 +78,14 @@ lac_petsc_option_default (const char *name, const char *value)
 }
 
 int
+lac_petsc_option_number (const char *name, const lac_number_spec *spec,
+                         const char *expected, double *v)
+{
+  (void) name, (void) spec, (void) expected, (void) v;
+  return LAC_SUCCESS;
+}
+
+int
 lac_petsc_command_send (const lac_petsc_command *c)
 {
   (void) c;
@@ -226,6 +234,29 @@ lac_petsc_option_default (const char *name, const char *value)
   if ((e = PetscOptionsSetValue (NULL, name, value))
       || (e = PetscOptionsHasName (NULL, NULL, name, &set)))
     return lac_petsc_fail (e, __func__, name);
+  return LAC_SUCCESS;
+}
+
+int
+lac_petsc_option_number (const char *name, const lac_number_spec *spec,
+                         const char *expected, double *v)
+{
+  char text[64] = "", why[160];
+  PetscBool set = PETSC_FALSE;
+  PetscErrorCode e;
+  double x;
+  if ((e = PetscOptionsGetString (NULL, NULL, name, text, sizeof text,
+                                  &set)))
+    return lac_petsc_fail (e, __func__, name);
+  if (!set)
+    return LAC_SUCCESS;
+  if (!text[0])
+    LAC_ERROR (LAC_EINVAL, "%s: expected %s, got no value", name,
+               expected);
+  if (!lac_number_parse (text, spec, &x, why, sizeof why))
+    LAC_ERROR (LAC_EINVAL, "%s %s: expected %s; %s", name, text, expected,
+               why);
+  *v = x;
   return LAC_SUCCESS;
 }
 

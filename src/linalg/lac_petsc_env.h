@@ -19,6 +19,7 @@
 #define LAC_PETSC_ENV_H
 
 #include <stddef.h>
+#include "base/lac_number.h"
 
 #define LAC_PETSC_INSTALL "apt-get install -y --no-install-recommends " \
   "libpetsc-real-dev openmpi-bin, then make clean && make"
@@ -48,6 +49,15 @@ int lac_petsc_options_unused (char *names, size_t n);
  * when another preconditioner than the one it configures was chosen.
  * Nothing without PETSc. */
 int lac_petsc_option_default (const char *name, const char *value);
+/* One of lac's own options (-lac_omega ...) as a number: *v (left as it
+ * is when the option is not given) from its text, which must be a
+ * number within spec (base/lac_number.h: NULL, any finite one); a value
+ * missing, not a number or out of range is an error naming the option,
+ * the limit it broke and what is `expected` (PETSc's own reading keeps
+ * *v for a missing value and wraps an integer beyond 32 bits).  Nothing
+ * without PETSc. */
+int lac_petsc_option_number (const char *name, const lac_number_spec *spec,
+                             const char *expected, double *v);
 /* This process and the number of processes: 0 and 1 without MPI or
  * before lac_petsc_initialize. */
 void lac_petsc_rank (int *rank, int *size);

@@ -17,6 +17,7 @@
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
 #define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
 #define PROJECTION_STEPS 1    /* projected: Jacobi steps of Z ~ K^-1 B   */
+#define PROJECTION_STEPS_MAX 100  /* -lac_projection_steps at most       */
 
 #define TRY(call) do { PetscErrorCode e_ = (call); \
     if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
@@ -318,14 +319,17 @@ kernel_pc (lac_petsc_saddle *sv, double threshold)
 static int
 create_projected (lac_petsc_saddle *sv, double threshold)
 {
-  PetscInt nl, n, steps = PROJECTION_STEPS;
+  /* each step is a product by K per solve, and more than a few change
+   * little (chapter 13): at most PROJECTION_STEPS_MAX */
+  const lac_number_spec spec = { 0, PROJECTION_STEPS_MAX, 0, 1, 0 };
+  double steps = PROJECTION_STEPS;
+  PetscInt nl, n;
   PC pc;
   int status;
-  TRY (PetscOptionsGetInt (NULL, NULL, "-lac_projection_steps", &steps,
-                           NULL));
-  if (steps < 0)
-    LAC_ERROR (LAC_EINVAL, "-lac_projection_steps %d: expected 0 or more",
-               (int) steps);
+  if ((status = lac_petsc_option_number ("-lac_projection_steps", &spec,
+                                         "an integer from 0 to 100",
+                                         &steps)))
+    return status;
   sv->steps = (int) steps;
   if ((status = kernel_pc (sv, threshold))
       || (status = read_tolerances (NULL, &sv->tol)))

@@ -5,6 +5,7 @@
 #include "run/lac_run_sliding.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <string.h>
 #include "base/lac_mem.h"
@@ -20,6 +21,10 @@
 typedef struct slide
 {
   double gx, glin, e, s, n[3], x[3], v, r;
+  double off;         /* the part of its contact that faces no master in
+                         the deformed shape (1: all of it); for the pair,
+                         that of the contact of all its active ones      */
+  double lost;        /* that part as an area (2 pi r weighted)          */
   size_t macro;
 } slide;
 
@@ -112,48 +117,104 @@ macro_slide (const lac_contact_pair *p, const lac_pairing *P, size_t mac,
   return LAC_SUCCESS;
 }
 
-/* The active macro-element of pair p (its pairing P and contact data c
- * in the reference shape, cx in the deformed one; the statuses and mean
- * gaps of nw from slot off) whose two mean gaps differ the most: how far
- * it slid, its normal, where it is. */
+/* Node-to-segment: the slot of slave node mac, its normal and where it
+ * is (its slots are nodes: no sliding measured). */
+static void
+node_slide (const lac_contact *c, size_t mac, slide *big)
+{
+  long i = c->mult[mac];
+  big->s = NAN;
+  memcpy (big->x, c->xpt + 3 * (size_t) i, sizeof big->x);
+  memcpy (big->n, c->npt + 3 * (size_t) i, sizeof big->n);
+}
+
+/* Where macro-element (node-to-segment: node) big->macro of pair p is,
+ * its normal and how far it slid. */
+static int
+where (const lac_contact_pair *p, const lac_pairing *P,
+       const lac_contact *c, const double *u, slide *big)
+{
+  if (p->nts)
+    {
+      node_slide (c, big->macro, big);
+      return LAC_SUCCESS;
+    }
+  return macro_slide (p, P, big->macro, u, &big->s, big->n, big->x);
+}
+
+/* Over the active macro-elements of pair p (its pairing P and contact
+ * data c in the reference shape, cx in the deformed one; the statuses and
+ * mean gaps of nw from slot off): in *big the one whose two mean gaps
+ * differ the most; in *lost the one that lost the largest area of its
+ * contact to no master in the deformed shape (cx has no column for it,
+ * or one of a smaller area: it slid off the master's end, where the
+ * small-strain model, which keeps the reference pairing, still presses
+ * it), with lost->off the part of the pair's active contact lost so (a
+ * slide of the size of the displacements loses a part of that order at
+ * the edges, which the small-strain model neglects: the friction patch
+ * tests slide by 2.5 % of their size); how far each slid, its normal,
+ * where it is. */
 static int
 pair_worst (const lac_contact_pair *p, const lac_pairing *P,
             const lac_contact *c, const lac_contact *cx, size_t off,
-            const lac_newton *nw, const double *u, slide *big)
+            const lac_newton *nw, const double *u, slide *big, slide *lost)
 {
-  for (size_t i = 0; c && cx && i < cx->k; i++)
+  double area = 0, gone = 0;
+  int status = LAC_SUCCESS;
+  for (size_t i0 = 0; c && i0 < c->k; i0++)
     {
-      size_t mac = cx->macro[i];
-      long i0 = mac < c->nmacro ? c->mult[mac] : -1;
+      size_t mac = c->macro[i0];
+      long i = cx && mac < cx->nmacro ? cx->mult[mac] : -1;
       slide one = { 0 };
-      if (i0 < 0 || !nw->active[off + mac] || !(cx->area[i] > 0))
+      if (!nw->active[off + mac] || !(c->area[i0] > 0))
+        continue;
+      one.macro = mac;
+      one.off = i < 0 ? 1.0 : fmax (0.0, 1.0 - cx->area[i] / c->area[i0]);
+      one.lost = one.off * c->area[i0];
+      area += c->area[i0];
+      gone += one.lost;
+      if (one.lost > lost->lost)
+        *lost = one;
+      if (i < 0 || !(cx->area[i] > 0))
         continue;
       one.glin = nw->d[off + mac] / c->area[i0];      /* G - C^T U */
       one.gx = cx->G[i] / cx->area[i];                /* at x = X + u */
       one.e = fabs (one.gx - one.glin);
-      one.macro = mac;
       if (one.e > big->e)
         *big = one;
     }
-  return big->e > 0 ? macro_slide (p, P, big->macro, u, &big->s, big->n,
-                                   big->x) : LAC_SUCCESS;
+  if (big->e > 0)
+    status = where (p, P, c, u, big);
+  if (!status && lost->lost > 0)
+    status = where (p, P, c, u, lost);
+  lost->r = lost->off;                    /* the macro-element's own part */
+  lost->off = area > 0 ? gone / area : 0.0;
+  return status;
 }
 
 /* The body of the first node of the first sub-facet of macro-element
  * mac (slave), and of the master facet of its first point (SIZE_MAX: an
  * obstacle, or no point). */
 static void
-bodies_of (const lac_contact_pair *p, const lac_pairing *P, size_t mac,
-           const lac_bodies *B, size_t *bs, size_t *bm)
+bodies_of (const lac_contact_pair *p, const lac_pairing *P,
+           const lac_contact *c, size_t mac, const lac_bodies *B,
+           size_t *bs, size_t *bm)
 {
   const lac_macro *M = p->M;
   int nodes[LAC_MAX_FACE_NODES];
   lac_elem_type ft;
   size_t j = M->ptr[mac];
-  lac_mesh_facet_nodes (p->mesh, M->cell[j], M->face[j], nodes, &ft);
-  *bs = B->node_body[nodes[0]];
+  if (!p->nts)
+    lac_mesh_facet_nodes (p->mesh, M->cell[j], M->face[j], nodes, &ft);
+  *bs = B->node_body[p->nts ? c->inode[mac] : (size_t) nodes[0]];
   *bm = SIZE_MAX;
-  if (p->master && P->ptr[j + 1] > P->ptr[j])
+  if (p->nts && p->master && p->master->n > 0)     /* node-to-segment */
+    {
+      lac_mesh_facet_nodes (p->mesh, p->master->cell[0],
+                            p->master->face[0], nodes, &ft);
+      *bm = B->node_body[nodes[0]];
+    }
+  else if (!p->nts && p->master && P->ptr[j + 1] > P->ptr[j])
     {
       size_t f = P->master[P->ptr[j]];
       lac_mesh_facet_nodes (p->mesh, p->master->cell[f], p->master->face[f],
@@ -166,12 +227,12 @@ bodies_of (const lac_contact_pair *p, const lac_pairing *P, size_t mac,
  * and the master's bodies, the scale of the normal displacements the
  * contact pressure comes from; big->r = e / v. */
 static void
-scale (const lac_contact_pair *p, const lac_pairing *P, const lac_bodies *B,
-       const double *u, slide *big)
+scale (const lac_contact_pair *p, const lac_pairing *P, const lac_contact *c,
+       const lac_bodies *B, const double *u, slide *big)
 {
   const lac_mesh *m = p->mesh;
   size_t bs, bm, dim = (size_t) m->dim;
-  bodies_of (p, P, big->macro, B, &bs, &bm);
+  bodies_of (p, P, c, big->macro, B, &bs, &bm);
   for (size_t a = 0; a < m->nnodes; a++)
     if (B->node_body[a] == bs || B->node_body[a] == bm)
       {
@@ -183,37 +244,93 @@ scale (const lac_contact_pair *p, const lac_pairing *P, const lac_bodies *B,
   big->r = big->e / (big->v > 0 ? big->v : HUGE_VAL);
 }
 
-/* Pair p's worst column (pair_worst) with its contact data made again on
- * x = X + u, and its ratio (scale). */
+/* Pair p's worst columns (pair_worst) with its contact data made again
+ * on x = X + u (within delta more than the pair's reach: an interference
+ * leaves the surfaces of the deformed shape about delta apart), and the
+ * ratio of the worst gap (scale).  A pairing that fails there (but for
+ * want of memory) pairs nothing: every active column then faces no
+ * master; with an interference, no test (displacements of the size of
+ * delta, far beyond the bodies from a delta of about their size on: the
+ * shrink fit of chapter 08 with delta = 1e8 is linear, and the
+ * interference's own checks hold it, run/lac_run_interference.h). */
 static int
 pair_check (const lac_contact_pair *p, const lac_pairing *P,
             const lac_contact *c, size_t off, const lac_newton *nw,
             const lac_bodies *B, const double *u, const double *x,
-            slide *big)
+            slide *big, slide *lost)
 {
   lac_contact_pair q = *p;
   lac_pairing *Px = NULL;
   lac_contact *cx = NULL;
   int status;
   memset (big, 0, sizeof *big);
+  memset (lost, 0, sizeof *lost);
   q.popts.allow_empty = 1;
-  if (lac_contact_pair_build (&q, x, &Px, &cx))
-    lac_error_clear ();                  /* nothing paired there: no test */
-  status = pair_worst (p, P, c, cx, off, nw, u, big);
+  q.widened += fabs (p->offset);
+  if ((status = lac_contact_pair_build (&q, x, &Px, &cx)) == LAC_ENOMEM)
+    {
+      lac_contact_free (cx);
+      lac_pairing_free (Px);
+      return status;
+    }
+  if (status)
+    {
+      lac_error_clear ();                  /* nothing paired there */
+      lac_contact_free (cx);
+      cx = NULL;
+    }
+  if ((!cx || cx->k == 0) && p->offset != 0)
+    {                   /* moved by about delta: the interference's checks */
+      lac_contact_free (cx);
+      lac_pairing_free (Px);
+      return LAC_SUCCESS;
+    }
+  status = pair_worst (p, P, c, cx, off, nw, u, big, lost);
   if (!status && big->e > 0)
-    scale (p, P, B, u, big);
+    scale (p, P, c, B, u, big);
   lac_contact_free (cx);
   lac_pairing_free (Px);
   return status;
 }
 
-/* The error of pair p's worst macro-element, placed at its section. */
+/* "macro-element M at (x) by s" or "slave node N at (x)" into buf. */
+static void
+what_slid (const lac_contact_pair *p, const lac_contact *c, const slide *b,
+           char *buf, size_t size)
+{
+  if (p->nts)
+    snprintf (buf, size, "slave node %zu at (%.6g, %.6g, %.6g)",
+              p->mesh->node_tag[c->inode[b->macro]], b->x[0], b->x[1],
+              b->x[2]);
+  else
+    snprintf (buf, size, "macro-element %zu at (%.6g, %.6g, %.6g) by %.3g",
+              b->macro, b->x[0], b->x[1], b->x[2], b->s);
+}
+
+/* The error of pair p's macro-element that slid off the master. */
 static int
-slid_error (const lac_scene *sc, size_t p, const slide *b, double tol)
+off_error (const lac_scene *sc, size_t p, const char *what, const slide *b,
+           double tol)
 {
   return lac_scene_error (sc, &sc->contact[p].sec, NULL, LAC_EINVAL,
-                          "the solution slides macro-element %zu at (%.6g, "
-                          "%.6g, %.6g) by %.3g along the master: its mean "
+                          "the solution slides %s off the master: in the "
+                          "deformed shape %.3g of the pair's contact (%.3g "
+                          "of this one's) faces no master surface (more "
+                          "than sliding_tolerance = %g), where the "
+                          "small-strain model, which keeps the pairing of "
+                          "the reference shape, presses all of it; use "
+                          "[scene] large_deformation = yes (it pairs the "
+                          "deformed shape), or a master surface that "
+                          "extends under it", what, b->off, b->r, tol);
+}
+
+/* The error of pair p's worst macro-element, placed at its section. */
+static int
+slid_error (const lac_scene *sc, size_t p, const char *what, const slide *b,
+            double tol)
+{
+  return lac_scene_error (sc, &sc->contact[p].sec, NULL, LAC_EINVAL,
+                          "the solution slides %s along the master: its mean "
                           "gap in the deformed shape is %.3g, the "
                           "small-strain one %.3g, %.3g of the bodies' "
                           "displacement along its normal (%.3g) apart "
@@ -223,8 +340,7 @@ slid_error (const lac_scene *sc, size_t p, const slide *b, double tol)
                           "no longer holds the points in contact; use "
                           "[scene] large_deformation = yes (it pairs the "
                           "deformed shape), or raise sliding_tolerance",
-                          b->macro, b->x[0], b->x[1], b->x[2], b->s, b->gx,
-                          b->glin, b->r, b->v, tol);
+                          what, b->gx, b->glin, b->r, b->v, tol);
 }
 
 int
@@ -244,15 +360,22 @@ lac_run_sliding_check (const lac_scene *sc, const lac_mesh *m,
       const lac_contact_pair *pr = &setup->pair[p];
       double tol = sc->contact[p].sliding_tolerance > 0
                    ? sc->contact[p].sliding_tolerance : LAC_SLIDING_TOLERANCE;
-      slide big;
-      if (pr->nts)
-        continue;                     /* its slots are nodes: not checked */
+      slide big, lost;
+      char what[160];
       if ((status = pair_check (pr, d->P[p], d->c[p], setup->set.offset[p],
-                                nw, B, u, x, &big)))
+                                nw, B, u, x, &big, &lost)))
         break;
-      *ratio = fmax (*ratio, big.r);
-      if (big.r > tol)
-        status = slid_error (sc, p, &big, tol);
+      *ratio = fmax (*ratio, fmax (big.r, lost.off));
+      if (lost.off > tol)
+        {
+          what_slid (pr, d->c[p], &lost, what, sizeof what);
+          status = off_error (sc, p, what, &lost, tol);
+        }
+      else if (big.r > tol)
+        {
+          what_slid (pr, d->c[p], &big, what, sizeof what);
+          status = slid_error (sc, p, what, &big, tol);
+        }
     }
   lac_free (x);
   return status;

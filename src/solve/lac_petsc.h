@@ -115,6 +115,7 @@
 #include "solve/lac_system.h"
 
 #define LAC_PETSC_OMEGA 1.0   /* omega of K_W (chapter 13: 1 against 10) */
+#define LAC_PETSC_OMEGA_MAX 1e6   /* -lac_omega at most (lac_petsc.c) */
 /* The multigrid's threshold on the couplings of the contact nodes of
  * K_W's finest level (-lac_contact_threshold; chapter 13) */
 #define LAC_PETSC_CONTACT_THRESHOLD 0.1
