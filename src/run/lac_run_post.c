@@ -296,8 +296,9 @@ static int
 fit_summary (const lac_run_post_in *in, lac_summary *sum)
 {
   const lac_run_fit *f = &in->sys->fit;
-  return f->measured ? lac_summary_add (sum, "interference_gap", "%.10e",
-                                        f->ratio) : LAC_SUCCESS;
+  return f->measured ? lac_summary_add (sum, "interference_gap",
+                                        LAC_SUMMARY_REAL, f->ratio)
+                      : LAC_SUCCESS;
 }
 
 /* ---- the reactions of the Dirichlet sections ------------------------- */
