@@ -203,7 +203,7 @@ bodies_of (const lac_contact_pair *p, const lac_pairing *P,
   const lac_macro *M = p->M;
   int nodes[LAC_MAX_FACE_NODES];
   lac_elem_type ft;
-  size_t j = M->ptr[mac];
+  size_t j = p->nts ? 0 : M->ptr[mac];     /* node-to-segment: mac is a node */
   if (!p->nts)
     lac_mesh_facet_nodes (p->mesh, M->cell[j], M->face[j], nodes, &ft);
   *bs = B->node_body[p->nts ? c->inode[mac] : (size_t) nodes[0]];
