@@ -4,7 +4,7 @@
 #   sh bench/friction.sh [BUILD_DIR] [LEVEL] [REPEATS]
 #
 # Cattaneo-Mindlin at LEVEL (default 3, the finest level of chapter 15,
-# 62k dofs), every body held by its Dirichlet conditions
+# 72k dofs), every body held by its Dirichlet conditions
 # (bench/cattaneo-disp.scene): the frictional run (mu = 0.3) and the same
 # scene frictionless (mu = 0, the cylinder slides), alternately REPEATS
 # times (default 5).  Prints each pair's seconds (the whole run, wall
@@ -55,7 +55,7 @@ done
 echo "force-controlled (chapters/15-friction/cattaneo2d.scene, Q = 0.6 mu P):"
 t0=$(date +%s.%N)
 "$B/lac" run "$here/../chapters/15-friction/cattaneo2d.scene" --set level="$L" \
-  --set "load.pull.point_force=126 0" --out "$OUT/force" \
+  --set "load.pull.point_force=1.26 0" --out "$OUT/force" \
   > "$OUT/force.log" 2>&1 || { echo "failed: $(tail -1 "$OUT/force.log")"; exit 1; }
 t1=$(date +%s.%N)
 awk -v a="$t0" -v b="$t1" 'BEGIN { printf "  %.3f s wall, ", b - a }'

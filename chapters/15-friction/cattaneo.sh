@@ -4,7 +4,7 @@
 #
 #   sh chapters/15-friction/cattaneo.sh [BUILD] [LEVELS] [RATIOS]
 #
-# Runs cattaneo2d.scene (quad8; P = 700 N/mm, then Q = ratio mu P) at each
+# Runs cattaneo2d.scene (quad8; P = 7 N/mm, then Q = ratio mu P) at each
 # level (default "1 2 3") for each ratio Q / (mu P) (default "0.3 0.6
 # 0.9") and prints, per run (chapters/15-friction/cattaneo.py): the
 # macro-elements in contact, c/a measured and Cattaneo's, the error of c in
@@ -24,7 +24,7 @@ printf '%5s %5s %6s %10s %10s %9s %11s %6s\n' level Q/muP macros c/a \
   exact "error %" "L2(q) rel" iters
 for L in $LEVELS; do
   for r in $RATIOS; do
-    Q=$(awk -v r="$r" 'BEGIN { printf "%.10g", r * 0.3 * 700 }')
+    Q=$(awk -v r="$r" 'BEGIN { printf "%.10g", r * 0.3 * 7 }')
     d="$OUT/L$L-$r"
     if "$B/lac" run "$here/cattaneo2d.scene" --set level="$L" \
          --set "load.pull.point_force=$Q 0" --quiet --out "$d" \
@@ -61,7 +61,7 @@ draw_fig () {  # draw_fig RATIO PNG
   # 1201 points over |x| < 1.3 a, the range of s drawn
   awk -v r="$1" -v x0="$x0" -v sg="$sign" -v range="$d/srange.txt" 'BEGIN {
     pi = 3.14159265358979; Es = 200000 / (2 * (1 - 0.09)); mu = 0.3
-    a = sqrt(4 * 700 * 10 / (pi * Es)); p0 = 2 * 700 / (pi * a)
+    a = sqrt(4 * 7 * 10 / (pi * Es)); p0 = 2 * 7 / (pi * a)
     c = a * sqrt(1 - r)
     printf "# Cattaneo q(x), c / a = %.4f\n", c / a
     for (i = 0; i <= 1200; i++) {

@@ -4,8 +4,9 @@
 // y = 0 at the origin; a 2R x R/2 block on its flat side, whose top y =
 // 1.5 R carries the loads) on the block -2R <= x <=
 // 2R, -2R <= y <= 0, meshed apart (non-matching), each refined near the
-// origin to h = a0 / 2^level over |x| <= 2 a0 (a0 = 0.3 mm, about the
-// half-width of the contact).  Groups: cylinder, block (surfaces); arc
+// origin to h = a0 / 2^level over |x| <= 2 a0, |y| <= a0 (a0 = 0.03 mm,
+// about the half-width of the contact; [mesh] numbers = "a0=..." for another load),
+// the size growing by half the distance beyond, up to R / 3.  Groups: cylinder, block (surfaces); arc
 // (the cylinder's contact side), top (its top face) and corner (its end
 // x = R), face (the block's top), bottom (the block's bottom).
 SetFactory("OpenCASCADE");
@@ -13,7 +14,9 @@ If (!Exists(level))
   level = 0;
 EndIf
 R = 10;
-a0 = 0.3;
+If (!Exists(a0))
+  a0 = 0.03;
+EndIf
 h = a0 / 2 / 2^level;             // halved by the subdivision
 H = R / 3;
 e = 1e-6 * R;
@@ -38,14 +41,11 @@ bottom[] = Curve In BoundingBox{-2 * R - e, -2 * R - e, -e, 2 * R + e,
 corner[] = Point In BoundingBox{R - e, 1.5 * R - e, -e, R + e, 1.5 * R + e,
                                 e};
 
-Field[1] = Box;
-Field[1].VIn = h;
-Field[1].VOut = H;
-Field[1].XMin = -2 * a0;
-Field[1].XMax = 2 * a0;
-Field[1].YMin = -a0;
-Field[1].YMax = a0;
-Field[1].Thickness = 8 * a0;
+// the size: h in the ellipse x^2 / 4 + y^2 < a0^2 around the contact,
+// then growing by half the (elliptic) distance, up to H
+Field[1] = MathEval;
+Field[1].F = Sprintf("min(%g, max(%g, %g + 0.5 * (Sqrt(x * x / 4 + y * y) - %g)))",
+                     H, h, h, a0);
 Background Field = 1;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;

@@ -28,6 +28,6 @@ awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
 awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
   $(c["multiplier"]) != "" { t = $(c["lambda_t"]); t = t < 0 ? -t : t
                              if (t > m) m = t }
-  END { Es = 200000 / (2 * (1 - 0.09)); a = sqrt (4 * 700 * 10 / (3.141592653589793 * Es))
-        printf "at Q = 0, the largest |lambda_t| / (mu p0): %.4f", m / (0.3 * 2 * 700 / (3.141592653589793 * a))
+  END { Es = 200000 / (2 * (1 - 0.09)); a = sqrt (4 * 7 * 10 / (3.141592653589793 * Es))
+        printf "at Q = 0, the largest |lambda_t| / (mu p0): %.4f", m / (0.3 * 2 * 7 / (3.141592653589793 * a))
         printf " (Mindlin-Deresiewicz: sqrt(Q* / (2 mu P)) = %.4f)\n", sqrt (0.3) }' "$d/contact.csv"
