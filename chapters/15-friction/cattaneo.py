@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 # cattaneo.py -- a run of cattaneo2d.scene against Cattaneo-Mindlin
 #
-#   python3 chapters/15-friction/cattaneo.py RESULT_DIR Q_OVER_MU_P
+#   python3 chapters/15-friction/cattaneo.py RESULT_DIR Q_OVER_MU_P [P]
 #
 # Reads RESULT_DIR/contact.csv and summary.txt of a run of cattaneo2d.scene
-# (P = 7 N/mm, R = 10 mm, E = 200 GPa, nu = 0.3, mu = 0.3) and prints one
+# (P = 7 N/mm or the P given, R = 10 mm, E = 200 GPa, nu = 0.3, mu = 0.3)
+# and prints one
 # line: the macro-elements in contact, the half-width c of the stick zone
 # over Hertz's a (measured, Cattaneo's sqrt(1 - Q/(mu P)), the error in
 # %), the relative L2 error of the tangential traction against Cattaneo's
@@ -18,7 +19,8 @@ import csv
 import math
 import sys
 
-P, R, E, NU, MU = 7.0, 10.0, 200000.0, 0.3, 0.3
+P = float(sys.argv[3]) if len(sys.argv) > 3 else 7.0
+R, E, NU, MU = 10.0, 200000.0, 0.3, 0.3
 ESTAR = E / (2 * (1 - NU * NU))
 A = math.sqrt(4 * P * R / (math.pi * ESTAR))       # Hertz's half-width
 P0 = 2 * P / (math.pi * A)
