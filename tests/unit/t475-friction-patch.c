@@ -45,15 +45,23 @@ vm_exact (int dim, double p, double t, double nu)
                       + (sz - sx) * (sz - sx)) + 3 * t * t);
 }
 
-static void
-stick (const char *scene, const char *element, int level, int dim)
+/* The run of SCENE with its element and level set (NULL if it failed,
+ * reported by check_run_scene); *sc for check_run_done. */
+static lac_run *
+run_at (const char *scene, const char *element, int level, lac_scene **sc)
 {
   char s[2][64];
   const char *set[2] = { s[0], s[1] };
-  lac_scene *sc;
   snprintf (s[0], sizeof s[0], "element=%s", element);
   snprintf (s[1], sizeof s[1], "level=%d", level);
-  lac_run *r = check_run_scene (scene, 2, set, &sc);
+  return check_run_scene (scene, 2, set, sc);
+}
+
+static void
+stick (const char *scene, const char *element, int level, int dim)
+{
+  lac_scene *sc;
+  lac_run *r = run_at (scene, element, level, &sc);
   if (!r)
     return;
   const lac_newton *nw = r->sol.newton;
@@ -87,12 +95,8 @@ stick (const char *scene, const char *element, int level, int dim)
 static void
 slip (const char *scene, const char *element, int level)
 {
-  char s[2][64];
-  const char *set[2] = { s[0], s[1] };
   lac_scene *sc;
-  snprintf (s[0], sizeof s[0], "element=%s", element);
-  snprintf (s[1], sizeof s[1], "level=%d", level);
-  lac_run *r = check_run_scene (scene, 2, set, &sc);
+  lac_run *r = run_at (scene, element, level, &sc);
   if (!r)
     return;
   const lac_newton *nw = r->sol.newton;
