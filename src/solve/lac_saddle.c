@@ -115,6 +115,20 @@ saddle_scaling (const lac_saddle *s, const char *active)
     }
 }
 
+/* T = D K D, the displacement block of both systems below. */
+static int
+add_dkd (const lac_saddle *s, lac_triplet *T)
+{
+  const lac_csc *K = s->sys->K;
+  const double *D = s->D;
+  int status = LAC_SUCCESS;
+  for (size_t j = 0; !status && j < s->n; j++)
+    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
+      status = lac_triplet_add (T, (size_t) K->i[p], j,
+                                D[K->i[p]] * K->x[p] * D[j]);
+  return status;
+}
+
 /* D A D for the statuses `active` [LAC Alg. 1, lines 13-21], in the
  * fixed pattern of the header. */
 static lac_csc *
@@ -127,10 +141,8 @@ saddle_matrix (const lac_saddle *s, const char *active)
                                       (size_t) K->p[n] + 2 * nnzC + k);
   lac_csc *A = NULL;
   int status = T ? LAC_SUCCESS : LAC_ENOMEM;
-  for (size_t j = 0; !status && j < n; j++)                /* D K D */
-    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
-      status = lac_triplet_add (T, (size_t) K->i[p], j,
-                                D[K->i[p]] * K->x[p] * D[j]);
+  if (!status)
+    status = add_dkd (s, T);
   for (size_t i = 0; !status && i < k; i++)
     {
       status = lac_triplet_add (T, n + i, n + i, active[i] ? 0.0 : 1.0);
@@ -177,13 +189,31 @@ factorize (lac_saddle *s, const char *active)
   return LAC_SUCCESS;
 }
 
+/* Solve the factored system for the scaled right-hand side in s->work and
+ * scale back: x = D y, lambda_i = 0 where `free' is not set. */
+static int
+solve_scaled (lac_saddle *s, const char *free, double *U, double *lambda)
+{
+  size_t n = s->n, k = s->k;
+  const double *rhs = s->work, *D = s->D;
+  double *sol = s->work + n + k;
+  int status = lac_solver_solve (s->solver, rhs, sol);
+  if (status)
+    return status;
+  for (size_t j = 0; j < n; j++)
+    U[j] = D[j] * sol[j];                               /* x = D y */
+  for (size_t i = 0; i < k; i++)
+    lambda[i] = free[i] ? D[n + i] * sol[n + i] : 0.0;
+  return LAC_SUCCESS;
+}
+
 static int
 saddle_solve (void *w, const char *active, const double *f, const double *g,
               double rtol, double *U, double *lambda)
 {
   lac_saddle *s = w;
   size_t n = s->n, k = s->k;
-  double *rhs = s->work, *sol = s->work + n + k;
+  double *rhs = s->work;
   const double *D = s->D;
   int status = LAC_SUCCESS;
   (void) rtol;
@@ -198,13 +228,7 @@ saddle_solve (void *w, const char *active, const double *f, const double *g,
     rhs[j] = D[j] * f[j];
   for (size_t i = 0; i < k; i++)
     rhs[n + i] = active[i] ? -D[n + i] * g[i] : 0.0;
-  if ((status = lac_solver_solve (s->solver, rhs, sol)))
-    return status;
-  for (size_t j = 0; j < n; j++)
-    U[j] = D[j] * sol[j];                               /* x = D y */
-  for (size_t i = 0; i < k; i++)
-    lambda[i] = active[i] ? D[n + i] * sol[n + i] : 0.0;
-  return LAC_SUCCESS;
+  return solve_scaled (s, active, U, lambda);
 }
 
 /* ---- the equations of a contact law (friction) ---------------------------- */
@@ -270,10 +294,8 @@ rows_matrix (const lac_saddle *s, const lac_contact_rows *R)
                                       * (q + 1));
   lac_csc *A = NULL;
   int status = T ? LAC_SUCCESS : LAC_ENOMEM;
-  for (size_t j = 0; !status && j < n; j++)                /* D K D */
-    for (int p = K->p[j]; !status && p < K->p[j + 1]; p++)
-      status = lac_triplet_add (T, (size_t) K->i[p], j,
-                                D[K->i[p]] * K->x[p] * D[j]);
+  if (!status)
+    status = add_dkd (s, T);
   for (size_t i = 0; !status && i < k; i++)
     {
       if (!R->free[i])
@@ -333,7 +355,7 @@ saddle_solve_rows (void *w, const lac_contact_rows *R, const double *f,
 {
   lac_saddle *s = w;
   size_t n = s->n, k = s->k;
-  double *rhs = s->work, *sol = s->work + n + k;
+  double *rhs = s->work;
   const double *D = s->D;
   int status = rows_factorize (s, R);
   if (status)
@@ -345,13 +367,7 @@ saddle_solve_rows (void *w, const lac_contact_rows *R, const double *f,
     rhs[j] = D[j] * f[j];
   for (size_t i = 0; i < k; i++)
     rhs[n + i] = R->free[i] ? Dr[i] * r[i] : 0.0;
-  if ((status = lac_solver_solve (s->solver, rhs, sol)))
-    return status;
-  for (size_t j = 0; j < n; j++)
-    U[j] = D[j] * sol[j];
-  for (size_t i = 0; i < k; i++)
-    lambda[i] = R->free[i] ? D[n + i] * sol[n + i] : 0.0;
-  return LAC_SUCCESS;
+  return solve_scaled (s, R->free, U, lambda);
 }
 
 static void
