@@ -27,7 +27,7 @@ row () {
   echo "$out" | awk -v e="$e" -v l="$l" -v side="$side" -v t="$(echo "$t1 - $t0" | bc)" \
     -v pl="$pl" -v ps="$ps" -v pm="$pm" -F' = ' '
     { v[$1] = $2 }
-    END { printf "%-6s %5s %-6s %7s %10s %10s %10s %7.1f   %-8s %-8s %s\n", e, l, side,
+    END { printf "%-6s %5s %-6s %7s %10.3e %10.3e %10.3e %7.1f   %-8s %-8s %s\n", e, l, side,
           v["dofs"], v["max_rel_err_lambda"], v["max_rel_err_sigma_rr_slave"],
           v["max_rel_err_sigma_rr_master"], t, pl, ps, pm }'
 }
