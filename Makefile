@@ -171,7 +171,8 @@ $(B)/bench/%: bench/%.c $(LIB)
 # The objects that depend on PETSc's presence follow its changes.
 $(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_values.o \
   $(B)/src/solve/lac_petsc_serve.o $(B)/src/linalg/lac_petsc_env.o \
-  $(B)/src/linalg/lac_petsc_saddle.o $(B)/src/linalg/lac_petsc_mg.o \
+  $(B)/src/linalg/lac_petsc_saddle.o \
+  $(B)/src/linalg/lac_petsc_saddle_solve.o $(B)/src/linalg/lac_petsc_mg.o \
   $(B)/src/linalg/lac_petsc_mg_aggregate.o \
   $(B)/src/linalg/lac_petsc_mg_prolong.o \
   $(B)/src/fem/lac_assembly_dist.o: \
