@@ -141,17 +141,17 @@ $(B)/tests/nomem_lac_malloc: tests/nomem_lac.c tests/nomem_malloc.c $(B)/tests/l
 	$(CC) $(CPPFLAGS) $(CFLAGS) -DNOMEM_MALLOC $(LDFLAGS) $< tests/nomem_malloc.c $(B)/tests/lac_main.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 # lac with failures on purpose (LAC_TEST_FAIL_RANK, LAC_TEST_FAIL_AFTER:
 # on an MPI process; LAC_TEST_SCALE_CELL: a K that is not its cells';
-# fem/lac_assembly_dist.h, solve/lac_petsc.c, tests/cases-petsc.sh): its
-# objects of the distributed assembly and of the petsc strategy come
-# before the library's.
+# fem/lac_assembly_dist.h, solve/lac_petsc_serve.c, tests/cases-petsc.sh):
+# its objects of the distributed assembly and of the petsc strategy's
+# other processes come before the library's.
 $(B)/tests/lac_assembly_dist_faults.o: src/fem/lac_assembly_dist.c $(PETSC_MK) | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -DLAC_TEST_FAULTS -c $< -o $@
-$(B)/tests/lac_petsc_faults.o: src/solve/lac_petsc.c $(PETSC_MK) | $(B)/.deps-ok
+$(B)/tests/lac_petsc_serve_faults.o: src/solve/lac_petsc_serve.c $(PETSC_MK) | $(B)/.deps-ok
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -DLAC_TEST_FAULTS -c $< -o $@
-$(B)/tests/lac_faults: src/cli/main.c $(B)/tests/lac_assembly_dist_faults.o $(B)/tests/lac_petsc_faults.o $(CLILIB) $(LIB)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_assembly_dist_faults.o $(B)/tests/lac_petsc_faults.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
+$(B)/tests/lac_faults: src/cli/main.c $(B)/tests/lac_assembly_dist_faults.o $(B)/tests/lac_petsc_serve_faults.o $(CLILIB) $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(B)/tests/lac_assembly_dist_faults.o $(B)/tests/lac_petsc_serve_faults.o $(CLILIB) $(LIB) $(LDLIBS) -o $@
 $(B)/tests/scene_keys: tests/scene_keys.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
@@ -169,8 +169,12 @@ $(B)/bench/%: bench/%.c $(LIB)
 	$(CC) $(CPPFLAGS) -Itests $(CFLAGS) $(LDFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 # The objects that depend on PETSc's presence follow its changes.
-$(B)/src/solve/lac_petsc.o $(B)/src/linalg/lac_petsc_env.o \
-  $(B)/src/linalg/lac_petsc_saddle.o $(B)/src/linalg/lac_petsc_mg.o \
+$(B)/src/solve/lac_petsc.o $(B)/src/solve/lac_petsc_values.o \
+  $(B)/src/solve/lac_petsc_serve.o $(B)/src/linalg/lac_petsc_env.o \
+  $(B)/src/linalg/lac_petsc_saddle.o \
+  $(B)/src/linalg/lac_petsc_saddle_solve.o $(B)/src/linalg/lac_petsc_mg.o \
+  $(B)/src/linalg/lac_petsc_mg_aggregate.o \
+  $(B)/src/linalg/lac_petsc_mg_prolong.o \
   $(B)/src/fem/lac_assembly_dist.o: \
   $(PETSC_MK)
 
@@ -178,7 +182,7 @@ $(B)/src/solve/lac_petsc.o $(B)/src/linalg/lac_petsc_env.o \
 # main.c for the nomem harness follows the headers too (a stale copy
 # read lac_run with the layout of an older lac_run_solution)
 -include $(B)/tests/lac_main.d $(B)/tests/lac_assembly_dist_faults.d \
-  $(B)/tests/lac_petsc_faults.d
+  $(B)/tests/lac_petsc_serve_faults.d
 
 # ---- tests ---------------------------------------------------------------
 NUMCMP   := $(if $(wildcard tests/numcmp.c),$(B)/tests/numcmp)

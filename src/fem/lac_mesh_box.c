@@ -4,6 +4,14 @@
  * n0 x n1 (x n2) boxes, each one cell (quad/hex) or split into simplices
  * (tri: along a diagonal; tet: the 6-tetrahedra Kuhn split, so that
  * neighbouring faces match).  Used by tests, examples and benchmarks.
+ *
+ * Box meshes: simplices come from the Kuhn (Freudenthal) split of every
+ * square into 2 triangles along its (0,0)-(1,1) diagonal and of every cube
+ * into 6 tetrahedra around its (0,0,0)-(1,1,1) diagonal; the same split in
+ * every box makes the mesh conforming.  Nodes of order-2 meshes live on a
+ * lattice of half steps, which numbers them once for all cells.
+ *   H. W. Kuhn, Some combinatorial lemmas in topology, IBM J. Res. Dev. 4
+ *   (1960) 518-524.
  */
 #include "fem/lac_mesh.h"
 

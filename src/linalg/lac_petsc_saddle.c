@@ -1,11 +1,14 @@
 /* lac_petsc_saddle.c -- a stiffness under linear constraints by Krylov
  *                       methods and multigrid (see lac_petsc_saddle.h)
+ *
+ * The solvers of the three methods, the projections of the projected CG
+ * and the new values; the solves themselves in lac_petsc_saddle_solve.c
+ * (the solvers' state: lac_petsc_saddle_internal.h).
  */
 #include "linalg/lac_petsc_saddle.h"
 
 #ifdef LAC_HAVE_PETSC
 
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <petscksp.h>
@@ -13,57 +16,13 @@
 #include "base/lac_status.h"
 #include "linalg/lac_petsc_env.h"
 #include "linalg/lac_petsc_mg.h"
+#include "linalg/lac_petsc_saddle_internal.h"
 
 #define KSP_MAXIT 2000        /* Krylov iterations at most per solve     */
-#define CORRECTION_RTOL 1e-6  /* fieldsplit: of its correction step      */
 #define PROJECTION_STEPS 1    /* projected: Jacobi steps of Z ~ K^-1 B   */
 #define PROJECTION_STEPS_MAX 100  /* -lac_projection_steps at most       */
 
-#define TRY(call) do { PetscErrorCode e_ = (call); \
-    if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
 #define COUNT(a) (sizeof (a) / sizeof *(a))
-
-/* The tolerances of a Krylov method the user gave (-ksp_rtol, -ksp_atol,
- * -ksp_max_it with its prefix): they win over lac's, as PETSc's options
- * win over a program's settings. */
-typedef struct
-{
-  PetscReal rtol, atol;
-  PetscInt maxit;
-  PetscBool has_rtol, has_atol, has_maxit;
-} user_tolerances;
-
-struct lac_petsc_saddle
-{
-  lac_saddle_method method;
-  int size;                        /* MPI processes                      */
-  Mat K, B;                        /* borrowed; B NULL: K alone          */
-  KSP ku;                          /* K alone: CG + GAMG                 */
-  Vec ru;                          /* K alone, projected: U's layout     */
-  user_tolerances tol;             /* the user's, of the Krylov method   */
-  /* projected */
-  PC pg;                           /* the multigrid of K (NULL: none,
-                                      -pc_type none)                     */
-  lac_petsc_mg *mg;                /* owned: lac's contact multigrid in
-                                      pg (NULL: a PETSc PC of -elast_)   */
-  KSP kg, kp;                      /* B^T B + D (LU); CG on P K           */
-  Mat G, Ah;                       /* B^T B + D; P K (shell)             */
-  Vec u0, bu, tu, tk, sk;          /* U's layout; the multipliers'       */
-  Mat Bl, Gl;                      /* N > 1: the own rows of B, a copy
-                                      of G                               */
-  KSP kl;                          /*   its LU (prefix gram_local_)      */
-  int steps;                       /* Jacobi steps of Z (0: P only)      */
-  Mat Z, Gz;                       /* Z ~ K^-1 B; B^T Z + D              */
-  KSP kz;                          /*   its LU (prefix gramz_)           */
-  Mat Zl, Gzl;                     /* N > 1: Z's own rows, a copy of G_Z */
-  KSP kzl;                         /*   its LU (prefix gramz_local_)     */
-  Vec dinv;                        /* diag(K)^-1                         */
-  Vec vl, ul, tl, tg, sl;          /*   their vectors (own rows; k)      */
-  /* fieldsplit */
-  Mat Bt, D, Sp, A;                /* A = [K B; B^T D]                    */
-  KSP ks;                          /* GMRES + PCFIELDSPLIT               */
-  Vec b, x, r, dx;                 /* A's layout                         */
-};
 
 void
 lac_petsc_saddle_free (lac_petsc_saddle *sv)
@@ -148,8 +107,8 @@ subtract (lac_petsc_saddle *sv, Mat X, Mat Y, KSP kx, Mat Xl, Mat Yl,
 
 /* v = P v = v - B (B^T B + D)^-1 B^T v: v without its part in the range
  * of B (l2-orthogonal projection on the null space of B^T). */
-static PetscErrorCode
-project (lac_petsc_saddle *sv, Vec v)
+PetscErrorCode
+lac_petsc_saddle_project (lac_petsc_saddle *sv, Vec v)
 {
   return subtract (sv, sv->B, sv->B, sv->kg, sv->Bl, sv->Bl, sv->kl, 0, v);
 }
@@ -189,7 +148,7 @@ projected_op (Mat A, Vec x, Vec y)
   lac_petsc_saddle *sv;
   PetscCall (MatShellGetContext (A, &sv));
   PetscCall (MatMult (sv->K, x, y));
-  return project (sv, y);
+  return lac_petsc_saddle_project (sv, y);
 }
 
 /* Its preconditioner, M one V-cycle of multigrid on K: z = P M r, or
@@ -203,7 +162,7 @@ projected_pc (PC pc, Vec r, Vec z)
   if (!sv->steps)
     {
       PetscCall (sv->pg ? PCApply (sv->pg, r, z) : VecCopy (r, z));
-      return project (sv, z);
+      return lac_petsc_saddle_project (sv, z);
     }
   PetscCall (VecCopy (r, sv->ru));                     /* P_Z^T r */
   PetscCall (subtract (sv, sv->Z, sv->B, sv->kz, sv->Zl, sv->Bl, sv->kzl, 1,
@@ -243,9 +202,9 @@ read_tolerances (const char *prefix, user_tolerances *u)
 /* ksp's tolerances: lac's rtol, atol and KSP_MAXIT, but those the user
  * gave (sv->tol); a relative tolerance of the user's stands alone (no
  * atol of lac's beside it, PETSc's 1e-50). */
-static int
-set_tolerances (const lac_petsc_saddle *sv, KSP ksp, PetscReal rtol,
-                PetscReal atol)
+int
+lac_petsc_saddle_set_tolerances (const lac_petsc_saddle *sv, KSP ksp,
+                                 PetscReal rtol, PetscReal atol)
 {
   const user_tolerances *u = &sv->tol;
   TRY (KSPSetTolerances (ksp, u->has_rtol ? u->rtol : rtol,
@@ -585,214 +544,6 @@ lac_petsc_saddle_update (lac_petsc_saddle *sv, lac_saddle_vec d,
   if (!d || (sv->ks && !sp))
     LAC_ERROR (LAC_EINVAL, "the diagonal of the multipliers is missing");
   return sv->ks ? update_fieldsplit (sv, d, sp) : update_projected (sv, d);
-}
-
-/* ---- the solves --------------------------------------------------------- */
-
-/* After KSPSolve: iterations and reason into c; the relative true
- * residual res is the caller's. */
-static int
-check_ksp (KSP ksp, double res, const char *what, lac_saddle_counts *c)
-{
-  KSPConvergedReason why;
-  PetscInt its;
-  TRY (KSPGetIterationNumber (ksp, &its));
-  TRY (KSPGetConvergedReason (ksp, &why));
-  c->iterations += (int) its;
-  c->solves++;
-  c->residual = res;
-  if (why < 0)
-    LAC_ERROR (why == KSP_DIVERGED_INDEFINITE_PC
-               || why == KSP_DIVERGED_INDEFINITE_MAT ? LAC_ESING
-               : LAC_EMAXITER, "%s: %s after %d iterations, relative "
-               "residual %.3g", what, KSPConvergedReasons[why], (int) its,
-               res);
-  return LAC_SUCCESS;
-}
-
-/* ||b - A x|| / ||b|| (r: scratch). */
-static int
-true_residual (Mat A, Vec b, Vec x, Vec r, double *res)
-{
-  PetscReal nb, nr;
-  TRY (MatMult (A, x, r));
-  TRY (VecAYPX (r, -1.0, b));
-  TRY (VecNorm (r, NORM_2, &nr));
-  TRY (VecNorm (b, NORM_2, &nb));
-  *res = nb > 0 ? nr / nb : nr;
-  return LAC_SUCCESS;
-}
-
-/* K alone: K u = f to rtol (u: the start and the solution). */
-static int
-solve_alone (lac_petsc_saddle *sv, Vec f, double rtol, const char *what,
-             Vec u, lac_saddle_counts *c)
-{
-  double res;
-  int status;
-  TRY (KSPSetInitialGuessNonzero (sv->ku, PETSC_TRUE));
-  TRY (set_tolerances (sv, sv->ku, rtol, 0.0));
-  TRY (KSPSolve (sv->ku, f, u));
-  if ((status = true_residual (sv->K, f, u, sv->ru, &res)))
-    return status;
-  return check_ksp (sv->ku, res, what, c);
-}
-
-/* projected, before CG: u0 = B (B^T B + D)^-1 g with B^T u0 = g where D
- * = 0, the right-hand side P (f - K u0) in bu, the start P (u - u0). */
-static PetscErrorCode
-projected_start (lac_petsc_saddle *sv, Vec f, Vec g, Vec u)
-{
-  PetscCall (KSPSolve (sv->kg, g, sv->sk));
-  PetscCall (MatMult (sv->B, sv->sk, sv->u0));
-  PetscCall (MatMult (sv->K, sv->u0, sv->bu));
-  PetscCall (VecAYPX (sv->bu, -1.0, f));
-  PetscCall (project (sv, sv->bu));
-  PetscCall (VecAXPY (u, -1.0, sv->u0));
-  return project (sv, u);
-}
-
-/* projected, after CG: u = u0 + x, l = (B^T B + D)^-1 B^T (f - K u), and
- * the relative true residual, each block in its own unit (the larger of
- * the two): the forces f - K u - B l against f (2-norms, as the CG's),
- * the constraints g - B^T u against |g| + |B^T| |u| (max-norms). */
-static PetscErrorCode
-projected_finish (lac_petsc_saddle *sv, Vec f, Vec g, Vec u, Vec l,
-                  double *res)
-{
-  PetscReal r1, r2, b1, b2, nB, nU;
-  PetscCall (VecAXPY (u, 1.0, sv->u0));
-  PetscCall (MatMult (sv->K, u, sv->ru));
-  PetscCall (VecAYPX (sv->ru, -1.0, f));
-  PetscCall (MatMultTranspose (sv->B, sv->ru, sv->tk));
-  PetscCall (KSPSolve (sv->kg, sv->tk, l));
-  PetscCall (MatMult (sv->B, l, sv->tu));
-  PetscCall (VecAXPY (sv->ru, -1.0, sv->tu));
-  PetscCall (VecNorm (sv->ru, NORM_2, &r1));
-  PetscCall (MatMultTranspose (sv->B, u, sv->tk));
-  PetscCall (VecAYPX (sv->tk, -1.0, g));
-  PetscCall (VecNorm (sv->tk, NORM_INFINITY, &r2));
-  PetscCall (VecNorm (f, NORM_2, &b1));
-  PetscCall (VecNorm (g, NORM_INFINITY, &b2));
-  PetscCall (MatNorm (sv->B, NORM_1, &nB));              /* |B^T|_inf */
-  PetscCall (VecNorm (u, NORM_INFINITY, &nU));
-  *res = fmax (r1 / fmax (b1, 1e-300), r2 / fmax (b2 + nB * nU, 1e-300));
-  return 0;
-}
-
-/* projected: CG on the null space of B^T, to rtol of the forces. */
-static int
-solve_projected (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
-                 const char *what, Vec u, Vec l, lac_saddle_counts *c)
-{
-  PetscReal b1;
-  double res = 0;
-  TRY (projected_start (sv, f, g, u));
-  TRY (VecNorm (f, NORM_2, &b1));           /* the CG's residual: forces */
-  TRY (KSPSetInitialGuessNonzero (sv->kp, PETSC_TRUE));
-  TRY (set_tolerances (sv, sv->kp, 0.0, rtol * b1));
-  TRY (KSPSolve (sv->kp, sv->bu, u));
-  TRY (projected_finish (sv, f, g, u, l, &res));
-  return check_ksp (sv->kp, res, what, c);
-}
-
-/* fieldsplit: the blocks of a vector of A, in (to = 1) or out of it. */
-static int
-nest_blocks (lac_petsc_saddle *sv, Vec v, Vec vu, Vec vl, int to)
-{
-  IS is[2];
-  Vec part[2] = { vu, vl }, sub;
-  TRY (MatNestGetISs (sv->A, is, NULL));
-  for (int j = 0; j < 2; j++)
-    {
-      TRY (VecGetSubVector (v, is[j], &sub));
-      TRY (to ? VecCopy (part[j], sub) : VecCopy (sub, part[j]));
-      TRY (VecRestoreSubVector (v, is[j], &sub));
-    }
-  return LAC_SUCCESS;
-}
-
-/* fieldsplit: A as a whole by GMRES, then one correction: GMRES
- * satisfies B^T u = g only to its tolerance relative to the forces (the
- * projected CG exactly), so x += A^-1 r once, to CORRECTION_RTOL. */
-static int
-solve_fieldsplit (lac_petsc_saddle *sv, Vec f, Vec g, double rtol,
-                  const char *what, Vec u, Vec l, lac_saddle_counts *c)
-{
-  char part[200];
-  double res;
-  int status;
-  if ((status = nest_blocks (sv, sv->b, f, g, 1))
-      || (status = nest_blocks (sv, sv->x, u, l, 1)))
-    return status;
-  TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_TRUE));
-  TRY (set_tolerances (sv, sv->ks, rtol, 0.0));
-  TRY (KSPSolve (sv->ks, sv->b, sv->x));
-  if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
-      || (status = check_ksp (sv->ks, res, what, c)))
-    return status;
-  TRY (KSPSetInitialGuessNonzero (sv->ks, PETSC_FALSE));
-  TRY (set_tolerances (sv, sv->ks, CORRECTION_RTOL, 0.0));
-  TRY (KSPSolve (sv->ks, sv->r, sv->dx));
-  TRY (VecAXPY (sv->x, 1.0, sv->dx));
-  snprintf (part, sizeof part, "%s, correction", what);
-  if ((status = true_residual (sv->A, sv->b, sv->x, sv->r, &res))
-      || (status = check_ksp (sv->ks, res, part, c)))
-    return status;
-  return nest_blocks (sv, sv->x, u, l, 0);
-}
-
-int
-lac_petsc_saddle_solve (lac_petsc_saddle *sv, lac_saddle_vec f,
-                        lac_saddle_vec g, double rtol, const char *what,
-                        lac_saddle_vec u, lac_saddle_vec l,
-                        lac_saddle_counts *c)
-{
-  *c = (lac_saddle_counts) { 0, 0, 0.0 };
-  if (sv->ku)
-    return solve_alone (sv, f, rtol, what, u, c);
-  if (!g || !l)
-    LAC_ERROR (LAC_EINVAL, "%s: the constraints or the multipliers are "
-               "missing", what);
-  if (sv->kp)
-    return solve_projected (sv, f, g, rtol, what, u, l, c);
-  return solve_fieldsplit (sv, f, g, rtol, what, u, l, c);
-}
-
-int
-lac_petsc_saddle_types (const lac_petsc_saddle *sv, char *krylov, char *pc,
-                        size_t size)
-{
-  KSPType kt;
-  PCType pt;
-  PC p;
-  PetscBool set;
-  TRY (KSPGetType (sv->ks ? sv->ks : sv->kp ? sv->kp : sv->ku, &kt));
-  snprintf (krylov, size, "%s", kt);
-  if (sv->ks)
-    {
-      snprintf (pc, size, "gamg");
-      TRY (PetscOptionsGetString (NULL, NULL, "-fieldsplit_u_pc_type", pc,
-                                  size, &set));
-      return LAC_SUCCESS;
-    }
-  if (sv->mg)
-    {
-      snprintf (pc, size, "%s", LAC_PETSC_MG_NAME);
-      return LAC_SUCCESS;
-    }
-  if (sv->kp && !sv->pg)
-    {
-      snprintf (pc, size, "none");
-      return LAC_SUCCESS;
-    }
-  if (sv->pg)
-    p = sv->pg;
-  else
-    TRY (KSPGetPC (sv->ku, &p));
-  TRY (PCGetType (p, &pt));
-  snprintf (pc, size, "%s", pt);
-  return LAC_SUCCESS;
 }
 
 #else /* LAC_HAVE_PETSC */

@@ -34,12 +34,15 @@
  * memory ends with that agreement: the root returns it with the message
  * of the process that failed.  PETSc's errors become LAC_EDEP with
  * PETSc's message.
+ *
+ * Here: the object, the layout, build, solve, kmul and post; update's
+ * values in lac_petsc_values.c, the other processes' loop in
+ * lac_petsc_serve.c (their state: lac_petsc_internal.h).
  */
 #include "solve/lac_petsc.h"
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
@@ -74,55 +77,11 @@ const lac_strategy_ops lac_petsc_ops = { .alloc = petsc_alloc };
 #include "fem/lac_assembly_dist.h"
 #include "fem/lac_post_dist.h"
 #include "linalg/lac_petsc_saddle.h"
+#include "solve/lac_petsc_internal.h"
 
 _Static_assert (sizeof (PetscInt) == sizeof (int), "lac_csc's int indices "
                 "are handed to PETSc: a PETSc with 32-bit indices");
 _Static_assert (sizeof (PetscScalar) == sizeof (double), "real PETSc");
-
-enum { PROJECTED = LAC_SADDLE_PROJECTED,     /* the contact solvers  */
-       FIELDSPLIT = LAC_SADDLE_FIELDSPLIT };  /* (-lac_contact)        */
-
-#define TRY(call) do { PetscErrorCode e_ = (call); \
-    if (e_) return lac_petsc_fail ((int) e_, __func__, #call); } while (0)
-#define ASSEMBLY_TOL 1e-10    /* K x against its cells', of |K| |x|    */
-
-typedef struct lac_petsc
-{
-  double omega;                    /* W_i = omega / s_i                   */
-  double threshold;                /* the multigrid's, on contact nodes   */
-  int rank, size, root;            /* root: rank 0                        */
-  size_t n, k;
-  int mode, coords_given, built, cells;   /* cells: K from the cells     */
-  PetscInt bs, r0, r1, l0, l1;     /* block size; own rows of U, lambda   */
-  lac_dist *dist;                  /* owned: the rows, the cells, C       */
-  /* the root's: the whole system */
-  const lac_contact_system *sys;   /* borrowed                            */
-  const lac_dist_source *src;      /* borrowed: the cells of K, or NULL   */
-  int dim;                         /* components per node (coordinates)   */
-  const double *coords;            /* borrowed, n, or NULL                */
-  unsigned long long hK, hC;       /* patterns the matrices were made for */
-  int have_stat, new_numbers;
-  double *xv;                      /* owned, n: scratch                   */
-  size_t na, *idx;                 /* owned, k: the active multipliers    */
-  double *rhs, *lst;               /* owned, k                            */
-  /* every process */
-  double *s;                       /* owned, k: c_i^T diag(K)^-1 c_i      */
-  double knorm;                    /* ||K||_inf (before the kappa)        */
-  double *w, *wold, *dw;           /* owned, k: W, the W in K_W, change   */
-  char *stat;                      /* owned, k: statuses of the matrices  */
-  double kappa;                    /* the mean of diag(K): PETSc's K_W and
-                                      f_W are divided by it              */
-  Mat Kw, B;                       /* K_W; B = -C_A (n x k)               */
-  lac_petsc_saddle *sv;            /* owned: the Krylov solvers of (*W)   */
-  Vec fw, xu, ru;                  /* U's layout: f_W, U, scratch         */
-  Vec gk, lk, dk, pk;              /* the multipliers': -g_A, lambda, D's
-                                      diagonal, the Schur preconditioner's */
-  Vec useq, lseq;                  /* U, lambda whole on the root (empty
-                                      elsewhere)                          */
-  VecScatter gu, gl;               /* root -> distributed (forward)       */
-  lac_solve_counts counts;
-  char method[200];
-} lac_petsc;
 
 /* ---- the object --------------------------------------------------------- */
 
@@ -178,8 +137,8 @@ petsc_alloc (void)
 
 #define COUNT(a) (sizeof (a) / sizeof *(a))
 
-static void
-free_petsc (lac_petsc *s)
+void
+lac_petsc_free_petsc (lac_petsc *s)
 {
   Mat *mat[] = { &s->B, &s->Kw };
   Vec *vec[] = { &s->fw, &s->xu, &s->ru, &s->gk, &s->lk, &s->dk, &s->pk,
@@ -197,8 +156,8 @@ free_petsc (lac_petsc *s)
   s->built = 0;
 }
 
-static void
-free_arrays (lac_petsc *s)
+void
+lac_petsc_free_arrays (lac_petsc *s)
 {
   double **d[] = { &s->s, &s->xv, &s->rhs, &s->lst, &s->w, &s->wold,
                    &s->dw };
@@ -225,8 +184,8 @@ petsc_free (void *w)
       lac_petsc_command c = { .cmd = LAC_PETSC_CMD_FREE };
       lac_petsc_command_send (&c);
     }
-  free_petsc (s);
-  free_arrays (s);
+  lac_petsc_free_petsc (s);
+  lac_petsc_free_arrays (s);
   lac_free (s);
 }
 
@@ -269,7 +228,7 @@ static int
 alloc_arrays (lac_petsc *s, size_t n, size_t k)
 {
   size_t k1 = k ? k : 1;
-  free_arrays (s);
+  lac_petsc_free_arrays (s);
   s->idx = lac_malloc (k1 * sizeof *s->idx);
   s->rhs = lac_malloc (k1 * sizeof *s->rhs);
   s->lst = lac_malloc (k1 * sizeof *s->lst);
@@ -503,11 +462,12 @@ build_layout (lac_petsc *s, const lac_petsc_command *c, const lac_csc *C)
 
 /* Everything that depends on the sizes and patterns (all processes; sys:
  * the root's, NULL elsewhere). */
-static int
-build (lac_petsc *s, const lac_petsc_command *c, const lac_contact_system *sys)
+int
+lac_petsc_build (lac_petsc *s, const lac_petsc_command *c,
+                 const lac_contact_system *sys)
 {
   int status;
-  free_petsc (s);
+  lac_petsc_free_petsc (s);
   s->n = (size_t) c->n;
   s->k = (size_t) c->k;
   s->bs = c->bs;
@@ -573,7 +533,7 @@ root_build (lac_petsc *s, const lac_contact_system *sys)
   if ((status = alloc_arrays (s, n, k))
       || (status = lac_petsc_command_send (&c)))
     return status;
-  return lac_petsc_agree (build (s, &c, sys));
+  return lac_petsc_agree (lac_petsc_build (s, &c, sys));
 }
 
 static int
@@ -613,214 +573,15 @@ petsc_set_mesh (void *w, const lac_dist_source *src)
   s->src = src;
 }
 
-/* ---- collective: the values for the statuses ---------------------------- */
-
-static int
-assemble (Mat M)
-{
-  TRY (MatAssemblyBegin (M, MAT_FINAL_ASSEMBLY));
-  TRY (MatAssemblyEnd (M, MAT_FINAL_ASSEMBLY));
-  return LAC_SUCCESS;
-}
-
-/* sum |v_j| in the order of the rows (the same sum on every run: not
- * the BLAS's, whose threads may cut it differently). */
-static int
-sum_abs (Vec v, double *sum)
-{
-  const PetscScalar *a;
-  PetscInt m;
-  double mine = 0;
-  TRY (VecGetLocalSize (v, &m));
-  TRY (VecGetArrayRead (v, &a));
-  for (PetscInt j = 0; j < m; j++)
-    mine += fabs (a[j]);
-  TRY (VecRestoreArrayRead (v, &a));
-  if (MPI_Allreduce (&mine, sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
-    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the diagonal's sum failed");
-  return LAC_SUCCESS;
-}
-
-/* s_i = c_i^T diag(K)^-1 c_i (lac_system_column_scales' sums) from d =
- * diag(K), PETSc's: each process the entries of C in its own rows, then
- * the sum over the processes, so that every process has W. */
-static int
-column_scales (lac_petsc *s, Vec d)
-{
-  const lac_csc *C = lac_dist_c (s->dist);
-  const int *row = lac_dist_row (s->dist);
-  const PetscScalar *a;
-  TRY (VecGetArrayRead (d, &a));
-  for (size_t i = 0; i < s->k; i++)
-    {
-      s->s[i] = 0;
-      for (int p = C->p[i]; p < C->p[i + 1]; p++)
-        {
-          PetscInt r = row ? row[C->i[p]] : C->i[p];
-          double kjj = r >= s->r0 && r < s->r1 ? a[r - s->r0] : 0.0;
-          if (kjj != 0)
-            s->s[i] += C->x[p] * C->x[p] * (1 / fabs (kjj));
-        }
-    }
-  TRY (VecRestoreArrayRead (d, &a));
-  if (s->size > 1 && MPI_Allreduce (MPI_IN_PLACE, s->s, (int) s->k,
-                                    MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD))
-    LAC_ERROR (LAC_EDEP, "MPI_Allreduce of the column scales failed");
-  return LAC_SUCCESS;
-}
-
-/* K_W, K just assembled from the cells, against the cells' element
- * matrices (lac_dist_check_stiffness): the residuals of the root take K x
- * from K_W (petsc_kmul), so that they are the cells' K's. */
-static int
-check_assembly (lac_petsc *s)
-{
-  double err;
-  int status = lac_dist_check_stiffness (s->dist, s->Kw, &err);
-  if (status)
-    return status;
-  TRY (PetscInfo (s->Kw, "K against its cells: %.3g of |K| |x|\n", err));
-  if (!(err <= ASSEMBLY_TOL))
-    LAC_ERROR (LAC_ESANITY, "the stiffness PETSc assembled on %d "
-               "process%s is not its cells' (|K x - sum_e K_e x| = %.2g of "
-               "|K| |x| for a probe x): a fault of the distributed "
-               "assembly; a direct strategy on one process does without it",
-               s->size, s->size > 1 ? "es" : "", err);
-  return LAC_SUCCESS;
-}
-
-/* New numbers: K_W = K (from the cells or the root's K) divided by kappa,
- * the mean of |K_jj|: the stiffness K_W and the forces f_W are handed to
- * PETSc divided by it (not with fieldsplit, whose GMRES weighs forces
- * against gaps: tuned as it is), so that PETSc sees the same numbers
- * whatever the units (its GAMG with the rigid motions is not
- * scale-invariant: with lengths and moduli scaled by powers of two, the
- * results changed in their last bits, which the projected CG amplifies to
- * 1e-9; chapter 13).  No contact term in it yet (wold = 0).  From K,
- * before the division, ||K||_inf for the root's residuals and the
- * column scales s of W. */
-static int
-new_stiffness (lac_petsc *s, const lac_contact_system *sys)
-{
-  double sum;
-  int status;
-  if (s->k && (status = lac_dist_set_c (s->dist, sys ? sys->C : NULL, 0)))
-    return status;
-  TRY (MatZeroEntries (s->Kw));
-  if ((status = lac_dist_add_stiffness (s->dist, sys && !s->cells
-                                        ? sys->K : NULL, s->Kw, 1.0))
-      || (status = assemble (s->Kw))
-      || (s->cells && (status = check_assembly (s))))
-    return status;
-  TRY (MatNorm (s->Kw, NORM_INFINITY, &s->knorm));
-  TRY (MatGetDiagonal (s->Kw, s->ru));
-  if ((status = sum_abs (s->ru, &sum))
-      || (s->k && (status = column_scales (s, s->ru))))
-    return status;
-  s->kappa = s->mode == FIELDSPLIT || !(sum > 0) ? 1.0
-             : sum / (double) s->n;
-  TRY (MatScale (s->Kw, 1 / s->kappa));
-  memset (s->wold, 0, (s->k ? s->k : 1) * sizeof *s->wold);
-  return LAC_SUCCESS;
-}
-
-/* K_W += C (W - W_old) C^T / kappa: the columns whose weight changed. */
-static int
-contact_terms (lac_petsc *s)
-{
-  int status;
-  for (size_t i = 0; i < s->k; i++)
-    s->dw[i] = (s->w[i] - s->wold[i]) / s->kappa;
-  status = lac_dist_add_contact (s->dist, s->Kw, s->dw);
-  memcpy (s->wold, s->w, (s->k ? s->k : 1) * sizeof *s->wold);
-  return status ? status : assemble (s->Kw);
-}
-
-/* B = -C_A (the inactive columns are zeros); D = 1 on the inactive, 0
- * on the active; with fieldsplit, its Schur preconditioner Sp = 1 on the
- * inactive, -1/w on the active (-S_W^-1 is about -W_A: the Schur
- * complement of (*W) is -S_W).  Each process its own columns and
- * multipliers. */
-static int
-multipliers (lac_petsc *s)
-{
-  int status;
-  if ((status = lac_dist_set_b (s->dist, s->B, s->stat))
-      || (status = assemble (s->B)))
-    return status;
-  for (PetscInt i = s->l0; i < s->l1; i++)
-    {
-      int on = s->stat[i] && s->w[i] > 0;
-      TRY (VecSetValue (s->dk, i, on ? 0.0 : 1.0, INSERT_VALUES));
-      if (s->mode == FIELDSPLIT)
-        TRY (VecSetValue (s->pk, i, on ? -s->kappa / s->w[i] : 1.0,
-                          INSERT_VALUES));
-    }
-  TRY (VecAssemblyBegin (s->dk));
-  TRY (VecAssemblyEnd (s->dk));
-  TRY (VecAssemblyBegin (s->pk));
-  TRY (VecAssemblyEnd (s->pk));
-  return LAC_SUCCESS;
-}
-
-/* W_i = omega / s_i on the active columns, 0 on the others. */
-static void
-weights (lac_petsc *s)
-{
-  for (size_t i = 0; i < s->k; i++)
-    s->w[i] = s->stat[i] && s->s[i] > 0 ? s->omega / s->s[i] : 0.0;
-}
-
-/* The values (all processes; sys: the root's): the statuses from the
- * root, K_W (new numbers: from the cells) and W, B and the solvers. */
-static int
-update_values (lac_petsc *s, const lac_petsc_command *c,
-               const lac_contact_system *sys)
-{
-  int status;
-  if ((s->k && (status = lac_petsc_bcast (s->stat, s->k)))
-      || (c->all && (status = new_stiffness (s, sys))))
-    return status;
-  weights (s);
-  if ((status = contact_terms (s))
-      || (s->k && (status = multipliers (s)))
-      || (status = lac_petsc_saddle_update (s->sv, s->k ? s->dk : NULL,
-                                            s->k ? s->pk : NULL)))
-    return status;
-  s->counts.factorizations++;
-  return LAC_SUCCESS;
-}
-
-/* The root: the matrices for the statuses, when they or the numbers
- * changed. */
-static int
-update (lac_petsc *s, const char *active)
-{
-  lac_petsc_command c = { .cmd = LAC_PETSC_CMD_UPDATE,
-                          .all = s->new_numbers };
-  int status;
-  if (!s->new_numbers && s->have_stat
-      && (s->k == 0 || memcmp (active, s->stat, s->k) == 0))
-    return LAC_SUCCESS;
-  if (s->k)
-    memcpy (s->stat, active, s->k);
-  s->have_stat = 0;
-  if ((status = lac_petsc_command_send (&c))
-      || (status = lac_petsc_agree (update_values (s, &c, s->sys))))
-    return status;
-  s->have_stat = 1;
-  s->new_numbers = 0;
-  return LAC_SUCCESS;
-}
-
 /* ---- collective: the solves --------------------------------------------- */
 
 /* One solve of (*W) (all processes; the data are the root's): f_W (n),
  * gl = -g_A (k, 0 on the inactive), U and lambda (the start and the
  * solution). */
-static int
-step_solve (lac_petsc *s, const lac_petsc_command *c, const double *fw,
-            const double *gl, double *U, double *lambda)
+int
+lac_petsc_step_solve (lac_petsc *s, const lac_petsc_command *c,
+                      const double *fw, const double *gl, double *U,
+                      double *lambda)
 {
   lac_saddle_counts n;
   int status;
@@ -869,7 +630,7 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
     LAC_ERROR (LAC_EINVAL, "petsc: set was not called");
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
-  if ((status = update (s, active)))
+  if ((status = lac_petsc_update (s, active)))
     return status;
   s->na = 0;
   for (size_t i = 0; i < s->k; i++)
@@ -883,8 +644,9 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
   for (size_t j = 0; j < s->n; j++)
     s->xv[j] /= s->kappa;                          /* f_W / kappa */
   if ((status = lac_petsc_command_send (&c))
-      || (status = lac_petsc_agree (step_solve (s, &c, s->xv, s->rhs, U,
-                                                s->lst))))
+      || (status = lac_petsc_agree (lac_petsc_step_solve (s, &c, s->xv,
+                                                          s->rhs, U,
+                                                          s->lst))))
     return status;
   for (size_t i = 0; i < s->k; i++)
     lambda[i] = active[i] ? s->lst[i] * s->kappa : 0.0;
@@ -894,8 +656,8 @@ petsc_solve (void *w, const char *active, const double *f, const double *g,
 /* ---- K x for the root's residuals --------------------------------------- */
 
 /* K_W x (all processes; x and y: the root's, n). */
-static int
-step_kmul (lac_petsc *s, const double *x, double *y)
+int
+lac_petsc_step_kmul (lac_petsc *s, const double *x, double *y)
 {
   int status = to_dist (s, s->gu, s->useq, x, s->xu);
   if (status)
@@ -919,7 +681,7 @@ petsc_kmul (void *w, const double *x, double *y)
     LAC_ERROR (LAC_EINVAL, "petsc: K x before the matrices of the last set "
                "were made");
   if ((status = lac_petsc_command_send (&c))
-      || (status = lac_petsc_agree (step_kmul (s, x, y))))
+      || (status = lac_petsc_agree (lac_petsc_step_kmul (s, x, y))))
     return status;
   for (size_t j = 0; j < s->n; j++)
     y[j] *= s->kappa;
@@ -963,108 +725,6 @@ petsc_post (void *w, lac_post_request *p)
   if ((status = lac_petsc_command_send (&c)))
     return status;
   return lac_petsc_agree (lac_dist_post (s->dist, p));
-}
-
-/* ---- the other processes ------------------------------------------------ */
-
-#ifdef LAC_TEST_FAULTS
-/* A failure on purpose (test builds): LAC_TEST_FAIL_AFTER=R:NAME fails
- * process R once its step of the command NAME (build, update, solve,
- * kmul, post) is done, after its last collective call, where only the
- * agreement that ends the command carries it to the root. */
-static int
-injected (const lac_petsc *s, int cmd)
-{
-  static const char *name[] = { "", "build", "update", "solve", "free",
-                                "memory", "kmul", "post", "quit" };
-  const char *v = getenv ("LAC_TEST_FAIL_AFTER"), *colon;
-  if (!v || !(colon = strchr (v, ':')) || atoi (v) != s->rank || cmd < 1
-      || cmd > LAC_PETSC_CMD_QUIT || strcmp (colon + 1, name[cmd]) != 0)
-    return LAC_SUCCESS;
-  LAC_ERROR (LAC_EDEP, "failure injected by LAC_TEST_FAIL_AFTER after the "
-             "%s", name[cmd]);
-}
-#else
-#define injected(s, cmd) LAC_SUCCESS
-#endif
-
-/* The others: the root's command, the same steps as the root's with
- * none of its data. */
-static int
-follow (lac_petsc *s, const lac_petsc_command *c)
-{
-  int status;
-  switch (c->cmd)
-    {
-    case LAC_PETSC_CMD_BUILD:
-      status = build (s, c, NULL);
-      break;
-    case LAC_PETSC_CMD_UPDATE:
-      status = update_values (s, c, NULL);
-      break;
-    case LAC_PETSC_CMD_SOLVE:
-      status = step_solve (s, c, NULL, NULL, NULL, NULL);
-      break;
-    case LAC_PETSC_CMD_FREE:
-      free_petsc (s);
-      free_arrays (s);
-      return LAC_SUCCESS;
-    case LAC_PETSC_CMD_MEMORY:
-      return lac_petsc_memory_reply ();
-    case LAC_PETSC_CMD_KMUL:
-      status = step_kmul (s, NULL, NULL);
-      break;
-    case LAC_PETSC_CMD_POST:
-      status = lac_dist_post (s->dist, NULL);
-      break;
-    default:
-      LAC_ERROR (LAC_ESANITY, "unknown command %d", c->cmd);
-    }
-  return status ? status : injected (s, c->cmd);
-}
-
-/* 1 for the commands that end with an agreement on their status (the
- * others cannot fail on a process: free, memory). */
-static int
-agreed (int cmd)
-{
-  return cmd == LAC_PETSC_CMD_BUILD || cmd == LAC_PETSC_CMD_UPDATE
-         || cmd == LAC_PETSC_CMD_SOLVE || cmd == LAC_PETSC_CMD_KMUL
-         || cmd == LAC_PETSC_CMD_POST;
-}
-
-/* Each command ends with the agreement of every process on its status,
- * as the root's side ends it: a failure on this process (after the
- * steps' own agreements too) reaches the root with this process's
- * message, and the root ends the run. */
-int
-lac_petsc_serve (void)
-{
-  lac_petsc *s;
-  lac_petsc_command c;
-  int status;
-  if (!lac_petsc_initialized ())
-    LAC_ERROR (LAC_EINVAL, "lac_petsc_initialize was not called");
-  if (!(s = lac_calloc (1, sizeof *s)))
-    LAC_ERROR (LAC_ENOMEM, "petsc worker");
-  lac_petsc_rank (&s->rank, &s->size);
-  if (s->rank == 0)
-    {
-      lac_free (s);
-      LAC_ERROR (LAC_EINVAL, "the root runs the scene; the others serve");
-    }
-  while (!(status = lac_petsc_command_receive (&c))
-         && c.cmd != LAC_PETSC_CMD_QUIT)
-    {
-      status = follow (s, &c);
-      if (agreed (c.cmd))
-        lac_petsc_agree (status);
-      lac_error_clear ();
-    }
-  free_petsc (s);
-  free_arrays (s);
-  lac_free (s);
-  return status;
 }
 
 const lac_strategy_ops lac_petsc_ops = {
