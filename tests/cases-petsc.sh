@@ -40,7 +40,9 @@
 #                    process, with a --max-memory the Cholesky factor is
 #                    estimated not to fit in (the 3D patch test, n = 14),
 #                    petsc instead of the refusal, which stays when petsc
-#                    does not fit either;
+#                    does not fit either; in 3D above the crossover in
+#                    time (n = 26) petsc, the solve line saying why, with
+#                    the direct lambda;
 #   contact pc       the 3D patch test (n = 20) within 1.5 times the CG
 #                    iterations of the cube of the same size, and fewer
 #                    than two thirds of those without the contact nodes'
@@ -518,6 +520,25 @@ if [ "$have_petsc" = 1 ]; then
       petsc_fail "auto-nofit petsc" "want the petsc lines with --max-memory 230M only: $(grep -c solver_ "$C/auto-nofit.out") and $(grep -c solver_ "$C/auto-fit.out")"
     fi
     petsc_same "auto-nofit vs direct" "$C/auto-nofit.out" "$C/auto-fit.out" lambda_min lambda_max max_u
+  fi
+  # ---- auto in 3D above the crossover in time: petsc on one process ----
+  # n = 26: 110,130 dofs, a run with a Cholesky factor estimated above
+  # LAC_STRATEGY_ITERATIVE_BYTES (n = 14 above: below it, a factor); the
+  # solve line says why, and the answer is the factor's to 1e-8.
+  BIG="--set element=hex8 --set mesh.numbers=n=26"
+  # shellcheck disable=SC2086
+  if env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" $BIG --no-output \
+       > "$C/auto-time.out" 2> "$C/auto-time.err" \
+     && petsc_run auto-time-direct "$D8/taylor3d.scene" $BIG --strategy split; then
+    if [ "$(petsc_value "$C/auto-time.out" processes)" = 1 ] \
+       && grep -q "solve .*projected cg + lac-sa + gamg on K_W, 1 process (auto: in 3D a Cholesky factor this large takes longer)" "$C/auto-time.err"; then
+      petsc_ok "auto-time petsc"
+    else
+      petsc_fail "auto-time petsc" "want the projected CG, 1 process, and why: $(grep 'solve ' "$C/auto-time.err" | tail -1)"
+    fi
+    petsc_same "auto-time vs direct" "$C/auto-time.out" "$C/auto-time-direct.out" lambda_min lambda_max max_u
+  else
+    petsc_fail "auto-time petsc" "lac run failed: $(tail -1 "$C/auto-time.err")"
   fi
   # shellcheck disable=SC2086
   env "$PETSC_ENV" "$LAC" run "$D8/taylor3d.scene" $NOFIT --max-memory 150M --quiet --no-output \

@@ -14,6 +14,7 @@
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "io/lac_mesh_opts.h"
 #include "io/lac_scene_query.h"
 #include "run/lac_run_cause.h"
 #include "run/lac_run_mesh.h"
@@ -66,18 +67,23 @@ stage_material (lac_run *r)
                                  r->progress, sizeof r->progress);
 }
 
-/* What the strategy auto reads of the run: the MPI processes, and
- * whether a Cholesky factor of K is estimated to fit in --max-memory
- * (else petsc, if lac has it; chapter 13). */
+/* What the strategy auto reads of the run: the MPI processes, whether
+ * a Cholesky factor of K is estimated to fit in --max-memory (else
+ * petsc, if lac has it), and in 3D the memory it is estimated at (petsc
+ * above the crossover in time; chapter 13). */
 static lac_strategy_context
 auto_context (const lac_run *r)
 {
-  lac_strategy_context ctx = { 1, 1 };
+  lac_strategy_context ctx = { 1, 1, r->mesh->dim, 0 };
   int rank;
   lac_petsc_rank (&rank, &ctx.processes);
   if (lac_petsc_available ())
-    ctx.factor_fits = lac_run_mesh_factor_fits (r->scene, r->mesh,
-                                                r->opts.max_memory);
+    {
+      ctx.factor_fits = lac_run_mesh_factor_fits (r->scene, r->mesh,
+                                                  r->opts.max_memory);
+      ctx.cholesky_bytes = lac_run_mesh_bytes (r->scene, r->mesh,
+                                               LAC_MESH_SOLVE_CHOLESKY, 0);
+    }
   return ctx;
 }
 

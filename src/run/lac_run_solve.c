@@ -202,7 +202,9 @@ auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
   if (kind == LAC_STRATEGY_SADDLE && !lac_strategy_solves_rows (by_size))
     return "auto: friction on a body held by contact alone";
   return ctx->processes > 1 ? "auto: more than one MPI process"
-         : "auto: a Cholesky factor would not fit in --max-memory";
+         : !ctx->factor_fits
+         ? "auto: a Cholesky factor would not fit in --max-memory"
+         : "auto: in 3D a Cholesky factor this large takes longer";
 }
 
 /* The strategy of a scene with contact: asked for (the command line,

@@ -33,24 +33,26 @@
  * the MPI processes (lac_strategy_type); every row solves both loops,
  * small strain and large deformation.  Auto takes the first row that
  * applies: on N > 1 MPI processes, or when no factor fits in memory, by
- * the properties processes and factor (lac_strategy_choose_in); else by
- * size. */
+ * the properties processes and factor (lac_strategy_choose_in); in 3D
+ * when a Cholesky factor would cost more time than the Krylov solve, by
+ * auto_from_bytes (LAC_STRATEGY_ITERATIVE_BYTES, measured in chapter 13);
+ * else by size. */
 const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
   { "auto", NULL, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 0 },
+    LAC_FACTOR_NONE, 0, 0, 0 },
   { "dense", &lac_saddle_dense_ops, LAC_BODIES_ANY, LAC_STRATEGY_DENSE_MAX,
-    LAC_FACTOR_DENSE, 0, 0 },
+    LAC_FACTOR_DENSE, 0, 0, 0 },
   { "schur", &lac_schur_ops, LAC_BODIES_HELD, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 0, 0 },
+    LAC_FACTOR_CHOLESKY, 0, 0, 0 },
   { "augmented", &lac_augmented_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_CHOLESKY, 1, 0 },
+    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
   { "saddle", &lac_saddle_lu_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_LU, 0, 0 },
+    LAC_FACTOR_LU, 0, 0, 0 },
   { "petsc", &lac_petsc_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 1 },
+    LAC_FACTOR_NONE, 0, 1, LAC_STRATEGY_ITERATIVE_BYTES },
   { "split", &lac_split_ops, LAC_BODIES_FLOATING, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 1, 0 },
-  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0 }
+    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
+  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0, 0 }
 };
 
 /* The type every failed Cholesky factorization falls back to. */
@@ -126,18 +128,30 @@ refuse (const lac_strategy_type *t, size_t nfree)
   return LAC_NSTRATEGIES;
 }
 
-/* Auto in the run ctx: the first row that applies and, on N > 1
- * processes, solves on them, or, when no factor fits, factorizes
- * nothing; -1 if ctx asks for neither (or no row has it). */
+/* Does the run ctx take row t before the sizes: on N > 1 processes, a
+ * row that solves on them; when no factor fits, one that factorizes
+ * nothing; in 3D, one whose crossover in time the estimated Cholesky
+ * run reaches? */
+static int
+run_takes (const lac_strategy_type *t, const lac_strategy_context *ctx)
+{
+  if (ctx->processes > 1)
+    return t->processes;
+  if (!ctx->factor_fits)
+    return t->factor == LAC_FACTOR_NONE;
+  return ctx->dim == 3 && t->auto_from_bytes > 0
+         && ctx->cholesky_bytes >= t->auto_from_bytes;
+}
+
+/* Auto in the run ctx: the first row that applies and the run takes
+ * (run_takes); -1 if none (or no ctx). */
 static int
 choose_for_run (size_t k, size_t nfree, const lac_strategy_context *ctx)
 {
-  int mpi = ctx && ctx->processes > 1, nofit = ctx && !ctx->factor_fits;
-  for (int j = 1; (mpi || nofit) && j < LAC_NSTRATEGIES; j++)
+  for (int j = 1; ctx && j < LAC_NSTRATEGIES; j++)
     {
       const lac_strategy_type *t = &lac_strategy_table[j];
-      if ((k == 0 || applies (t, nfree))
-          && (mpi ? t->processes : t->factor == LAC_FACTOR_NONE))
+      if ((k == 0 || applies (t, nfree)) && run_takes (t, ctx))
         return j;
     }
   return -1;

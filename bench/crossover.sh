@@ -1,0 +1,63 @@
+#!/bin/sh
+# crossover.sh -- a Cholesky factor against the petsc strategy on one
+#                 process: where auto changes sides          [chapter 13]
+#
+#   sh bench/crossover.sh [BUILD_DIR] [REPEATS] [CASES]
+#
+# The Taylor patch tests of chapter 08 (the upper body held by contact
+# alone) at growing sizes, each case run with a Cholesky factor
+# (--strategy split) and with the petsc strategy (projected CG and GAMG,
+# one process), alternately REPEATS times (default 3).  Prints per case:
+# the dofs, the memory lac estimates for the run with a Cholesky factor
+# (what auto compares with LAC_STRATEGY_ITERATIVE_BYTES in 3D), the median
+# wall seconds of each run, their ratio (above 1: petsc is faster), and
+# the strategy auto takes.  CASES: a list of SCENE:ELEMENT:SET, SET the
+# size (n=N for taylor3d's [mesh] numbers, level=L for taylor2d); default
+# hex8 and hex20 in 3D, quad4 and quad8 in 2D, from about 10k to 1M dofs.
+# About 25 minutes on two cores.  Alone on the machine.
+B=${1:-build}
+R=${2:-3}
+T3=chapters/08-experiments/taylor3d.scene
+T2=chapters/08-experiments/taylor2d.scene
+CASES=${3:-"$T3:hex8:n=14 $T3:hex8:n=17 $T3:hex8:n=20 $T3:hex8:n=24
+$T3:hex8:n=28 $T3:hex20:n=7 $T3:hex20:n=9 $T3:hex20:n=11 $T3:hex20:n=13
+$T2:quad4:level=50 $T2:quad4:level=120 $T2:quad4:level=230
+$T2:quad8:level=30 $T2:quad8:level=70 $T2:quad8:level=130"}
+OUT=$B/bench-crossover
+mkdir -p "$OUT" || exit 1
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+sets () {   # sets SET: the --set of a case's size
+  case $1 in n=*) echo "mesh.numbers=$1" ;; *) echo "$1" ;; esac
+}
+run () {    # run SCENE ELEMENT SET STRATEGY DIR: wall seconds on stdout
+  t0=$(date +%s.%N)
+  "$B/lac" run "$1" --set scene.element="$2" --set "$(sets "$3")" \
+    --strategy "$4" --quiet --out "$5" > "$5.log" 2>&1 \
+    || { echo "failed: $(tail -1 "$5.log")" >&2; return 1; }
+  t1=$(date +%s.%N)
+  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f\n", b - a }'
+}
+printf '%-8s %-6s %-10s %9s %9s %9s %9s %6s  %s\n' scene element size dofs \
+  "GB chol" "direct s" "petsc s" ratio "auto takes"
+for c in $CASES; do
+  scene=${c%%:*}; r=${c#*:}; el=${r%%:*}; size=${r#*:}
+  name=$(basename "$scene" .scene); d="$OUT/$name-$el-$size"
+  # lac's estimate of the run with a Cholesky factor: its refusal under
+  # the smallest --max-memory says it
+  gb=$("$B/lac" run "$scene" --set scene.element="$el" --set "$(sets "$size")" \
+         --strategy split --max-memory 100M --no-output 2>&1 \
+       | sed -n 's/.*need about \([0-9.e+-]*\) GB.*/\1/p')
+  : > "$d.direct"; : > "$d.petsc"; i=1
+  while [ "$i" -le "$R" ]; do
+    run "$scene" "$el" "$size" split "$d-direct" >> "$d.direct" || exit 1
+    run "$scene" "$el" "$size" petsc "$d-petsc" >> "$d.petsc" || exit 1
+    i=$((i + 1))
+  done
+  md=$(median < "$d.direct"); mp=$(median < "$d.petsc")
+  dofs=$(sed -n 's/^dofs = //p' "$d-direct/summary.txt")
+  auto=$("$B/lac" run "$scene" --set scene.element="$el" --set "$(sets "$size")" \
+           --no-output 2>&1 | sed -n 's/.*\[5\/7\] solve     \([a-z]*\).*/\1/p' | tail -1)
+  printf '%-8s %-6s %-10s %9s %9s %9s %9s %6.2f  %s\n' "$name" "$el" "$size" \
+    "$dofs" "${gb:-?}" "$md" "$mp" "$(awk -v a="$md" -v b="$mp" 'BEGIN { print a / b }')" \
+    "$auto"
+done
