@@ -81,8 +81,9 @@ auto_context (const lac_run *r)
     {
       ctx.factor_fits = lac_run_mesh_factor_fits (r->scene, r->mesh,
                                                   r->opts.max_memory);
-      ctx.cholesky_bytes = lac_run_mesh_bytes (r->scene, r->mesh,
-                                               LAC_MESH_SOLVE_CHOLESKY, 0);
+      if (!large (r))           /* large deformation: chapter 10 solves */
+        ctx.cholesky_bytes = lac_run_mesh_bytes (r->scene, r->mesh,
+                                                 LAC_MESH_SOLVE_CHOLESKY, 0);
     }
   return ctx;
 }
