@@ -12,7 +12,7 @@
 # (what auto compares with LAC_STRATEGY_ITERATIVE_BYTES in 3D), the median
 # wall seconds of each run, their ratio (above 1: petsc is faster), and
 # the strategy auto takes.  CASES: a list of SCENE:ELEMENT:SET, SET the
-# size (n=N for taylor3d's [mesh] numbers, level=L for taylor2d); default
+# size (n=N, the geometries' [mesh] numbers, or level=L); default
 # hex8 and hex20 in 3D, quad4 and quad8 in 2D, from about 10k to 1M dofs.
 # About 25 minutes on two cores.  Alone on the machine.
 B=${1:-build}
@@ -21,8 +21,8 @@ T3=chapters/08-experiments/taylor3d.scene
 T2=chapters/08-experiments/taylor2d.scene
 CASES=${3:-"$T3:hex8:n=14 $T3:hex8:n=17 $T3:hex8:n=20 $T3:hex8:n=24
 $T3:hex8:n=28 $T3:hex20:n=7 $T3:hex20:n=9 $T3:hex20:n=11 $T3:hex20:n=13
-$T2:quad4:level=50 $T2:quad4:level=120 $T2:quad4:level=230
-$T2:quad8:level=30 $T2:quad8:level=70 $T2:quad8:level=130"}
+$T2:quad4:n=160 $T2:quad4:n=320 $T2:quad4:n=500
+$T2:quad8:n=90 $T2:quad8:n=180 $T2:quad8:n=290"}
 OUT=$B/bench-crossover
 mkdir -p "$OUT" || exit 1
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }

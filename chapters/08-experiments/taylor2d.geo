@@ -4,6 +4,8 @@
 // nl = 4 + 3*level cells per side, the upper one with nu = 3 + 2*level, so
 // the interface meshes do not match, their nodes coincide only at the ends
 // (nl and nu have no common divisor) and the mesh-size ratio is >= 4/3.
+// Given a number n ([mesh] numbers = n:500), the squares have n and n - 1
+// cells per side instead, whatever the level (bench/crossover.sh).
 // Structured (transfinite): triangles, or quadrangles with recombination.
 //
 // Physical groups: lower, upper (surfaces); lower_bottom (y = 0),
@@ -15,6 +17,10 @@ EndIf
 L = 50;
 nl = 4 + 3 * level;
 nu = 3 + 2 * level;
+If (Exists(n))
+  nl = n;
+  nu = n - 1;
+EndIf
 
 Point(1) = {0, 0, 0};  Point(2) = {L, 0, 0};
 Point(3) = {L, L, 0};  Point(4) = {0, L, 0};

@@ -14,6 +14,7 @@
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "fem/lac_spaces.h"
 #include "io/lac_mesh_opts.h"
 #include "io/lac_scene_query.h"
 #include "run/lac_run_cause.h"
@@ -74,7 +75,9 @@ stage_material (lac_run *r)
 static lac_strategy_context
 auto_context (const lac_run *r)
 {
-  lac_strategy_context ctx = { 1, 1, r->mesh->dim, 0 };
+  const lac_refelem *re = r->mesh->ncells
+                         ? lac_refelem_get (r->mesh->type[0]) : NULL;
+  lac_strategy_context ctx = { 1, 1, r->mesh->dim, re ? re->order : 0, 0 };
   int rank;
   lac_petsc_rank (&rank, &ctx.processes);
   if (lac_petsc_available ())

@@ -39,20 +39,20 @@
  * else by size. */
 const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
   { "auto", NULL, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 0, 0 },
+    LAC_FACTOR_NONE, 0, 0, { 0, 0 } },
   { "dense", &lac_saddle_dense_ops, LAC_BODIES_ANY, LAC_STRATEGY_DENSE_MAX,
-    LAC_FACTOR_DENSE, 0, 0, 0 },
+    LAC_FACTOR_DENSE, 0, 0, { 0, 0 } },
   { "schur", &lac_schur_ops, LAC_BODIES_HELD, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 0, 0, 0 },
+    LAC_FACTOR_CHOLESKY, 0, 0, { 0, 0 } },
   { "augmented", &lac_augmented_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
+    LAC_FACTOR_CHOLESKY, 1, 0, { 0, 0 } },
   { "saddle", &lac_saddle_lu_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_LU, 0, 0, 0 },
+    LAC_FACTOR_LU, 0, 0, { 0, 0 } },
   { "petsc", &lac_petsc_ops, LAC_BODIES_ANY, 0,
-    LAC_FACTOR_NONE, 0, 1, LAC_STRATEGY_ITERATIVE_BYTES },
+    LAC_FACTOR_NONE, 0, 1, { LAC_STRATEGY_ITERATIVE_BYTES, 0 } },
   { "split", &lac_split_ops, LAC_BODIES_FLOATING, SIZE_MAX,
-    LAC_FACTOR_CHOLESKY, 1, 0, 0 },
-  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0, 0 }
+    LAC_FACTOR_CHOLESKY, 1, 0, { 0, 0 } },
+  { NULL, NULL, LAC_BODIES_ANY, 0, LAC_FACTOR_NONE, 0, 0, { 0, 0 } }
 };
 
 /* The type every failed Cholesky factorization falls back to. */
@@ -130,8 +130,8 @@ refuse (const lac_strategy_type *t, size_t nfree)
 
 /* Does the run ctx take row t before the sizes: on N > 1 processes, a
  * row that solves on them; when no factor fits, one that factorizes
- * nothing; in 3D, one whose crossover in time the estimated Cholesky
- * run reaches? */
+ * nothing; in 3D, one whose crossover in time for the cells' order the
+ * estimated Cholesky run reaches? */
 static int
 run_takes (const lac_strategy_type *t, const lac_strategy_context *ctx)
 {
@@ -139,8 +139,9 @@ run_takes (const lac_strategy_type *t, const lac_strategy_context *ctx)
     return t->processes;
   if (!ctx->factor_fits)
     return t->factor == LAC_FACTOR_NONE;
-  return ctx->dim == 3 && t->auto_from_bytes > 0
-         && ctx->cholesky_bytes >= t->auto_from_bytes;
+  double from = ctx->order == 1 || ctx->order == 2
+                ? t->auto_from_bytes[ctx->order - 1] : 0;
+  return ctx->dim == 3 && from > 0 && ctx->cholesky_bytes >= from;
 }
 
 /* Auto in the run ctx: the first row that applies and the run takes

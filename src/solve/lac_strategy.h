@@ -97,10 +97,12 @@ typedef enum
 } lac_strategy_kind;
 
 #define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
-#define LAC_STRATEGY_ITERATIVE_BYTES 6e8  /* a 3D run with a Cholesky
-                                        factor estimated at this many
-                                        bytes: slower than petsc on one
-                                        process (chapter 13, section 4) */
+#define LAC_STRATEGY_ITERATIVE_BYTES 9e8  /* a 3D run of linear cells
+                                        with a Cholesky factor estimated
+                                        at this many bytes: slower than
+                                        petsc on one process (chapter 13,
+                                        section 4; quadratic cells: not
+                                        up to 1.5 GB)                   */
 #define LAC_STRATEGY_TOL 1e-15       /* backward error aimed at: a few
                                         units of rounding (2.2e-16)     */
 
@@ -136,10 +138,11 @@ typedef struct lac_strategy_type
   int processes;                /* solves on N MPI processes: MPI and
                                    PETSc started before the scene, the
                                    processes 1..N-1 serving process 0   */
-  double auto_from_bytes;       /* in 3D on one process, auto takes it
+  double auto_from_bytes[2];    /* in 3D on one process, auto takes it
                                    when a run with a Cholesky factor is
-                                   estimated at this many bytes or more:
-                                   the crossover in time (0: never)     */
+                                   estimated at this many bytes or more,
+                                   [0] linear cells, [1] quadratic: the
+                                   crossover in time (0: never)         */
 } lac_strategy_type;
 
 /* The types in lac_strategy_kind order, auto first, ended by a row whose
@@ -171,6 +174,7 @@ typedef struct lac_strategy_context
                          memory and a type that factorizes nothing can
                          run (lac built with PETSc); 1 otherwise          */
   int dim;            /* of the mesh (0: unknown)                         */
+  int order;          /* of its cells: 1 linear, 2 quadratic (0: unknown) */
   double cholesky_bytes;  /* the run's memory estimated with a Cholesky
                          factor, when a type that factorizes nothing can
                          run (lac built with PETSc); 0 otherwise          */
@@ -180,8 +184,8 @@ typedef struct lac_strategy_context
  * the factor fits -- lac_strategy_choose): auto takes a row that solves
  * on the processes when ctx->processes > 1, else one that factorizes
  * nothing when !ctx->factor_fits, else in 3D the first row whose
- * auto_from_bytes ctx->cholesky_bytes reaches, else the rule of the
- * sizes. */
+ * auto_from_bytes for the cells' order ctx->cholesky_bytes reaches, else
+ * the rule of the sizes. */
 lac_strategy_kind lac_strategy_choose_in (lac_strategy_kind want, size_t n,
                                           size_t k, size_t nfree,
                                           const lac_strategy_context *ctx);

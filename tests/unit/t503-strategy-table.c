@@ -133,7 +133,7 @@ static const lac_strategy_ops gauss_ops = {
   .solve = gauss_solve, .get_counts = gauss_get_counts
 };
 static const lac_strategy_type gauss_type = {
-  "gauss", &gauss_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_DENSE, 0, 0, 0
+  "gauss", &gauss_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_DENSE, 0, 0, { 0, 0 }
 };
 
 /* "failing": a Cholesky that always fails, falling back unasked or not. */
@@ -143,10 +143,10 @@ static const lac_strategy_ops failing_ops = {
   .factor_failed = failing_factor_failed
 };
 static const lac_strategy_type failing_type = {
-  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 1, 0, 0
+  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 1, 0, { 0, 0 }
 };
 static const lac_strategy_type failing_asked_type = {
-  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 0, 0, 0
+  "failing", &failing_ops, LAC_BODIES_ANY, 0, LAC_FACTOR_CHOLESKY, 0, 0, { 0, 0 }
 };
 
 /* ---- a small contact problem: t501's chain of springs ------------------- */
@@ -354,11 +354,14 @@ choice (void)
   check_int (lac_strategy_choose (LAC_STRATEGY_SPLIT, 10, 0, 0),
              LAC_STRATEGY_SPLIT, "without contact, split too");
   {
-    lac_strategy_context mpi = { 2, 1, 3, 0 }, nofit = { 1, 0, 3, 0 },
-                         one = { 1, 1, 3, 0 };
+    lac_strategy_context mpi = { 2, 1, 3, 1, 0 }, nofit = { 1, 0, 3, 1, 0 },
+                         one = { 1, 1, 3, 1, 0 };
     double big = LAC_STRATEGY_ITERATIVE_BYTES;
-    lac_strategy_context big3 = { 1, 1, 3, big }, below = { 1, 1, 3, 0.99 * big },
-                         big2 = { 1, 1, 2, big }, big3mpi = { 2, 1, 3, big };
+    lac_strategy_context big3 = { 1, 1, 3, 1, big },
+                         below = { 1, 1, 3, 1, 0.99 * big },
+                         big2 = { 1, 1, 2, 1, big },
+                         quad3 = { 1, 1, 3, 2, 4 * big },
+                         big3mpi = { 2, 1, 3, 1, big };
     check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 500, 100, 1, &mpi),
                LAC_STRATEGY_PETSC, "auto on 2 processes: petsc");
     check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
@@ -381,6 +384,9 @@ choice (void)
                LAC_STRATEGY_SPLIT, "auto, 3D, below the crossover: by size");
     check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0, &big2),
                LAC_STRATEGY_SCHUR, "auto, 2D: by size whatever the factor");
+    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
+                                       &quad3),
+               LAC_STRATEGY_SCHUR, "auto, 3D quadratic cells: by size");
     check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
                                        &big3mpi),
                LAC_STRATEGY_PETSC, "auto, 2 processes: petsc");
