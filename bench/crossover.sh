@@ -11,16 +11,17 @@
 # the dofs, the memory lac estimates for the run with a Cholesky factor
 # (what auto compares with LAC_STRATEGY_ITERATIVE_BYTES in 3D), the median
 # wall seconds of each run, their ratio (above 1: petsc is faster), and
-# the strategy auto takes.  CASES: a list of SCENE:ELEMENT:SET, SET the
+# the strategy auto takes; then per element where the ratio crosses 1.  CASES: a list of SCENE:ELEMENT:SET, SET the
 # size (n=N, the geometries' [mesh] numbers, or level=L); default
-# hex8 and hex20 in 3D, quad4 and quad8 in 2D, from about 10k to 1M dofs.
-# About 25 minutes on two cores.  Alone on the machine.
+# hex8, tet4 and hex20 in 3D, quad4 and quad8 in 2D, from about 12k to
+# 1M dofs.  About 20 minutes on two cores.  Alone on the machine.
 B=${1:-build}
 R=${2:-3}
 T3=chapters/08-experiments/taylor3d.scene
 T2=chapters/08-experiments/taylor2d.scene
-CASES=${3:-"$T3:hex8:n=14 $T3:hex8:n=17 $T3:hex8:n=20 $T3:hex8:n=24
-$T3:hex8:n=28 $T3:hex20:n=7 $T3:hex20:n=9 $T3:hex20:n=11 $T3:hex20:n=13
+CASES=${3:-"$T3:hex8:n=14 $T3:hex8:n=17 $T3:hex8:n=20 $T3:hex8:n=22
+$T3:hex8:n=24 $T3:hex8:n=28 $T3:tet4:n=14 $T3:tet4:n=20 $T3:tet4:n=24
+$T3:hex20:n=7 $T3:hex20:n=9 $T3:hex20:n=11 $T3:hex20:n=13
 $T2:quad4:n=160 $T2:quad4:n=320 $T2:quad4:n=500
 $T2:quad8:n=90 $T2:quad8:n=180 $T2:quad8:n=290"}
 OUT=$B/bench-crossover
@@ -37,6 +38,7 @@ run () {    # run SCENE ELEMENT SET STRATEGY DIR: wall seconds on stdout
   t1=$(date +%s.%N)
   awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f\n", b - a }'
 }
+: > "$OUT/rows.txt"
 printf '%-8s %-6s %-10s %9s %9s %9s %9s %6s  %s\n' scene element size dofs \
   "GB chol" "direct s" "petsc s" ratio "auto takes"
 for c in $CASES; do
@@ -59,5 +61,20 @@ for c in $CASES; do
            --no-output 2>&1 | sed -n 's/.*\[5\/7\] solve     \([a-z]*\).*/\1/p' | tail -1)
   printf '%-8s %-6s %-10s %9s %9s %9s %9s %6.2f  %s\n' "$name" "$el" "$size" \
     "$dofs" "${gb:-?}" "$md" "$mp" "$(awk -v a="$md" -v b="$mp" 'BEGIN { print a / b }')" \
-    "$auto"
+    "$auto" | tee -a "$OUT/rows.txt"
 done
+# per element, in the order of the cases: the last estimate where the
+# factor was faster and the first where petsc was (the crossover lies
+# between), or the largest estimate measured if petsc never was
+echo
+echo "crossover, in lac's estimate of the run with a Cholesky factor:"
+awk '{ e = $2; if (!(e in seen)) { seen[e] = 1; order[++n] = e }
+       if ($8 < 1) { below[e] = $5; bd[e] = $4 }
+       else if (!(e in above)) { above[e] = $5; ad[e] = $4 } }
+     END { for (i = 1; i <= n; i++) { e = order[i]
+             if (e in above)
+               printf "%-6s petsc faster from between %s GB (%s dofs) and %s GB (%s dofs)\n",
+                      e, below[e], bd[e], above[e], ad[e]
+             else
+               printf "%-6s the factor faster up to %s GB (%s dofs)\n", e, below[e], bd[e] } }' \
+  "$OUT/rows.txt"
