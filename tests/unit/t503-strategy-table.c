@@ -354,44 +354,51 @@ choice (void)
   check_int (lac_strategy_choose (LAC_STRATEGY_SPLIT, 10, 0, 0),
              LAC_STRATEGY_SPLIT, "without contact, split too");
   {
-    lac_strategy_context mpi = { 2, 1, 3, 1, 0 }, nofit = { 1, 0, 3, 1, 0 },
-                         one = { 1, 1, 3, 1, 0 };
-    double big = LAC_STRATEGY_ITERATIVE_BYTES;
-    lac_strategy_context big3 = { 1, 1, 3, 1, big },
-                         below = { 1, 1, 3, 1, 0.99 * big },
-                         big2 = { 1, 1, 2, 1, big },
-                         quad3 = { 1, 1, 3, 2, 4 * big },
-                         big3mpi = { 2, 1, 3, 1, big };
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 500, 100, 1, &mpi),
-               LAC_STRATEGY_PETSC, "auto on 2 processes: petsc");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
-                                       &nofit),
-               LAC_STRATEGY_PETSC, "auto, no factor fits: petsc");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 0, 0,
-                                       &nofit),
-               LAC_STRATEGY_PETSC, "auto, no factor fits, no contact");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 2, &one),
-               LAC_STRATEGY_SPLIT, "auto, one process, fits: by size");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_SCHUR, 9000, 1, 0, &mpi),
-               LAC_STRATEGY_SCHUR, "asked for: kept on 2 processes");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 2, &big3),
-               LAC_STRATEGY_PETSC, "auto, 3D, a factor above the crossover:"
-               " petsc");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 0, 0, &big3),
-               LAC_STRATEGY_PETSC, "... without contact too");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 2,
-                                       &below),
-               LAC_STRATEGY_SPLIT, "auto, 3D, below the crossover: by size");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0, &big2),
-               LAC_STRATEGY_SCHUR, "auto, 2D: by size whatever the factor");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
-                                       &quad3),
-               LAC_STRATEGY_SCHUR, "auto, 3D quadratic cells: by size");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_AUTO, 9000, 1, 0,
-                                       &big3mpi),
-               LAC_STRATEGY_PETSC, "auto, 2 processes: petsc");
-    check_int (lac_strategy_choose_in (LAC_STRATEGY_SPLIT, 9000, 1, 2, &big3),
-               LAC_STRATEGY_SPLIT, "asked for: kept above the crossover");
+    /* the run: processes, factor fits, dim, order, Cholesky bytes */
+    const double big = LAC_STRATEGY_ITERATIVE_BYTES;
+    const lac_strategy_context mpi = { 2, 1, 3, 1, 0 },
+      nofit = { 1, 0, 3, 1, 0 }, one = { 1, 1, 3, 1, 0 },
+      big3 = { 1, 1, 3, 1, big }, below = { 1, 1, 3, 1, 0.99 * big },
+      big2 = { 1, 1, 2, 1, big }, quad3 = { 1, 1, 3, 2, 4 * big },
+      big3mpi = { 2, 1, 3, 1, big };
+    const struct
+    {
+      lac_strategy_kind want;
+      size_t n, k, nfree;
+      const lac_strategy_context *ctx;
+      lac_strategy_kind expect;
+      const char *what;
+    } cases[] = {
+      { LAC_STRATEGY_AUTO, 500, 100, 1, &mpi, LAC_STRATEGY_PETSC,
+        "auto on 2 processes: petsc" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 0, &nofit, LAC_STRATEGY_PETSC,
+        "auto, no factor fits: petsc" },
+      { LAC_STRATEGY_AUTO, 9000, 0, 0, &nofit, LAC_STRATEGY_PETSC,
+        "auto, no factor fits, no contact" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 2, &one, LAC_STRATEGY_SPLIT,
+        "auto, one process, fits: by size" },
+      { LAC_STRATEGY_SCHUR, 9000, 1, 0, &mpi, LAC_STRATEGY_SCHUR,
+        "asked for: kept on 2 processes" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 2, &big3, LAC_STRATEGY_PETSC,
+        "auto, 3D, a factor above the crossover: petsc" },
+      { LAC_STRATEGY_AUTO, 9000, 0, 0, &big3, LAC_STRATEGY_PETSC,
+        "... without contact too" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 2, &below, LAC_STRATEGY_SPLIT,
+        "auto, 3D, below the crossover: by size" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 0, &big2, LAC_STRATEGY_SCHUR,
+        "auto, 2D: by size whatever the factor" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 0, &quad3, LAC_STRATEGY_SCHUR,
+        "auto, 3D quadratic cells: by size" },
+      { LAC_STRATEGY_AUTO, 9000, 1, 0, &big3mpi, LAC_STRATEGY_PETSC,
+        "auto, 2 processes: petsc" },
+      { LAC_STRATEGY_SPLIT, 9000, 1, 2, &big3, LAC_STRATEGY_SPLIT,
+        "asked for: kept above the crossover" },
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+      check_int (lac_strategy_choose_in (cases[c].want, cases[c].n,
+                                         cases[c].k, cases[c].nfree,
+                                         cases[c].ctx),
+                 cases[c].expect, "%s", cases[c].what);
   }
   for (int k = 0; k < LAC_NSTRATEGIES; k++)
     check_int (lac_strategy_from_name (lac_strategy_name (k)), k,
