@@ -200,45 +200,6 @@ lac_post_stress_sum (const lac_mesh *m, const lac_elastic *mat,
                                           stress_at, mat, u, sigma, count);
 }
 
-/* A quadrature rule of a cell type and its shape functions there
- * (N[p*nen + a], dN[(p*nen + a)*dim + k]): evaluated once per type, not
- * at every cell (lac_map_cell_at). */
-typedef struct rule_tables
-{
-  lac_quad *q;
-  double *N, *dN;
-} rule_tables;
-
-static void
-rule_tables_clear (rule_tables *t)
-{
-  lac_quad_free (t->q);
-  lac_free (t->N);
-  lac_free (t->dN);
-  t->q = NULL;
-  t->N = t->dN = NULL;
-}
-
-static int
-rule_tables_make (const lac_refelem *re, int degree, rule_tables *t)
-{
-  int nen = re->nnodes, d = re->dim;
-  if (!(t->q = lac_quad_alloc (re->shape, degree)))
-    return LAC_ENOMEM;                   /* message set by lac_quad_alloc */
-  t->N = lac_malloc ((size_t) (t->q->n * nen) * sizeof *t->N);
-  t->dN = lac_malloc ((size_t) (t->q->n * nen * d) * sizeof *t->dN);
-  if (!t->N || !t->dN)
-    {
-      rule_tables_clear (t);
-      LAC_ERROR (LAC_ENOMEM, "shape functions of %s at its error rule",
-                 re->name);
-    }
-  for (int p = 0; p < t->q->n; p++)
-    lac_refelem_eval (re, t->q->xi + p * d, t->N + p * nen,
-                      t->dN + p * nen * d);
-  return LAC_SUCCESS;
-}
-
 /* lac_post_error_sums: the squares of lac_post_errors' four numbers,
  * summed over the cells with cells[c] != 0 (cells NULL: all):
  * sq = { ||u - u_h||_0^2, |u - u_h|_1^2, ||u||_0^2, |u|_1^2 } (the last
@@ -258,8 +219,9 @@ lac_post_error_sums (const lac_mesh *m, lac_model model, const double *u,
   double el2 = 0, eh1 = 0, nl2 = 0, nh1 = 0;
   double xe[LAC_MAX_NODES * 3], uc[LAC_MAX_NODES * 3], uh[3], gh[9], ue[3],
          ge[9];
-  rule_tables tab[LAC_NELEM_TYPES] = { { NULL, NULL, NULL } };
-  lac_map mp;
+  lac_quad_cache qc;            /* a rule per cell type, its shape */
+  lac_map mp;                   /* functions evaluated once (lac_map_cell_at) */
+  memset (&qc, 0, sizeof qc);
   for (size_t c = 0; c < m->ncells; c++)
     {
       const lac_refelem *re = lac_refelem_get (m->type[c]);
@@ -271,9 +233,9 @@ lac_post_error_sums (const lac_mesh *m, lac_model model, const double *u,
                                dim);
           break;
         }
-      rule_tables *t = &tab[re->type];
-      if (!t->q && (status = rule_tables_make (re, 2 * re->order + 2 + axi,
-                                               t)))
+      const lac_quad_table *t = lac_quad_cache_table (&qc, re, 2 * re->order
+                                                      + 2 + axi);
+      if (!t && (status = LAC_ENOMEM))          /* message set */
         break;
       const lac_quad *q = t->q;
       int nen = re->nnodes;
@@ -317,8 +279,7 @@ lac_post_error_sums (const lac_mesh *m, lac_model model, const double *u,
           break;
         }
     }
-  for (int k = 0; k < LAC_NELEM_TYPES; k++)
-    rule_tables_clear (&tab[k]);
+  lac_quad_cache_free (&qc);
   sq[0] = el2, sq[1] = eh1, sq[2] = nl2, sq[3] = nh1;
   return status;
 }

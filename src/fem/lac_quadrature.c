@@ -425,19 +425,69 @@ lac_quad_alloc (lac_shape shape, int degree)
 
 /* ---- a cache of rules -------------------------------------------------- */
 
-const lac_quad *
-lac_quad_cache_get (lac_quad_cache *qc, lac_shape shape, int degree)
+/* The slot of the cache for a degree asked on shape. */
+static int
+cache_degree (lac_shape shape, int degree)
 {
   int maxdeg = lac_quad_max_degree (shape);
   if (maxdeg >= 0 && degree > maxdeg)
     degree = maxdeg;                    /* the best rule there is */
   if (degree > LAC_QUAD_CACHE_MAXDEG)
     degree = LAC_QUAD_CACHE_MAXDEG;
-  if (degree < 0)
-    degree = 0;
+  return degree < 0 ? 0 : degree;
+}
+
+const lac_quad *
+lac_quad_cache_get (lac_quad_cache *qc, lac_shape shape, int degree)
+{
+  degree = cache_degree (shape, degree);
   if (!qc->q[shape][degree])
     qc->q[shape][degree] = lac_quad_alloc (shape, degree);  /* message set */
   return qc->q[shape][degree];
+}
+
+static void
+table_free (lac_quad_table *t)
+{
+  if (!t)
+    return;
+  lac_free (t->N);
+  lac_free (t->dN);
+  lac_free (t);
+}
+
+static lac_quad_table *
+table_make (const lac_refelem *re, const lac_quad *q)
+{
+  size_t nen = (size_t) re->nnodes, d = (size_t) re->dim, n = (size_t) q->n;
+  lac_quad_table *t = lac_calloc (1, sizeof *t);
+  if (t)
+    {
+      t->q = q;
+      t->N = lac_malloc (n * nen * sizeof *t->N);
+      t->dN = lac_malloc (n * nen * d * sizeof *t->dN);
+    }
+  if (!t || !t->N || !t->dN)
+    {
+      table_free (t);
+      LAC_ERROR_NULL (LAC_ENOMEM, "shape functions of %s at %zu points",
+                      re->name, n);
+    }
+  for (size_t p = 0; p < n; p++)
+    lac_refelem_eval (re, q->xi + p * d, t->N + p * nen, t->dN + p * nen * d);
+  return t;
+}
+
+const lac_quad_table *
+lac_quad_cache_table (lac_quad_cache *qc, const lac_refelem *re, int degree)
+{
+  const lac_quad *q = lac_quad_cache_get (qc, re->shape, degree);
+  if (!q)
+    return NULL;
+  lac_quad_table **t = &qc->t[re->type][cache_degree (re->shape, degree)];
+  if (!*t)
+    *t = table_make (re, q);       /* message set */
+  return *t;
 }
 
 void
@@ -446,5 +496,8 @@ lac_quad_cache_free (lac_quad_cache *qc)
   for (int s = 0; s <= LAC_SHAPE_PYR; s++)
     for (int d = 0; d <= LAC_QUAD_CACHE_MAXDEG; d++)
       lac_quad_free (qc->q[s][d]);
+  for (int e = 0; e < LAC_NELEM_TYPES; e++)
+    for (int d = 0; d <= LAC_QUAD_CACHE_MAXDEG; d++)
+      table_free (qc->t[e][d]);
   memset (qc, 0, sizeof *qc);
 }

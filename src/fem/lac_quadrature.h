@@ -41,13 +41,31 @@ int lac_quad_max_degree (lac_shape shape);
  * lac_quad_cache_get returns NULL (message set) if a rule cannot be made;
  * the rules stay owned by the cache until lac_quad_cache_free. */
 #define LAC_QUAD_CACHE_MAXDEG 16
+
+/* The shape functions of a cell type at the points of a rule, evaluated
+ * once (lac_refelem_eval) for all the cells of that type:
+ * N[p*nnodes + a], dN[(p*nnodes + a)*dim + k], as lac_map_cell_at takes
+ * them. */
+typedef struct lac_quad_table
+{
+  const lac_quad *q;  /* borrowed from the cache                          */
+  double *N, *dN;     /* owned                                            */
+} lac_quad_table;
+
 typedef struct lac_quad_cache
 {
   lac_quad *q[LAC_SHAPE_PYR + 1][LAC_QUAD_CACHE_MAXDEG + 1];   /* owned */
+  lac_quad_table *t[LAC_NELEM_TYPES][LAC_QUAD_CACHE_MAXDEG + 1]; /* owned */
 } lac_quad_cache;
 
 const lac_quad *lac_quad_cache_get (lac_quad_cache *qc, lac_shape shape,
                                     int degree);
+/* The rule of re's shape for `degree` (as lac_quad_cache_get) with re's
+ * shape functions at its points; NULL (message set) if it cannot be
+ * made. */
+const lac_quad_table *lac_quad_cache_table (lac_quad_cache *qc,
+                                            const lac_refelem *re,
+                                            int degree);
 void lac_quad_cache_free (lac_quad_cache *qc);   /* empties the cache */
 
 #endif /* LAC_QUADRATURE_H */

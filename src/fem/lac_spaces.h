@@ -101,7 +101,8 @@ int lac_map_cell (const lac_refelem *re, int sdim, const double *xe,
 
 /* The same with N and dN/dxi (as lac_refelem_eval gives them) already
  * evaluated at xi: a quadrature rule's tables, made once for all cells
- * (fem/lac_post.c).  The results are those of lac_map_cell, bit for bit. */
+ * (lac_quad_cache_table, fem/lac_quadrature.h).  The results are those of
+ * lac_map_cell, bit for bit. */
 int lac_map_cell_at (const lac_refelem *re, int sdim, const double *xe,
                      const double *xi, const double *N, const double *dN,
                      lac_map *m);

@@ -14,9 +14,14 @@
  * checked (1, 3, 6, 7, 12, 16 and 1, 4, 8, 14 points), bad degrees are
  * refused, and the degree-2 pyramid rule integrates the mass and stiffness
  * products of the rational pyr5 basis like the degree-31 rule (1e-13).
+ * The cache's tables (lac_quad_cache_table): for every cell type and
+ * degrees 0..20, the rule of lac_quad_cache_get with the values of
+ * lac_refelem_eval at its points, bit for bit, and the same table again
+ * on a second call.
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 #include "fem/lac_quadrature.h"
@@ -202,6 +207,35 @@ check_pyramid_basis (void)
   check_rel (mass[1][24], 2.0 / 15, 1e-13, "pyr5 int N_4^2 = 2/15");
 }
 
+static void
+check_tables (void)
+{
+  lac_quad_cache qc;
+  double N[LAC_MAX_NODES], dN[LAC_MAX_NODES * 3];
+  memset (&qc, 0, sizeof qc);
+  for (int e = 0; e < LAC_NELEM_TYPES; e++)
+    {
+      const lac_refelem *re = lac_refelem_get ((lac_elem_type) e);
+      int ok = 1;
+      for (int d = 0; d <= 20 && ok; d++)
+        {
+          const lac_quad_table *t = lac_quad_cache_table (&qc, re, d);
+          const lac_quad *q = lac_quad_cache_get (&qc, re->shape, d);
+          ok = t && t->q == q && lac_quad_cache_table (&qc, re, d) == t;
+          for (int p = 0; ok && p < q->n; p++)
+            {
+              size_t nen = (size_t) re->nnodes, dim = (size_t) re->dim;
+              lac_refelem_eval (re, q->xi + (size_t) p * dim, N, dN);
+              ok = !memcmp (N, t->N + (size_t) p * nen, nen * sizeof *N)
+                   && !memcmp (dN, t->dN + (size_t) p * nen * dim,
+                               nen * dim * sizeof *dN);
+            }
+        }
+      check_true (ok, "%s: the cache's tables", re->name);
+    }
+  lac_quad_cache_free (&qc);
+}
+
 int
 main (void)
 {
@@ -215,6 +249,7 @@ main (void)
   static const int hex_n[] = { 1, 8, 8, 27, 27 };
   check_sizes (LAC_SHAPE_HEX, hex_n, 5);
   check_pyramid_basis ();
+  check_tables ();
   check_rel (lac_quad_ref_measure (LAC_SHAPE_PYR), 4.0 / 3, 1e-15, "|pyr|");
   lac_quad_free (NULL);
   lac_finalize ();
