@@ -25,6 +25,7 @@
 #include "fem/lac_quadrature.h"
 #include "fem/lac_spaces.h"
 #include "base/lac_status.h"
+#include "linalg/lac_tasks.h"
 
 
 /* ---- laws --------------------------------------------------------------- */
@@ -191,9 +192,10 @@ typedef struct point
 static int
 point_eval (const lac_hyper *h, const lac_refelem *re, int dim,
             const double *xe, const double *ue, const double *xi, double wq,
-            point *pt)
+            const double *N, const double *dN, point *pt)
 {
-  int status = lac_map_cell (re, dim, xe, xi, &pt->mp);
+  int status = N ? lac_map_cell_at (re, dim, xe, xi, N, dN, &pt->mp)
+                 : lac_map_cell (re, dim, xe, xi, &pt->mp);
   if (status)
     return status;
   pt->w = wq * pt->mp.detJ;
@@ -394,15 +396,17 @@ cell_eval (const lac_mesh *m, const lac_hyper *h, size_t c, const double *u,
     LAC_ERROR (LAC_EINVAL, "cell %zu (tag %zu) is not a %dD cell", c,
                m->cell_tag ? m->cell_tag[c] : c, dim);
   lac_law law = h->law ? (lac_law) h->law[c] : LAC_LAW_NEO_HOOKEAN;
-  const lac_quad *q = lac_quad_cache_get (qc, re->shape, quad_degree (h, re));
-  if (!q)
+  const lac_quad_table *t = lac_quad_cache_table (qc, re, quad_degree (h, re));
+  if (!t)
     return LAC_ENOMEM;
+  const lac_quad *q = t->q;
   int nen = re->nnodes, nc = nen * dim;
   lac_mesh_cell_coords (m, c, xe);
   gather (m, c, nen, u, ue);
   for (int p = 0; p < q->n; p++)
     {
-      status = point_eval (h, re, dim, xe, ue, q->xi + p * dim, q->w[p], &pt);
+      status = point_eval (h, re, dim, xe, ue, q->xi + p * dim, q->w[p],
+                           t->N + p * nen, t->dN + p * nen * dim, &pt);
       if (status == LAC_ESING)
         LAC_ERROR (status, "cell %zu (tag %zu, %s): det J = %g <= 0 at "
                    "quadrature point %d of the reference cell", c,
@@ -451,56 +455,90 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
   return status;
 }
 
-/* The loop over cells shared by both assemblies: K into triplets (Tk) or
- * into a kept pattern (Kp, its scatter map: no search); any of Fint, Tk,
- * Kp may be NULL. */
-static int
-assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
-          double *Fint, lac_triplet *Tk, lac_pattern *Kp)
+/* The loop over cells shared by both assemblies: the cells cell[0..n)
+ * (cell NULL: every cell), K into triplets (Tk) or into a kept pattern
+ * (Kp, its scatter map: no search); any of Fint, Tk, Kp may be NULL.  A
+ * task of lac_tasks_pair: its own scratch. */
+typedef struct cells_job
 {
-  lac_csc *Kc = Kp ? Kp->K : NULL;
-  lac_quad_cache qc;
-  int status = check_hyper (m, h);
-  if (status)
-    return status;
-  size_t ndof = (size_t) m->dim * m->nnodes, ncmax = LAC_MAX_NODES * 3;
-  if ((Tk && (Tk->nrow != ndof || Tk->ncol != ndof))
-      || (Kc && (Kc->nrow != ndof || Kc->ncol != ndof)))
-    LAC_ERROR (LAC_EBADLEN, "K is not %zu x %zu (the mesh's dofs)", ndof, ndof);
-  int wantK = Tk || Kc;
+  const lac_mesh *m;
+  const lac_hyper *h;
+  const double *u;
+  double *Fint;
+  lac_triplet *Tk;
+  lac_pattern *Kp;
+  const size_t *cell;
+  size_t n;
+} cells_job;
+
+static int
+assemble_cells (void *ctx)
+{
+  const cells_job *j = ctx;
+  const lac_mesh *m = j->m;
+  size_t ncmax = LAC_MAX_NODES * 3;
+  int wantK = j->Tk || j->Kp, status = LAC_SUCCESS;
   double *Ke = lac_malloc (ncmax * ncmax * sizeof *Ke);
   double *T = lac_malloc (ncmax * 9 * sizeof *T);
   double fe[LAC_MAX_NODES * 3];
   size_t dofs[LAC_MAX_NODES * 3];
+  lac_quad_cache qc;
+  memset (&qc, 0, sizeof qc);
   if (!Ke || !T)
     status = LAC_ERRMSG (LAC_ENOMEM, "element matrix of %zu^2 entries", ncmax);
-  memset (&qc, 0, sizeof qc);
-  if (Kp && !status)
-    lac_pattern_zero (Kp);
-  for (size_t c = 0; c < m->ncells && !status; c++)
+  for (size_t q = 0; q < j->n && !status; q++)
     {
-      if (!(h->E[c] > 0.0))
+      size_t c = j->cell ? j->cell[q] : q;
+      if (!(j->h->E[c] > 0.0))
         continue;
       int nc = lac_mesh_cell_dofs (m, c, dofs);
       memset (fe, 0, (size_t) nc * sizeof *fe);
       if (wantK)
         memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
-      status = cell_eval (m, h, c, u, &qc, fe, wantK ? Ke : NULL, T);
+      status = cell_eval (m, j->h, c, j->u, &qc, fe, wantK ? Ke : NULL, T);
       if (status)
         break;
-      if (Fint)
+      if (j->Fint)
         for (int r = 0; r < nc; r++)
-          Fint[dofs[r]] += fe[r];                     /* Fint += fe */
-      if (Tk)
-        status = lac_triplet_add_block (Tk, (size_t) nc, dofs, (size_t) nc,
-                                        dofs, Ke);    /* K += Ke */
-      if (Kp)
-        lac_pattern_add (Kp, m, c, Ke);               /* K += Ke */
+          j->Fint[dofs[r]] += fe[r];                  /* Fint += fe */
+      if (j->Tk)
+        status = lac_triplet_add_block (j->Tk, (size_t) nc, dofs,
+                                        (size_t) nc, dofs, Ke);   /* K += Ke */
+      if (j->Kp)
+        lac_pattern_add (j->Kp, m, c, Ke);            /* K += Ke */
     }
   lac_quad_cache_free (&qc);
   lac_free (Ke);
   lac_free (T);
   return status;
+}
+
+/* Into triplets: the cells in order.  Into a pattern: its two halves at
+ * the same time, then the cells that touch both (lac_pattern.h). */
+static int
+assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
+          double *Fint, lac_triplet *Tk, lac_pattern *Kp)
+{
+  lac_csc *Kc = Kp ? Kp->K : NULL;
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  size_t ndof = (size_t) m->dim * m->nnodes;
+  if ((Tk && (Tk->nrow != ndof || Tk->ncol != ndof))
+      || (Kc && (Kc->nrow != ndof || Kc->ncol != ndof)))
+    LAC_ERROR (LAC_EBADLEN, "K is not %zu x %zu (the mesh's dofs)", ndof, ndof);
+  if (!Kp)
+    {
+      cells_job all = { m, h, u, Fint, Tk, NULL, NULL, m->ncells };
+      return assemble_cells (&all);
+    }
+  cells_job run[3];
+  for (size_t r = 0, at = 0; r < 3; at += Kp->nrun[r++])
+    run[r] = (cells_job) { m, h, u, Fint, NULL, Kp, Kp->order + at,
+                           Kp->nrun[r] };
+  lac_pattern_zero (Kp);
+  status = lac_tasks_pair (assemble_cells, &run[0], assemble_cells, &run[1]);
+  return status ? status : assemble_cells (&run[2]);
 }
 
 int
@@ -563,7 +601,7 @@ cauchy_at (const lac_mesh *m, const void *hyper, const double *u, size_t c,
     LAC_ERROR (LAC_EINVAL, "cell %zu is not a %dD cell", c, dim);
   lac_mesh_cell_coords (m, c, xe);
   gather (m, c, re->nnodes, u, ue);
-  int status = point_eval (h, re, dim, xe, ue, xi, 1.0, &pt);
+  int status = point_eval (h, re, dim, xe, ue, xi, 1.0, NULL, NULL, &pt);
   if (status == LAC_EINVAL && h->model == LAC_AXISYMMETRIC)
     {
       /* on the axis: F_tt -> F_rr (the limit of u_r / R) */

@@ -185,6 +185,90 @@ make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
   return LAC_SUCCESS;
 }
 
+/* ---- the two halves (lac_pattern.h) ------------------------------------ */
+
+typedef struct keyed
+{
+  double key;
+  size_t cell;
+} keyed;
+
+static int
+cmp_key (const void *x, const void *y)
+{
+  const keyed *a = x, *b = y;
+  if (a->key != b->key)
+    return a->key < b->key ? -1 : 1;
+  return a->cell < b->cell ? -1 : a->cell > b->cell;
+}
+
+/* The axis along which the mesh's nodes spread most. */
+static int
+longest_axis (const lac_mesh *m)
+{
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+  int d = m->dim, best = 0;
+  for (size_t a = 0; a < m->nnodes; a++)
+    for (int k = 0; k < d; k++)
+      {
+        double x = m->x[a * (size_t) d + (size_t) k];
+        lo[k] = a == 0 || x < lo[k] ? x : lo[k];
+        hi[k] = a == 0 || x > hi[k] ? x : hi[k];
+      }
+  for (int k = 1; k < d; k++)
+    if (hi[k] - lo[k] > hi[best] - lo[best])
+      best = k;
+  return best;
+}
+
+/* p->order, p->nrun: side[c] is the half of cell c (by the median of the
+ * centres), mark[a] the halves that touch node a (bits 1, 2). */
+static int
+halves (lac_pattern *p, const lac_mesh *m)
+{
+  size_t n = 0, half;
+  int axis = longest_axis (m), d = m->dim;
+  keyed *kc = lac_malloc ((m->ncells + 1) * sizeof *kc);
+  unsigned char *mark = lac_calloc (m->nnodes + 1, 1);
+  unsigned char *side = lac_calloc (m->ncells + 1, 1);
+  p->order = lac_malloc ((m->ncells + 1) * sizeof *p->order);
+  if (!kc || !mark || !side || !p->order)
+    {
+      lac_free (kc), lac_free (mark), lac_free (side);
+      return LAC_ENOMEM;
+    }
+  for (size_t c = 0; c < m->ncells; c++)
+    if (p->cptr[c + 1] > p->cptr[c])
+      {
+        double s = 0;
+        for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
+          s += m->x[(size_t) m->conn[q] * (size_t) d + (size_t) axis];
+        kc[n++] = (keyed) { s / (double) (m->ptr[c + 1] - m->ptr[c]), c };
+      }
+  qsort (kc, n, sizeof *kc, cmp_key);
+  half = n / 2;
+  for (size_t j = 0; j < n; j++)
+    {
+      size_t c = kc[j].cell;
+      side[c] = j < half ? 1 : 2;
+      for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
+        mark[m->conn[q]] |= side[c];
+    }
+  memset (p->nrun, 0, sizeof p->nrun);
+  size_t at = 0;
+  for (int run = 0; run < 3; at += p->nrun[run++])
+    for (size_t c = 0; c < m->ncells; c++)       /* in the cells' order */
+      {
+        int both = 0;
+        for (size_t q = m->ptr[c]; side[c] && q < m->ptr[c + 1]; q++)
+          both |= mark[m->conn[q]] == 3;
+        if (side[c] && (both ? run == 2 : run == side[c] - 1))
+          p->order[at + p->nrun[run]++] = c;
+      }
+  lac_free (kc), lac_free (mark), lac_free (side);
+  return LAC_SUCCESS;
+}
+
 lac_pattern *
 lac_pattern_build (const lac_mesh *m, const char *cells)
 {
@@ -205,6 +289,8 @@ lac_pattern_build (const lac_mesh *m, const char *cells)
   if (!status)
     status = make_map (p, m, cells, &nb);
   graph_free (&nb);
+  if (!status)
+    status = halves (p, m);
   if (status)
     {
       lac_pattern_free (p);
@@ -257,6 +343,7 @@ lac_pattern_free (lac_pattern *p)
   lac_csc_free (p->K);
   lac_free (p->cptr);
   lac_free (p->pos);
+  lac_free (p->order);
   lac_free (p);
 }
 

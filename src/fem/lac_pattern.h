@@ -37,6 +37,11 @@ typedef struct lac_pattern
                             nothing for a cell left out                    */
   int *pos;              /* owned: pos[cptr[c] + a nen + b] = the position
                             of node a among the neighbours of node b       */
+  size_t *order;         /* owned: the cells of the pattern in three runs
+                            of nrun[0], nrun[1], nrun[2] cells: two halves
+                            of the mesh that share no node, then the cells
+                            that touch both (see below)                    */
+  size_t nrun[3];
 } lac_pattern;
 
 /* The pattern of the cells c with cells[c] != 0 (cells NULL: all).
@@ -56,6 +61,17 @@ int lac_pattern_node_cells (const lac_mesh *m, const char *cells,
  * or LAC_ENOMEM. */
 int lac_pattern_count (const lac_mesh *m, const size_t *ptr,
                        const size_t *idx, size_t *nnz);
+
+/* The two halves.  A cell block adds to the columns and rows of its own
+ * nodes only, so two cells that share no node can be added at the same
+ * time (two threads, linalg/lac_tasks.h); lac_pattern_build cuts the
+ * cells of the pattern at the median of their centres along the longest
+ * side of the mesh's box, and the cells of either half that have a node
+ * of the other go to the third run, added after the two.  The layer is
+ * one or two cells thick: about 1 / (cells along that side) of the mesh
+ * on each side of the cut.  Assemblies that add the runs in that order,
+ * one thread or two, add every entry in the same order: the same sums to
+ * the last bit. */
 
 /* K->x = 0. */
 void lac_pattern_zero (lac_pattern *p);

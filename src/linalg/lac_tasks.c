@@ -35,12 +35,19 @@ omp_levels (int set)
   return old;
 }
 
+/* 1 in a thread while it runs a task: a pair asked for from there runs
+ * in that thread, one task after the other (lac_tasks.h). */
+static _Thread_local int in_task;
+
 static void
 run (job *j)
 {
+  int was = in_task;
+  in_task = 1;
   lac_error_clear ();
   j->status = j->fn (j->ctx);
   snprintf (j->message, sizeof j->message, "%s", lac_error_message ());
+  in_task = was;
 }
 
 static void *
@@ -57,6 +64,14 @@ lac_tasks_pair (lac_task *a, void *ca, lac_task *b, void *cb)
   job ja = { a, ca, 0, "" }, jb = { b, cb, 0, "" };
   pthread_t th;
   int started, levels;
+  if (in_task)                         /* both cores are busy already */
+    {
+      run (&ja);
+      if (ja.status)
+        return lac_error_restore (ja.status, ja.message);
+      run (&jb);
+      return lac_error_restore (jb.status, jb.message);
+    }
   lac_blas_serial ();
   levels = omp_levels (0);
   started = !lac_blas_limited ()      /* a BLAS buffer each (lac_blas.h) */

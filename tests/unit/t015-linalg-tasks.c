@@ -5,7 +5,9 @@
  *      solutions match those of factorizations made one after the other,
  *      and the second task ran in another thread;
  *   2. a failing task: its status is returned and its message, set in
- *      another thread, is the caller's; when both fail, the first one's.
+ *      another thread, is the caller's; when both fail, the first one's;
+ *   3. a task that asks for a pair of its own gets both of its tasks in
+ *      its own thread, one after the other.
  */
 #include <math.h>
 #include <pthread.h>
@@ -136,12 +138,57 @@ failures (void)
                 "neither fails");
 }
 
+/* A task that asks for a pair of its own (thread_of: where each ran). */
+typedef struct
+{
+  pthread_t self, inner[2];
+  int status;
+} nest;
+
+static int
+where_task (void *ctx)
+{
+  *(pthread_t *) ctx = pthread_self ();
+  return LAC_SUCCESS;
+}
+
+static int
+nesting_task (void *ctx)
+{
+  nest *t = ctx;
+  t->self = pthread_self ();
+  t->status = lac_tasks_pair (where_task, &t->inner[0], where_task,
+                              &t->inner[1]);
+  return t->status;
+}
+
+/* 3. a pair asked for inside a task runs in that task's thread, one task
+ *    after the other: never more threads than the two. */
+static void
+nested (void)
+{
+  nest a, b;
+  check_status (lac_tasks_pair (nesting_task, &a, nesting_task, &b),
+                LAC_SUCCESS, "two tasks that ask for pairs of their own");
+  check_true (pthread_equal (a.inner[0], a.self)
+              && pthread_equal (a.inner[1], a.self),
+              "the first task's pair ran in its thread");
+  check_true (pthread_equal (b.inner[0], b.self)
+              && pthread_equal (b.inner[1], b.self)
+              && !pthread_equal (b.self, pthread_self ()),
+              "the second task's pair ran in its own thread");
+  check_status (lac_tasks_pair (failing_task, &(int) { LAC_ESING }, ok_task,
+                                NULL), LAC_ESING,
+                "after nesting, a pair still reports its failure");
+}
+
 int
 main (void)
 {
   lac_init ();
   side_by_side ();
   failures ();
+  nested ();
   lac_finalize ();
   return check_summary ();
 }

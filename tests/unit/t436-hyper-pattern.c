@@ -8,7 +8,13 @@
  *      K_T and F_int, to 1e-14 of the largest entry, twice in a row (the
  *      values are overwritten, not accumulated);
  *   3. cells left out (E = 0 in half of them) are left out of both;
- *   4. a cell with E > 0 that is not in the pattern is refused.
+ *   4. a cell with E > 0 that is not in the pattern is refused;
+ *   5. the pattern's three runs of cells (lac_pattern.h): every cell of
+ *      the pattern once, no node in a cell of the first run and in one of
+ *      the second; on a box of 8 x 2 x 2 hex8 both halves have cells;
+ *   6. the assembly by two threads (a half each) and by one (inside a
+ *      task of lac_tasks_pair, linalg/lac_tasks.h) give the same K_T and
+ *      F_int to the last bit.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -17,12 +23,89 @@
 #include "fem/lac_hyper.h"
 #include "fem/lac_pattern.h"
 #include "base/lac_status.h"
+#include "linalg/lac_tasks.h"
 
 static double
 rnd (unsigned *s)
 {
   *s = *s * 1103515245u + 12345u;
   return ((*s >> 8) & 0xffff) / 32767.5 - 1.0;
+}
+
+/* 5. the runs of the pattern p of the cells flagged in `cells`. */
+static void
+runs (const char *name, const lac_mesh *m, const lac_pattern *p,
+      const char *cells, int want_halves)
+{
+  size_t n = p->nrun[0] + p->nrun[1] + p->nrun[2], ncell = 0;
+  char *seen = calloc (m->ncells, 1), *node = calloc (m->nnodes, 1);
+  int ok = 1;
+  for (size_t c = 0; c < m->ncells; c++)
+    ncell += !cells || cells[c];
+  for (size_t q = 0; q < n; q++)
+    {
+      size_t c = p->order[q];
+      ok = ok && c < m->ncells && !seen[c] && (!cells || cells[c]);
+      if (c < m->ncells)
+        seen[c] = 1;
+    }
+  check_true (ok && n == ncell, "%s: the runs hold the pattern's %zu cells "
+              "once each (%zu)", name, ncell, n);
+  for (int run = 0; run < 2; run++)       /* nodes of run 0, then run 1 */
+    for (size_t q = run ? p->nrun[0] : 0;
+         q < (run ? p->nrun[0] + p->nrun[1] : p->nrun[0]); q++)
+      for (size_t k = m->ptr[p->order[q]]; k < m->ptr[p->order[q] + 1]; k++)
+        {
+          ok = ok && !(run == 1 && node[m->conn[k]] == 1);
+          node[m->conn[k]] = (char) (run + 1);
+        }
+  check_true (ok, "%s: no node in both halves", name);
+  if (want_halves)
+    check_true (p->nrun[0] > 0 && p->nrun[1] > 0, "%s: both halves have "
+                "cells (%zu, %zu, %zu)", name, p->nrun[0], p->nrun[1],
+                p->nrun[2]);
+  free (seen), free (node);
+}
+
+/* 6. the assembly inside a task: one thread. */
+typedef struct
+{
+  const lac_mesh *m;
+  const lac_hyper *h;
+  const double *u;
+  double *f;
+  lac_pattern *p;
+} one_job;
+
+static int
+one_thread (void *ctx)
+{
+  one_job *j = ctx;
+  memset (j->f, 0, (size_t) j->m->dim * j->m->nnodes * sizeof *j->f);
+  return lac_hyper_assemble_pattern (j->m, j->h, j->u, j->f, j->p);
+}
+
+static int
+nothing (void *ctx)
+{
+  (void) ctx;
+  return LAC_SUCCESS;
+}
+
+static void
+same_bits (const char *name, const lac_mesh *m, const lac_hyper *h,
+           const double *u, lac_pattern *p, const double *f2)
+{
+  size_t n = (size_t) m->dim * m->nnodes, nnz = (size_t) p->K->p[n];
+  double *K2 = malloc (nnz * sizeof *K2), *f1 = malloc (n * sizeof *f1);
+  memcpy (K2, p->K->x, nnz * sizeof *K2);
+  one_job j = { m, h, u, f1, p };
+  check_status (lac_tasks_pair (one_thread, &j, nothing, NULL), LAC_SUCCESS,
+                "%s: the assembly in one thread", name);
+  check_true (!memcmp (K2, p->K->x, nnz * sizeof *K2)
+              && !memcmp (f1, f2, n * sizeof *f1), "%s: one thread and two "
+              "give the same K_T and F_int to the last bit", name);
+  free (K2), free (f1);
 }
 
 static void
@@ -77,6 +160,11 @@ compare (const char *name, lac_mesh *m, int half)
                   "K differs by %.2e of %.2e, F_int by %.2e", name, pass, dk,
                   emax, df);
     }
+  if (same)
+    {
+      runs (name, m, p, cells, 0);
+      same_bits (name, m, &h, u, p, f2);
+    }
   if (half)
     {
       E[1] = 50;                       /* a cell outside the pattern */
@@ -119,6 +207,16 @@ main (void)
   lac_mesh_free (a);
   lac_mesh_free (b);
   lac_mesh_free (m);
+  size_t nl[3] = { 8, 2, 2 };
+  double L[3] = { 4, 1, 1 };
+  lac_mesh *bar = NULL;
+  lac_mesh_box (LAC_HEX8, nl, L, 0, &bar);
+  lac_pattern *p = bar ? lac_pattern_build (bar, NULL) : NULL;
+  check_true (p != NULL, "the pattern of 8 x 2 x 2 hex8");
+  if (p)
+    runs ("8 x 2 x 2 hex8", bar, p, NULL, 1);
+  lac_pattern_free (p);
+  lac_mesh_free (bar);
   lac_finalize ();
   return check_summary ();
 }
