@@ -13,6 +13,7 @@
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "linalg/lac_tasks.h"
 #include "solve/lac_consistent.h"
 
 void
@@ -233,11 +234,10 @@ lac_nl_contact_force (const lac_nl *s, const double *lambda)
  * admissible macro-element is not an error: no constraint (contact =
  * NULL). */
 static int
-contact_update (lac_nl *s, const double *U)
+contact_update_axes (lac_nl *s, const double *U)
 {
   lac_contact_set_data_clear (&s->data);
   s->contact = NULL;
-  U = in_axes (s, U);
   for (size_t j = 0; j < s->ndof; j++)
     s->x[j] = s->prob.mesh->x[j] + U[j];             /* x = X + U */
   double t0 = lac_seconds ();
@@ -250,15 +250,20 @@ contact_update (lac_nl *s, const double *U)
   return status;
 }
 
-/* F_int (Fint != NULL) and, if want_K, K_T at U (s->have_K says
- * whether K_T is the tangent at U). */
 static int
-assemble (lac_nl *s, const double *U, double *Fint, int want_K)
+contact_update (lac_nl *s, const double *U)
+{
+  return contact_update_axes (s, in_axes (s, U));
+}
+
+/* F_int (Fint != NULL) and, if want_K, K_T at U, U in the axes (s->have_K
+ * says whether K_T is the tangent at U). */
+static int
+assemble_axes (lac_nl *s, const double *U, double *Fint, int want_K)
 {
   double t0 = lac_seconds ();
   const lac_frames *f = s->prob.dir->frames;
   int status;
-  U = in_axes (s, U);
   if (Fint)
     memset (Fint, 0, s->ndof * sizeof *Fint);
   if (want_K)
@@ -273,6 +278,37 @@ assemble (lac_nl *s, const double *U, double *Fint, int want_K)
   s->have_K = want_K && !status;
   s->time_assemble += lac_seconds () - t0;
   return status;
+}
+
+static int
+assemble (lac_nl *s, const double *U, double *Fint, int want_K)
+{
+  return assemble_axes (s, in_axes (s, U), Fint, want_K);
+}
+
+/* The two halves of an evaluation, side by side (linalg/lac_tasks.h): the
+ * assembly of F_int and K_T, and the pairing with C and the mean gaps;
+ * they share only the mesh and U (read).  On the coarse hex20 ring they
+ * take about the same time. */
+typedef struct eval_job
+{
+  lac_nl *s;
+  const double *U;     /* in the axes */
+  int tangent;
+} eval_job;
+
+static int
+assemble_task (void *ctx)
+{
+  eval_job *j = ctx;
+  return assemble_axes (j->s, j->U, j->s->Fint, j->tangent);
+}
+
+static int
+contact_task (void *ctx)
+{
+  eval_job *j = ctx;
+  return contact_update_axes (j->s, j->U);
 }
 
 /* r = t F - F_int and the force scale max(|F_int|, |t F|, r_0). */
@@ -294,9 +330,9 @@ static int
 evaluate (void *self, const double *U, int tangent, lac_model_point *p)
 {
   lac_nl *s = self;
-  int status = assemble (s, U, s->Fint, tangent);
-  if (!status && s->npair)
-    status = contact_update (s, U);
+  eval_job j = { s, in_axes (s, U), tangent };
+  int status = s->npair ? lac_tasks_pair (assemble_task, &j, contact_task, &j)
+                        : assemble_task (&j);
   if (status)
     return status;
   const lac_contact *c = s->contact;
