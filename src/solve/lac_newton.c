@@ -128,9 +128,12 @@ step (lac_newton *s, double eta, lac_newton_record *rec)
   if ((status = t->linearize (s->model.self, s->U, &sys, &news)))
     return status;
   gather (s, sys, rec);                 /* the statuses of the columns */
+  if (s->strategy)                      /* before prepare's factorization */
+    lac_strategy_get_counts (s->strategy, &c0);
+  else
+    memset (&c0, 0, sizeof c0);
   if ((status = prepare (s, sys, news, consistent, &lagged)))
     return status;
-  lac_strategy_get_counts (s->strategy, &c0);
   if (t->nonlinear)                               /* from the increments */
     memset (w->x, 0, s->n * sizeof *w->x);
   else
@@ -487,14 +490,34 @@ gather (lac_newton *s, const lac_contact_system *sys, lac_newton_record *rec)
     rec->nactive += w->kact[i] != 0;
 }
 
+/* Do the columns of the point have the slots the strategy's C had?  If
+ * not (or `remember`), remember theirs. */
+static int
+same_columns (lac_newton *s, int remember)
+{
+  lac_newton_work *w = s->w;
+  int same = w->nset_slot == s->pt.k;
+  for (size_t i = 0; same && i < s->pt.k; i++)
+    same = w->set_slot[i] == lac_model_slot (&s->pt, i);
+  if (same && !remember)
+    return 1;
+  w->nset_slot = s->pt.k;
+  for (size_t i = 0; i < s->pt.k; i++)
+    w->set_slot[i] = lac_model_slot (&s->pt, i);
+  return same;
+}
+
 /* Set the strategy on sys (a new tangent), or reset it (only C is new),
  * or leave it.  *lagged: the tangent is new but the factorization of an
  * older one was kept (schur, lac_strategy_reset) as the preconditioner of
  * the consistent step, which then makes the whole step (the inexact
- * rule).  A loop starts with a factorization of its own tangent: the one
- * of the step before preconditions the first step of a new load badly
- * (the CI ring: 56 Newton iterations and 4 cut steps with it, 39 and none
- * without). */
+ * rule); if the columns are the same constraints as those of the C the
+ * strategy holds, that C is kept too, and with it the columns of the
+ * Schur complement made (on the coarse hex20 ring they cost as much as
+ * the solves of GMRES).  A loop starts with a factorization of its own
+ * tangent: the one of the step before preconditions the first step of a
+ * new load badly (the CI ring: 56 Newton iterations and 4 cut steps with
+ * it, 39 and none without). */
 static int
 prepare (lac_newton *s, const lac_contact_system *sys, int news,
          int consistent, int *lagged)
@@ -519,11 +542,13 @@ prepare (lac_newton *s, const lac_contact_system *sys, int news,
       status = lac_strategy_set (s->strategy, sys);
       w->strategy_set = !status;
       w->gmres_last = 0;
+      same_columns (s, 1);
       return status;
     }
   if (news == LAC_MODEL_SAME)
     return LAC_SUCCESS;
-  status = lac_strategy_reset (s->strategy, sys, &kept);
+  int same = same_columns (s, 0) && news == LAC_MODEL_NEW_K && consistent;
+  status = lac_strategy_reset (s->strategy, sys, same, &kept);
   *lagged = kept && news == LAC_MODEL_NEW_K;
   return status;
 }

@@ -42,6 +42,9 @@ struct lac_newton_work
   double res_solved;     /* the residual it started from                   */
   long worst_gap;        /* the slot of step 3's gap residual (-1: none)   */
   int strategy_set;      /* the strategy holds a factorization             */
+  size_t *set_slot;      /* nslot: the slots of the columns of the C the
+                            strategy was last set or reset with            */
+  size_t nset_slot;      /* their number                                   */
   int gmres_last;        /* GMRES iterations since the last one            */
   /* friction: the equations of the law per column (lac_contact_rows;
    * q = 1 + ntan components per column), NULL without */

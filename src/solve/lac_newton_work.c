@@ -38,6 +38,7 @@ work_free (lac_newton_work *w)
   lac_free (w->lam_lin);
   lac_free (w->want);
   lac_free (w->col);
+  lac_free (w->set_slot);
   lac_free (w->pair);
   lac_free (w->target);
   lac_free (w->fl);
@@ -132,6 +133,7 @@ lac_newton_alloc (const lac_contact_model *m, const lac_newton_opts *opts)
            && (w->active0 = lac_calloc (ns, 1))
            && (w->kact = lac_calloc (ns, 1))
            && (w->col = lac_calloc (ns, sizeof *w->col))
+           && (w->set_slot = lac_calloc (ns, sizeof *w->set_slot))
            && (w->pair = lac_calloc (2 * ns, sizeof *w->pair));
   for (size_t j = 0; j < sizeof per_dof / sizeof *per_dof; j++)
     ok = ok && (*per_dof[j] = lac_calloc (n, sizeof (double)));

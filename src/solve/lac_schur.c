@@ -12,11 +12,20 @@
 typedef struct lac_schur
 {
   const lac_contact_system *sys;   /* borrowed                            */
+  lac_csc *C;                      /* owned: a copy of the C of the last
+                                      set or reset                         */
+  int kept;                        /* 1 after keep: S and the solves are
+                                      C's, not sys->C's                    */
   size_t n, k;
   lac_solver *chol;                /* owned: K = L L^T                    */
   double *S;                       /* owned, k x k: S(j, i) at S[i k + j] */
   char *have;                      /* owned, k: column i of S computed    */
   double *x;                       /* owned, n: scratch                   */
+  double *X;                       /* owned, n x k, or NULL: column i is
+                                      K^{-1} c_i where have[i] (made with
+                                      S, kept when it takes no more room
+                                      than the factor)                     */
+  int no_X;                        /* X would take more than the factor   */
   int factor_failed;               /* the last set's K = L L^T failed     */
   lac_solve_counts counts;
 } lac_schur;
@@ -41,8 +50,10 @@ free_arrays (lac_schur *s)
   lac_free (s->S);
   lac_free (s->have);
   lac_free (s->x);
-  s->S = s->x = NULL;
+  lac_free (s->X);
+  s->S = s->x = s->X = NULL;
   s->have = NULL;
+  s->no_X = 0;
 }
 
 static void
@@ -52,6 +63,7 @@ schur_free (void *w)
   if (!s)
     return;
   free_arrays (s);
+  lac_csc_free (s->C);
   lac_solver_free (s->chol);
   lac_free (s);
 }
@@ -85,7 +97,11 @@ borrow (lac_schur *s, const lac_contact_system *sys)
       s->k = k;
     }
   s->sys = sys;
+  s->kept = 0;
   memset (s->have, 0, k);
+  lac_csc_free (s->C);
+  if (!(s->C = lac_csc_copy (sys->C)))
+    LAC_ERROR (LAC_ENOMEM, "a copy of C (%zu columns)", k);
   return LAC_SUCCESS;
 }
 
@@ -108,12 +124,49 @@ schur_reset (void *w, const lac_contact_system *sys)
   return borrow (w, sys);
 }
 
+/* The factorization, the C of the last set or reset and the columns of S
+ * made of them kept: only the right-hand sides F, G are sys's (the
+ * strategy checked that sys has as many dofs and columns). */
+static int
+schur_keep (void *w, const lac_contact_system *sys)
+{
+  lac_schur *s = w;
+  s->sys = sys;
+  s->kept = 1;
+  return LAC_SUCCESS;
+}
+
+/* The C that S is made of. */
+static const lac_csc *
+c_of (const lac_schur *s)
+{
+  return s->kept ? s->C : s->sys->C;
+}
+
+/* Columns idx[0..nb) of X = K^{-1} C, kept in s->X if it takes no more
+ * room than the factor (n k <= nnz(L)): with them a solve of a kept
+ * system (schur_keep) needs one solve with the factor, not two. */
+static void
+keep_X (lac_schur *s, const size_t *idx, size_t nb, const double *X)
+{
+  lac_solver_info info;
+  if (!s->X && !s->no_X)
+    {
+      s->no_X = lac_solver_get_info (s->chol, &info) != LAC_SUCCESS
+                || (double) s->n * (double) s->k > info.nnz_factor
+                || !(s->X = lac_malloc (s->n * s->k * sizeof *s->X));
+      lac_error_clear ();                 /* no room: two solves, as before */
+    }
+  for (size_t b = 0; s->X && b < nb; b++)
+    memcpy (s->X + idx[b] * s->n, X + b * s->n, s->n * sizeof *X);
+}
+
 /* Columns idx[0..nb) of S: X = K^{-1} C(:, idx) in one block solve, then
  * S(j, i) = c_j^T X(:, i) for every j. */
 static int
 schur_block (lac_schur *s, const size_t *idx, size_t nb)
 {
-  const lac_csc *C = s->sys->C;
+  const lac_csc *C = c_of (s);
   size_t n = s->n;
   double *B = lac_calloc (n * nb, sizeof *B), *X = lac_malloc (n * nb
                                                                * sizeof *X);
@@ -124,6 +177,8 @@ schur_block (lac_schur *s, const size_t *idx, size_t nb)
       B[b * n + (size_t) C->i[p]] = C->x[p];
   if (!status)
     status = lac_solver_solve_many (s->chol, nb, B, X);   /* X = K^-1 B */
+  if (!status)
+    keep_X (s, idx, nb, X);
   for (size_t b = 0; !status && b < nb; b++)
     {
       for (size_t j = 0; j < s->k; j++)                  /* S(:,i) = C^T X */
@@ -203,7 +258,7 @@ schur_solve (void *w, const char *active, const double *f, const double *g,
              double rtol, double *U, double *lambda)
 {
   lac_schur *s = w;
-  const lac_csc *C = s->sys->C;
+  const lac_csc *C = c_of (s);
   int status;
   (void) rtol;
   s->factor_failed = 0;
@@ -222,6 +277,13 @@ schur_solve (void *w, const char *active, const double *f, const double *g,
     }
   if ((status = schur_multipliers (s, active, lambda, lambda)))
     return status;
+  if (s->kept && s->X)                     /* U = U_0 + K^-1 C_A lambda_A */
+    {
+      for (size_t i = 0; i < s->k; i++)
+        for (size_t r = 0; active[i] && r < s->n; r++)
+          U[r] += s->X[i * s->n + r] * lambda[i];
+      return LAC_SUCCESS;
+    }
   memcpy (s->x, f, s->n * sizeof *s->x);               /* f + C_A lambda_A */
   for (size_t i = 0; i < s->k; i++)
     for (int p = C->p[i]; active[i] && p < C->p[i + 1]; p++)
@@ -299,7 +361,7 @@ schur_solve_rows (void *w, const lac_contact_rows *R, const double *f,
                   const double *r, double *U, double *lambda)
 {
   lac_schur *s = w;
-  const lac_csc *C = s->sys->C;
+  const lac_csc *C = c_of (s);
   size_t q = (size_t) R->q;
   int status;
   s->factor_failed = 0;
@@ -341,7 +403,7 @@ schur_solve_rows (void *w, const lac_contact_rows *R, const double *f,
 
 const lac_strategy_ops lac_schur_ops = {
   .alloc = schur_alloc, .free = schur_free, .set = schur_set,
-  .reset = schur_reset, .solve = schur_solve,
+  .reset = schur_reset, .keep = schur_keep, .solve = schur_solve,
   .get_counts = schur_get_counts, .factor_failed = schur_factor_failed,
   .solve_rows = schur_solve_rows
 };

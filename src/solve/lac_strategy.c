@@ -380,16 +380,18 @@ lac_strategy_set (lac_strategy *s, const lac_contact_system *sys)
 
 int
 lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
-                    int *kept)
+                    int same_columns, int *kept)
 {
   *kept = s->type->ops->reset && s->sys && s->n == lac_system_n (sys);
   if (!*kept)
     return lac_strategy_set (s, sys);
+  int keep = same_columns && s->type->ops->keep && s->k == sys->C->ncol;
   double t0 = lac_seconds ();
   int status = work_arrays (s, lac_system_n (sys), sys->C->ncol);
   s->sys = sys;
   if (!status)
-    status = s->type->ops->reset (s->w, sys);
+    status = keep ? s->type->ops->keep (s->w, sys)
+                  : s->type->ops->reset (s->w, sys);
   s->counts.time_solve += lac_seconds () - t0;
   return status;
 }

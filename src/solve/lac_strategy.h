@@ -238,11 +238,15 @@ int lac_strategy_solve (lac_strategy *s, const char *active, double *U,
  * only what depends on C is made again, and the solves are those of the
  * old K with the new C; *kept says whether the factorization was kept
  * (the other strategies factor K + C_A W C_A^T or the whole system, which
- * depend on C, so they factor again).  lac_strategy_solve_rhs is one
- * solve of (*) with the right-hand sides f, g instead of F, G, without
- * the check of the bodies held and without refinement. */
+ * depend on C, so they factor again).  With same_columns (the caller
+ * says that the columns of sys->C are the constraints of the last set's,
+ * in the same order) schur keeps the older C as well, and the columns of
+ * C_A^T K^-1 C_A it made: the solves are those of the older system, none
+ * is made again.  lac_strategy_solve_rhs is one solve of (*) with the
+ * right-hand sides f, g instead of F, G, without the check of the bodies
+ * held and without refinement. */
 int lac_strategy_reset (lac_strategy *s, const lac_contact_system *sys,
-                        int *kept);
+                        int same_columns, int *kept);
 /* U, lambda for the equations R of a contact law (lac_contact_rows of
  * solve/lac_system.h: friction), with the same refinement; LAC_EINVAL
  * with a message naming the strategies that can when the type cannot

@@ -129,6 +129,11 @@ typedef struct lac_strategy_ops
   int (*set) (void *w, const lac_contact_system *sys);
   /* Optional: another C, the factorization of the last set's K kept. */
   int (*reset) (void *w, const lac_contact_system *sys);
+  /* Optional: other right-hand sides F, G (sys: as many dofs and
+   * columns), the factorization and the C of the last set or reset kept
+   * with everything made of them: the solves are those of the older
+   * system, a preconditioner of the new one. */
+  int (*keep) (void *w, const lac_contact_system *sys);
   /* U, lambda of (*) for the statuses `active` (k = 0 too: K U = F),
    * right-hand sides f, g (NULL: F, G); U, lambda: start on entry,
    * solution on return (lambda_i = 0 where inactive); rtol: of an inner
