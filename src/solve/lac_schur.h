@@ -19,7 +19,11 @@
  * The operations of the type schur of solve/lac_strategy.h: set factors
  * K (a K that is not positive definite: LAC_ESING, and factor_failed
  * says so), reset keeps that factorization for another C (only the
- * columns of S are forgotten).
+ * columns of S are forgotten), keep keeps the C as well, with the columns
+ * of S made and the columns K^{-1} c_i behind them (when they take no more
+ * room than the factor): the solves are those of the older system, the
+ * preconditioner of a consistent Newton step (solve/lac_consistent.h),
+ * one solve with the factor each, U = K^{-1} f + K^{-1} C_A lambda_A.
  */
 #ifndef LAC_SCHUR_H
 #define LAC_SCHUR_H
