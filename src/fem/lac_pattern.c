@@ -255,16 +255,19 @@ halves (lac_pattern *p, const lac_mesh *m)
         mark[m->conn[q]] |= side[c];
     }
   memset (p->nrun, 0, sizeof p->nrun);
-  size_t at = 0;
-  for (int run = 0; run < 3; at += p->nrun[run++])
-    for (size_t c = 0; c < m->ncells; c++)       /* in the cells' order */
-      {
-        int both = 0;
-        for (size_t q = m->ptr[c]; side[c] && q < m->ptr[c + 1]; q++)
-          both |= mark[m->conn[q]] == 3;
-        if (side[c] && (both ? run == 2 : run == side[c] - 1))
-          p->order[at + p->nrun[run]++] = c;
-      }
+  for (size_t c = 0; c < m->ncells; c++)       /* side[c] becomes its run */
+    {
+      int both = 0;
+      for (size_t q = m->ptr[c]; side[c] && q < m->ptr[c + 1]; q++)
+        both |= mark[m->conn[q]] == 3;
+      side[c] = side[c] && both ? 3 : side[c];
+      if (side[c])
+        p->nrun[side[c] - 1]++;
+    }
+  size_t at[3] = { 0, p->nrun[0], p->nrun[0] + p->nrun[1] };
+  for (size_t c = 0; c < m->ncells; c++)       /* in the cells' order */
+    if (side[c])
+      p->order[at[side[c] - 1]++] = c;
   lac_free (kc), lac_free (mark), lac_free (side);
   return LAC_SUCCESS;
 }
