@@ -91,9 +91,10 @@ int lac_solver_factor (lac_solver *s, const lac_csc *A);
  * factored; otherwise, or for dense, it is lac_solver_factor.  The same
  * checks and messages as lac_solver_factor. */
 int lac_solver_refactor (lac_solver *s, const lac_csc *A);
-/* threads = 1: the factorizations of s keep the BLAS on one thread
- * (another factorization runs beside them, linalg/lac_tasks.h); 0, the
- * default: every core inside a factorization (linalg/lac_blas.h). */
+/* threads = 1: the factorizations of s and its solves of several
+ * right-hand sides keep the BLAS on one thread (another factorization
+ * runs beside them, linalg/lac_tasks.h); 0, the default: every core
+ * inside them (linalg/lac_blas.h). */
 void lac_solver_set_threads (lac_solver *s, int threads);
 /* x = A^{-1} b with the last factorization (x and b may not alias). */
 int lac_solver_solve (lac_solver *s, const double *b, double *x);

@@ -2,8 +2,10 @@
  * residuals (< 1e-12) on an SPD 2D Laplacian-like matrix and, for dense and
  * UMFPACK, on a random nonsymmetric well-conditioned matrix; several
  * right-hand sides, refactoring (and lac_solver_refactor's reuse of the
- * analysis), names, info and argument errors. */
+ * analysis), names, info and argument errors; CHOLMOD refuses a matrix
+ * whose upper part differs from its lower part, naming the entry. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
@@ -275,6 +277,53 @@ test_errors (const lac_csc *Ansym)
   lac_csc_free (big);
 }
 
+/* A copy of A with entry (i, j), i < j, of the upper part set to v (added
+ * to the pattern if it is not there): CHOLMOD must refuse it, naming
+ * (i, j), unless v equals A(j, i). */
+static void
+check_one_sided (const lac_csc *A, size_t i, size_t j, double v, int bad)
+{
+  lac_triplet *T = lac_triplet_alloc (A->nrow, A->ncol, 0);
+  int found = 0;
+  for (size_t c = 0; c < A->ncol; c++)
+    for (int q = A->p[c]; q < A->p[c + 1]; q++)
+      {
+        int here = (size_t) A->i[q] == i && c == j;
+        found |= here;
+        lac_triplet_add (T, (size_t) A->i[q], c, here ? v : A->x[q]);
+      }
+  if (!found)
+    lac_triplet_add (T, i, j, v);
+  lac_csc *B = lac_csc_from_triplet (T);
+  lac_solver *S = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+  char at[64];
+  snprintf (at, sizeof at, "A(%zu,%zu)", i, j);
+  lac_error_clear ();
+  check_status (lac_solver_factor (S, B), bad ? LAC_EINVAL : LAC_SUCCESS,
+                "one-sided %s = %g", at, v);
+  if (bad)
+    check_message (at, "the message names %s", at);
+  lac_solver_free (S);
+  lac_csc_free (B);
+  lac_triplet_free (T);
+}
+
+/* The symmetry check of every entry of the upper part, the first and the
+ * last columns included. */
+static void
+test_symmetry_check (const lac_csc *L)
+{
+  size_t n = L->ncol, i = (size_t) -1, j = 0;
+  for (size_t c = n; c-- > 0 && i == (size_t) -1;)   /* the last off-diagonal */
+    for (int q = L->p[c]; q < L->p[c + 1]; q++)       /* upper entry */
+      if ((size_t) L->i[q] < c)
+        i = (size_t) L->i[q], j = c;
+  check_one_sided (L, i, j, -1.0, 0);            /* the same value: fine */
+  check_one_sided (L, i, j, -1.5, 1);            /* changed */
+  check_one_sided (L, 0, n - 1, 0.25, 1);        /* not in the lower part */
+  check_one_sided (L, 0, 1, 0.0, 0);             /* an explicit zero */
+}
+
 /* Make the k-th allocation fail, k = 0, 1, ...: every step either works or
  * returns LAC_ENOMEM with a message; nothing leaks (checked under ASan). */
 static void
@@ -341,6 +390,7 @@ main (void)
   test_refactor (L, L);
   test_reuse (L, N);
   test_errors (N);
+  test_symmetry_check (L);
   test_alloc_failures ();
   lac_csc_free (L);
   lac_csc_free (N);
