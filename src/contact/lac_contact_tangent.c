@@ -474,43 +474,47 @@ subfacet (const lac_mesh *mesh, lac_model model, const lac_macro *M,
 }
 
 int
-lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
-                           const lac_macro *M, const lac_pairing *P,
-                           const lac_pairing_facets *master,
-                           const lac_obstacle *obstacle,
-                           const lac_contact *c, const double *lambda,
-                           const char *want, lac_contact_tangent **out)
+lac_contact_tangent_build_cols (const lac_mesh *mesh, lac_model model,
+                                const lac_macro *M, const lac_pairing *P,
+                                const lac_pairing_facets *master,
+                                const lac_obstacle *obstacle,
+                                const lac_contact *c, const double *lambda,
+                                const char *want, size_t i0, size_t i1,
+                                lac_contact_tangent **out)
 {
-  size_t ndof = (size_t) mesh->dim * mesh->nnodes;
+  size_t ndof = (size_t) mesh->dim * mesh->nnodes, k = i1 - i0;
   int status = LAC_SUCCESS;
   *out = NULL;
   if (!M || !P || !c || (c->k > 0 && !lambda))
     LAC_ERROR (LAC_EINVAL, "NULL macro-mesh, pairing, contact data or "
                "multipliers");
+  if (i0 > i1 || i1 > c->k)
+    LAC_ERROR (LAC_EINVAL, "columns %zu..%zu of a contact with %zu", i0, i1,
+               c->k);
   lac_contact_tangent *t = lac_calloc (1, sizeof *t);
-  lac_triplet *TB = lac_triplet_alloc (ndof, c->k ? c->k : 1, 0);
+  lac_triplet *TB = lac_triplet_alloc (ndof, k ? k : 1, 0);
   block bk = { 0, 0, NULL, NULL, NULL, 0, c->offset };
   growth gr = { 0, 0, 0, 0, 0 };
   if (!t || !TB)
     status = LAC_ERRMSG (LAC_ENOMEM, "contact tangent");
   if (t)
     {
-      t->ndof = ndof, t->k = c->k;
+      t->ndof = ndof, t->k = k;
       t->bptr = lac_calloc (16, sizeof *t->bptr);      /* bptr[0] = 0 */
       t->vptr = lac_calloc (16, sizeof *t->vptr);
       gr.cblock = 16;
       if (!status && (!t->bptr || !t->vptr))
         status = LAC_ERRMSG (LAC_ENOMEM, "contact tangent");
     }
-  for (size_t i = 0; !status && i < c->k; i++)
+  for (size_t i = i0; !status && i < i1; i++)      /* column i - i0 of B */
     for (size_t j = M->ptr[c->macro[i]]; !status && j < M->ptr[c->macro[i]
                                                                  + 1]; j++)
       if (!want || want[i] || lambda[i] != 0)
-        status = subfacet (mesh, model, M, P, master, obstacle, j, i,
+        status = subfacet (mesh, model, M, P, master, obstacle, j, i - i0,
                            lambda[i], !want || want[i], t, &gr, &bk, TB);
   if (!status)
     {
-      TB->ncol = c->k;
+      TB->ncol = k;
       if (!(t->B = lac_csc_from_triplet (TB)))
         status = LAC_ENOMEM;
     }
@@ -524,6 +528,34 @@ lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
     }
   *out = t;
   return LAC_SUCCESS;
+}
+
+int
+lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
+                           const lac_macro *M, const lac_pairing *P,
+                           const lac_pairing_facets *master,
+                           const lac_obstacle *obstacle,
+                           const lac_contact *c, const double *lambda,
+                           const char *want, lac_contact_tangent **out)
+{
+  return lac_contact_tangent_build_cols (mesh, model, M, P, master, obstacle,
+                                         c, lambda, want, 0, c ? c->k : 0,
+                                         out);
+}
+
+/* The points of the pairing that column i's derivatives go through: the
+ * work of its part of the build. */
+size_t
+lac_contact_tangent_work (const lac_macro *M, const lac_pairing *P,
+                          const lac_contact *c, const double *lambda,
+                          const char *want, size_t i)
+{
+  size_t w = 0;
+  if (want && !want[i] && lambda[i] == 0)
+    return 0;
+  for (size_t j = M->ptr[c->macro[i]]; j < M->ptr[c->macro[i] + 1]; j++)
+    w += P->ptr[j + 1] - P->ptr[j];
+  return w;
 }
 
 void

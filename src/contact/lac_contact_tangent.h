@@ -90,6 +90,29 @@ int lac_contact_tangent_build (const lac_mesh *mesh, lac_model model,
                                const lac_obstacle *obstacle,
                                const lac_contact *c, const double *lambda,
                                const char *want, lac_contact_tangent **out);
+
+/* Columns i0 <= i < i1 of the same alone: a tangent of i1 - i0 columns
+ * (column i - i0 of B is multiplier i's; H's blocks those of these
+ * columns, in the same order).  Each column is made as in the whole
+ * build, so that the pieces of a cut put side by side
+ * (lac_contact_tangent_cat) are the whole tangent, bit for bit: two pieces
+ * can be built at the same time (solve/lac_nonlinear.c).  LAC_EINVAL if
+ * the range is not within c's columns. */
+int lac_contact_tangent_build_cols (const lac_mesh *mesh, lac_model model,
+                                    const lac_macro *M, const lac_pairing *P,
+                                    const lac_pairing_facets *master,
+                                    const lac_obstacle *obstacle,
+                                    const lac_contact *c,
+                                    const double *lambda, const char *want,
+                                    size_t i0, size_t i1,
+                                    lac_contact_tangent **out);
+
+/* The work of column i in the build (the points of the pairing on its
+ * sub-facets; 0 if it is neither wanted nor lambda_i != 0): where to cut
+ * the columns into pieces of equal work. */
+size_t lac_contact_tangent_work (const lac_macro *M, const lac_pairing *P,
+                                 const lac_contact *c, const double *lambda,
+                                 const char *want, size_t i);
 void lac_contact_tangent_free (lac_contact_tangent *t);    /* NULL allowed */
 
 /* The tangents of several contact pairs as one (contact/lac_contact_set.h:

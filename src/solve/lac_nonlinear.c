@@ -401,14 +401,14 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
 /* ---- the consistent step ------------------------------------------------ */
 
 /* H and B of pair q at the current coordinates, for its columns
- * (lam_lin, active from its first column on). */
+ * i0 <= i < i1 (lam_lin, active from its first column on). */
 static int
-pair_tangent (lac_nl *s, size_t q, const char *active, const double *lam_lin,
-              lac_contact_tangent **t)
+pair_tangent (lac_nl *s, size_t q, size_t i0, size_t i1, const char *active,
+              const double *lam_lin, lac_contact_tangent **t)
 {
   const lac_contact_pair *p = &s->pair[q];
   const lac_contact *c = s->data.c[q];
-  size_t i0 = s->data.col[q];
+  size_t c0 = s->data.col[q];
   lac_pairing_facets Mf;
   static const lac_contact none = { 0 };
   if (p->master)
@@ -416,28 +416,75 @@ pair_tangent (lac_nl *s, size_t q, const char *active, const double *lam_lin,
       Mf = *p->master;
       Mf.mesh = &s->cur;
     }
-  return lac_contact_tangent_build (&s->cur, p->model, p->M, s->data.P[q],
-                                    p->master ? &Mf : NULL, p->obstacle,
-                                    c ? c : &none, lam_lin + i0, active + i0,
-                                    t);
+  return lac_contact_tangent_build_cols (&s->cur, p->model, p->M,
+                                         s->data.P[q], p->master ? &Mf : NULL,
+                                         p->obstacle, c ? c : &none,
+                                         lam_lin + c0, active + c0, i0, i1,
+                                         t);
 }
 
-/* s->tangent: H and B of every pair, side by side. */
+/* Where to cut pair q's columns into two pieces of equal work. */
+static size_t
+half_work (const lac_nl *s, size_t q, const char *active,
+           const double *lam_lin)
+{
+  const lac_contact *c = s->data.c[q];
+  size_t c0 = s->data.col[q], total = 0, sum = 0, i = 0;
+  if (!c)
+    return 0;
+  for (size_t j = 0; j < c->k; j++)
+    total += lac_contact_tangent_work (s->pair[q].M, s->data.P[q], c,
+                                       lam_lin + c0, active + c0, j);
+  while (i < c->k && 2 * sum < total)
+    sum += lac_contact_tangent_work (s->pair[q].M, s->data.P[q], c,
+                                     lam_lin + c0, active + c0, i++);
+  return i;
+}
+
+/* A piece of pair q's tangent: its columns i0 <= i < i1, into t. */
+typedef struct tangent_job
+{
+  lac_nl *s;
+  size_t q, i0, i1;
+  const char *active;
+  const double *lam_lin;
+  lac_contact_tangent *t;          /* out: the caller frees it */
+} tangent_job;
+
+static int
+tangent_task (void *ctx)
+{
+  tangent_job *j = ctx;
+  return pair_tangent (j->s, j->q, j->i0, j->i1, j->active, j->lam_lin,
+                       &j->t);
+}
+
+/* s->tangent: H and B of every pair, each pair's columns cut in two
+ * pieces of equal work built at the same time (linalg/lac_tasks.h; the
+ * columns are independent, so the pieces side by side are the tangent of
+ * one build, bit for bit). */
 static int
 tangent (lac_nl *s, const char *active, const double *lam_lin)
 {
-  lac_contact_tangent **t = lac_calloc (s->npair, sizeof *t);
+  size_t n = 2 * s->npair;
+  lac_contact_tangent **t = lac_calloc (n, sizeof *t);
   int status = t ? LAC_SUCCESS : LAC_ERRMSG (LAC_ENOMEM, "%zu tangents",
                                              s->npair);
   lac_contact_tangent_free (s->tangent);
   s->tangent = NULL;
   for (size_t q = 0; q < s->npair && !status; q++)
-    status = pair_tangent (s, q, active, lam_lin, &t[q]);
-  if (!status && s->npair == 1)
-    s->tangent = t[0], t[0] = NULL;              /* one pair: itself */
-  else if (!status)
-    status = lac_contact_tangent_cat (t, s->npair, &s->tangent);
-  for (size_t q = 0; t && q < s->npair; q++)
+    {
+      size_t k = s->data.c[q] ? s->data.c[q]->k : 0;
+      size_t mid = half_work (s, q, active, lam_lin);
+      tangent_job a = { s, q, 0, mid, active, lam_lin, NULL };
+      tangent_job b = { s, q, mid, k, active, lam_lin, NULL };
+      status = lac_tasks_pair (tangent_task, &a, tangent_task, &b);
+      t[2 * q] = a.t;
+      t[2 * q + 1] = b.t;
+    }
+  if (!status)
+    status = lac_contact_tangent_cat (t, n, &s->tangent);
+  for (size_t q = 0; t && q < n; q++)
     lac_contact_tangent_free (t[q]);
   lac_free (t);
   return status;

@@ -23,7 +23,9 @@
  * measure the derivatives and nothing else.  The contact part is checked
  * on its own (H against the difference of C lambda; B against that of d),
  * and the frozen-geometry tangent (H = 0, B = C) must fail the same
- * check, so that the comparison can tell them apart.
+ * check, so that the comparison can tell them apart.  The tangent built
+ * in two pieces of columns (lac_contact_tangent_build_cols, cut anywhere)
+ * and put side by side is the whole one, bit for bit.
  */
 #include <math.h>
 #include <stdio.h>
@@ -56,6 +58,60 @@ rnd (unsigned *s)
 {
   *s = *s * 1103515245u + 12345u;
   return ((*s >> 8) & 0xffff) / 32767.5 - 1.0;
+}
+
+/* 1 if a and b hold the same numbers, bit for bit. */
+static int
+same_tangent (const lac_contact_tangent *a, const lac_contact_tangent *b)
+{
+  size_t nz = (size_t) a->B->p[a->k];
+  if (a->k != b->k || a->nblock != b->nblock || a->ndof != b->ndof
+      || memcmp (a->B->p, b->B->p, (a->k + 1) * sizeof (int))
+      || (nz && (memcmp (a->B->i, b->B->i, nz * sizeof (int))
+                 || memcmp (a->B->x, b->B->x, nz * sizeof (double))))
+      || memcmp (a->bptr, b->bptr, (a->nblock + 1) * sizeof (size_t))
+      || memcmp (a->vptr, b->vptr, (a->nblock + 1) * sizeof (size_t)))
+    return 0;
+  return (!a->bptr[a->nblock] || !memcmp (a->dof, b->dof, a->bptr[a->nblock]
+                                          * sizeof (size_t)))
+         && (!a->vptr[a->nblock] || !memcmp (a->val, b->val,
+                                             a->vptr[a->nblock]
+                                             * sizeof (double)));
+}
+
+/* The columns [0, i) and [i, k) built apart and put side by side are the
+ * whole tangent t, for cuts at the ends and inside; a range past the
+ * columns is refused. */
+static void
+check_pieces (const fdcase *fc, const lac_mesh *cur, const lac_pairing *P,
+              const lac_pairing_facets *Mf, const lac_contact *c,
+              const double *lk, const lac_contact_tangent *t)
+{
+  size_t cuts[4] = { 0, c->k / 3, c->k / 2 + 1, c->k };
+  for (int q = 0; q < 4; q++)
+    {
+      size_t i = cuts[q] < c->k ? cuts[q] : c->k;
+      lac_contact_tangent *pc[2] = { NULL, NULL }, *whole = NULL;
+      int st = lac_contact_tangent_build_cols (cur, fc->mat.model, fc->M, P,
+                                               Mf, &fc->ob, c, lk, NULL, 0,
+                                               i, &pc[0])
+               || lac_contact_tangent_build_cols (cur, fc->mat.model, fc->M,
+                                                  P, Mf, &fc->ob, c, lk, NULL,
+                                                  i, c->k, &pc[1])
+               || lac_contact_tangent_cat (pc, 2, &whole);
+      check_true (!st && same_tangent (whole, t), "%s: columns cut at %zu "
+                  "of %zu: the two pieces are the tangent, bit for bit",
+                  fc->name, i, c->k);
+      lac_contact_tangent_free (pc[0]);
+      lac_contact_tangent_free (pc[1]);
+      lac_contact_tangent_free (whole);
+    }
+  lac_contact_tangent *bad = NULL;
+  check_status (lac_contact_tangent_build_cols (cur, fc->mat.model, fc->M, P,
+                                                Mf, &fc->ob, c, lk, NULL, 1,
+                                                c->k + 1, &bad),
+                LAC_EINVAL, "%s: columns past the last refused", fc->name);
+  check_true (bad == NULL, "%s: nothing built for a bad range", fc->name);
 }
 
 /* Contact data on X + U: C lambda (ndof), d (k); optionally the tangent
@@ -102,6 +158,8 @@ evaluate (const fdcase *fc, const double *U, double *Cl, double *d,
         st = lac_contact_tangent_build (&cur, fc->mat.model, fc->M, P,
                                         fc->master.n ? &Mf : NULL, &fc->ob,
                                         c, lk, NULL, tan);
+      if (tan && !st)
+        check_pieces (fc, &cur, P, fc->master.n ? &Mf : NULL, c, lk, *tan);
       if (C)
         *C = lac_csc_copy (c->C);
       free (lk);
