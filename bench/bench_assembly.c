@@ -139,6 +139,11 @@ child (lac_elem_type type, size_t n, int route, result *r)
   else
     {
       lac_pattern *P = lac_pattern_build (m, NULL);
+      if (P && lac_pattern_halves (P, m))
+        {
+          lac_pattern_free (P);
+          P = NULL;
+        }
       r->t_build = now () - t0;
       r->status = P ? lac_hyper_assemble_pattern (m, &h, u, NULL, P)
                     : LAC_ENOMEM;

@@ -514,7 +514,8 @@ assemble_cells (void *ctx)
 }
 
 /* Into triplets: the cells in order.  Into a pattern: its two halves at
- * the same time, then the cells that touch both (lac_pattern.h). */
+ * the same time, then the cells that touch both (lac_pattern.h); a
+ * pattern without halves: the cells in order. */
 static int
 assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
           double *Fint, lac_triplet *Tk, lac_pattern *Kp)
@@ -527,9 +528,11 @@ assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
   if ((Tk && (Tk->nrow != ndof || Tk->ncol != ndof))
       || (Kc && (Kc->nrow != ndof || Kc->ncol != ndof)))
     LAC_ERROR (LAC_EBADLEN, "K is not %zu x %zu (the mesh's dofs)", ndof, ndof);
-  if (!Kp)
+  if (!Kp || !Kp->order)
     {
-      cells_job all = { m, h, u, Fint, Tk, NULL, NULL, m->ncells };
+      cells_job all = { m, h, u, Fint, Tk, Kp, NULL, m->ncells };
+      if (Kp)
+        lac_pattern_zero (Kp);
       return assemble_cells (&all);
     }
   cells_job run[3];

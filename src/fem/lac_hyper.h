@@ -96,10 +96,12 @@ int lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h,
 
 /* The same with K scattered into a kept pattern (lac_pattern.h, built
  * once on the cells with E > 0): its values are overwritten, no triplet,
- * no search; the pattern's two halves of cells are assembled at the same
- * time (two threads, linalg/lac_tasks.h), then the cells between them:
- * the same sums, in the same order, on one core or two.  LAC_EINVAL if a
- * cell with E > 0 is not in the pattern. */
+ * no search.  If the pattern has its two halves of cells
+ * (lac_pattern_halves), they are assembled at the same time (two
+ * threads, linalg/lac_tasks.h), then the cells between them: the same
+ * sums, in the same order, on one core or two; without them, the cells
+ * in order on one thread.  LAC_EINVAL if a cell with E > 0 is not in the
+ * pattern. */
 int lac_hyper_assemble_pattern (const lac_mesh *m, const lac_hyper *h,
                                 const double *u, double *Fint,
                                 lac_pattern *K);

@@ -222,7 +222,8 @@ longest_axis (const lac_mesh *m)
 }
 
 /* p->order, p->nrun: side[c] is the half of cell c (by the median of the
- * centres), mark[a] the halves that touch node a (bits 1, 2). */
+ * centres), mark[a] the halves that touch node a (bits 1, 2).  Nothing
+ * kept on error (p->order NULL). */
 static int
 halves (lac_pattern *p, const lac_mesh *m)
 {
@@ -234,7 +235,8 @@ halves (lac_pattern *p, const lac_mesh *m)
   p->order = lac_malloc ((m->ncells + 1) * sizeof *p->order);
   if (!kc || !mark || !side || !p->order)
     {
-      lac_free (kc), lac_free (mark), lac_free (side);
+      lac_free (kc), lac_free (mark), lac_free (side), lac_free (p->order);
+      p->order = NULL;
       return LAC_ENOMEM;
     }
   for (size_t c = 0; c < m->ncells; c++)
@@ -292,8 +294,6 @@ lac_pattern_build (const lac_mesh *m, const char *cells)
   if (!status)
     status = make_map (p, m, cells, &nb);
   graph_free (&nb);
-  if (!status)
-    status = halves (p, m);
   if (status)
     {
       lac_pattern_free (p);
@@ -303,6 +303,20 @@ lac_pattern_build (const lac_mesh *m, const char *cells)
       return NULL;
     }
   return p;
+}
+
+int
+lac_pattern_halves (lac_pattern *p, const lac_mesh *m)
+{
+  if (p->order)
+    return LAC_SUCCESS;                          /* made by an earlier call */
+  if (p->ncells != m->ncells || p->ndof != (size_t) m->dim * m->nnodes)
+    LAC_ERROR (LAC_EINVAL, "the pattern of %zu cells and %zu dofs is not "
+               "that of the mesh (%zu cells, %zu dofs)", p->ncells, p->ndof,
+               m->ncells, (size_t) m->dim * m->nnodes);
+  if (halves (p, m))
+    LAC_ERROR (LAC_ENOMEM, "the two halves of %zu cells", m->ncells);
+  return LAC_SUCCESS;
 }
 
 int

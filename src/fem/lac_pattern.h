@@ -15,10 +15,13 @@
  *
  * Memory: the CSC (12 bytes per entry), the map (4 bytes per node pair of
  * each cell: 64 for a hex8, 400 for a hex20) and, while it is built, the
- * node-to-cell list.
+ * node-to-cell list.  The two halves (below) only where they are asked
+ * for: 8 bytes per cell, and while they are made 17 more per cell and 1
+ * per node.
  *
  * Ownership: lac_pattern_build / lac_pattern_free; the pattern owns its
- * CSC (values zeroed by lac_pattern_build and lac_pattern_zero).
+ * CSC (values zeroed by lac_pattern_build and lac_pattern_zero) and the
+ * order of its halves once lac_pattern_halves made it.
  */
 #ifndef LAC_PATTERN_H
 #define LAC_PATTERN_H
@@ -37,11 +40,12 @@ typedef struct lac_pattern
                             nothing for a cell left out                    */
   int *pos;              /* owned: pos[cptr[c] + a nen + b] = the position
                             of node a among the neighbours of node b       */
-  size_t *order;         /* owned: the cells of the pattern in three runs
-                            of nrun[0], nrun[1], nrun[2] cells: two halves
-                            of the mesh that share no node, then the cells
-                            that touch both (see below)                    */
-  size_t nrun[3];
+  size_t *order;         /* owned, NULL until lac_pattern_halves: the
+                            cells of the pattern in three runs of nrun[0],
+                            nrun[1], nrun[2] cells: two halves of the mesh
+                            that share no node, then the cells that touch
+                            both (see below)                               */
+  size_t nrun[3];        /* 0, 0, 0 while order is NULL                    */
 } lac_pattern;
 
 /* The pattern of the cells c with cells[c] != 0 (cells NULL: all).
@@ -64,14 +68,19 @@ int lac_pattern_count (const lac_mesh *m, const size_t *ptr,
 
 /* The two halves.  A cell block adds to the columns and rows of its own
  * nodes only, so two cells that share no node can be added at the same
- * time (two threads, linalg/lac_tasks.h); lac_pattern_build cuts the
+ * time (two threads, linalg/lac_tasks.h); lac_pattern_halves cuts the
  * cells of the pattern at the median of their centres along the longest
  * side of the mesh's box, and the cells of either half that have a node
  * of the other go to the third run, added after the two.  The layer is
  * one or two cells thick: about 1 / (cells along that side) of the mesh
  * on each side of the cut.  Assemblies that add the runs in that order,
  * one thread or two, add every entry in the same order: the same sums to
- * the last bit. */
+ * the last bit.
+ *
+ * p->order and p->nrun of the pattern p of mesh m (the mesh it was built
+ * from), made by the first call; a later call does nothing.  LAC_SUCCESS,
+ * LAC_EINVAL (another mesh's pattern) or LAC_ENOMEM (p as it was). */
+int lac_pattern_halves (lac_pattern *p, const lac_mesh *m);
 
 /* K->x = 0. */
 void lac_pattern_zero (lac_pattern *p);

@@ -490,21 +490,26 @@ gather (lac_newton *s, const lac_contact_system *sys, lac_newton_record *rec)
     rec->nactive += w->kact[i] != 0;
 }
 
-/* Do the columns of the point have the slots the strategy's C had?  If
- * not (or `remember`), remember theirs. */
+/* Do the columns of the point have the slots the strategy's C had? */
 static int
-same_columns (lac_newton *s, int remember)
+same_columns (const lac_newton *s)
 {
-  lac_newton_work *w = s->w;
+  const lac_newton_work *w = s->w;
   int same = w->nset_slot == s->pt.k;
   for (size_t i = 0; same && i < s->pt.k; i++)
     same = w->set_slot[i] == lac_model_slot (&s->pt, i);
-  if (same && !remember)
-    return 1;
+  return same;
+}
+
+/* The slots of the point's columns: those of the strategy's C from now
+ * on (same_columns compares with them). */
+static void
+remember_columns (lac_newton *s)
+{
+  lac_newton_work *w = s->w;
   w->nset_slot = s->pt.k;
   for (size_t i = 0; i < s->pt.k; i++)
     w->set_slot[i] = lac_model_slot (&s->pt, i);
-  return same;
 }
 
 /* Set the strategy on sys (a new tangent), or reset it (only C is new),
@@ -542,13 +547,16 @@ prepare (lac_newton *s, const lac_contact_system *sys, int news,
       status = lac_strategy_set (s->strategy, sys);
       w->strategy_set = !status;
       w->gmres_last = 0;
-      same_columns (s, 1);
+      remember_columns (s);
       return status;
     }
   if (news == LAC_MODEL_SAME)
     return LAC_SUCCESS;
-  int same = same_columns (s, 0) && news == LAC_MODEL_NEW_K && consistent;
-  status = lac_strategy_reset (s->strategy, sys, same, &kept);
+  int same = same_columns (s);
+  if (!same)                         /* the reset takes the point's C */
+    remember_columns (s);
+  int keep_c = same && news == LAC_MODEL_NEW_K && consistent;
+  status = lac_strategy_reset (s->strategy, sys, keep_c, &kept);
   *lagged = kept && news == LAC_MODEL_NEW_K;
   return status;
 }

@@ -56,7 +56,8 @@ lac_nl_free (lac_nl *s)
   lac_free (s);
 }
 
-/* The kept pattern of K_T: the cells with E > 0 (lac_pattern.h). */
+/* The kept pattern of K_T: the cells with E > 0, in two halves for the
+ * two threads of the assembly (lac_pattern.h). */
 static lac_pattern *
 pattern (const lac_mesh *m, const lac_hyper *h)
 {
@@ -67,6 +68,11 @@ pattern (const lac_mesh *m, const lac_hyper *h)
     cells[c] = h->E[c] > 0;
   lac_pattern *p = lac_pattern_build (m, cells);
   lac_free (cells);
+  if (p && lac_pattern_halves (p, m))
+    {
+      lac_pattern_free (p);
+      return NULL;
+    }
   return p;
 }
 

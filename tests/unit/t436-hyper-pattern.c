@@ -9,12 +9,16 @@
  *      values are overwritten, not accumulated);
  *   3. cells left out (E = 0 in half of them) are left out of both;
  *   4. a cell with E > 0 that is not in the pattern is refused;
- *   5. the pattern's three runs of cells (lac_pattern.h): every cell of
- *      the pattern once, no node in a cell of the first run and in one of
- *      the second; on a box of 8 x 2 x 2 hex8 both halves have cells;
+ *   5. the pattern's three runs of cells (lac_pattern_halves): every cell
+ *      of the pattern once, no node in a cell of the first run and in one
+ *      of the second; on a box of 8 x 2 x 2 hex8 both halves have cells;
  *   6. the assembly by two threads (a half each) and by one (inside a
  *      task of lac_tasks_pair, linalg/lac_tasks.h) give the same K_T and
- *      F_int to the last bit.
+ *      F_int to the last bit;
+ *   7. lac_pattern_build alone makes no halves; such a pattern assembles
+ *      the cells in order: the K_T and F_int of the triplet route to the
+ *      last bit (with halves the sums are made in another order: equal
+ *      to 1e-14, check 2); a second lac_pattern_halves does nothing.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -108,6 +112,37 @@ same_bits (const char *name, const lac_mesh *m, const lac_hyper *h,
   free (K2), free (f1);
 }
 
+/* 7. a pattern without halves (lac_pattern_build alone) has none, and
+ * lac_hyper_assemble_pattern adds its cells in order, as the triplet
+ * route does: the same K_T (Kt) and F_int (ft) to the last bit (values:
+ * a zero may differ in sign).  The halves are made once. */
+static void
+without_halves (const char *name, const lac_mesh *m, const lac_hyper *h,
+                const double *u, lac_pattern *p, const lac_csc *Kt,
+                const double *ft)
+{
+  size_t n = (size_t) m->dim * m->nnodes, nnz = (size_t) p->K->p[n];
+  double *f = calloc (n, sizeof *f);
+  check_true (!p->order && !p->nrun[0] && !p->nrun[1] && !p->nrun[2],
+              "%s: lac_pattern_build makes no halves", name);
+  check_status (lac_hyper_assemble_pattern (m, h, u, f, p), LAC_SUCCESS,
+                "%s: the assembly without halves", name);
+  size_t dk = 0, df = 0;
+  for (size_t q = 0; q < nnz; q++)
+    dk += Kt->x[q] != p->K->x[q];
+  for (size_t j = 0; j < n; j++)
+    df += ft[j] != f[j];
+  check_true (!dk && !df, "%s: without halves, the K_T and F_int of the "
+              "triplet route to the last bit (%zu, %zu entries differ)", name,
+              dk, df);
+  check_status (lac_pattern_halves (p, m), LAC_SUCCESS, "%s: halves", name);
+  size_t *order = p->order;
+  check_status (lac_pattern_halves (p, m), LAC_SUCCESS, "%s: halves again",
+                name);
+  check_true (order && p->order == order, "%s: the halves made once", name);
+  free (f);
+}
+
 static void
 compare (const char *name, lac_mesh *m, int half)
 {
@@ -136,10 +171,13 @@ compare (const char *name, lac_mesh *m, int half)
   check_true (K && p, "%s: pattern: %s", name, lac_error_message ());
   if (!K || !p)
     goto done;
+
   int same = K->ncol == p->K->ncol
              && !memcmp (K->p, p->K->p, (K->ncol + 1) * sizeof *K->p)
              && !memcmp (K->i, p->K->i, (size_t) K->p[K->ncol] * sizeof *K->i);
   check_true (same, "%s: the pattern differs from the triplet route's", name);
+  if (same)
+    without_halves (name, m, &h, u, p, K, f1);
   for (int pass = 0; pass < 2 && same; pass++)
     {
       memset (f2, 0, n * sizeof *f2);
@@ -212,7 +250,8 @@ main (void)
   lac_mesh *bar = NULL;
   lac_mesh_box (LAC_HEX8, nl, L, 0, &bar);
   lac_pattern *p = bar ? lac_pattern_build (bar, NULL) : NULL;
-  check_true (p != NULL, "the pattern of 8 x 2 x 2 hex8");
+  check_true (p && !lac_pattern_halves (p, bar), "the pattern of 8 x 2 x 2 "
+              "hex8 and its halves");
   if (p)
     runs ("8 x 2 x 2 hex8", bar, p, NULL, 1);
   lac_pattern_free (p);
