@@ -473,6 +473,13 @@ subfacet (const lac_mesh *mesh, lac_model model, const lac_macro *M,
   return status;
 }
 
+/* Column i is made if its B is wanted or it adds to H (lambda_i != 0). */
+static int
+column_made (const double *lambda, const char *want, size_t i)
+{
+  return !want || want[i] || lambda[i] != 0;
+}
+
 int
 lac_contact_tangent_build_cols (const lac_mesh *mesh, lac_model model,
                                 const lac_macro *M, const lac_pairing *P,
@@ -509,7 +516,7 @@ lac_contact_tangent_build_cols (const lac_mesh *mesh, lac_model model,
   for (size_t i = i0; !status && i < i1; i++)      /* column i - i0 of B */
     for (size_t j = M->ptr[c->macro[i]]; !status && j < M->ptr[c->macro[i]
                                                                  + 1]; j++)
-      if (!want || want[i] || lambda[i] != 0)
+      if (column_made (lambda, want, i))
         status = subfacet (mesh, model, M, P, master, obstacle, j, i - i0,
                            lambda[i], !want || want[i], t, &gr, &bk, TB);
   if (!status)
@@ -551,7 +558,7 @@ lac_contact_tangent_work (const lac_macro *M, const lac_pairing *P,
                           const char *want, size_t i)
 {
   size_t w = 0;
-  if (want && !want[i] && lambda[i] == 0)
+  if (!column_made (lambda, want, i))
     return 0;
   for (size_t j = M->ptr[c->macro[i]]; j < M->ptr[c->macro[i] + 1]; j++)
     w += P->ptr[j + 1] - P->ptr[j];
