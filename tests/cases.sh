@@ -174,6 +174,24 @@ if "$LAC" --version 2>&1 | grep -q '^lac [0-9]'; then
 else
   case_fail version "lac --version"
 fi
+# OpenBLAS's kernels (src/cli/lac_cli_kernels.h): on a CPU with AVX-512 or
+# AVX2 lac does not run OpenBLAS's Prescott fallback, unless asked to.
+blas=$("$LAC" --version 2>&1 | sed -n 's/^BLAS: //p')
+old=$(OPENBLAS_CORETYPE=Prescott "$LAC" --version 2>&1 | sed -n 's/^BLAS: //p')
+flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null)
+wide=no
+for f in avx2 fma; do
+  case " $flags " in *" $f "*) wide=yes ;; *) wide=no; break ;; esac
+done
+if [ -z "$blas" ] && ! ldd "$LAC" | grep -q openblas; then
+  case_ok blas-kernels                         # another BLAS: nothing to do
+elif [ "$wide" = yes ] && printf '%s' "$blas" | grep -q Prescott; then
+  case_fail blas-kernels "the CPU has AVX2, lac --version says: $blas"
+elif ! printf '%s' "$old" | grep -q Prescott; then
+  case_fail blas-kernels "OPENBLAS_CORETYPE=Prescott not kept: $old"
+else
+  case_ok blas-kernels
+fi
 
 # ---- bad input -----------------------------------------------------------
 

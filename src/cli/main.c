@@ -24,6 +24,7 @@
 #include <unistd.h>
 #include "cli/lac_cli.h"
 #include "cli/lac_cli_infsup.h"
+#include "cli/lac_cli_kernels.h"
 #include "cli/lac_cli_limits.h"
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
@@ -591,6 +592,7 @@ main (int argc, char **argv)
 {
   cmdline c;
   int ret;
+  lac_cli_fit_kernels (argv);      /* OpenBLAS's kernels for this CPU */
   if (lac_cli_fit_limits (argv, !asks_help (argc, argv)))  /* ulimit -v */
     {
       fflush (stderr);
@@ -617,7 +619,10 @@ main (int argc, char **argv)
       }
   if (strcmp (argv[1], "--version") == 0)
     {
+      const char *blas = lac_cli_blas_config ();
       printf ("lac %s\n", LAC_VERSION);
+      if (blas)                  /* the kernels the numbers come from */
+        printf ("BLAS: %s\n", blas);
       return EXIT_SUCCESS;
     }
   if (strcmp (argv[1], "run") != 0)
