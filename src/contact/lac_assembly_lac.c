@@ -31,7 +31,7 @@
 
 /* Add the slave and master terms of one integration point to column i. */
 static int
-add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
+add_point (lac_csc_columns *T, const lac_mesh *mesh, lac_model model,
            size_t scell, int sface, const double *xs, size_t mcell,
            int mface, const double *xm, const double *nu, double w,
            double g, lac_contact *c, size_t i)
@@ -50,12 +50,12 @@ add_point (lac_triplet *T, const lac_mesh *mesh, lac_model model,
     nu = ms.normal;                                       /* n^S */
   for (int a = 0; !st && a < ns; a++)
     for (int c = 0; !st && c < dim; c++)                  /* C^S */
-      st = lac_triplet_add (T, (size_t) sn[a] * dim + c, i,
-                            w * ms.N[a] * nu[c]);
+      st = lac_csc_columns_add (T, (size_t) sn[a] * dim + c,
+                                w * ms.N[a] * nu[c]);
   for (int b = 0; !st && mcell != (size_t) -1 && b < nm; b++)
     for (int c = 0; !st && c < dim; c++)                  /* -C^M */
-      st = lac_triplet_add (T, (size_t) mn[b] * dim + c, i,
-                            -w * mm.N[b] * ms.normal[c]);
+      st = lac_csc_columns_add (T, (size_t) mn[b] * dim + c,
+                                -w * mm.N[b] * ms.normal[c]);
   c->G[i] += w * g;                                       /* int g0 */
   c->area[i] += w;                                        /* |T^m cap Gamma_C| */
   return st;
@@ -70,7 +70,7 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
   int dimf = P->dim - 1, st = LAC_SUCCESS;
   if (master && master->n > 0 && master->mesh != mesh)
     LAC_ERROR (LAC_EINVAL, "slave and master facets must belong to one mesh");
-  lac_triplet *T = lac_triplet_alloc (ndof, c->k, 64 * (c->k + 1));
+  lac_csc_columns *T = lac_csc_columns_alloc (ndof, c->k);  /* C by columns */
   if (!T)
     return LAC_ENOMEM;
   for (size_t i = 0; !st && i < c->k; i++)
@@ -92,6 +92,8 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
                                       : NULL,
                             P->w[p], P->gap[p], c, i);
           }
+      if (!st)
+        st = lac_csc_columns_end (T);
     }
   /* A mean gap that is zero up to the roundoff of the projections (a
    * few ulps of the facet size) is set to exactly 0 (lac_snap), so that
@@ -106,10 +108,10 @@ lac_assembly_lac (lac_contact *c, const lac_mesh *mesh, lac_model model,
   if (!st)
     {
       lac_csc_free (c->C);
-      c->C = lac_csc_from_triplet (T);
+      c->C = lac_csc_columns_take (T);
       if (!c->C)
         st = LAC_ENOMEM;
     }
-  lac_triplet_free (T);
+  lac_csc_columns_free (T);
   return st;
 }

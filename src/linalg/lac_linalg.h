@@ -49,7 +49,42 @@ lac_csc *lac_csc_alloc (size_t nrow, size_t ncol, size_t nnz);
 lac_csc *lac_csc_from_triplet (const lac_triplet *T);  /* sums duplicates */
 void lac_csc_free (lac_csc *A);
 int lac_csc_matvec (const lac_csc *A, const double *x, double *y); /* y = A x */
+/* y = A x on two cores (linalg/lac_tasks.h): the columns cut in two
+ * pieces of equal entries, each piece adds into its own vector (y, and
+ * the scratch w of A->nrow doubles), then y += w.  The same bits whether
+ * the pieces run side by side or one after the other. */
+int lac_csc_matvec_pair (const lac_csc *A, const double *x, double *y,
+                         double *w);
 lac_csc *lac_csc_transpose (const lac_csc *A);
+
+/* A CSC made one column after the other, when the entries come column by
+ * column (the LAC columns of C: one macro-element after the other): the
+ * adds to the current column are summed in a dense accumulator of nrow
+ * values, in the order of the adds -- the sums lac_csc_from_triplet
+ * would make of the same adds -- and written, rows sorted, when the
+ * column ends.  Memory: the matrix, and 16 bytes per row; no triplets. */
+typedef struct lac_csc_columns
+{
+  lac_csc *A;            /* owned until lac_csc_columns_take: columns 0 ..
+                            j-1 done                                       */
+  size_t j, cap;         /* the current column; room for cap entries      */
+  double *acc;           /* owned, nrow: the current column's sums        */
+  int *at;               /* owned, nrow: 1 if the row has an entry in it  */
+  int *rows;             /* owned, nrow: its rows, in the order first met */
+  size_t nrows;
+} lac_csc_columns;
+
+lac_csc_columns *lac_csc_columns_alloc (size_t nrow, size_t ncol);
+void lac_csc_columns_free (lac_csc_columns *b);       /* NULL allowed */
+/* A(row, j) += x for the current column j; LAC_EINVAL outside. */
+int lac_csc_columns_add (lac_csc_columns *b, size_t row, double x);
+/* The current column is complete: write it, go to the next one.
+ * LAC_ENOMEM (the columns made so far kept) or LAC_EINVAL after the
+ * last column. */
+int lac_csc_columns_end (lac_csc_columns *b);
+/* The matrix, once every column ended (else NULL, LAC_EINVAL); b keeps
+ * nothing of it. */
+lac_csc *lac_csc_columns_take (lac_csc_columns *b);
 lac_csc *lac_csc_copy (const lac_csc *A);
 int lac_csc_write_mm (const lac_csc *A, const char *path);  /* Matrix Market */
 /* The diagonal of a square A into d (ncol entries, 0 where none is

@@ -18,10 +18,12 @@
 #include <limits.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include "base/lac_file.h"
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
+#include "linalg/lac_tasks.h"
 
 /* ---- triplets --------------------------------------------------------- */
 
@@ -262,6 +264,113 @@ lac_csc_from_triplet (const lac_triplet *T)
   return A;
 }
 
+/* ---- a CSC column by column ---------------------------------------------- */
+
+lac_csc_columns *
+lac_csc_columns_alloc (size_t nrow, size_t ncol)
+{
+  lac_csc_columns *b = lac_calloc (1, sizeof *b);
+  if (!b)
+    LAC_ERROR_NULL (LAC_ENOMEM, "CSC columns of %zu rows", nrow);
+  b->cap = 16 * (ncol + 1);
+  b->A = lac_csc_alloc (nrow, ncol, b->cap);
+  b->acc = lac_calloc (nrow ? nrow : 1, sizeof *b->acc);
+  b->at = lac_calloc (nrow ? nrow : 1, sizeof *b->at);
+  b->rows = lac_malloc ((nrow ? nrow : 1) * sizeof *b->rows);
+  if (!b->A || !b->acc || !b->at || !b->rows)
+    {
+      lac_csc_columns_free (b);
+      LAC_ERROR_NULL (LAC_ENOMEM, "CSC columns of %zu rows", nrow);
+    }
+  return b;
+}
+
+void
+lac_csc_columns_free (lac_csc_columns *b)
+{
+  if (!b)
+    return;
+  lac_csc_free (b->A);
+  lac_free (b->acc);
+  lac_free (b->at);
+  lac_free (b->rows);
+  lac_free (b);
+}
+
+int
+lac_csc_columns_add (lac_csc_columns *b, size_t row, double x)
+{
+  if (!b->A)
+    LAC_ERROR (LAC_EINVAL, "the matrix was taken");
+  if (row >= b->A->nrow || b->j >= b->A->ncol)
+    LAC_ERROR (LAC_EINVAL, "entry (%zu, %zu) outside the %zu x %zu matrix",
+               row, b->j, b->A->nrow, b->A->ncol);
+  if (!b->at[row])
+    {
+      b->at[row] = 1;
+      b->rows[b->nrows++] = (int) row;
+      b->acc[row] = x;
+    }
+  else
+    b->acc[row] += x;
+  return LAC_SUCCESS;
+}
+
+static int
+compare_int (const void *a, const void *b)
+{
+  int x = *(const int *) a, y = *(const int *) b;
+  return (x > y) - (x < y);
+}
+
+int
+lac_csc_columns_end (lac_csc_columns *b)
+{
+  lac_csc *A = b->A;
+  if (!A || b->j >= A->ncol)
+    LAC_ERROR (LAC_EINVAL, "no column left to end");
+  size_t nz = (size_t) A->p[b->j], need = nz + b->nrows;
+  if (need > INT_MAX)
+    LAC_ERROR (LAC_EINVAL, "more than INT_MAX entries");
+  if (need > b->cap)
+    {
+      size_t cap = 2 * need;
+      int *i = lac_realloc (A->i, cap * sizeof *i);
+      if (i)
+        A->i = i;
+      double *x = i ? lac_realloc (A->x, cap * sizeof *x) : NULL;
+      if (!x)
+        LAC_ERROR (LAC_ENOMEM, "CSC column %zu, %zu entries", b->j, need);
+      A->x = x;
+      b->cap = cap;
+    }
+  qsort (b->rows, b->nrows, sizeof *b->rows, compare_int);
+  for (size_t q = 0; q < b->nrows; q++)
+    {
+      int r = b->rows[q];
+      A->i[nz + q] = r;
+      A->x[nz + q] = b->acc[r];
+      b->at[r] = 0;
+    }
+  A->p[++b->j] = (int) need;
+  b->nrows = 0;
+  return LAC_SUCCESS;
+}
+
+lac_csc *
+lac_csc_columns_take (lac_csc_columns *b)
+{
+  if (!b->A)
+    LAC_ERROR_NULL (LAC_EINVAL, "the matrix was taken");
+  if (b->j < b->A->ncol)
+    LAC_ERROR_NULL (LAC_EINVAL, "column %zu of %zu not ended", b->j,
+                    b->A->ncol);
+  lac_csc *A = b->A;
+  shrink (A, (size_t) A->p[A->ncol] ? (size_t) A->p[A->ncol] : 1);
+  b->A = NULL;
+  return A;
+}
+
 int
 lac_csc_matvec (const lac_csc *A, const double *x, double *y)
 {
@@ -271,6 +380,42 @@ lac_csc_matvec (const lac_csc *A, const double *x, double *y)
     for (int q = A->p[j]; q < A->p[j + 1]; q++)
       y[A->i[q]] += A->x[q] * x[j];                    /* y += A(:,j) x_j */
   return LAC_SUCCESS;
+}
+
+/* Columns j0 <= j < j1 of A times x into y (zeroed first). */
+typedef struct matvec_piece
+{
+  const lac_csc *A;
+  const double *x;
+  double *y;
+  size_t j0, j1;
+} matvec_piece;
+
+static int
+matvec_columns (void *ctx)
+{
+  const matvec_piece *m = ctx;
+  const lac_csc *A = m->A;
+  for (size_t r = 0; r < A->nrow; r++)
+    m->y[r] = 0;
+  for (size_t j = m->j0; j < m->j1; j++)
+    for (int q = A->p[j]; q < A->p[j + 1]; q++)
+      m->y[A->i[q]] += A->x[q] * m->x[j];             /* y += A(:,j) x_j */
+  return LAC_SUCCESS;
+}
+
+int
+lac_csc_matvec_pair (const lac_csc *A, const double *x, double *y,
+                     double *w)
+{
+  size_t mid = 0, half = (size_t) A->p[A->ncol] / 2;
+  while (mid < A->ncol && (size_t) A->p[mid] < half)  /* equal entries */
+    mid++;
+  matvec_piece a = { A, x, y, 0, mid }, b = { A, x, w, mid, A->ncol };
+  int status = lac_tasks_pair (matvec_columns, &a, matvec_columns, &b);
+  for (size_t r = 0; r < A->nrow; r++)
+    y[r] += w[r];
+  return status;
 }
 
 double

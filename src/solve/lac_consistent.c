@@ -21,6 +21,7 @@ typedef struct ctx
   size_t n, k;
   double omega;              /* scale of the gap rows                     */
   double *h;                 /* n: H x                                     */
+  double *w;                 /* n: scratch of the product K_T x            */
   double *f, *g;             /* n, k: right-hand sides of the strategy     */
   const double *F;           /* the system's right-hand side r             */
 } ctx;
@@ -33,7 +34,7 @@ apply (void *vc, const double *z, double *y)
   const lac_consistent *cs = c->cs;
   const lac_csc *C = cs->sys->C, *B = cs->T->B;
   const double *mu = z + c->n;
-  int status = lac_csc_matvec (cs->sys->K, z, y);       /* K_T dU */
+  int status = lac_csc_matvec_pair (cs->sys->K, z, y, c->w); /* K_T dU */
   memset (c->h, 0, c->n * sizeof *c->h);
   lac_contact_tangent_apply (cs->T, z, c->h);
   for (size_t r = 0; r < c->n; r++)
@@ -120,17 +121,18 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
 {
   size_t n = cs->sys->K->ncol, k = cs->sys->C->ncol;
   double normK, normC, nrhs = 0, nb = 0;
-  ctx c = { cs, n, k, 1.0, NULL, NULL, NULL, cs->sys->F };
+  ctx c = { cs, n, k, 1.0, NULL, NULL, NULL, NULL, cs->sys->F };
   int status = lac_system_norm_k (cs->sys, &normK);
   if (!status)
     status = lac_system_norm_c (cs->sys, &normC);
   c.omega = normC > 0 ? normK / normC : 1.0;
   c.h = lac_malloc (n * sizeof *c.h);
+  c.w = lac_malloc (n * sizeof *c.w);
   c.f = lac_malloc (n * sizeof *c.f);
   c.g = lac_malloc ((k + 1) * sizeof *c.g);
   double *b = lac_malloc ((n + k) * sizeof *b);
   double *z = lac_calloc (n + k, sizeof *z);
-  if (!status && !(c.h && c.f && c.g && b && z))
+  if (!status && !(c.h && c.w && c.f && c.g && b && z))
     status = LAC_ERRMSG (LAC_ENOMEM, "Newton step of %zu unknowns", n + k);
   lac_gmres_info gi = { 0, 0 };
   if (!status)
@@ -160,6 +162,7 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
       info->residual = rtol < 1 ? gi.residual * info->start : info->start;
     }
   lac_free (c.h);
+  lac_free (c.w);
   lac_free (c.f);
   lac_free (c.g);
   lac_free (b);

@@ -1,5 +1,7 @@
 /* t010: triplets -> CSC: duplicates summed, rows sorted, transpose, matvec
- * against a dense reference, diagonal and 1-norm, growth and argument errors. */
+ * (one core and two) against a dense reference, diagonal and 1-norm, growth
+ * and argument errors; a CSC made column by column (lac_csc_columns) is the
+ * one of the same adds as triplets, bit for bit. */
 #include <stdlib.h>
 #include "check.h"
 #include "linalg/lac_linalg.h"
@@ -77,6 +79,14 @@ test_random (void)
       for (size_t j = 0; j < NC; j++)
         yd[i] += D[i][j] * x[j];
       check_abs (y[i], yd[i], 1e-13, "y = A x, row %zu", i);
+    }
+  double yp[NR], wp[NR], yq[NR], wq[NR];                /* on two cores */
+  check_status (lac_csc_matvec_pair (A, x, yp, wp), LAC_SUCCESS, "pair");
+  check_status (lac_csc_matvec_pair (A, x, yq, wq), LAC_SUCCESS, "again");
+  for (size_t i = 0; i < NR; i++)
+    {
+      check_abs (yp[i], yd[i], 1e-13, "y = A x on two cores, row %zu", i);
+      check_true (yp[i] == yq[i], "the same bits twice, row %zu", i);
     }
 
   At = lac_csc_transpose (A);
@@ -162,11 +172,61 @@ test_errors (void)
   lac_triplet_free (T);
 }
 
+/* The same adds, column after column, as triplets and by columns: the
+ * same p, rows and values to the last bit (sums in the order of the adds);
+ * an empty column; the errors. */
+static void
+test_columns (void)
+{
+  enum { R = 50, K = 6 };
+  lac_triplet *T = lac_triplet_alloc (R, K, 0);
+  lac_csc_columns *b = lac_csc_columns_alloc (R, K);
+  srand (777);
+  for (size_t j = 0; j < K; j++)
+    {
+      for (int a = 0; j != 2 && a < 300; a++)       /* column 2 stays empty */
+        {
+          size_t i = (size_t) rand () % R;
+          double v = rand () / (double) RAND_MAX - 0.3;
+          lac_triplet_add (T, i, j, v);
+          check_status (lac_csc_columns_add (b, i, v), LAC_SUCCESS, "add");
+        }
+      check_status (lac_csc_columns_end (b), LAC_SUCCESS, "column %zu", j);
+    }
+  lac_csc *A = lac_csc_from_triplet (T), *B = lac_csc_columns_take (b);
+  check_true (A && B, "both made");
+  if (A && B)
+    {
+      int same = A->p[K] == B->p[K];
+      for (size_t j = 0; same && j <= K; j++)
+        same = A->p[j] == B->p[j];
+      for (int q = 0; same && q < A->p[K]; q++)
+        same = A->i[q] == B->i[q] && A->x[q] == B->x[q];
+      check_true (same, "by columns = from triplets, bit for bit (%d entries)",
+                  A->p[K]);
+      check_true (csc_is_sorted (B), "rows sorted");
+      check_int (B->p[3] - B->p[2], 0, "empty column");
+    }
+  check_status (lac_csc_columns_end (b), LAC_EINVAL, "no column left");
+  check_true (lac_csc_columns_take (b) == NULL, "taken once");
+  lac_csc_columns_free (b);
+  b = lac_csc_columns_alloc (4, 2);
+  check_status (lac_csc_columns_add (b, 4, 1.0), LAC_EINVAL, "row 4 of 4");
+  check_message ("outside", "message names the problem");
+  check_true (lac_csc_columns_take (b) == NULL, "not every column ended");
+  lac_csc_columns_free (b);
+  lac_csc_columns_free (NULL);
+  lac_csc_free (A);
+  lac_csc_free (B);
+  lac_triplet_free (T);
+}
+
 int
 main (void)
 {
   lac_init ();
   test_random ();
+  test_columns ();
   test_block ();
   test_errors ();
   return check_summary ();
