@@ -139,7 +139,7 @@ child (lac_elem_type type, size_t n, int route, result *r)
   else
     {
       lac_pattern *P = lac_pattern_build (m, NULL);
-      if (P && lac_pattern_halves (P, m))
+      if (P && lac_pattern_slabs (P, m, 16))
         {
           lac_pattern_free (P);
           P = NULL;

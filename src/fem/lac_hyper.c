@@ -15,10 +15,19 @@
  *
  *   T^(a,i)_kL = sum_(pQ) dF^(a,i)_pQ A_pQkL        (9 numbers per dof)
  *   K_(a,i),(b,k) += w sum_(kL) T^(a,i)_kL dF^(b,k)_kL.
+ *
+ * The assembly into a kept pattern is shared by the threads that come to
+ * it (lac_hyper_job): each takes the runs of the pattern's slabs from a
+ * queue (linalg/lac_queue.h) and adds their cells with a scratch of its
+ * own (cell block, passes, shape tables).  The runs of a phase share no
+ * node, so every entry receives its terms in the pattern's order (phase,
+ * run, cell), whichever thread takes which run: the sums do not depend
+ * on the timing.
  */
 #include "fem/lac_hyper.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include "base/lac_mem.h"
 #include "fem/lac_nodal.h"
@@ -455,112 +464,190 @@ lac_hyper_cell (const lac_mesh *m, const lac_hyper *h, size_t c,
   return status;
 }
 
-/* The loop over cells shared by both assemblies: the cells cell[0..n)
- * (cell NULL: every cell), K into triplets (Tk) or into a kept pattern
- * (Kp, its scatter map: no search); any of Fint, Tk, Kp may be NULL.  A
- * task of lac_tasks_pair: its own scratch. */
-typedef struct cells_job
+/* ---- assembly ----------------------------------------------------------- */
+
+/* The scratch of one thread that assembles: its own cell block, tangent
+ * passes and shape tables.  scratch_free after scratch_alloc, whether it
+ * failed or not. */
+typedef struct scratch
 {
-  const lac_mesh *m;
-  const lac_hyper *h;
-  const double *u;
+  double *Ke, *T;
+  lac_quad_cache qc;
+} scratch;
+
+static int
+scratch_alloc (scratch *w)
+{
+  size_t ncmax = LAC_MAX_NODES * 3;
+  memset (w, 0, sizeof *w);                 /* scratch_free may follow */
+  w->Ke = lac_malloc (ncmax * ncmax * sizeof *w->Ke);
+  w->T = lac_malloc (ncmax * 9 * sizeof *w->T);
+  if (!w->Ke || !w->T)
+    LAC_ERROR (LAC_ENOMEM, "element matrix of %zu^2 entries", ncmax);
+  return LAC_SUCCESS;
+}
+
+static void
+scratch_free (scratch *w)
+{
+  lac_quad_cache_free (&w->qc);
+  lac_free (w->Ke);
+  lac_free (w->T);
+}
+
+/* What the cells are added to: F_int, K into triplets (Tk) or into a
+ * kept pattern (Kp, its scatter map: no search); any may be NULL. */
+typedef struct sums
+{
   double *Fint;
   lac_triplet *Tk;
   lac_pattern *Kp;
-  const size_t *cell;
-  size_t n;
-} cells_job;
+} sums;
 
+/* The loop over cells shared by both assemblies: the cells cell[0..n)
+ * (cell NULL: 0 .. n-1) with E > 0, in that order. */
 static int
-assemble_cells (void *ctx)
+add_cells (const lac_mesh *m, const lac_hyper *h, const double *u,
+           const size_t *cell, size_t n, const sums *out, scratch *w)
 {
-  const cells_job *j = ctx;
-  const lac_mesh *m = j->m;
-  size_t ncmax = LAC_MAX_NODES * 3;
-  int wantK = j->Tk || j->Kp, status = LAC_SUCCESS;
-  double *Ke = lac_malloc (ncmax * ncmax * sizeof *Ke);
-  double *T = lac_malloc (ncmax * 9 * sizeof *T);
+  int wantK = out->Tk || out->Kp, status = LAC_SUCCESS;
   double fe[LAC_MAX_NODES * 3];
   size_t dofs[LAC_MAX_NODES * 3];
-  lac_quad_cache qc;
-  memset (&qc, 0, sizeof qc);
-  if (!Ke || !T)
-    status = LAC_ERRMSG (LAC_ENOMEM, "element matrix of %zu^2 entries", ncmax);
-  for (size_t q = 0; q < j->n && !status; q++)
+  for (size_t q = 0; q < n && !status; q++)
     {
-      size_t c = j->cell ? j->cell[q] : q;
-      if (!(j->h->E[c] > 0.0))
+      size_t c = cell ? cell[q] : q;
+      if (!(h->E[c] > 0.0))
         continue;
       int nc = lac_mesh_cell_dofs (m, c, dofs);
       memset (fe, 0, (size_t) nc * sizeof *fe);
       if (wantK)
-        memset (Ke, 0, (size_t) (nc * nc) * sizeof *Ke);
-      status = cell_eval (m, j->h, c, j->u, &qc, fe, wantK ? Ke : NULL, T);
+        memset (w->Ke, 0, (size_t) (nc * nc) * sizeof *w->Ke);
+      status = cell_eval (m, h, c, u, &w->qc, fe, wantK ? w->Ke : NULL,
+                          w->T);
       if (status)
         break;
-      if (j->Fint)
+      if (out->Fint)
         for (int r = 0; r < nc; r++)
-          j->Fint[dofs[r]] += fe[r];                  /* Fint += fe */
-      if (j->Tk)
-        status = lac_triplet_add_block (j->Tk, (size_t) nc, dofs,
-                                        (size_t) nc, dofs, Ke);   /* K += Ke */
-      if (j->Kp)
-        lac_pattern_add (j->Kp, m, c, Ke);            /* K += Ke */
+          out->Fint[dofs[r]] += fe[r];                /* Fint += fe */
+      if (out->Tk)
+        status = lac_triplet_add_block (out->Tk, (size_t) nc, dofs,
+                                        (size_t) nc, dofs, w->Ke); /* K += Ke */
+      if (out->Kp)
+        lac_pattern_add (out->Kp, m, c, w->Ke);       /* K += Ke */
     }
-  lac_quad_cache_free (&qc);
-  lac_free (Ke);
-  lac_free (T);
   return status;
 }
 
-/* Into triplets: the cells in order.  Into a pattern: its two halves at
- * the same time, then the cells that touch both (lac_pattern.h); a
- * pattern without halves: the cells in order. */
 static int
-assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
-          double *Fint, lac_triplet *Tk, lac_pattern *Kp)
+check_K (const lac_mesh *m, const lac_triplet *Tk, const lac_csc *Kc)
 {
-  lac_csc *Kc = Kp ? Kp->K : NULL;
-  int status = check_hyper (m, h);
-  if (status)
-    return status;
   size_t ndof = (size_t) m->dim * m->nnodes;
   if ((Tk && (Tk->nrow != ndof || Tk->ncol != ndof))
       || (Kc && (Kc->nrow != ndof || Kc->ncol != ndof)))
     LAC_ERROR (LAC_EBADLEN, "K is not %zu x %zu (the mesh's dofs)", ndof, ndof);
-  if (!Kp || !Kp->order)
-    {
-      cells_job all = { m, h, u, Fint, Tk, Kp, NULL, m->ncells };
-      if (Kp)
-        lac_pattern_zero (Kp);
-      return assemble_cells (&all);
-    }
-  cells_job run[3];
-  for (size_t r = 0, at = 0; r < 3; at += Kp->nrun[r++])
-    run[r] = (cells_job) { m, h, u, Fint, NULL, Kp, Kp->order + at,
-                           Kp->nrun[r] };
-  lac_pattern_zero (Kp);
-  status = lac_tasks_pair (assemble_cells, &run[0], assemble_cells, &run[1]);
-  return status ? status : assemble_cells (&run[2]);
+  return LAC_SUCCESS;
 }
 
+/* Into triplets: the cells in order, one thread. */
 int
 lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h, const double *u,
                     double *Fint, lac_triplet *K)
 {
-  return assemble (m, h, u, Fint, K, NULL);
+  sums out = { Fint, K, NULL };
+  scratch w;
+  int status = check_hyper (m, h);
+  if (!status)
+    status = check_K (m, K, NULL);
+  if (status)
+    return status;
+  status = scratch_alloc (&w);
+  if (!status)
+    status = add_cells (m, h, u, NULL, m->ncells, &out, &w);
+  scratch_free (&w);
+  return status;
+}
+
+/* ---- into a kept pattern, shared by the threads (lac_hyper.h) ----------- */
+
+int
+lac_hyper_job_init (lac_hyper_job *j, const lac_mesh *m, const lac_hyper *h,
+                    const double *u, double *Fint, lac_pattern *K,
+                    int want_K)
+{
+  int status = check_hyper (m, h);
+  if (status)
+    return status;
+  if (!K)
+    LAC_ERROR (LAC_EINVAL, "K is NULL");
+  if ((status = check_K (m, NULL, K->K)))
+    return status;
+  for (size_t c = 0; c < m->ncells; c++)
+    if (h->E[c] > 0.0 && K->cptr[c + 1] == K->cptr[c])
+      LAC_ERROR (LAC_EINVAL, "cell %zu is not in the pattern of K", c);
+  *j = (lac_hyper_job) { m, h, u, Fint, K, want_K, { 0, 1 }, { 0 } };
+  if (want_K)
+    lac_pattern_zero (K);
+  return K->order ? lac_queue_init (&j->q, 3, K->phase)
+                  : lac_queue_init (&j->q, 1, j->all);
+}
+
+void
+lac_hyper_job_clear (lac_hyper_job *j)
+{
+  lac_queue_destroy (&j->q);
+}
+
+/* One thread's share: the job and its scratch (NULL: none could be made,
+ * every run it takes fails). */
+typedef struct worker
+{
+  const lac_hyper_job *j;
+  scratch *w;
+} worker;
+
+/* Run r: a run of the pattern's slabs, or every cell in order. */
+static int
+do_run (void *ctx, size_t r)
+{
+  const worker *k = ctx;
+  const lac_hyper_job *j = k->j;
+  const lac_pattern *p = j->K;
+  sums out = { j->Fint, NULL, j->want_K ? j->K : NULL };
+  if (!k->w)
+    return LAC_ERRMSG (LAC_ENOMEM, "the scratch of an assembly's thread");
+  if (!p->order)
+    return add_cells (j->m, j->h, j->u, NULL, j->m->ncells, &out, k->w);
+  return add_cells (j->m, j->h, j->u, p->order + p->run[r],
+                    p->run[r + 1] - p->run[r], &out, k->w);
+}
+
+int
+lac_hyper_job_work (lac_hyper_job *j, size_t most)
+{
+  scratch w;
+  worker k = { j, scratch_alloc (&w) ? NULL : &w };
+  int status = lac_queue_work (&j->q, do_run, &k, most);
+  scratch_free (&w);
+  return status;
+}
+
+static int
+job_task (void *ctx)
+{
+  return lac_hyper_job_work (ctx, SIZE_MAX);
 }
 
 int
 lac_hyper_assemble_pattern (const lac_mesh *m, const lac_hyper *h,
                             const double *u, double *Fint, lac_pattern *K)
 {
-  if (!K)
-    LAC_ERROR (LAC_EINVAL, "K is NULL");
-  for (size_t c = 0; c < m->ncells; c++)
-    if (h->E[c] > 0.0 && K->cptr[c + 1] == K->cptr[c])
-      LAC_ERROR (LAC_EINVAL, "cell %zu is not in the pattern of K", c);
-  return assemble (m, h, u, Fint, NULL, K);
+  lac_hyper_job j;
+  int status = lac_hyper_job_init (&j, m, h, u, Fint, K, 1);
+  if (status)
+    return status;
+  status = lac_tasks_pair (job_task, &j, job_task, &j);
+  lac_hyper_job_clear (&j);
+  return status;
 }
 
 /* ---- Cauchy stress ------------------------------------------------------ */

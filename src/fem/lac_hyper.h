@@ -52,6 +52,7 @@
 #include "fem/lac_material.h"
 #include "fem/lac_mesh.h"
 #include "fem/lac_pattern.h"
+#include "linalg/lac_queue.h"
 
 typedef enum
 {
@@ -96,15 +97,50 @@ int lac_hyper_assemble (const lac_mesh *m, const lac_hyper *h,
 
 /* The same with K scattered into a kept pattern (lac_pattern.h, built
  * once on the cells with E > 0): its values are overwritten, no triplet,
- * no search.  If the pattern has its two halves of cells
- * (lac_pattern_halves), they are assembled at the same time (two
- * threads, linalg/lac_tasks.h), then the cells between them: the same
- * sums, in the same order, on one core or two; without them, the cells
- * in order on one thread.  LAC_EINVAL if a cell with E > 0 is not in the
- * pattern. */
+ * no search; on both cores (lac_hyper_job below, two threads from the
+ * start: linalg/lac_tasks.h).  LAC_EINVAL if a cell with E > 0 is not in
+ * the pattern. */
 int lac_hyper_assemble_pattern (const lac_mesh *m, const lac_hyper *h,
                                 const double *u, double *Fint,
                                 lac_pattern *K);
+
+/* An assembly into a kept pattern that the threads share, each coming
+ * when it is free (linalg/lac_queue.h): the runs of the pattern's slabs
+ * (lac_pattern_slabs), phase after phase; a pattern without slabs is one
+ * run, every cell in order, on one thread.  The sums are those of the
+ * pattern's order whoever adds which run (lac_pattern.h): the same bits
+ * on one thread or two, whenever the second one comes; and F_int has the
+ * same bits whether K_T is asked for or not.
+ *
+ *   lac_hyper_job_init    checks, K's values zeroed if want_K (Fint is
+ *                         added to, as above), the runs set up;
+ *   lac_hyper_job_work    in each thread that comes: takes runs (at most
+ *                         `most`; SIZE_MAX: as many as are left), then
+ *                         waits for the runs the others are doing;
+ *                         returns the assembly's status (the first
+ *                         failing cell in the pattern's order, with its
+ *                         message, as one thread alone would meet it);
+ *   lac_hyper_job_clear   after the last worker returned.
+ *
+ * Ownership: the job is the caller's and must not move between init and
+ * clear; everything in it is borrowed.  Nothing to clear if init fails. */
+typedef struct lac_hyper_job
+{
+  const lac_mesh *m;
+  const lac_hyper *h;
+  const double *u;
+  double *Fint;          /* NULL: not assembled                          */
+  lac_pattern *K;        /* its runs; its values if want_K               */
+  int want_K;
+  size_t all[2];         /* the one phase of a pattern without slabs     */
+  lac_queue q;
+} lac_hyper_job;
+
+int lac_hyper_job_init (lac_hyper_job *j, const lac_mesh *m,
+                        const lac_hyper *h, const double *u, double *Fint,
+                        lac_pattern *K, int want_K);
+int lac_hyper_job_work (lac_hyper_job *j, size_t most);
+void lac_hyper_job_clear (lac_hyper_job *j);
 
 /* Cauchy stress sigma = P F^T / J at reference point xi of cell c, in
  * the Voigt order of lac_material.h (plane strain: s[2] = sigma_zz). */

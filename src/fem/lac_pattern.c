@@ -185,7 +185,7 @@ make_map (lac_pattern *p, const lac_mesh *m, const char *cells,
   return LAC_SUCCESS;
 }
 
-/* ---- the two halves (lac_pattern.h) ------------------------------------ */
+/* ---- the slabs (lac_pattern.h) ----------------------------------------- */
 
 typedef struct keyed
 {
@@ -221,56 +221,104 @@ longest_axis (const lac_mesh *m)
   return best;
 }
 
-/* p->order, p->nrun: side[c] is the half of cell c (by the median of the
- * centres), mark[a] the halves that touch node a (bits 1, 2).  Nothing
- * kept on error (p->order NULL). */
+/* slab[c] = 1 + the slab of cell c of the pattern (0: not in it): the
+ * cells sorted by their centres along the longest axis, nslab equal
+ * shares of that order.  LAC_ENOMEM. */
 static int
-halves (lac_pattern *p, const lac_mesh *m)
+cut_slabs (const lac_pattern *p, const lac_mesh *m, size_t nslab,
+           size_t *slab)
 {
-  size_t n = 0, half;
+  size_t n = 0;
   int axis = longest_axis (m), d = m->dim;
   keyed *kc = lac_malloc ((m->ncells + 1) * sizeof *kc);
-  unsigned char *mark = lac_calloc (m->nnodes + 1, 1);
-  unsigned char *side = lac_calloc (m->ncells + 1, 1);
-  p->order = lac_malloc ((m->ncells + 1) * sizeof *p->order);
-  if (!kc || !mark || !side || !p->order)
+  if (!kc)
+    return LAC_ENOMEM;
+  for (size_t c = 0; c < m->ncells; c++)
     {
-      lac_free (kc), lac_free (mark), lac_free (side), lac_free (p->order);
-      p->order = NULL;
+      double s = 0;
+      slab[c] = 0;
+      if (p->cptr[c + 1] == p->cptr[c])
+        continue;                                  /* not in the pattern */
+      for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
+        s += m->x[(size_t) m->conn[q] * (size_t) d + (size_t) axis];
+      kc[n++] = (keyed) { s / (double) (m->ptr[c + 1] - m->ptr[c]), c };
+    }
+  qsort (kc, n, sizeof *kc, cmp_key);
+  for (size_t j = 0; j < n; j++)                  /* share j nslab / n */
+    slab[kc[j].cell] = 1 + j * nslab / n;
+  lac_free (kc);
+  return LAC_SUCCESS;
+}
+
+/* The runs: run[c] = the run of cell c (slab s even: s / 2; odd: the
+ * even slabs' count + s / 2; a cell with a node that a cell of another
+ * slab of the same parity has: the last run, nslab).  owner[2 a + parity]
+ * is 1 + the first slab of that parity met at node a, bad[a] has bit
+ * (1 << parity) if a second one touches it.  LAC_ENOMEM. */
+static int
+runs_of_cells (const lac_mesh *m, size_t nslab, size_t *run)
+{
+  size_t *owner = lac_calloc (2 * m->nnodes + 1, sizeof *owner);
+  unsigned char *bad = lac_calloc (m->nnodes + 1, 1);
+  if (!owner || !bad)
+    {
+      lac_free (owner), lac_free (bad);
+      return LAC_ENOMEM;
+    }
+  for (size_t c = 0; c < m->ncells; c++)        /* run[c]: 1 + its slab */
+    for (size_t q = m->ptr[c]; run[c] && q < m->ptr[c + 1]; q++)
+      {
+        size_t par = (run[c] - 1) % 2, *o = owner + 2 * (size_t) m->conn[q];
+        if (!o[par])
+          o[par] = run[c];
+        else if (o[par] != run[c])
+          bad[m->conn[q]] |= (unsigned char) (1u << par);
+      }
+  for (size_t c = 0; c < m->ncells; c++)
+    {
+      size_t s = run[c] - 1, par = s % 2;
+      int shared = 0;
+      for (size_t q = m->ptr[c]; run[c] && q < m->ptr[c + 1]; q++)
+        shared |= bad[m->conn[q]] >> par & 1;
+      if (run[c])
+        run[c] = shared ? nslab : par ? (nslab + 1) / 2 + s / 2 : s / 2;
+      else
+        run[c] = SIZE_MAX;                         /* not in the pattern */
+    }
+  lac_free (owner), lac_free (bad);
+  return LAC_SUCCESS;
+}
+
+/* p->order, p->run, p->nrun, p->phase from the run of every cell (the
+ * cells of a run in the cells' order).  LAC_ENOMEM (nothing kept). */
+static int
+fill_runs (lac_pattern *p, const lac_mesh *m, size_t nslab, const size_t *run)
+{
+  size_t nrun = nslab + 1;
+  p->order = lac_malloc ((m->ncells + 1) * sizeof *p->order);
+  p->run = lac_calloc (nrun + 1, sizeof *p->run);
+  if (!p->order || !p->run)
+    {
+      lac_free (p->order), lac_free (p->run);
+      p->order = NULL, p->run = NULL;
       return LAC_ENOMEM;
     }
   for (size_t c = 0; c < m->ncells; c++)
-    if (p->cptr[c + 1] > p->cptr[c])
-      {
-        double s = 0;
-        for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
-          s += m->x[(size_t) m->conn[q] * (size_t) d + (size_t) axis];
-        kc[n++] = (keyed) { s / (double) (m->ptr[c + 1] - m->ptr[c]), c };
-      }
-  qsort (kc, n, sizeof *kc, cmp_key);
-  half = n / 2;
-  for (size_t j = 0; j < n; j++)
-    {
-      size_t c = kc[j].cell;
-      side[c] = j < half ? 1 : 2;
-      for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
-        mark[m->conn[q]] |= side[c];
-    }
-  memset (p->nrun, 0, sizeof p->nrun);
-  for (size_t c = 0; c < m->ncells; c++)       /* side[c] becomes its run */
-    {
-      int both = 0;
-      for (size_t q = m->ptr[c]; side[c] && q < m->ptr[c + 1]; q++)
-        both |= mark[m->conn[q]] == 3;
-      side[c] = side[c] && both ? 3 : side[c];
-      if (side[c])
-        p->nrun[side[c] - 1]++;
-    }
-  size_t at[3] = { 0, p->nrun[0], p->nrun[0] + p->nrun[1] };
-  for (size_t c = 0; c < m->ncells; c++)       /* in the cells' order */
-    if (side[c])
-      p->order[at[side[c] - 1]++] = c;
-  lac_free (kc), lac_free (mark), lac_free (side);
+    if (run[c] != SIZE_MAX)
+      p->run[run[c] + 1]++;
+  for (size_t r = 0; r < nrun; r++)
+    p->run[r + 1] += p->run[r];
+  for (size_t c = 0; c < m->ncells; c++)          /* in the cells' order */
+    if (run[c] != SIZE_MAX)
+      p->order[p->run[run[c]]++] = c;
+  for (size_t r = nrun; r > 0; r--)               /* back to the starts */
+    p->run[r] = p->run[r - 1];
+  p->run[0] = 0;
+  p->nrun = nrun;
+  p->phase[0] = 0;
+  p->phase[1] = (nslab + 1) / 2;                  /* the even slabs */
+  p->phase[2] = nslab;                            /* the odd ones */
+  p->phase[3] = nrun;                             /* the shared cells */
   return LAC_SUCCESS;
 }
 
@@ -306,16 +354,28 @@ lac_pattern_build (const lac_mesh *m, const char *cells)
 }
 
 int
-lac_pattern_halves (lac_pattern *p, const lac_mesh *m)
+lac_pattern_slabs (lac_pattern *p, const lac_mesh *m, size_t nslab)
 {
-  if (p->order)
+  if (p->order && p->nrun == nslab + 1)
     return LAC_SUCCESS;                          /* made by an earlier call */
   if (p->ncells != m->ncells || p->ndof != (size_t) m->dim * m->nnodes)
     LAC_ERROR (LAC_EINVAL, "the pattern of %zu cells and %zu dofs is not "
                "that of the mesh (%zu cells, %zu dofs)", p->ncells, p->ndof,
                m->ncells, (size_t) m->dim * m->nnodes);
-  if (halves (p, m))
-    LAC_ERROR (LAC_ENOMEM, "the two halves of %zu cells", m->ncells);
+  if (nslab < 1)
+    LAC_ERROR (LAC_EINVAL, "%zu slabs: at least one is needed", nslab);
+  lac_free (p->order), lac_free (p->run);          /* another count's */
+  p->order = NULL, p->run = NULL;
+  p->nrun = 0;
+  size_t *run = lac_malloc ((m->ncells + 1) * sizeof *run);
+  int status = run ? cut_slabs (p, m, nslab, run) : LAC_ENOMEM;
+  if (!status)
+    status = runs_of_cells (m, nslab, run);
+  if (!status)
+    status = fill_runs (p, m, nslab, run);
+  lac_free (run);
+  if (status)
+    LAC_ERROR (status, "%zu slabs of %zu cells", nslab, m->ncells);
   return LAC_SUCCESS;
 }
 
@@ -361,6 +421,7 @@ lac_pattern_free (lac_pattern *p)
   lac_free (p->cptr);
   lac_free (p->pos);
   lac_free (p->order);
+  lac_free (p->run);
   lac_free (p);
 }
 

@@ -15,13 +15,13 @@
  *
  * Memory: the CSC (12 bytes per entry), the map (4 bytes per node pair of
  * each cell: 64 for a hex8, 400 for a hex20) and, while it is built, the
- * node-to-cell list.  The two halves (below) only where they are asked
- * for: 8 bytes per cell, and while they are made 17 more per cell and 1
- * per node.
+ * node-to-cell list.  The slabs (below) only where they are asked for:
+ * 8 bytes per cell, and while they are made 24 more per cell and 17 per
+ * node.
  *
  * Ownership: lac_pattern_build / lac_pattern_free; the pattern owns its
- * CSC (values zeroed by lac_pattern_build and lac_pattern_zero) and the
- * order of its halves once lac_pattern_halves made it.
+ * CSC (values zeroed by lac_pattern_build and lac_pattern_zero) and its
+ * runs of cells once lac_pattern_slabs made them.
  */
 #ifndef LAC_PATTERN_H
 #define LAC_PATTERN_H
@@ -40,12 +40,13 @@ typedef struct lac_pattern
                             nothing for a cell left out                    */
   int *pos;              /* owned: pos[cptr[c] + a nen + b] = the position
                             of node a among the neighbours of node b       */
-  size_t *order;         /* owned, NULL until lac_pattern_halves: the
-                            cells of the pattern in three runs of nrun[0],
-                            nrun[1], nrun[2] cells: two halves of the mesh
-                            that share no node, then the cells that touch
-                            both (see below)                               */
-  size_t nrun[3];        /* 0, 0, 0 while order is NULL                    */
+  size_t *order;         /* owned, NULL until lac_pattern_slabs: the cells
+                            of the pattern, run after run (see below)      */
+  size_t *run;           /* owned, nrun + 1: run r is the cells
+                            order[run[r] .. run[r + 1])                    */
+  size_t nrun;           /* 0 while order is NULL                          */
+  size_t phase[4];       /* the runs of phase k (k = 0, 1, 2) are
+                            phase[k] <= r < phase[k + 1]                   */
 } lac_pattern;
 
 /* The pattern of the cells c with cells[c] != 0 (cells NULL: all).
@@ -66,21 +67,35 @@ int lac_pattern_node_cells (const lac_mesh *m, const char *cells,
 int lac_pattern_count (const lac_mesh *m, const size_t *ptr,
                        const size_t *idx, size_t *nnz);
 
-/* The two halves.  A cell block adds to the columns and rows of its own
- * nodes only, so two cells that share no node can be added at the same
- * time (two threads, linalg/lac_tasks.h); lac_pattern_halves cuts the
- * cells of the pattern at the median of their centres along the longest
- * side of the mesh's box, and the cells of either half that have a node
- * of the other go to the third run, added after the two.  The layer is
- * one or two cells thick: about 1 / (cells along that side) of the mesh
- * on each side of the cut.  Assemblies that add the runs in that order,
- * one thread or two, add every entry in the same order: the same sums to
- * the last bit.
+/* The slabs.  A cell block adds to the columns and rows of its own nodes
+ * only, so cells that share no node can be added at the same time (two
+ * threads: linalg/lac_queue.h).  lac_pattern_slabs sorts the cells of
+ * the pattern by their centres along the longest side of the mesh's box
+ * and cuts that order into nslab slabs of equal counts.  Two slabs that
+ * are not neighbours share no node as long as the slab between them is
+ * thicker than a cell; where it is not (a small mesh, bodies of very
+ * different cell sizes side by side) the cells that have a node of
+ * another slab of the same parity are found, node by node, and set apart.
+ * The runs, in three phases:
  *
- * p->order and p->nrun of the pattern p of mesh m (the mesh it was built
- * from), made by the first call; a later call does nothing.  LAC_SUCCESS,
- * LAC_EINVAL (another mesh's pattern) or LAC_ENOMEM (p as it was). */
-int lac_pattern_halves (lac_pattern *p, const lac_mesh *m);
+ *   phase 0: the even slabs 0, 2, 4 ..., one run each;
+ *   phase 1: the odd slabs 1, 3, 5 ..., one run each;
+ *   phase 2: one run, the cells set apart.
+ *
+ * The runs of a phase share no node; a phase starts when the one before
+ * it is finished.  Every entry of K, every node of F_int, then receives
+ * its terms in one order whoever adds which run: phase after phase, and
+ * in each phase from the one run that touches it, cell after cell (the
+ * cells of a run are in the cells' order): the same sums to the last
+ * bit, on one thread or two, in any timing.  A regular mesh with slabs
+ * of two cells and more sets none apart.
+ *
+ * p->order, p->run, p->nrun and p->phase of the pattern p of mesh m (the
+ * mesh it was built from); a later call with the same nslab does nothing,
+ * one with another makes them again.  LAC_SUCCESS, LAC_EINVAL (another
+ * mesh's pattern, nslab = 0: p as it was) or LAC_ENOMEM (p without
+ * slabs). */
+int lac_pattern_slabs (lac_pattern *p, const lac_mesh *m, size_t nslab);
 
 /* K->x = 0. */
 void lac_pattern_zero (lac_pattern *p);

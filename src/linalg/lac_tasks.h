@@ -15,9 +15,9 @@
  * do not crowd four threads and more onto two cores.  If no thread can be
  * started, or the address space is limited (each thread would need a
  * BLAS buffer of its own, lac_blas.h), b runs after a.  A task that asks
- * for a pair of its own (the assembly of K_T, cut in two halves, run
- * beside the pairing: solve/lac_nonlinear.c) gets its two tasks one after
- * the other, in its thread: never more threads than cores.
+ * for a pair of its own (lac_hyper_assemble_pattern, fem/lac_hyper.h,
+ * called from a task) gets its two tasks one after the other, in its
+ * thread: never more threads than cores.
  */
 #ifndef LAC_TASKS_H
 #define LAC_TASKS_H

@@ -9,6 +9,7 @@
 #include "solve/lac_nonlinear.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include "base/lac_clock.h"
 #include "base/lac_mem.h"
@@ -56,8 +57,16 @@ lac_nl_free (lac_nl *s)
   lac_free (s);
 }
 
-/* The kept pattern of K_T: the cells with E > 0, in two halves for the
- * two threads of the assembly (lac_pattern.h). */
+/* The slabs of the kept pattern (lac_pattern.h): enough that the core
+ * which joins the assembly after the pairing still finds runs to take
+ * (evaluate, below), few enough that they stay thicker than a cell (16
+ * on the ring's coarse and fine meshes set no cell apart, 32 half the
+ * coarse one).  Halved while the cells set apart, which one thread adds alone,
+ * outnumber a slab's. */
+#define SLABS 16
+
+/* The kept pattern of K_T: the cells with E > 0, in slabs for the two
+ * threads of the assembly. */
 static lac_pattern *
 pattern (const lac_mesh *m, const lac_hyper *h)
 {
@@ -68,10 +77,16 @@ pattern (const lac_mesh *m, const lac_hyper *h)
     cells[c] = h->E[c] > 0;
   lac_pattern *p = lac_pattern_build (m, cells);
   lac_free (cells);
-  if (p && lac_pattern_halves (p, m))
+  for (size_t nslab = SLABS; p; nslab /= 2)
     {
-      lac_pattern_free (p);
-      return NULL;
+      if (lac_pattern_slabs (p, m, nslab))
+        {
+          lac_pattern_free (p);
+          return NULL;
+        }
+      size_t apart = p->run[p->nrun] - p->run[p->nrun - 1];
+      if (nslab <= 2 || apart * nslab <= p->run[p->nrun])
+        break;
     }
   return p;
 }
@@ -262,21 +277,13 @@ contact_update (lac_nl *s, const double *U)
   return contact_update_axes (s, in_axes (s, U));
 }
 
-/* F_int (Fint != NULL) and, if want_K, K_T at U, U in the axes (s->have_K
- * says whether K_T is the tangent at U). */
+/* After an assembly that started at t0: F_int and K_T in the frames of
+ * the rollers, the time counted (s->have_K says whether K_T is the
+ * tangent at U). */
 static int
-assemble_axes (lac_nl *s, const double *U, double *Fint, int want_K)
+assembled (lac_nl *s, int status, double *Fint, int want_K, double t0)
 {
-  double t0 = lac_seconds ();
   const lac_frames *f = s->prob.dir->frames;
-  int status;
-  if (Fint)
-    memset (Fint, 0, s->ndof * sizeof *Fint);
-  if (want_K)
-    status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat, U, Fint,
-                                         s->pat);
-  else
-    status = lac_hyper_assemble (s->prob.mesh, s->prob.mat, U, Fint, NULL);
   if (!status && Fint)                       /* in the frames: T^T F_int, */
     lac_frames_to_local (f, Fint);
   if (!status && want_K)                                   /* T^T K_T T */
@@ -286,35 +293,59 @@ assemble_axes (lac_nl *s, const double *U, double *Fint, int want_K)
   return status;
 }
 
+/* K_T at U alone (linearize, after an evaluation that left it out). */
 static int
-assemble (lac_nl *s, const double *U, double *Fint, int want_K)
+assemble (lac_nl *s, const double *U)
 {
-  return assemble_axes (s, in_axes (s, U), Fint, want_K);
+  double t0 = lac_seconds ();
+  int status = lac_hyper_assemble_pattern (s->prob.mesh, s->prob.mat,
+                                           in_axes (s, U), NULL, s->pat);
+  return assembled (s, status, NULL, 1, t0);
 }
 
-/* The two halves of an evaluation, side by side (linalg/lac_tasks.h): the
- * assembly of F_int and K_T, and the pairing with C and the mean gaps;
- * they share only the mesh and U (read).  On the coarse hex20 ring they
- * take about the same time. */
+/* An evaluation, on both cores (linalg/lac_tasks.h): the assembly of
+ * F_int and K_T in the runs of the pattern's slabs (fem/lac_hyper.h,
+ * lac_hyper_job), started at once in the calling thread; in the other,
+ * the pairing with C and the mean gaps, and then the runs of the
+ * assembly still left.  They share only the mesh and U (read) and the
+ * job, which hands out the runs: F_int and K_T have the same bits
+ * whoever adds which run.  Without contact both threads assemble from
+ * the start. */
 typedef struct eval_job
 {
   lac_nl *s;
   const double *U;     /* in the axes */
   int tangent;
+  double t0;           /* the assembly's start */
+  lac_hyper_job asm_job;
 } eval_job;
 
 static int
 assemble_task (void *ctx)
 {
   eval_job *j = ctx;
-  return assemble_axes (j->s, j->U, j->s->Fint, j->tangent);
+  int status = lac_hyper_job_work (&j->asm_job, SIZE_MAX);
+  return assembled (j->s, status, j->s->Fint, j->tangent, j->t0);
 }
 
+/* The pairing, then the assembly's runs left (their failure is reported
+ * by assemble_task, which waits for them). */
 static int
 contact_task (void *ctx)
 {
   eval_job *j = ctx;
-  return contact_update_axes (j->s, j->U);
+  int status = contact_update_axes (j->s, j->U);
+  if (!status)
+    lac_hyper_job_work (&j->asm_job, SIZE_MAX);
+  return status;
+}
+
+static int
+join_task (void *ctx)
+{
+  eval_job *j = ctx;
+  lac_hyper_job_work (&j->asm_job, SIZE_MAX);
+  return LAC_SUCCESS;
 }
 
 /* r = t F - F_int and the force scale max(|F_int|, |t F|, r_0). */
@@ -336,9 +367,15 @@ static int
 evaluate (void *self, const double *U, int tangent, lac_model_point *p)
 {
   lac_nl *s = self;
-  eval_job j = { s, in_axes (s, U), tangent };
-  int status = s->npair ? lac_tasks_pair (assemble_task, &j, contact_task, &j)
-                        : assemble_task (&j);
+  eval_job j = { s, in_axes (s, U), tangent, lac_seconds (), { 0 } };
+  memset (s->Fint, 0, s->ndof * sizeof *s->Fint);
+  int status = lac_hyper_job_init (&j.asm_job, s->prob.mesh, s->prob.mat,
+                                   j.U, s->Fint, s->pat, tangent);
+  if (status)
+    return status;
+  status = lac_tasks_pair (assemble_task, &j, s->npair ? contact_task
+                                                       : join_task, &j);
+  lac_hyper_job_clear (&j.asm_job);
   if (status)
     return status;
   const lac_contact *c = s->contact;
@@ -373,7 +410,7 @@ linearize (void *self, const double *U, const lac_contact_system **sys,
 {
   lac_nl *s = self;
   int status;
-  if (!s->have_K && (status = assemble (s, U, NULL, 1)))  /* left out by */
+  if (!s->have_K && (status = assemble (s, U)))          /* left out by */
     return status;                                       /* evaluate    */
   increments (s, U);
   if (s->contact)                 /* d(U) before the increments, for the */
