@@ -250,11 +250,13 @@ cut_slabs (const lac_pattern *p, const lac_mesh *m, size_t nslab,
   return LAC_SUCCESS;
 }
 
-/* The runs: run[c] = the run of cell c (slab s even: s / 2; odd: the
- * even slabs' count + s / 2; a cell with a node that a cell of another
- * slab of the same parity has: the last run, nslab).  owner[2 a + parity]
- * is 1 + the first slab of that parity met at node a, bad[a] has bit
- * (1 << parity) if a second one touches it.  LAC_ENOMEM. */
+/* From slabs to runs: run[c] = 1 + the slab of cell c on entry (0: not
+ * in the pattern, as cut_slabs leaves it), its run on return (SIZE_MAX:
+ * not in the pattern): slab s even, run s / 2; odd, the count of even
+ * slabs + s / 2; the last run, nslab, for a cell with a node that a cell
+ * of another slab of the same parity has.  Found node by node:
+ * owner[2 a + parity] = 1 + the first slab of that parity met at node a,
+ * bad[a] has bit (1 << parity) once another one meets it.  LAC_ENOMEM. */
 static int
 runs_of_cells (const lac_mesh *m, size_t nslab, size_t *run)
 {
@@ -265,7 +267,7 @@ runs_of_cells (const lac_mesh *m, size_t nslab, size_t *run)
       lac_free (owner), lac_free (bad);
       return LAC_ENOMEM;
     }
-  for (size_t c = 0; c < m->ncells; c++)        /* run[c]: 1 + its slab */
+  for (size_t c = 0; c < m->ncells; c++)
     for (size_t q = m->ptr[c]; run[c] && q < m->ptr[c + 1]; q++)
       {
         size_t par = (run[c] - 1) % 2, *o = owner + 2 * (size_t) m->conn[q];
@@ -276,14 +278,16 @@ runs_of_cells (const lac_mesh *m, size_t nslab, size_t *run)
       }
   for (size_t c = 0; c < m->ncells; c++)
     {
+      if (!run[c])
+        {
+          run[c] = SIZE_MAX;                       /* not in the pattern */
+          continue;
+        }
       size_t s = run[c] - 1, par = s % 2;
       int shared = 0;
-      for (size_t q = m->ptr[c]; run[c] && q < m->ptr[c + 1]; q++)
+      for (size_t q = m->ptr[c]; q < m->ptr[c + 1]; q++)
         shared |= bad[m->conn[q]] >> par & 1;
-      if (run[c])
-        run[c] = shared ? nslab : par ? (nslab + 1) / 2 + s / 2 : s / 2;
-      else
-        run[c] = SIZE_MAX;                         /* not in the pattern */
+      run[c] = shared ? nslab : par ? (nslab + 1) / 2 + s / 2 : s / 2;
     }
   lac_free (owner), lac_free (bad);
   return LAC_SUCCESS;
