@@ -22,7 +22,11 @@
 # and gmsh 4.8 ship no pkg-config file on Debian 12).
 
 CC       ?= cc
-CFLAGS   ?= -std=c11 -O2 -g -Wall -Wextra
+# -O3: the loops over a cell's nodes and quadrature points (the assembly
+# of K_T, the pairing) vectorize; the results are those of -O2 (no
+# reassociation, no fused multiply-add at the base x86-64 instruction
+# set).  bench/README.md, "From chapter 10".
+CFLAGS   ?= -std=c11 -O3 -g -Wall -Wextra
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I/usr/include/suitesparse \
             -I/usr/include/freetype2
 LDFLAGS  += -Wl,--as-needed

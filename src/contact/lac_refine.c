@@ -201,7 +201,7 @@ tmpl_add_sub (tmpl *T, const lac_refelem *rp, lac_elem_type st,
 static int
 on_face (const lac_refelem *rp, int g, const double *q)
 {
-  double p[3][3], n[3] = { 0, 0, 0 }, a[3], b[3], len, dist = 0;
+  double p[3][3] = { { 0 } }, n[3] = { 0, 0, 0 }, a[3], b[3], len, dist = 0;
 
   for (int i = 0; i < rp->dim; i++)
     ref_node (rp, rp->face_node[g][i], p[i]);

@@ -369,7 +369,7 @@ static lac_quad *
 rule_symmetric (lac_shape shape, int dim, const sym_rule *s)
 {
   lac_quad *q = quad_new (shape, dim, s->degree, s->npts);
-  double meas = lac_quad_ref_measure (shape), lam[24][4];
+  double meas = lac_quad_ref_measure (shape), lam[24][4] = { { 0 } };
   int p = 0;
   if (q == NULL)
     return NULL;

@@ -46,6 +46,8 @@ mode_name (lac_model model, int k)
     "rotation about y", "rotation about z" };
   if (model == LAC_AXISYMMETRIC)
     return "translation along z (the axis)";
+  if (k < 0 || k >= (model == LAC_PLANE_STRAIN ? 3 : 6))
+    return "no rigid mode";                 /* not one of the table's */
   return model == LAC_PLANE_STRAIN ? n2[k] : n3[k];
 }
 

@@ -114,7 +114,7 @@ lac_vtu_i32 (lac_vtu *v, lac_vtu_section s, const char *name,
              const int *val)
 {
   size_t n = items (v, s);
-  varr *a;
+  varr *a = NULL;
   int status = add (v, s, name, I32, 1, n, &a);
   if (status)
     return status;
@@ -134,7 +134,7 @@ lac_vtu_cells (lac_vtu *v, const long *conn, const long *offsets,
                const unsigned char *types)
 {
   size_t nc = v->ncells, nconn = nc ? (size_t) offsets[nc - 1] : 0;
-  varr *a, *b, *t;
+  varr *a = NULL, *b = NULL, *t = NULL;
   int status;
   if ((status = add (v, LAC_VTU_CELLS, "connectivity", I64, 1, nconn, &a))
       || (status = add (v, LAC_VTU_CELLS, "offsets", I64, 1, nc, &b))
