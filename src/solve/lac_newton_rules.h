@@ -103,9 +103,10 @@ enum
 #define LAC_NEWTON_HALVINGS 4   /* line search: a step halved at most   */
 #define LAC_NEWTON_DIVERGED 1e3 /* residual / the loop's best: failure  */
 #define LAC_NEWTON_LAG 6        /* GMRES iterations that keep an older
-                                   factorization: about half of one (one
-                                   costs 12 iterations on the coarse hex20
-                                   ring, 13 on the fine one)             */
+                                   factorization: less than half of one
+                                   (one costs about 18 iterations on the
+                                   coarse hex20 ring, 14 on the fine one:
+                                   bench/README.md)                      */
 
 /* The name of rule bit r ("held_start", ...), NULL if r is not one. */
 const char *lac_rule_name (int r);
