@@ -103,10 +103,12 @@ $(B)/.deps-ok: Makefile
 	@mkdir -p $(B) && touch $@
 
 # ---- build ---------------------------------------------------------------
+# (made anew: a member of a renamed source would stay in an archive that
+# is only updated)
 $(LIB): $(LIBOBJ)
-	$(AR) rcs $@ $^
+	rm -f $@ && $(AR) rcs $@ $^
 $(CLILIB): $(CLIOBJ)
-	$(AR) rcs $@ $^
+	rm -f $@ && $(AR) rcs $@ $^
 # One set of objects, position-independent, makes both liblac.a and
 # liblac.so: -fPIC costs nothing that matters here (measured: the unit
 # tests took 41.3 s of CPU without it, 40.6 s with it; a 3D sphere at

@@ -174,7 +174,7 @@ if "$LAC" --version 2>&1 | grep -q '^lac [0-9]'; then
 else
   case_fail version "lac --version"
 fi
-# OpenBLAS's kernels (src/cli/lac_cli_kernels.h): on a CPU with AVX-512 or
+# OpenBLAS's kernels (src/cli/lac_cli_openblas.h): on a CPU with AVX-512 or
 # AVX2 lac does not run OpenBLAS's Prescott fallback, unless asked to.
 blas=$("$LAC" --version 2>&1 | sed -n 's/^BLAS: //p')
 old=$(OPENBLAS_CORETYPE=Prescott "$LAC" --version 2>&1 | sed -n 's/^BLAS: //p')
@@ -191,6 +191,19 @@ elif ! printf '%s' "$old" | grep -q Prescott; then
   case_fail blas-kernels "OPENBLAS_CORETYPE=Prescott not kept: $old"
 else
   case_ok blas-kernels
+fi
+# and its idle threads sleep at once, unless the user chose
+spin=$("$LAC" --version 2>&1 | sed -n 's/^BLAS idle threads: //p')
+mine=$(OPENBLAS_THREAD_TIMEOUT=20 "$LAC" --version 2>&1 |
+       sed -n 's/^BLAS idle threads: //p')
+one=$(OPENBLAS_NUM_THREADS=1 "$LAC" --version 2>&1 | grep -c 'idle threads')
+if [ -z "$blas" ] || [ "$(nproc)" -lt 2 ]; then
+  case_ok blas-spin                     # another BLAS, or one core
+elif [ "$spin" != "spin 2^16 cycles" ] || [ "$mine" != "spin 2^20 cycles" ] \
+     || [ "$one" != 0 ]; then
+  case_fail blas-spin "lac --version: '$spin', with 20: '$mine', one thread: $one line(s)"
+else
+  case_ok blas-spin
 fi
 
 # ---- bad input -----------------------------------------------------------

@@ -24,7 +24,7 @@
 #include <unistd.h>
 #include "cli/lac_cli.h"
 #include "cli/lac_cli_infsup.h"
-#include "cli/lac_cli_kernels.h"
+#include "cli/lac_cli_openblas.h"
 #include "cli/lac_cli_limits.h"
 #include "cli/lac_cli_render.h"
 #include "linalg/lac_linalg.h"
@@ -592,7 +592,7 @@ main (int argc, char **argv)
 {
   cmdline c;
   int ret;
-  lac_cli_fit_kernels (argv);      /* OpenBLAS's kernels for this CPU */
+  lac_cli_fit_openblas (argv);     /* OpenBLAS's kernels and spin */
   if (lac_cli_fit_limits (argv, !asks_help (argc, argv)))  /* ulimit -v */
     {
       fflush (stderr);
@@ -621,8 +621,11 @@ main (int argc, char **argv)
     {
       const char *blas = lac_cli_blas_config ();
       printf ("lac %s\n", LAC_VERSION);
+      const char *spin = getenv ("OPENBLAS_THREAD_TIMEOUT");
       if (blas)                  /* the kernels the numbers come from */
         printf ("BLAS: %s\n", blas);
+      if (blas && spin)          /* lac_cli_openblas.h */
+        printf ("BLAS idle threads: spin 2^%s cycles\n", spin);
       return EXIT_SUCCESS;
     }
   if (strcmp (argv[1], "run") != 0)

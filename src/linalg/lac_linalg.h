@@ -126,16 +126,28 @@ int lac_solver_factor (lac_solver *s, const lac_csc *A);
  * factored; otherwise, or for dense, it is lac_solver_factor.  The same
  * checks and messages as lac_solver_factor. */
 int lac_solver_refactor (lac_solver *s, const lac_csc *A);
-/* threads = 1: the factorizations of s and its solves of several
- * right-hand sides keep the BLAS on one thread (another factorization
- * runs beside them, linalg/lac_tasks.h); 0, the default: every core
- * inside them (linalg/lac_blas.h). */
+/* threads = 1: the factorizations and solves of s keep the BLAS on one
+ * thread (another factorization runs beside them, linalg/lac_tasks.h);
+ * 0, the default: every core inside them (linalg/lac_blas.h). */
 void lac_solver_set_threads (lac_solver *s, int threads);
 /* x = A^{-1} b with the last factorization (x and b may not alias). */
 int lac_solver_solve (lac_solver *s, const double *b, double *x);
 /* Solve with nrhs right-hand sides stored column after column. */
 int lac_solver_solve_many (lac_solver *s, size_t nrhs, const double *B,
                            double *X);
+/* A solve in two halves, with a Cholesky factor P A P^T = L L^T (P the
+ * fill-reducing permutation):
+ *   A^{-1} b = P^T L^{-T} (L^{-1} P b),  so  b^T A^{-1} c = y_b^T y_c
+ * with y = L^{-1} P b: the forward half alone gives the products
+ * C^T A^{-1} C (solve/lac_schur.c).  lac_solver_halves says whether s
+ * has such a factor (cholmod, supernodal or simplicial L L^T; not its
+ * simplicial L D L^T, nor the LU of dense and umfpack); the other two
+ * refuse (LAC_EINVAL) when it has not.  Y = L^{-1} P B for nrhs columns
+ * stored column after column; x = P^T L^{-T} y. */
+int lac_solver_halves (const lac_solver *s);
+int lac_solver_forward_many (lac_solver *s, size_t nrhs, const double *B,
+                             double *Y);
+int lac_solver_backward (lac_solver *s, const double *y, double *x);
 
 /* Singularity tests, the same for the three back ends.  A factorization
  * is refused (LAC_ESING) if

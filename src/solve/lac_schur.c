@@ -9,6 +9,16 @@
 #include "base/lac_mem.h"
 #include "base/lac_status.h"
 
+/* The nonzeros of a vector of n: y[i[p]] = x[p], p < nz.  A forward
+ * half y = L^{-1} P c is zero but on the rows of the elimination tree
+ * above those of c (on the fine ring of chapter 10, 5 % of them). */
+typedef struct lac_sparse_column
+{
+  int *i;
+  double *x;
+  size_t nz;
+} lac_sparse_column;
+
 typedef struct lac_schur
 {
   const lac_contact_system *sys;   /* borrowed                            */
@@ -23,9 +33,13 @@ typedef struct lac_schur
   double *x;                       /* owned, n: scratch                   */
   double *X;                       /* owned, n x k, or NULL: column i is
                                       K^{-1} c_i where have[i] (made with
-                                      S, kept when it takes no more room
-                                      than the factor)                     */
+                                      S without the halves, kept when it
+                                      takes no more room than the factor) */
   int no_X;                        /* X would take more than the factor   */
+  lac_sparse_column *Y;            /* owned, k, or NULL: y_i = L^{-1} P c_i
+                                      where have[i] (the halves)          */
+  int routed;                      /* halves chosen since the last borrow */
+  int halves;                      /* S = Y^T Y from the forward halves   */
   int factor_failed;               /* the last set's K = L L^T failed     */
   lac_solve_counts counts;
 } lac_schur;
@@ -51,7 +65,14 @@ free_arrays (lac_schur *s)
   lac_free (s->have);
   lac_free (s->x);
   lac_free (s->X);
+  for (size_t i = 0; s->Y && i < s->k; i++)
+    {
+      lac_free (s->Y[i].i);
+      lac_free (s->Y[i].x);
+    }
+  lac_free (s->Y);
   s->S = s->x = s->X = NULL;
+  s->Y = NULL;
   s->have = NULL;
   s->no_X = 0;
 }
@@ -98,6 +119,7 @@ borrow (lac_schur *s, const lac_contact_system *sys)
     }
   s->sys = sys;
   s->kept = 0;
+  s->routed = s->halves = 0;
   memset (s->have, 0, k);
   lac_csc_free (s->C);
   if (!(s->C = lac_csc_copy (sys->C)))
@@ -161,39 +183,109 @@ keep_X (lac_schur *s, const size_t *idx, size_t nb, const double *X)
     memcpy (s->X + idx[b] * s->n, X + b * s->n, s->n * sizeof *X);
 }
 
-/* Columns idx[0..nb) of S: X = K^{-1} C(:, idx) in one block solve, then
- * S(j, i) = c_j^T X(:, i) for every j. */
+/* Without the halves: S(j, i) = c_j^T X(:, i) for every j, X = K^{-1}
+ * C(:, idx). */
+static void
+product (lac_schur *s, const size_t *idx, size_t nb, const double *X)
+{
+  const lac_csc *C = c_of (s);
+  size_t n = s->n;
+  for (size_t b = 0; b < nb; b++)
+    for (size_t j = 0; j < s->k; j++)                    /* S(:,i) = C^T X */
+      {
+        double sum = 0;
+        for (int p = C->p[j]; p < C->p[j + 1]; p++)
+          sum += C->x[p] * X[b * n + (size_t) C->i[p]];
+        s->S[idx[b] * s->k + j] = sum;
+      }
+  keep_X (s, idx, nb, X);
+}
+
+/* y_i: the nonzeros of w (n), into Y[i]. */
+static int
+keep_y (lac_schur *s, size_t i, const double *w)
+{
+  lac_sparse_column *y = &s->Y[i];
+  size_t nz = 0;
+  for (size_t r = 0; r < s->n; r++)
+    nz += w[r] != 0;
+  lac_free (y->i);
+  lac_free (y->x);
+  y->i = lac_malloc ((nz ? nz : 1) * sizeof *y->i);
+  y->x = lac_malloc ((nz ? nz : 1) * sizeof *y->x);
+  y->nz = 0;
+  if (!y->i || !y->x)
+    LAC_ERROR (LAC_ENOMEM, "a column of %zu nonzeros", nz);
+  for (size_t r = 0; r < s->n; r++)
+    if (w[r] != 0)
+      {
+        y->i[y->nz] = (int) r;
+        y->x[y->nz++] = w[r];
+      }
+  return LAC_SUCCESS;
+}
+
+/* With the halves: W = L^{-1} P C(:, idx), kept as the sparse y_i, and
+ * S(j, i) = y_j^T w_i = c_j^T K^{-1} c_i for every column j made, mirrored
+ * into row i. */
+static int
+gram (lac_schur *s, const size_t *idx, size_t nb, const double *W)
+{
+  size_t n = s->n, k = s->k;
+  int status = LAC_SUCCESS;
+  if (!s->Y && !(s->Y = lac_calloc (k ? k : 1, sizeof *s->Y)))
+    LAC_ERROR (LAC_ENOMEM, "forward halves of %zu columns", k);
+  for (size_t b = 0; !status && b < nb; b++)
+    {
+      status = keep_y (s, idx[b], W + b * n);
+      s->have[idx[b]] = !status;
+    }
+  for (size_t b = 0; !status && b < nb; b++)
+    for (size_t j = 0; j < k; j++)
+      {
+        const lac_sparse_column *y = &s->Y[j];
+        double sum = 0;
+        for (size_t p = 0; s->have[j] && p < y->nz; p++)
+          sum += y->x[p] * W[b * n + (size_t) y->i[p]];
+        if (s->have[j])                   /* S symmetric */
+          s->S[idx[b] * k + j] = s->S[j * k + idx[b]] = sum;
+      }
+  return status;
+}
+
+/* Columns idx[0..nb) of S, from one block solve of C(:, idx): its
+ * forward halves where the factor has them (the first block after a
+ * factorization asks), else whole solves. */
 static int
 schur_block (lac_schur *s, const size_t *idx, size_t nb)
 {
   const lac_csc *C = c_of (s);
   size_t n = s->n;
-  double *B = lac_calloc (n * nb, sizeof *B), *X = lac_malloc (n * nb
-                                                               * sizeof *X);
-  int status = B && X ? LAC_SUCCESS
+  double *B = lac_calloc (n * nb, sizeof *B), *W = lac_malloc (n * nb
+                                                               * sizeof *W);
+  int status = B && W ? LAC_SUCCESS
                : LAC_ERRMSG (LAC_ENOMEM, "Schur block of %zu columns", nb);
   for (size_t b = 0; !status && b < nb; b++)            /* B = C(:, idx) */
     for (int p = C->p[idx[b]]; p < C->p[idx[b] + 1]; p++)
       B[b * n + (size_t) C->i[p]] = C->x[p];
-  if (!status)
-    status = lac_solver_solve_many (s->chol, nb, B, X);   /* X = K^-1 B */
-  if (!status)
-    keep_X (s, idx, nb, X);
-  for (size_t b = 0; !status && b < nb; b++)
+  if (!status && !s->routed)
     {
-      for (size_t j = 0; j < s->k; j++)                  /* S(:,i) = C^T X */
-        {
-          double sum = 0;
-          for (int p = C->p[j]; p < C->p[j + 1]; p++)
-            sum += C->x[p] * X[b * n + (size_t) C->i[p]];
-          s->S[idx[b] * s->k + j] = sum;
-        }
-      s->have[idx[b]] = 1;
+      s->halves = lac_solver_halves (s->chol);
+      s->routed = 1;
     }
+  if (!status)
+    status = s->halves ? lac_solver_forward_many (s->chol, nb, B, W)
+                       : lac_solver_solve_many (s->chol, nb, B, W);
+  if (!status && s->halves)
+    status = gram (s, idx, nb, W);                       /* W = L^-1 P B */
+  else if (!status)
+    product (s, idx, nb, W);                             /* W = K^-1 B */
+  for (size_t b = 0; !status && b < nb; b++)
+    s->have[idx[b]] = 1;
   if (!status)
     s->counts.solves += (int) nb;
   lac_free (B);
-  lac_free (X);
+  lac_free (W);
   return status;
 }
 
@@ -253,6 +345,36 @@ schur_multipliers (lac_schur *s, const char *active, const double *b,
   return status;
 }
 
+/* With the halves, one solve with the factor: w = L^{-1} P f, then
+ * g - C^T K^{-1} f = g - Y^T w, and U = P^T L^{-T} (w + Y_A lambda_A). */
+static int
+solve_halves (lac_schur *s, const char *active, const double *f,
+              const double *g, double *U, double *lambda)
+{
+  int status = lac_solver_forward_many (s->chol, 1, f, s->x);
+  for (size_t i = 0; !status && i < s->k; i++)
+    {
+      const lac_sparse_column *y = &s->Y[i];
+      double yw = 0;
+      for (size_t p = 0; active[i] && p < y->nz; p++)
+        yw += y->x[p] * s->x[y->i[p]];
+      lambda[i] = g[i] - yw;
+    }
+  if (!status)
+    status = schur_multipliers (s, active, lambda, lambda);
+  for (size_t i = 0; !status && i < s->k; i++)
+    {
+      const lac_sparse_column *y = &s->Y[i];
+      for (size_t p = 0; active[i] && p < y->nz; p++)
+        s->x[y->i[p]] += y->x[p] * lambda[i];
+    }
+  if (!status)
+    status = lac_solver_backward (s->chol, s->x, U);
+  if (!status)
+    s->counts.solves++;
+  return status;
+}
+
 static int
 schur_solve (void *w, const char *active, const double *f, const double *g,
              double rtol, double *U, double *lambda)
@@ -264,8 +386,11 @@ schur_solve (void *w, const char *active, const double *f, const double *g,
   s->factor_failed = 0;
   f = f ? f : s->sys->F;
   g = g ? g : s->sys->G;
-  if ((status = schur_columns (s, active))
-      || (status = lac_solver_solve (s->chol, f, U)))   /* U_0 = K^-1 f */
+  if ((status = schur_columns (s, active)))
+    return status;
+  if (s->halves)
+    return solve_halves (s, active, f, g, U, lambda);
+  if ((status = lac_solver_solve (s->chol, f, U)))     /* U_0 = K^-1 f */
     return status;
   s->counts.solves++;
   for (size_t i = 0; i < s->k; i++)                    /* g - C^T U_0 */
@@ -356,6 +481,26 @@ rows_multipliers (lac_schur *s, const lac_contact_rows *R, double *lambda)
   return status;
 }
 
+/* The columns of S that rows_multipliers reads: those of the free
+ * multipliers and, with the halves (S(j, i) only where both columns are
+ * made), those of every group with a free one. */
+static int
+rows_columns (lac_schur *s, const lac_contact_rows *R)
+{
+  size_t q = (size_t) R->q;
+  if (!lac_solver_halves (s->chol))
+    return schur_columns (s, R->free);
+  char *need = lac_calloc (s->k ? s->k : 1, 1);
+  if (!need)
+    LAC_ERROR (LAC_ENOMEM, "flags of %zu multipliers", s->k);
+  for (size_t i = 0; i < s->k; i++)
+    if (R->free[i])
+      memset (need + i / q * q, 1, q);
+  int status = schur_columns (s, need);
+  lac_free (need);
+  return status;
+}
+
 static int
 schur_solve_rows (void *w, const lac_contact_rows *R, const double *f,
                   const double *r, double *U, double *lambda)
@@ -367,7 +512,7 @@ schur_solve_rows (void *w, const lac_contact_rows *R, const double *f,
   s->factor_failed = 0;
   f = f ? f : s->sys->F;
   r = r ? r : R->r;
-  if ((status = schur_columns (s, R->free))
+  if ((status = rows_columns (s, R))
       || (status = lac_solver_solve (s->chol, f, U)))   /* U_0 = K^-1 f */
     return status;
   s->counts.solves++;

@@ -3,7 +3,10 @@
  * UMFPACK, on a random nonsymmetric well-conditioned matrix; several
  * right-hand sides, refactoring (and lac_solver_refactor's reuse of the
  * analysis), names, info and argument errors; CHOLMOD refuses a matrix
- * whose upper part differs from its lower part, naming the entry. */
+ * whose upper part differs from its lower part, naming the entry; the
+ * solve in halves (lac_solver_halves) of a supernodal L L^T: forward and
+ * back are a solve, y_b^T y_c = b^T A^{-1} c, and the LU and L D L^T
+ * factors refuse it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -376,6 +379,75 @@ test_alloc_failures (void)
     }
 }
 
+/* 7-point Laplacian of an m^3 grid plus 0.1 I: CHOLMOD factors it
+ * supernodal from m = 14 on. */
+static lac_csc *
+laplacian_3d (size_t m)
+{
+  size_t n = m * m * m;
+  lac_triplet *T = lac_triplet_alloc (n, n, 7 * n);
+  for (size_t k = 0; k < n; k++)
+    {
+      size_t x = k % m, y = k / m % m, z = k / (m * m);
+      lac_triplet_add (T, k, k, 6.1);
+      if (x > 0) lac_triplet_add (T, k, k - 1, -1);
+      if (x + 1 < m) lac_triplet_add (T, k, k + 1, -1);
+      if (y > 0) lac_triplet_add (T, k, k - m, -1);
+      if (y + 1 < m) lac_triplet_add (T, k, k + m, -1);
+      if (z > 0) lac_triplet_add (T, k, k - m * m, -1);
+      if (z + 1 < m) lac_triplet_add (T, k, k + m * m, -1);
+    }
+  lac_csc *A = lac_csc_from_triplet (T);
+  lac_triplet_free (T);
+  return A;
+}
+
+/* The halves of a solve: P^T L^-T (L^-1 P b) = A^-1 b, and y_b^T y_c =
+ * b^T A^-1 c; refused by the LU and by the small 2D matrix L (simplicial
+ * L D L^T). */
+static void
+test_halves (const lac_csc *L2)
+{
+  lac_csc *A = laplacian_3d (14);
+  size_t n = A->nrow;
+  double *B = malloc (2 * n * sizeof *B), *Y = malloc (2 * n * sizeof *Y);
+  double *x = malloc (n * sizeof *x), *xr = malloc (n * sizeof *xr);
+  for (size_t i = 0; i < 2 * n; i++)
+    B[i] = sin (0.37 * (double) i) + (i < n ? 0.0 : 0.5);
+  lac_solver *s = lac_solver_alloc (LAC_SOLVER_CHOLMOD);
+  check_status (lac_solver_factor (s, A), LAC_SUCCESS, "halves: factor");
+  check_true (lac_solver_halves (s), "halves: the 14^3 Laplacian's factor "
+              "is L L^T");
+  check_status (lac_solver_forward_many (s, 2, B, Y), LAC_SUCCESS,
+                "forward halves");
+  check_status (lac_solver_backward (s, Y, x), LAC_SUCCESS, "back half");
+  check_status (lac_solver_solve (s, B, xr), LAC_SUCCESS, "whole solve");
+  double e = reldiff (n, x, xr);
+  check_true (e < 1e-12, "halves: back(forward(b)) against a solve: %.2e",
+              e);
+  check_status (lac_solver_solve (s, B + n, xr), LAC_SUCCESS, "solve c");
+  double yy = 0, bx = 0;
+  for (size_t i = 0; i < n; i++)
+    yy += Y[i] * Y[n + i], bx += B[i] * xr[i];
+  check_true (fabs (yy - bx) < 1e-12 * fabs (bx), "halves: y_b^T y_c = "
+              "%.15g, b^T A^-1 c = %.15g", yy, bx);
+  for (int kind = LAC_SOLVER_DENSE; kind <= LAC_SOLVER_CHOLMOD; kind++)
+    {
+      lac_solver *t = lac_solver_alloc ((lac_solver_kind) kind);
+      check_status (lac_solver_factor (t, L2), LAC_SUCCESS, "factor L2");
+      check_true (!lac_solver_halves (t), "halves: %s of the 20 x 20 grid "
+                  "has none", lac_solver_kind_name ((lac_solver_kind) kind));
+      check_status (lac_solver_forward_many (t, 1, B, Y), LAC_EINVAL,
+                    "forward half refused (%s)",
+                    lac_solver_kind_name ((lac_solver_kind) kind));
+      lac_error_clear ();
+      lac_solver_free (t);
+    }
+  lac_solver_free (s);
+  lac_csc_free (A);
+  free (B), free (Y), free (x), free (xr);
+}
+
 int
 main (void)
 {
@@ -391,6 +463,7 @@ main (void)
   test_reuse (L, N);
   test_errors (N);
   test_symmetry_check (L);
+  test_halves (L);
   test_alloc_failures ();
   lac_csc_free (L);
   lac_csc_free (N);

@@ -17,6 +17,11 @@
  *      with the factor per right-hand side (the kept K^-1 C1 columns);
  *   4. a solve for an active set with a column the kept system had not
  *      made yet (its column of S made then, with C1) is that of (K, C1).
+ * Twice: on the 6^3 grid CHOLMOD's factor is simplicial L D L^T and S is
+ * C^T (K^{-1} C) from whole solves; on the 14^3 grid it is supernodal
+ * L L^T and S = Y^T Y from the forward halves Y = L^{-1} P C
+ * (linalg/lac_linalg.h, lac_solver_halves), and each solve takes one
+ * solve with the factor instead of two (the count of substitutions).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -26,7 +31,6 @@
 #include "linalg/lac_linalg.h"
 #include "solve/lac_strategy.h"
 
-#define M 6
 #define K 5
 
 static double
@@ -37,9 +41,9 @@ rnd (unsigned *s)
 }
 
 static lac_csc *
-laplacian (double shift)
+laplacian (int M, double shift)
 {
-  size_t n = M * M * M;
+  size_t n = (size_t) (M * M * M);
   lac_triplet *T = lac_triplet_alloc (n, n, 7 * n);
   for (int z = 0; z < M; z++)
     for (int y = 0; y < M; y++)
@@ -67,9 +71,9 @@ laplacian (double shift)
 
 /* k columns of 4 rows each on the top face z = M - 1, weights + move. */
 static lac_csc *
-columns (double move)
+columns (int M, double move)
 {
-  size_t n = M * M * M;
+  size_t n = (size_t) (M * M * M);
   unsigned seed = 7;
   lac_triplet *T = lac_triplet_alloc (n, K, 4 * K);
   for (size_t i = 0; i < K; i++)
@@ -119,13 +123,13 @@ diff (size_t n, const double *a, const double *b)
   return e;
 }
 
-int
-main (void)
+/* Parts 1-4 on the M^3 grid; halves: the factor is L L^T. */
+static void
+run (int M, int halves)
 {
-  lac_init ();
-  size_t n = M * M * M;
-  lac_csc *K1 = laplacian (0), *K2 = laplacian (0.5);
-  lac_csc *C1 = columns (0), *C2 = columns (0.05);
+  size_t n = (size_t) (M * M * M);
+  lac_csc *K1 = laplacian (M, 0), *K2 = laplacian (M, 0.5);
+  lac_csc *C1 = columns (M, 0), *C2 = columns (M, 0.05);
   double *F = calloc (n, sizeof *F), *F2 = calloc (n, sizeof *F2);
   double G[K] = { -0.1, -0.2, 0.05, -0.3, -0.1 }, G2[K];
   double *U = calloc (n, sizeof *U), *Ur = calloc (n, sizeof *Ur);
@@ -142,16 +146,21 @@ main (void)
   lac_contact_system s4 = { K1, F2, C1, G2, NULL, 0, NULL, NULL, NULL };
   lac_strategy *st = lac_strategy_alloc (LAC_STRATEGY_SCHUR);
   int kept = -1;
+  lac_strategy_counts c;
   check_true (st != NULL, "schur strategy: %s", lac_error_message ());
   if (!st)
-    return check_summary ();
+    return;
 
   /* 1. the reference */
   check_status (lac_strategy_set (st, &s1), LAC_SUCCESS, "set (K, C1)");
   check_status (lac_strategy_solve_rhs (st, act, F, G, U, lam), LAC_SUCCESS,
                 "solve (K, C1)");
   double e = residual (K1, C1, F, G, act, U, lam);
-  check_true (e < 1e-12, "1. residual of (K, C1): %.2e", e);
+  check_true (e < 1e-12, "1. %d^3: residual of (K, C1): %.2e", M, e);
+  lac_strategy_get_counts (st, &c);  /* 2 of the condition estimate, 3 */
+  check_true (c.substitutions == (halves ? 6 : 7), "1. %d^3: %d "  /* of S, */
+              "substitutions, %d expected", M, c.substitutions,  /* then U */
+              halves ? 6 : 7);
 
   /* 2. reset: the factor of K kept, C2 used */
   check_status (lac_strategy_reset (st, &s2, 0, &kept), LAC_SUCCESS,
@@ -193,6 +202,14 @@ main (void)
   lac_strategy_free (ref);
   lac_csc_free (K1), lac_csc_free (K2), lac_csc_free (C1), lac_csc_free (C2);
   free (F), free (F2), free (U), free (Ur);
+}
+
+int
+main (void)
+{
+  lac_init ();
+  run (6, 0);
+  run (14, 1);
   lac_finalize ();
   return check_summary ();
 }

@@ -1,4 +1,4 @@
-/* lac_cli_kernels.c -- OpenBLAS's kernels (see lac_cli_kernels.h)
+/* lac_cli_openblas.c -- OpenBLAS's kernels and spin (see lac_cli_openblas.h)
  *
  * OpenBLAS is found by its own symbols (dlsym in the libraries lac was
  * started with), so nothing here links against it.  The CPU's
@@ -6,7 +6,7 @@
  * which also checks that the operating system saves the wide registers.
  */
 #define _GNU_SOURCE            /* RTLD_DEFAULT */
-#include "cli/lac_cli_kernels.h"
+#include "cli/lac_cli_openblas.h"
 
 #include <dlfcn.h>
 #include <stdlib.h>
@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 typedef char *name_fn (void);
+typedef int int_fn (void);
 
 /* OpenBLAS's string function NAME (openblas_get_corename, ...), or
  * NULL. */
@@ -52,16 +53,31 @@ lac_cli_better_kernels (void)
   return kernels_for_cpu ();
 }
 
+/* The threads OpenBLAS runs (1 with another BLAS). */
+static int
+openblas_threads (void)
+{
+  int_fn *f;
+  *(void **) &f = dlsym (RTLD_DEFAULT, "openblas_get_num_threads");
+  return f ? f () : 1;
+}
+
 void
-lac_cli_fit_kernels (char **argv)
+lac_cli_fit_openblas (char **argv)
 {
   const char *better = lac_cli_better_kernels ();
   const char *preload = getenv ("LD_PRELOAD");
-  if (!better || (preload && strstr (preload, "vgpreload")))
+  int spin = openblas_threads () > 1 && !getenv ("OPENBLAS_THREAD_TIMEOUT");
+  if ((!better && !spin) || (preload && strstr (preload, "vgpreload")))
     return;                                          /* valgrind's */
-  if (setenv ("OPENBLAS_CORETYPE", better, 1) == 0)
+  if ((!better || setenv ("OPENBLAS_CORETYPE", better, 1) == 0)
+      && (!spin || setenv ("OPENBLAS_THREAD_TIMEOUT", LAC_OPENBLAS_SPIN, 1)
+                   == 0))
     execv ("/proc/self/exe", argv);      /* returns only if it failed */
-  unsetenv ("OPENBLAS_CORETYPE");
+  if (better)
+    unsetenv ("OPENBLAS_CORETYPE");
+  if (spin)
+    unsetenv ("OPENBLAS_THREAD_TIMEOUT");
 }
 
 const char *
