@@ -250,7 +250,9 @@ lac_rule_eta (int on, int it, double residual)
 int
 lac_rule_refactor (int on, int it, int consistent, int gmres_last)
 {
-  return !on || it == 0 || !consistent || gmres_last > LAC_NEWTON_LAG;
+  if (!on || !consistent)
+    return 1;
+  return gmres_last > (it == 0 ? LAC_NEWTON_LAG : LAC_NEWTON_RENEW);
 }
 
 int

@@ -54,10 +54,12 @@
  *                           consistent step is solved to eta = 1e-2 times
  *                           the residual (in [1e-12, 1e-3]; 1e-5 at the
  *                           first iteration of a loop), the factor of an
- *                           older tangent is kept while GMRES needs at most
- *                           LAC_NEWTON_LAG iterations, and the tangent is
- *                           left out of an evaluation expected to be the
- *                           last.  Why: an exact step costs a
+ *                           older tangent is kept (renewed at the start of
+ *                           a load step when the last consistent step
+ *                           needed more than LAC_NEWTON_LAG GMRES
+ *                           iterations, within one only after more than
+ *                           LAC_NEWTON_RENEW), and the tangent is left out
+ *                           of an evaluation expected to be the last.  Why: an exact step costs a
  *                           factorization per iteration for digits the
  *                           next iteration does not need (Eisenstat and
  *                           Walker's forcing terms).  Off: eta = 1e-12, a
@@ -102,11 +104,17 @@ enum
 #define LAC_NEWTON_HELD_CONTACT 0.95
 #define LAC_NEWTON_HALVINGS 4   /* line search: a step halved at most   */
 #define LAC_NEWTON_DIVERGED 1e3 /* residual / the loop's best: failure  */
-#define LAC_NEWTON_LAG 6        /* GMRES iterations that keep an older
-                                   factorization: less than half of one
-                                   (one costs about 18 iterations on the
-                                   coarse hex20 ring, 14 on the fine one:
-                                   bench/README.md)                      */
+#define LAC_NEWTON_LAG 6        /* GMRES iterations of the last step
+                                   that keep an older factorization at
+                                   the start of a load step (a converged
+                                   state, where the tangent has been
+                                   positive definite); one costs about 20
+                                   GMRES iterations on the hex20 rings
+                                   with its Schur columns: bench/README  */
+#define LAC_NEWTON_RENEW 30     /* the same within a load step (GMRES's
+                                   restart length): there a tangent may
+                                   not be positive definite, and the LU
+                                   fallback would stay for the run       */
 
 /* The name of rule bit r ("held_start", ...), NULL if r is not one. */
 const char *lac_rule_name (int r);
@@ -196,8 +204,10 @@ int lac_line_search_diverged (lac_line_search *ls, int it);
  * first of a loop) from the residual of step 3; on: the rule applies. */
 double lac_rule_eta (int on, int it, double residual);
 /* 1 if the strategy must factorize a new tangent at iteration it, 0 if
- * the factor of an older one may precondition the consistent step (it
- * needed gmres_last iterations since that factor). */
+ * the factor of an older one may precondition the consistent step (the
+ * last consistent step needed gmres_last iterations with it; it = 0: a
+ * load step's first iteration, which may take the factor of the step
+ * before). */
 int lac_rule_refactor (int on, int it, int consistent, int gmres_last);
 /* 1 if the evaluation after a step on settled statuses from the residual
  * res_solved may leave the tangent out (quadratic convergence makes it the

@@ -22,6 +22,11 @@
  *    same solution).
  * 4. lac_rule_parse: names, all, none, a bad word named in the message;
  *    lac_rule_name.
+ * 5. lac_rule_refactor (the inexact rule's renewals): at a load step's
+ *    start the factor of the step before is kept after LAC_NEWTON_LAG
+ *    GMRES iterations and renewed after one more; within a step the same
+ *    at LAC_NEWTON_RENEW; always renewed with the rule off or without a
+ *    consistent step.
  * The other rules (first contact, line search, inexact step) act on whole
  * scenes: tests/cases-newton.sh runs them with and without.
  */
@@ -237,6 +242,25 @@ parse (void)
   check_true (lac_rule_name (3) == NULL, "3 is no rule");
 }
 
+static void
+refactor (void)
+{
+  check_int (lac_rule_refactor (1, 0, 1, LAC_NEWTON_LAG), 0,
+             "a load step's start: the older factor kept");
+  check_int (lac_rule_refactor (1, 0, 1, LAC_NEWTON_LAG + 1), 1,
+             "a load step's start: renewed");
+  check_int (lac_rule_refactor (1, 3, 1, LAC_NEWTON_RENEW), 0,
+             "within a step: kept");
+  check_int (lac_rule_refactor (1, 3, 1, LAC_NEWTON_RENEW + 1), 1,
+             "within a step: renewed");
+  check_true (LAC_NEWTON_LAG < LAC_NEWTON_RENEW, "renewed sooner at a "
+              "step's start (%d) than within one (%d)", LAC_NEWTON_LAG,
+              LAC_NEWTON_RENEW);
+  check_int (lac_rule_refactor (0, 3, 1, 0), 1, "the rule off: renewed");
+  check_int (lac_rule_refactor (1, 3, 0, 0), 1, "no consistent step: "
+             "renewed");
+}
+
 int
 main (void)
 {
@@ -244,5 +268,6 @@ main (void)
   all_active ();
   held_start ();
   parse ();
+  refactor ();
   return check_summary ();
 }
