@@ -59,7 +59,8 @@
  *                           needed more than LAC_NEWTON_LAG GMRES
  *                           iterations, within one only after more than
  *                           LAC_NEWTON_RENEW), and the tangent is left out
- *                           of an evaluation expected to be the last.  Why: an exact step costs a
+ *                           of an evaluation expected to be the last.
+ *                           Why: an exact step costs a
  *                           factorization per iteration for digits the
  *                           next iteration does not need (Eisenstat and
  *                           Walker's forcing terms).  Off: eta = 1e-12, a
