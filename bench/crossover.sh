@@ -10,8 +10,12 @@
 # one process), alternately REPEATS times (default 3).  Prints per case:
 # the dofs, the memory lac estimates for the run with a Cholesky factor
 # (what auto compares with LAC_STRATEGY_ITERATIVE_BYTES in 3D), the median
-# wall seconds of each run, their ratio (above 1: petsc is faster), and
-# the strategy auto takes; then per element where the ratio crosses 1.  CASES: a list of SCENE:ELEMENT:SET, SET the
+# wall seconds of each run, their ratio (above 1: petsc is faster), the
+# median peak memory of each (GB, the summary's peak_rss_total_mb), and
+# the strategy auto takes; then per element where the ratio crosses 1,
+# and what petsc costs and saves from LAC_STRATEGY_ITERATIVE_BYTES on
+# (the ranges of its time and its memory as multiples of the factor's,
+# auto's trade in 3D, chapter 13).  CASES: a list of SCENE:ELEMENT:SET, SET the
 # size (n=N, the geometries' [mesh] numbers, or level=L); default
 # hex8, tet4 and hex20 in 3D, quad4 and quad8 in 2D, from about 12k to
 # 1M dofs.  About 20 minutes on two cores.  Alone on the machine.
@@ -30,17 +34,19 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] 
 sets () {   # sets SET: the --set of a case's size
   case $1 in n=*) echo "mesh.numbers=$1" ;; *) echo "$1" ;; esac
 }
-run () {    # run SCENE ELEMENT SET STRATEGY DIR: wall seconds on stdout
+run () {    # run SCENE ELEMENT SET STRATEGY DIR: wall seconds and peak GB
   t0=$(date +%s.%N)
   "$B/lac" run "$1" --set scene.element="$2" --set "$(sets "$3")" \
-    --strategy "$4" --quiet --out "$5" > "$5.log" 2>&1 \
+    --strategy "$4" --quiet --timings --out "$5" > "$5.log" 2>&1 \
     || { echo "failed: $(tail -1 "$5.log")" >&2; return 1; }
   t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f\n", b - a }'
+  mb=$(sed -n 's/^peak_rss_total_mb = //p' "$5/summary.txt")
+  awk -v a="$t0" -v b="$t1" -v m="$mb" 'BEGIN { printf "%.3f %.3f\n", b - a, m / 1000 }'
 }
+col () { cut -d' ' -f"$1" "$2" | median; }   # col K FILE: median of column K
 : > "$OUT/rows.txt"
-printf '%-8s %-6s %-10s %9s %9s %9s %9s %6s  %s\n' scene element size dofs \
-  "GB chol" "direct s" "petsc s" ratio "auto takes"
+printf '%-8s %-6s %-10s %9s %9s %9s %9s %6s %9s %9s  %s\n' scene element size dofs \
+  "GB chol" "direct s" "petsc s" ratio "direct GB" "petsc GB" "auto takes"
 for c in $CASES; do
   scene=${c%%:*}; r=${c#*:}; el=${r%%:*}; size=${r#*:}
   name=$(basename "$scene" .scene); d="$OUT/$name-$el-$size"
@@ -55,13 +61,14 @@ for c in $CASES; do
     run "$scene" "$el" "$size" petsc "$d-petsc" >> "$d.petsc" || exit 1
     i=$((i + 1))
   done
-  md=$(median < "$d.direct"); mp=$(median < "$d.petsc")
+  md=$(col 1 "$d.direct"); mp=$(col 1 "$d.petsc")
+  gd=$(col 2 "$d.direct"); gp=$(col 2 "$d.petsc")
   dofs=$(sed -n 's/^dofs = //p' "$d-direct/summary.txt")
   auto=$("$B/lac" run "$scene" --set scene.element="$el" --set "$(sets "$size")" \
            --no-output 2>&1 | sed -n 's/.*\[5\/7\] solve     \([a-z]*\).*/\1/p' | tail -1)
-  printf '%-8s %-6s %-10s %9s %9s %9s %9s %6.2f  %s\n' "$name" "$el" "$size" \
+  printf '%-8s %-6s %-10s %9s %9s %9s %9s %6.2f %9s %9s  %s\n' "$name" "$el" "$size" \
     "$dofs" "${gb:-?}" "$md" "$mp" "$(awk -v a="$md" -v b="$mp" 'BEGIN { print a / b }')" \
-    "$auto" | tee -a "$OUT/rows.txt"
+    "$gd" "$gp" "$auto" | tee -a "$OUT/rows.txt"
 done
 # per element, in the order of the cases: the last estimate where the
 # factor was faster and the first where petsc was (the crossover lies
@@ -78,3 +85,20 @@ awk '{ e = $2; if (!(e in seen)) { seen[e] = 1; order[++n] = e }
              else
                printf "%-6s the factor faster up to %s GB (%s dofs)\n", e, below[e], bd[e] } }' \
   "$OUT/rows.txt"
+# what auto's petsc costs and saves where it takes it: from the
+# constant's estimate on, petsc's wall time and peak memory as multiples
+# of the factor's (ranges over the sizes), per element
+BYTES=$(sed -n 's/^#define LAC_STRATEGY_ITERATIVE_BYTES \([0-9.e+]*\).*/\1/p' \
+          src/solve/lac_strategy.h)
+echo
+echo "from LAC_STRATEGY_ITERATIVE_BYTES ($BYTES bytes), petsc against the factor:"
+awk -v c="$BYTES" '$5 != "?" && $5 * 1e9 >= c {
+       e = $2; t = $7 / $6; m = $10 / $9
+       if (!(e in n)) { order[++k] = e; tl[e] = th[e] = t; ml[e] = mh[e] = m }
+       n[e]++
+       if (t < tl[e]) tl[e] = t; if (t > th[e]) th[e] = t
+       if (m < ml[e]) ml[e] = m; if (m > mh[e]) mh[e] = m }
+     END { for (i = 1; i <= k; i++) { e = order[i]
+             printf "%-6s %d sizes: %.2f to %.2f times the time, %.2f to %.2f times the memory\n",
+                    e, n[e], tl[e], th[e], ml[e], mh[e] }
+           if (!k) print "(no case measured there)" }' "$OUT/rows.txt"

@@ -13,7 +13,7 @@
 # fine -19.060 mm), and the histogram of Newton iterations per load step
 # after the first contact step.  The runs go to $OUT/ring-ELEMENT-LEVEL/
 # (OUT = BUILD_DIR/bench-ring), with their progress lines in .err.  The
-# fine hex20 run takes about 20 minutes on 2 cores (the estimate that
+# fine hex20 run takes about 10 minutes on 2 cores (the estimate that
 # guards a .geo mesh, io/lac_mesh_gmsh_estimate.c, counts its 55,610
 # hex20 nodes from the transfinite and extruded curves: 5.8e4, 6.2 GB).
 B=${1:-build}

@@ -521,7 +521,7 @@ if [ "$have_petsc" = 1 ]; then
     fi
     petsc_same "auto-nofit vs direct" "$C/auto-nofit.out" "$C/auto-fit.out" lambda_min lambda_max max_u
   fi
-  # ---- auto in 3D above the crossover in time: petsc on one process ----
+  # ---- auto in 3D above its trade of time for memory: petsc, 1 process ----
   # n = 26: 110,130 dofs, a run with a Cholesky factor estimated above
   # LAC_STRATEGY_ITERATIVE_BYTES (n = 14 above: below it, a factor); the
   # solve line says why, and the answer is the factor's to 1e-8.
@@ -531,7 +531,7 @@ if [ "$have_petsc" = 1 ]; then
        > "$C/auto-time.out" 2> "$C/auto-time.err" \
      && petsc_run auto-time-direct "$D8/taylor3d.scene" $BIG --strategy split; then
     if [ "$(petsc_value "$C/auto-time.out" processes)" = 1 ] \
-       && grep -q "solve .*projected cg + lac-sa + gamg on K_W, 1 process (auto: in 3D a Cholesky factor this large takes longer)" "$C/auto-time.err"; then
+       && grep -q "solve .*projected cg + lac-sa + gamg on K_W, 1 process (auto: in 3D a Cholesky factor this large costs far more memory than it saves time)" "$C/auto-time.err"; then
       petsc_ok "auto-time petsc"
     else
       petsc_fail "auto-time petsc" "want the projected CG, 1 process, and why: $(grep 'solve ' "$C/auto-time.err" | tail -1)"

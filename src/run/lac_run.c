@@ -71,7 +71,7 @@ stage_material (lac_run *r)
 /* What the strategy auto reads of the run: the MPI processes, whether
  * a Cholesky factor of K is estimated to fit in --max-memory (else
  * petsc, if lac has it), and in 3D the memory it is estimated at (petsc
- * above the crossover in time; chapter 13). */
+ * from LAC_STRATEGY_ITERATIVE_BYTES on; chapter 13). */
 static lac_strategy_context
 auto_context (const lac_run *r)
 {

@@ -204,7 +204,8 @@ auto_why (lac_strategy_kind want, lac_strategy_kind kind, size_t n,
   return ctx->processes > 1 ? "auto: more than one MPI process"
          : !ctx->factor_fits
          ? "auto: a Cholesky factor would not fit in --max-memory"
-         : "auto: in 3D a Cholesky factor this large takes longer";
+         : "auto: in 3D a Cholesky factor this large costs far more memory "
+           "than it saves time";
 }
 
 /* The strategy of a scene with contact: asked for (the command line,

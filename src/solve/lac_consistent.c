@@ -13,7 +13,6 @@
 #include "linalg/lac_gmres.h"
 
 #define MAXIT 60
-#define RESTART 30
 
 typedef struct ctx
 {
@@ -143,8 +142,9 @@ lac_consistent_solve (const lac_consistent *cs, double *dU, double *lambda,
   double rtol = nb > 0 ? cs->eta * nrhs / nb : 1.0;
   if (!status && rtol < 1)
     {
+      int maxit = cs->maxit > 0 ? cs->maxit : MAXIT;
       status = lac_gmres (n + k, apply, precondition, &c, b, z, rtol,
-                          RESTART, cs->maxit > 0 ? cs->maxit : MAXIT, &gi);
+                          LAC_CONSISTENT_RESTART, maxit, &gi);
       if (status == LAC_EMAXITER)
         {
           lac_error_clear ();              /* the best step found */

@@ -44,6 +44,9 @@
 #include "solve/lac_strategy.h"
 #include "solve/lac_system.h"
 
+/* GMRES's restart length: the Krylov basis kept before a restart. */
+#define LAC_CONSISTENT_RESTART 30
+
 typedef struct lac_consistent
 {
   const lac_contact_system *sys;  /* the frozen system (K, C with the

@@ -80,6 +80,7 @@
 #define LAC_NEWTON_RULES_H
 
 #include <stddef.h>
+#include "solve/lac_consistent.h"
 #include "solve/lac_contact_model.h"
 #include "solve/lac_strategy.h"
 #include "solve/lac_system.h"
@@ -112,7 +113,8 @@ enum
                                    positive definite); one costs about 20
                                    GMRES iterations on the hex20 rings
                                    with its Schur columns: bench/README  */
-#define LAC_NEWTON_RENEW 30     /* the same within a load step (GMRES's
+#define LAC_NEWTON_RENEW LAC_CONSISTENT_RESTART
+                                /* the same within a load step (GMRES's
                                    restart length): there a tangent may
                                    not be positive definite, and the LU
                                    fallback would stay for the run       */

@@ -34,9 +34,9 @@
  * small strain and large deformation.  Auto takes the first row that
  * applies: on N > 1 MPI processes, or when no factor fits in memory, by
  * the properties processes and factor (lac_strategy_choose_in); in 3D
- * when a Cholesky factor would cost more time than the Krylov solve, by
- * auto_from_bytes (LAC_STRATEGY_ITERATIVE_BYTES, measured in chapter 13);
- * else by size. */
+ * when a Cholesky factor would cost far more memory than the time it
+ * saves over the Krylov solve, by auto_from_bytes
+ * (LAC_STRATEGY_ITERATIVE_BYTES, measured in chapter 13); else by size. */
 const lac_strategy_type lac_strategy_table[] = {  /* lac_strategy_kind order */
   { "auto", NULL, LAC_BODIES_ANY, 0,
     LAC_FACTOR_NONE, 0, 0, { 0, 0 } },
@@ -130,7 +130,7 @@ refuse (const lac_strategy_type *t, size_t nfree)
 
 /* Does the run ctx take row t before the sizes: on N > 1 processes, a
  * row that solves on them; when no factor fits, one that factorizes
- * nothing; in 3D, one whose crossover in time for the cells' order the
+ * nothing; in 3D, one whose auto_from_bytes for the cells' order the
  * estimated Cholesky run reaches? */
 static int
 run_takes (const lac_strategy_type *t, const lac_strategy_context *ctx)

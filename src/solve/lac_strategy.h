@@ -99,10 +99,12 @@ typedef enum
 #define LAC_STRATEGY_DENSE_MAX 600   /* n + k of the dense strategy     */
 #define LAC_STRATEGY_ITERATIVE_BYTES 9e8  /* a 3D run of linear cells
                                         with a Cholesky factor estimated
-                                        at this many bytes: slower than
-                                        petsc on one process (chapter 13,
-                                        section 4; quadratic cells: not
-                                        up to 1.5 GB)                   */
+                                        at this many bytes: on one
+                                        process petsc takes at most about
+                                        1.4 times its time with a quarter
+                                        of its memory (chapter 13,
+                                        section 4; quadratic cells: 3 to
+                                        4 times the time, never)        */
 #define LAC_STRATEGY_TOL 1e-15       /* backward error aimed at: a few
                                         units of rounding (2.2e-16)     */
 
@@ -141,8 +143,9 @@ typedef struct lac_strategy_type
   double auto_from_bytes[2];    /* in 3D on one process, auto takes it
                                    when a run with a Cholesky factor is
                                    estimated at this many bytes or more,
-                                   [0] linear cells, [1] quadratic: the
-                                   crossover in time (0: never)         */
+                                   [0] linear cells, [1] quadratic: where
+                                   the factor's memory costs more than
+                                   its time saves (0: never)            */
 } lac_strategy_type;
 
 /* The types in lac_strategy_kind order, auto first, ended by a row whose
